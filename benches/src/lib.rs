@@ -1,0 +1,1 @@
+//! Shared bench support: seeded inputs and a table-driven reference algebra.

@@ -1,0 +1,1 @@
+//! The workspace integration-test support: a slow reference algebra.
