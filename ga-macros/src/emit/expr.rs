@@ -1,0 +1,163 @@
+//! Building blocks for readable straight-line code: operands, signed sums, struct literals.
+
+use std::collections::BTreeMap;
+
+use proc_macro2::{Literal, TokenStream};
+use quote::{format_ident, quote};
+
+use crate::algebra::{blade_name, Blade};
+use crate::plan::{Output, Plan, TypeId};
+use crate::spec::Scalar;
+
+/// A value in emitted code: an expression of a known type whose components can be read.
+#[derive(Clone)]
+pub struct Operand {
+    pub expr: TokenStream,
+    pub ty: TypeId,
+}
+
+impl Operand {
+    /// An operand named by a plain identifier (`self`, `rhs`, a local).
+    pub fn new(expr: TokenStream, ty: TypeId) -> Self {
+        Operand { expr, ty }
+    }
+
+    /// The expression that reads component `index`: the operand itself for a scalar.
+    pub fn component(&self, plan: &Plan, index: usize) -> TokenStream {
+        let expr = &self.expr;
+        if self.ty == TypeId::SCALAR {
+            expr.clone()
+        } else {
+            let field = field_ident(plan.types.get(self.ty).blades[index]);
+            quote!(#expr.#field)
+        }
+    }
+
+    /// The expression that reads the component on `blade`, if the operand has it.
+    pub fn blade(&self, plan: &Plan, blade: Blade) -> Option<TokenStream> {
+        let index = plan.types.get(self.ty).blades.iter().position(|&b| b == blade)?;
+        Some(self.component(plan, index))
+    }
+}
+
+/// The field of a blade.
+pub fn field_ident(blade: Blade) -> proc_macro2::Ident {
+    format_ident!("{}", blade_name(blade))
+}
+
+/// The scalar type's tokens.
+pub fn scalar_type(plan: &Plan) -> TokenStream {
+    match plan.scalar {
+        Scalar::F32 => quote!(f32),
+        Scalar::F64 => quote!(f64),
+    }
+}
+
+/// A float literal without suffix, so that it takes the algebra's scalar type.
+pub fn float(value: f64) -> Literal {
+    Literal::f64_unsuffixed(value)
+}
+
+/// The tokens naming an output type.
+pub fn output_type(plan: &Plan, output: Output) -> TokenStream {
+    match output {
+        Output::Zero => quote!(Zero),
+        Output::Type(id) => type_tokens(plan, id),
+    }
+}
+
+/// The tokens naming a type (the scalar type for `TypeId::SCALAR`).
+pub fn type_tokens(plan: &Plan, id: TypeId) -> TokenStream {
+    if id == TypeId::SCALAR {
+        scalar_type(plan)
+    } else {
+        let name = format_ident!("{}", plan.types.get(id).name);
+        quote!(#name)
+    }
+}
+
+/// `c1 * m1 + c2 * m2 + ...` with integer coefficients, written without any
+/// multiplication by 0 or 1: terms are grouped by |c|, positives first in each group.
+pub fn signed_sum(terms: &[(i32, TokenStream)]) -> TokenStream {
+    if terms.is_empty() {
+        let zero = float(0.0);
+        return quote!(#zero);
+    }
+    let mut groups: BTreeMap<i32, Vec<(bool, TokenStream)>> = BTreeMap::new();
+    for (c, m) in terms {
+        groups.entry(c.abs()).or_default().push((*c > 0, m.clone()));
+    }
+    let mut out = TokenStream::new();
+    let mut first = true;
+    for (magnitude, mut group) in groups {
+        group.sort_by_key(|(positive, _)| !*positive);
+        let all_negative = group.iter().all(|(p, _)| !p);
+        let inner = join_signed(&group, all_negative && magnitude != 1);
+        if magnitude == 1 {
+            if first {
+                out.extend(inner);
+            } else if all_negative {
+                // `inner` already starts with `-`.
+                out.extend(inner);
+            } else {
+                out.extend(quote!(+ #inner));
+            }
+        } else {
+            let factor = float(magnitude as f64);
+            let sign = match (first, all_negative) {
+                (true, true) => quote!(-),
+                (true, false) => quote!(),
+                (false, true) => quote!(-),
+                (false, false) => quote!(+),
+            };
+            if group.len() == 1 {
+                out.extend(quote!(#sign #factor * #inner));
+            } else {
+                out.extend(quote!(#sign #factor * (#inner)));
+            }
+        }
+        first = false;
+    }
+    out
+}
+
+fn join_signed(group: &[(bool, TokenStream)], negate_all: bool) -> TokenStream {
+    let mut out = TokenStream::new();
+    for (i, (positive, m)) in group.iter().enumerate() {
+        let positive = *positive != negate_all;
+        match (i == 0, positive) {
+            (true, true) => out.extend(quote!(#m)),
+            (true, false) => out.extend(quote!(-#m)),
+            (false, true) => out.extend(quote!(+ #m)),
+            (false, false) => out.extend(quote!(- #m)),
+        }
+    }
+    out
+}
+
+/// A value of type `output` whose component on each blade is given by `component`
+/// (blades it returns `None` for are zero).
+pub fn construct(
+    plan: &Plan,
+    output: Output,
+    mut component: impl FnMut(Blade) -> Option<TokenStream>,
+) -> TokenStream {
+    match output {
+        Output::Zero => quote!(Zero),
+        Output::Type(id) if id == TypeId::SCALAR => {
+            component(0).unwrap_or_else(|| { let z = float(0.0); quote!(#z) })
+        }
+        Output::Type(id) => {
+            let name = type_tokens(plan, id);
+            let fields = plan.types.get(id).blades.iter().map(|&blade| {
+                let field = field_ident(blade);
+                let value = component(blade).unwrap_or_else(|| {
+                    let z = float(0.0);
+                    quote!(#z)
+                });
+                quote!(#field: #value)
+            });
+            quote!(#name { #(#fields,)* })
+        }
+    }
+}

@@ -1,0 +1,74 @@
+//! The back end: writes the module from a [`Plan`]. Nothing here can fail: every choice
+//! was made and checked before.
+
+mod exp_log;
+mod expr;
+mod operators;
+mod products;
+mod types;
+mod unary;
+mod versor;
+
+use proc_macro2::TokenStream;
+use quote::quote;
+
+use crate::plan::{Plan, TypeId, TypeKind};
+use crate::spec::{Op, Spec};
+
+/// The items of the algebra module, without the `mod` wrapper.
+pub fn module_items(spec: &Spec, plan: &Plan) -> TokenStream {
+    let n = plan.metric.dimension();
+    let mut items = types::emit_support_items(plan);
+    for &t in &plan.emitted {
+        items.extend(types::emit_struct(plan, t));
+        items.extend(unary::emit_unary(plan, t));
+        if plan.has(Op::Reflect) && plan.emitted.contains(&TypeId::grade(1)) && plan.has(Op::Sandwich) {
+            items.extend(versor::emit_reflect(plan, t));
+        }
+        let mv_available = plan.emitted.contains(&TypeId::multivector(n));
+        if plan.has(Op::Factor) && mv_available && matches!(plan.types.get(t).kind, TypeKind::Grade(_)) {
+            items.extend(versor::emit_blades(plan, t));
+        }
+    }
+    items.extend(products::emit_product_traits(plan));
+    items.extend(products::emit_products(plan));
+    if plan.has(Op::Add) {
+        items.extend(operators::emit_operators(plan));
+    } else {
+        items.extend(operators::emit_scaling(plan));
+    }
+    if plan.has(Op::Sandwich) {
+        items.extend(versor::emit_sandwiches(plan));
+    }
+    if plan.emitted.contains(&TypeId::multivector(n)) {
+        items.extend(unary::emit_multivector_inverse(plan));
+        items.extend(versor::emit_multivector_helpers(plan));
+    }
+    let bivector = TypeId::grade(2);
+    let has_exp = n >= 2 && plan.has(Op::Exp) && plan.emitted.contains(&bivector);
+    let has_log = (2..=4).contains(&n) && plan.has(Op::Log) && plan.emitted.contains(&TypeId::even(n));
+    if has_exp {
+        items.extend(exp_log::emit_exp(plan));
+    }
+    if has_log {
+        items.extend(exp_log::emit_log(plan));
+    }
+    if has_exp || has_log {
+        items.extend(exp_log::emit_scalar_functions(plan));
+    }
+    let _ = spec;
+    items
+}
+
+/// The whole module: the user's attributes and visibility around the items.
+pub fn module(spec: &Spec, plan: &Plan) -> TokenStream {
+    let items = module_items(spec, plan);
+    let (attrs, vis, name) = (&spec.attrs, &spec.vis, &spec.name);
+    quote! {
+        #(#attrs)*
+        #[allow(clippy::all, clippy::pedantic, clippy::nursery)]
+        #vis mod #name {
+            #items
+        }
+    }
+}

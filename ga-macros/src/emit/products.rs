@@ -1,0 +1,152 @@
+//! Every bilinear product between the paired types (and the scalar), one impl each.
+
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+
+use super::expr::{construct, output_type, signed_sum, type_tokens, Operand};
+use crate::algebra::ProductKind;
+use crate::plan::{bilinear, Output, Plan, TypeId};
+
+/// The straight-line value of `lhs (kind) rhs`, and its type.
+pub fn product_value(plan: &Plan, kind: ProductKind, lhs: &Operand, rhs: &Operand) -> (TokenStream, Output) {
+    let terms = bilinear(
+        &plan.metric,
+        kind,
+        &plan.types.get(lhs.ty).blades,
+        &plan.types.get(rhs.ty).blades,
+    );
+    let output = plan.types.smallest_holding_preferring(terms.keys().copied(), &[lhs.ty, rhs.ty]);
+    let value = construct(plan, output, |blade| {
+        let list = terms.get(&blade)?;
+        let summands: Vec<(i32, TokenStream)> = list
+            .iter()
+            .map(|t| {
+                let a = lhs.component(plan, t.lhs);
+                let b = rhs.component(plan, t.rhs);
+                (t.sign as i32, quote!(#a * #b))
+            })
+            .collect();
+        Some(signed_sum(&summands))
+    });
+    (value, output)
+}
+
+/// The number of multiply terms of a product: what `TERM_COUNTS` reports.
+pub fn term_count(plan: &Plan, kind: ProductKind, lhs: TypeId, rhs: TypeId) -> usize {
+    bilinear(&plan.metric, kind, &plan.types.get(lhs).blades, &plan.types.get(rhs).blades)
+        .values()
+        .map(Vec::len)
+        .sum()
+}
+
+/// The operand pairs that get products: the scalar and every paired type, both ways.
+pub fn operand_pairs(plan: &Plan) -> Vec<(TypeId, TypeId)> {
+    let operands: Vec<TypeId> =
+        std::iter::once(TypeId::SCALAR).chain(plan.paired.iter().copied()).collect();
+    let mut pairs = Vec::new();
+    for &a in &operands {
+        for &b in &operands {
+            if !(a == TypeId::SCALAR && b == TypeId::SCALAR) {
+                pairs.push((a, b));
+            }
+        }
+    }
+    pairs
+}
+
+/// The trait impls of every product, and the `TERM_COUNTS` table.
+pub fn emit_products(plan: &Plan) -> TokenStream {
+    let mut impls = TokenStream::new();
+    let mut counts = Vec::new();
+    for &kind in &plan.products {
+        for (a, b) in operand_pairs(plan) {
+            impls.extend(product_impl(plan, kind, a, b));
+            let (kind_name, a_name, b_name) =
+                (kind.name(), plan.types.get(a).name.clone(), plan.types.get(b).name.clone());
+            let count = term_count(plan, kind, a, b);
+            counts.push(quote!((#kind_name, #a_name, #b_name, #count)));
+        }
+    }
+    quote! {
+        #impls
+
+        /// (product, lhs type, rhs type, number of multiply terms) for every emitted
+        /// product; the scalar operand is named `Scalar`.
+        pub const TERM_COUNTS: &[(&str, &str, &str, usize)] = &[#(#counts,)*];
+    }
+}
+
+fn product_impl(plan: &Plan, kind: ProductKind, a: TypeId, b: TypeId) -> TokenStream {
+    let lhs = Operand::new(quote!(self), a);
+    let rhs = Operand::new(quote!(rhs), b);
+    let (value, output) = product_value(plan, kind, &lhs, &rhs);
+    let (lhs_ty, rhs_ty, out_ty) = (type_tokens(plan, a), type_tokens(plan, b), output_type(plan, output));
+    let unused = if output == Output::Zero {
+        quote!(let _ = (self, rhs);)
+    } else {
+        quote!()
+    };
+    let (trait_path, method) = match kind {
+        ProductKind::Geometric => (quote!(::core::ops::Mul), format_ident!("mul")),
+        ProductKind::Outer => (quote!(::core::ops::BitXor), format_ident!("bitxor")),
+        ProductKind::Inner => (quote!(::core::ops::BitOr), format_ident!("bitor")),
+        ProductKind::LeftContraction => (quote!(LeftContraction), format_ident!("left_contraction")),
+        ProductKind::RightContraction => (quote!(RightContraction), format_ident!("right_contraction")),
+        ProductKind::Scalar => (quote!(ScalarProduct), format_ident!("scalar_product")),
+        ProductKind::Commutator => (quote!(Commutator), format_ident!("commutator")),
+    };
+    // The commutator keeps the terms of `ab` whose blades anticommute, where (ab - ba)/2
+    // counts them at full weight, so its body needs no halving.
+    let body = value;
+    quote! {
+        impl #trait_path<#rhs_ty> for #lhs_ty {
+            type Output = #out_ty;
+            #[inline]
+            fn #method(self, rhs: #rhs_ty) -> #out_ty {
+                #unused
+                #body
+            }
+        }
+    }
+}
+
+/// The per-algebra traits behind the products that have no operator.
+pub fn emit_product_traits(plan: &Plan) -> TokenStream {
+    let mut out = TokenStream::new();
+    for &kind in &plan.products {
+        let (name, method, doc) = match kind {
+            ProductKind::LeftContraction => (
+                quote!(LeftContraction),
+                quote!(left_contraction),
+                "The left contraction: the sum of <A_r B_s>_(s-r), zero where r > s.",
+            ),
+            ProductKind::RightContraction => (
+                quote!(RightContraction),
+                quote!(right_contraction),
+                "The right contraction: the sum of <A_r B_s>_(r-s), zero where s > r.",
+            ),
+            ProductKind::Scalar => (
+                quote!(ScalarProduct),
+                quote!(scalar_product),
+                "The scalar product <AB>_0.",
+            ),
+            ProductKind::Commutator => (
+                quote!(Commutator),
+                quote!(commutator),
+                "The commutator product (AB - BA) / 2 (not the cross product).",
+            ),
+            _ => continue,
+        };
+        out.extend(quote! {
+            #[doc = #doc]
+            pub trait #name<Rhs> {
+                /// The smallest type holding every grade the product can have.
+                type Output;
+                #[doc = #doc]
+                #[must_use]
+                fn #method(self, rhs: Rhs) -> Self::Output;
+            }
+        });
+    }
+    out
+}

@@ -1,0 +1,319 @@
+//! Methods of one operand: involutions, duals, norms, inverse, grade projections.
+
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+
+use super::expr::{construct, field_ident, float, output_type, scalar_type, signed_sum, type_tokens, Operand};
+use crate::algebra::{grade, Involution};
+use crate::plan::{quadratic_self, Output, Plan, TypeId, TypeKind};
+use crate::spec::Op;
+
+/// The unary methods of one type, as one inherent impl.
+pub fn emit_unary(plan: &Plan, t: TypeId) -> TokenStream {
+    let name = type_tokens(plan, t);
+    let mut methods = TokenStream::new();
+    let involutions = [
+        (Op::Reverse, Involution::Reverse, "reverse", "The reverse ~A: flips grades 2 and 3 mod 4."),
+        (Op::GradeInvolution, Involution::GradeInvolution, "grade_involution", "The grade involution: flips odd grades."),
+        (Op::Conjugate, Involution::Conjugate, "conjugate", "The Clifford conjugate: flips grades 1 and 2 mod 4."),
+    ];
+    let this = Operand::new(quote!(self), t);
+    for (op, involution, method, doc) in involutions {
+        if !plan.has(op) {
+            continue;
+        }
+        let method = format_ident!("{method}");
+        let value = construct(plan, Output::Type(t), |blade| {
+            let x = this.blade(plan, blade)?;
+            Some(if involution.sign(blade) > 0 { x } else { quote!(-#x) })
+        });
+        methods.extend(quote! {
+            #[doc = #doc]
+            #[inline]
+            #[must_use]
+            pub fn #method(self) -> Self {
+                #value
+            }
+        });
+    }
+    if plan.has(Op::Dual) {
+        methods.extend(complement(plan, t, true));
+        methods.extend(complement(plan, t, false));
+    }
+    if plan.has(Op::Norm) {
+        methods.extend(norms(plan, t));
+    }
+    if plan.has(Op::Inverse) {
+        methods.extend(inverse(plan, t));
+    }
+    if plan.has(Op::Grade) {
+        methods.extend(projections(plan, t));
+    }
+    quote! {
+        impl #name {
+            #methods
+        }
+    }
+}
+
+fn complement(plan: &Plan, t: TypeId, dual: bool) -> TokenStream {
+    let blades = &plan.types.get(t).blades;
+    let map = |b| if dual { plan.metric.dual(b) } else { plan.metric.undual(b) };
+    let output = plan.types.smallest_holding(blades.iter().map(|&b| map(b).1));
+    let this = Operand::new(quote!(self), t);
+    let value = construct(plan, output, |target| {
+        blades.iter().enumerate().find_map(|(i, &b)| {
+            let (sign, image) = map(b);
+            (image == target).then(|| {
+                let x = this.component(plan, i);
+                if sign > 0 { x } else { quote!(-#x) }
+            })
+        })
+    });
+    let out_ty = output_type(plan, output);
+    let (method, doc) = if dual {
+        (quote!(dual), "The dual as the right complement: `e_A ^ e_A.dual() = e1..en` for every blade, independent of the metric (so it works for degenerate metrics).")
+    } else {
+        (quote!(undual), "The inverse of `dual`.")
+    };
+    quote! {
+        #[doc = #doc]
+        #[inline]
+        #[must_use]
+        pub fn #method(self) -> #out_ty {
+            #value
+        }
+    }
+}
+
+/// `<A ~A>_0` as a signed sum of squares (cross terms never reach grade 0).
+pub fn norm_squared_expr(plan: &Plan, operand: &Operand) -> TokenStream {
+    let blades = &plan.types.get(operand.ty).blades;
+    let terms: Vec<(i32, TokenStream)> = blades
+        .iter()
+        .enumerate()
+        .filter_map(|(i, &b)| {
+            let sign = plan.metric.geometric(b, b).0 * Involution::Reverse.sign(b);
+            let x = operand.component(plan, i);
+            (sign != 0).then(|| (sign as i32, quote!(#x * #x)))
+        })
+        .collect();
+    signed_sum(&terms)
+}
+
+fn norms(plan: &Plan, t: TypeId) -> TokenStream {
+    let s = scalar_type(plan);
+    let sum = norm_squared_expr(plan, &Operand::new(quote!(self), t));
+    let zero = float(0.0);
+    quote! {
+        /// `<A ~A>_0`: the squared norm (negative or zero for some elements of
+        /// non-Euclidean metrics).
+        #[inline]
+        #[must_use]
+        pub fn norm_squared(self) -> #s {
+            #sum
+        }
+
+        /// `sqrt(|<A ~A>_0|)`.
+        #[inline]
+        #[must_use]
+        pub fn norm(self) -> #s {
+            self.norm_squared().abs().sqrt()
+        }
+
+        /// `self / self.norm()`: non-finite when the norm is zero (see `try_normalized`).
+        #[inline]
+        #[must_use]
+        pub fn normalized(self) -> Self {
+            self * (1.0 / self.norm())
+        }
+
+        /// `self / self.norm()`, or `None` when the norm is zero or not finite.
+        #[inline]
+        #[must_use]
+        pub fn try_normalized(self) -> Option<Self> {
+            let norm = self.norm();
+            if norm > #zero && norm.is_finite() {
+                Some(self * (1.0 / norm))
+            } else {
+                None
+            }
+        }
+    }
+}
+
+fn inverse(plan: &Plan, t: TypeId) -> TokenStream {
+    let output = plan.inverse_output(t);
+    let out_ty = output_type(plan, output);
+    let zero = float(0.0);
+    if plan.has_scalar_self_product(t) {
+        let q = quadratic_self(&plan.metric, &plan.types.get(t).blades, Involution::Reverse);
+        let this = Operand::new(quote!(self), t);
+        let scalar_terms: Vec<(i32, TokenStream)> = q
+            .get(&0)
+            .map(|per_k| {
+                per_k[&0]
+                    .iter()
+                    .map(|(&(i, j), &c)| {
+                        let (a, b) = (this.component(plan, i), this.component(plan, j));
+                        (c, quote!(#a * #b))
+                    })
+                    .collect()
+            })
+            .unwrap_or_default();
+        let denominator = signed_sum(&scalar_terms);
+        return quote! {
+            /// The inverse `~A / (A ~A)` (here `A ~A` is a scalar for every `A`), or `None`
+            /// when `A ~A` is zero or the result is not finite.
+            #[inline]
+            #[must_use]
+            pub fn inverse(self) -> Option<#out_ty> {
+                let denominator = #denominator;
+                if denominator == #zero {
+                    return None;
+                }
+                let inverse = self.reverse() * (1.0 / denominator);
+                if inverse.to_array().iter().all(|c| c.is_finite()) {
+                    Some(inverse.into())
+                } else {
+                    None
+                }
+            }
+        };
+    }
+    let project = construct(plan, output, |blade| {
+        let f = field_ident(blade);
+        Some(quote!(inverse.#f))
+    });
+    quote! {
+        /// The inverse, by solving `A X = 1` (`A ~A` is not a scalar for this type), or
+        /// `None` when `A` is singular.
+        #[must_use]
+        pub fn inverse(self) -> Option<#out_ty> {
+            let inverse = multivector_inverse(Multivector::from(self))?;
+            Some(#project)
+        }
+    }
+}
+
+fn projections(plan: &Plan, t: TypeId) -> TokenStream {
+    let n = plan.metric.dimension();
+    let def = plan.types.get(t);
+    let this = Operand::new(quote!(self), t);
+    let mut out = TokenStream::new();
+    for k in plan.types.grades_of(t) {
+        let target = if k == 0 { TypeId::SCALAR } else { TypeId::grade(k) };
+        let method = format_ident!("grade{k}");
+        let ty = type_tokens(plan, target);
+        let value = construct(plan, Output::Type(target), |blade| this.blade(plan, blade));
+        let doc = format!("The grade-{k} part <A>_{k}.");
+        out.extend(quote! {
+            #[doc = #doc]
+            #[inline]
+            #[must_use]
+            pub fn #method(self) -> #ty {
+                #value
+            }
+        });
+    }
+    if def.kind == TypeKind::Multivector {
+        for (method, target, doc) in [
+            (quote!(even_part), TypeId::even(n), "The even grades."),
+            (quote!(odd_part), TypeId::odd(n), "The odd grades."),
+        ] {
+            let ty = type_tokens(plan, target);
+            let value = construct(plan, Output::Type(target), |blade| this.blade(plan, blade));
+            out.extend(quote! {
+                #[doc = #doc]
+                #[inline]
+                #[must_use]
+                pub fn #method(self) -> #ty {
+                    #value
+                }
+            });
+        }
+    }
+    let _ = grade;
+    out
+}
+
+/// The general inverse by Gaussian elimination on the left-multiplication matrix of the
+/// full algebra; emitted only when some type needs it.
+pub fn emit_multivector_inverse(plan: &Plan) -> TokenStream {
+    let n = plan.metric.dimension();
+    let mv = TypeId::multivector(n);
+    let blades = &plan.types.get(mv).blades;
+    let len = blades.len();
+    let s = scalar_type(plan);
+    // LEFT[i][j] = (k, sign): e_i e_j = sign e_k, as component indices.
+    let rows = blades.iter().map(|&a| {
+        let entries = blades.iter().map(|&b| {
+            let (sign, blade) = plan.metric.geometric(a, b);
+            let k = blades.iter().position(|&x| x == blade).unwrap_or(0);
+            let sign = sign as i8;
+            quote!((#k, #sign))
+        });
+        quote!([#(#entries),*])
+    });
+    let _ = grade;
+    quote! {
+        /// `LEFT[i][j] = (k, sign)`: `e_i e_j = sign e_k` by component index. Used only by
+        /// the general inverse, never by a product.
+        const LEFT: [[(usize, i8); #len]; #len] = [#(#rows),*];
+
+        /// Solves `A X = 1` by Gaussian elimination with partial pivoting; `None` when a
+        /// pivot vanishes relative to the largest entry.
+        fn multivector_inverse(a: Multivector) -> Option<Multivector> {
+            let a = a.to_array();
+            let mut m = [[0.0 as #s; #len]; #len];
+            let mut largest: #s = 0.0;
+            for (i, &ai) in a.iter().enumerate() {
+                for (j, &(k, sign)) in LEFT[i].iter().enumerate() {
+                    m[k][j] += #s::from(sign) * ai;
+                }
+                largest = largest.max(ai.abs());
+            }
+            if !(largest > 0.0) || !largest.is_finite() {
+                return None;
+            }
+            let mut rhs = [0.0 as #s; #len];
+            rhs[0] = 1.0;
+            let tolerance = largest * #s::EPSILON * (#len as #s);
+            for col in 0..#len {
+                let mut pivot = col;
+                for row in col + 1..#len {
+                    if m[row][col].abs() > m[pivot][col].abs() {
+                        pivot = row;
+                    }
+                }
+                if m[pivot][col].abs() <= tolerance {
+                    return None;
+                }
+                m.swap(col, pivot);
+                rhs.swap(col, pivot);
+                for row in col + 1..#len {
+                    let factor = m[row][col] / m[col][col];
+                    if factor != 0.0 {
+                        for c in col..#len {
+                            m[row][c] -= factor * m[col][c];
+                        }
+                        rhs[row] -= factor * rhs[col];
+                    }
+                }
+            }
+            let mut x = [0.0 as #s; #len];
+            for row in (0..#len).rev() {
+                let mut sum = rhs[row];
+                for c in row + 1..#len {
+                    sum -= m[row][c] * x[c];
+                }
+                x[row] = sum / m[row][row];
+            }
+            if x.iter().all(|v| v.is_finite()) {
+                Some(Multivector::from_array(x))
+            } else {
+                None
+            }
+        }
+    }
+}

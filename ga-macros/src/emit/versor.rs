@@ -1,0 +1,310 @@
+//! `sandwich`, `reflect`, the blade test and blade factorisation.
+
+use std::collections::BTreeSet;
+
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+
+use super::expr::{construct, field_ident, float, scalar_type, signed_sum, type_tokens, Operand};
+use super::products::product_value;
+use crate::algebra::{blade_name, Involution, ProductKind};
+use crate::plan::{bilinear, sandwich, Output, Plan, Quadratic, TypeId, TypeKind};
+
+/// Above this size (|v|^2 |x|) the symbolic expansion is not attempted: it would cost
+/// more multiplies than two chained products anyway (G6 rotors).
+const FUSED_BUDGET: usize = 2048;
+
+/// The `Sandwich` trait and its impls for every versor type on every emitted type.
+pub fn emit_sandwiches(plan: &Plan) -> TokenStream {
+    let mut out = quote! {
+        /// The versor product: `v x ~v` for even `v`, `v x^ ~v` for odd `v` (x^ the grade
+        /// involution), expanded symbolically with like terms collected. Returns `x`'s own
+        /// type; `v` should be a unit versor (the result is scaled by |v|^2 otherwise).
+        pub trait Sandwich<X> {
+            /// `v x ~v` (even `v`) or `v x^ ~v` (odd `v`).
+            #[must_use]
+            fn sandwich(self, x: X) -> X;
+        }
+    };
+    for v in plan.versors() {
+        for &x in &plan.emitted {
+            out.extend(sandwich_impl(plan, v, x));
+        }
+    }
+    out
+}
+
+fn is_odd(plan: &Plan, v: TypeId) -> bool {
+    matches!(plan.types.get(v).kind, TypeKind::Grade(1) | TypeKind::Odd)
+}
+
+fn sandwich_impl(plan: &Plan, v: TypeId, x: TypeId) -> TokenStream {
+    let (v_ty, x_ty) = (type_tokens(plan, v), type_tokens(plan, x));
+    let versor = &plan.types.get(v).blades;
+    let operand = &plan.types.get(x).blades;
+    let odd = is_odd(plan, v);
+    let fused = (versor.len() * versor.len() * operand.len() <= FUSED_BUDGET)
+        .then(|| sandwich(&plan.metric, versor, odd, operand))
+        .filter(|q| fused_multiplies(q, operand) <= chained_multiplies(plan, v, x));
+    let body = match fused {
+        Some(q) => fused_body(plan, v, x, &q),
+        None => chained_body(plan, v, x, odd),
+    };
+    quote! {
+        impl Sandwich<#x_ty> for #v_ty {
+            #[inline]
+            fn sandwich(self, x: #x_ty) -> #x_ty {
+                #body
+            }
+        }
+    }
+}
+
+fn fused_multiplies(q: &Quadratic, operand: &[u32]) -> usize {
+    let mut pairs = BTreeSet::new();
+    let mut entries = 0;
+    for (blade, per_k) in q {
+        if !operand.contains(blade) {
+            continue;
+        }
+        for pairs_k in per_k.values() {
+            entries += 1;
+            pairs.extend(pairs_k.keys().copied());
+        }
+    }
+    pairs.len() + entries
+}
+
+fn chained_multiplies(plan: &Plan, v: TypeId, x: TypeId) -> usize {
+    let versor = &plan.types.get(v).blades;
+    let first = bilinear(&plan.metric, ProductKind::Geometric, versor, &plan.types.get(x).blades);
+    let middle: Vec<u32> = first.keys().copied().collect();
+    let second = bilinear(&plan.metric, ProductKind::Geometric, &middle, versor);
+    let operand = &plan.types.get(x).blades;
+    first.values().map(Vec::len).sum::<usize>()
+        + second.iter().filter(|(b, _)| operand.contains(b)).map(|(_, t)| t.len()).sum::<usize>()
+}
+
+/// The quadratic form: products of pairs of the versor's components first, then each
+/// output component as a linear form in `x` with coefficients summed from those pairs.
+/// See docs/derivations/sandwich.md.
+fn fused_body(plan: &Plan, v: TypeId, x: TypeId, q: &Quadratic) -> TokenStream {
+    let versor = &plan.types.get(v).blades;
+    let operand = &plan.types.get(x).blades;
+    let this = Operand::new(quote!(self), v);
+    let arg = Operand::new(quote!(x), x);
+    let mut used = BTreeSet::new();
+    for (blade, per_k) in q {
+        if operand.contains(blade) {
+            for pairs in per_k.values() {
+                used.extend(pairs.keys().copied());
+            }
+        }
+    }
+    let pair_name = |(i, j): (usize, usize)| {
+        format_ident!("{}_{}", blade_name(versor[i]), blade_name(versor[j]))
+    };
+    let pair_lets = used.iter().map(|&(i, j)| {
+        let name = pair_name((i, j));
+        let (a, b) = (this.component(plan, i), this.component(plan, j));
+        quote!(let #name = #a * #b;)
+    });
+    let value = construct(plan, Output::Type(x), |blade| {
+        let per_k = q.get(&blade)?;
+        let terms: Vec<(i32, TokenStream)> = per_k
+            .iter()
+            .map(|(&k, pairs)| {
+                let coefficient: Vec<(i32, TokenStream)> = pairs
+                    .iter()
+                    .map(|(&pair, &c)| {
+                        let name = pair_name(pair);
+                        (c, quote!(#name))
+                    })
+                    .collect();
+                let xk = arg.component(plan, k);
+                match coefficient.as_slice() {
+                    [(1, single)] => (1, quote!(#single * #xk)),
+                    [(-1, single)] => (-1, quote!(#single * #xk)),
+                    _ => {
+                        let sum = signed_sum(&coefficient);
+                        (1, quote!((#sum) * #xk))
+                    }
+                }
+            })
+            .collect();
+        Some(signed_sum(&terms))
+    });
+    quote! {
+        #(#pair_lets)*
+        #value
+    }
+}
+
+/// Two products through local variables, for versors too large to expand.
+fn chained_body(plan: &Plan, v: TypeId, x: TypeId, odd: bool) -> TokenStream {
+    let versor = &plan.types.get(v).blades;
+    let operand = &plan.types.get(x).blades;
+    let this = Operand::new(quote!(self), v);
+    let arg = Operand::new(quote!(x), x);
+    let first = bilinear(&plan.metric, ProductKind::Geometric, versor, operand);
+    let middle: Vec<u32> = first.keys().copied().collect();
+    let locals = first.iter().map(|(&blade, terms)| {
+        let name = format_ident!("m_{}", blade_name(blade));
+        let summands: Vec<(i32, TokenStream)> = terms
+            .iter()
+            .map(|t| {
+                let sign = if odd { Involution::GradeInvolution.sign(operand[t.rhs]) } else { 1 };
+                let (a, b) = (this.component(plan, t.lhs), arg.component(plan, t.rhs));
+                ((t.sign * sign) as i32, quote!(#a * #b))
+            })
+            .collect();
+        let sum = signed_sum(&summands);
+        quote!(let #name = #sum;)
+    });
+    let second = bilinear(&plan.metric, ProductKind::Geometric, &middle, versor);
+    let value = construct(plan, Output::Type(x), |blade| {
+        let terms = second.get(&blade)?;
+        let summands: Vec<(i32, TokenStream)> = terms
+            .iter()
+            .map(|t| {
+                let m = format_ident!("m_{}", blade_name(middle[t.lhs]));
+                let b = this.component(plan, t.rhs);
+                let sign = Involution::Reverse.sign(versor[t.rhs]);
+                ((t.sign * sign) as i32, quote!(#m * #b))
+            })
+            .collect();
+        Some(signed_sum(&summands))
+    });
+    quote! {
+        #(#locals)*
+        #value
+    }
+}
+
+/// `reflect(n)` on every type, when vectors are emitted.
+pub fn emit_reflect(plan: &Plan, t: TypeId) -> TokenStream {
+    let name = type_tokens(plan, t);
+    quote! {
+        impl #name {
+            /// The lecture's reflection in the hyperplane orthogonal to `n`: `-n a n^-1`
+            /// for a vector, `(-1)^k n A n^-1` for grade k.
+            #[inline]
+            #[must_use]
+            pub fn reflect(self, n: Vector) -> Self {
+                Sandwich::sandwich(n, self) / n.norm_squared()
+            }
+        }
+    }
+}
+
+/// `is_blade` on bivectors and `factor` on every grade type.
+pub fn emit_blades(plan: &Plan, t: TypeId) -> TokenStream {
+    let TypeKind::Grade(k) = plan.types.get(t).kind else {
+        return quote!();
+    };
+    let name = type_tokens(plan, t);
+    let s = scalar_type(plan);
+    let mut methods = TokenStream::new();
+    if k == 2 {
+        let this = Operand::new(quote!(self), t);
+        let (wedge, output) = product_value(plan, ProductKind::Outer, &this, &this);
+        let check = match output {
+            Output::Zero => quote!(let _ = #wedge; true),
+            _ => quote! {
+                let wedge = #wedge;
+                let size = self.to_array().iter().map(|c| c * c).sum::<#s>();
+                let excess = wedge.to_array().iter().map(|c| c * c).sum::<#s>().sqrt();
+                excess <= 64.0 * #s::EPSILON * size
+            },
+        };
+        methods.extend(quote! {
+            /// Whether this bivector is a blade `a ^ b`: `B ^ B = 0` to rounding (e12 + e34
+            /// in four dimensions is not).
+            #[must_use]
+            pub fn is_blade(self) -> bool {
+                #check
+            }
+        });
+    }
+    let n = plan.metric.dimension();
+    let mv = TypeId::multivector(n);
+    let k_lit = k;
+    let fields = plan.types.get(TypeId::grade(1)).blades.iter().map(|&b| field_ident(b)).collect::<Vec<_>>();
+    let zero = float(0.0);
+    methods.extend(quote! {
+        /// Factors a blade into orthogonal vectors whose geometric product is the blade,
+        /// as in the lecture: take `a` in the blade, then `b' = a^-1 (a ^ b)` and so on by
+        /// induction. `None` when this is not a blade (to rounding) or a factor is null.
+        #[must_use]
+        pub fn factor(self) -> Option<[Vector; #k_lit]> {
+            let blade = Multivector::from(self);
+            let size = blade.to_array().iter().map(|c| c * c).sum::<#s>().sqrt();
+            if !(size > #zero) || !size.is_finite() {
+                return None;
+            }
+            let mut rest = blade;
+            let mut factors = [Vector::ZERO; #k_lit];
+            for slot in factors.iter_mut().take(#k_lit - 1) {
+                let inverse = multivector_inverse(rest)?;
+                let mut best = Vector::ZERO;
+                let mut best_size: #s = 0.0;
+                for basis in [#(Vector { #fields: 1.0, ..Vector::ZERO }),*] {
+                    let projected = mv_geometric(mv_left_contraction(Multivector::from(basis), rest), inverse);
+                    let candidate = Vector { #(#fields: projected.#fields),* };
+                    let candidate_size = candidate.to_array().iter().map(|c| c * c).sum::<#s>();
+                    if candidate_size > best_size {
+                        best = candidate;
+                        best_size = candidate_size;
+                    }
+                }
+                let best_inverse = multivector_inverse(Multivector::from(best))?;
+                rest = mv_geometric(best_inverse, rest);
+                *slot = best;
+            }
+            factors[#k_lit - 1] = Vector { #(#fields: rest.#fields),* };
+            let mut product = Multivector::from(factors[0]);
+            for factor in &factors[1..] {
+                product = mv_geometric(product, Multivector::from(*factor));
+            }
+            let error = product
+                .to_array()
+                .iter()
+                .zip(blade.to_array())
+                .map(|(p, b)| (p - b) * (p - b))
+                .sum::<#s>()
+                .sqrt();
+            if error <= 1024.0 * #s::EPSILON * size {
+                Some(factors)
+            } else {
+                None
+            }
+        }
+    });
+    let _ = mv;
+    quote! {
+        impl #name {
+            #methods
+        }
+    }
+}
+
+/// Private full-algebra products used by runtime algorithms (never by a product impl).
+pub fn emit_multivector_helpers(plan: &Plan) -> TokenStream {
+    let n = plan.metric.dimension();
+    let mv = TypeId::multivector(n);
+    let a = Operand::new(quote!(a), mv);
+    let b = Operand::new(quote!(b), mv);
+    let (geometric, _) = product_value(plan, ProductKind::Geometric, &a, &b);
+    let (contraction, _) = product_value(plan, ProductKind::LeftContraction, &a, &b);
+    quote! {
+        #[allow(dead_code)]
+        fn mv_geometric(a: Multivector, b: Multivector) -> Multivector {
+            #geometric
+        }
+
+        #[allow(dead_code)]
+        fn mv_left_contraction(a: Multivector, b: Multivector) -> Multivector {
+            #contraction
+        }
+    }
+}

@@ -1,0 +1,50 @@
+//! Parse, validate, plan, emit: the pipeline behind both entry points.
+
+use proc_macro2::TokenStream;
+
+use crate::emit;
+use crate::plan::Plan;
+use crate::spec::{validate, RawAlgebra, RawDerive};
+
+/// `algebra! { ... }`.
+pub fn algebra(input: RawAlgebra) -> syn::Result<TokenStream> {
+    let spec = validate(input.attrs, input.vis, input.name, input.entries)?;
+    let plan = Plan::new(&spec);
+    Ok(emit::module(&spec, &plan))
+}
+
+/// `#[derive(Algebra)]`: the same items, in a sibling module named after the marker type
+/// in snake case (`struct SpaceTime;` gives `mod space_time`).
+pub fn derive(input: syn::DeriveInput) -> syn::Result<TokenStream> {
+    let raw = RawDerive::from_derive(input)?;
+    let module_name = syn::Ident::new(&snake_case(&raw.name.to_string()), raw.name.span());
+    let spec = validate(raw.attrs, raw.vis, module_name, raw.entries)?;
+    let plan = Plan::new(&spec);
+    Ok(emit::module(&spec, &plan))
+}
+
+fn snake_case(name: &str) -> String {
+    let mut out = String::new();
+    for (i, c) in name.chars().enumerate() {
+        if c.is_uppercase() {
+            if i > 0 {
+                out.push('_');
+            }
+            out.extend(c.to_lowercase());
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn snake_case_splits_words() {
+        assert_eq!(snake_case("SpaceTime"), "space_time");
+        assert_eq!(snake_case("G3"), "g3");
+    }
+}

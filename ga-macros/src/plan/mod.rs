@@ -1,0 +1,257 @@
+//! The product plan: which types exist, which products and operations are emitted, and
+//! for each product the exact list of non-zero terms. Plain data, no syn or quote.
+
+mod terms;
+mod types;
+
+pub use terms::{bilinear, quadratic_self, sandwich, Quadratic};
+pub use types::{Output, TypeId, TypeKind, Types};
+
+use std::collections::BTreeSet;
+
+use crate::algebra::{Metric, ProductKind};
+use crate::spec::{Op, Scalar, Spec, TypeRequest};
+
+/// Everything the emitter writes, decided up front.
+pub struct Plan {
+    pub metric: Metric,
+    pub scalar: Scalar,
+    pub types: Types,
+    /// The struct types written out, in declaration order.
+    pub emitted: Vec<TypeId>,
+    /// The types whose pairs get products and sums (the listed types, or all).
+    pub paired: Vec<TypeId>,
+    /// Products between `paired` types (and the scalar).
+    pub products: Vec<ProductKind>,
+    /// The operations that are emitted.
+    pub ops: BTreeSet<Op>,
+}
+
+impl Plan {
+    /// Whether an operation is emitted.
+    pub fn has(&self, op: Op) -> bool {
+        self.ops.contains(&op)
+    }
+
+    /// Builds the plan for a validated spec: the requested types plus every type their
+    /// products and operations return.
+    pub fn new(spec: &Spec) -> Plan {
+        let metric = spec.metric.clone();
+        let dimension = metric.dimension();
+        let types = Types::new(dimension, spec.types.as_deref().unwrap_or(&[]));
+        let ops: BTreeSet<Op> = match &spec.ops {
+            Some(ops) => ops.clone(),
+            None => ALL_OPS.iter().copied().collect(),
+        };
+        let products: Vec<ProductKind> = ProductKind::ALL
+            .into_iter()
+            .filter(|kind| ops.contains(&product_op(*kind)))
+            .collect();
+        let paired: Vec<TypeId> = match &spec.types {
+            None => types.builtin_ids(),
+            Some(requests) => requests.iter().map(|r| types.id_of_request(r)).collect(),
+        };
+        let mut plan = Plan {
+            metric,
+            scalar: spec.scalar,
+            types,
+            emitted: Vec::new(),
+            paired,
+            products,
+            ops,
+        };
+        plan.emitted = plan.needed_types();
+        plan
+    }
+
+    /// The paired types closed under what their products and operations return.
+    fn needed_types(&self) -> Vec<TypeId> {
+        let mut needed: BTreeSet<TypeId> = self.paired.iter().copied().collect();
+        let operands: Vec<TypeId> =
+            std::iter::once(TypeId::SCALAR).chain(self.paired.iter().copied()).collect();
+        for &a in &operands {
+            for &b in &operands {
+                if a == TypeId::SCALAR && b == TypeId::SCALAR {
+                    continue;
+                }
+                for &kind in &self.products {
+                    if let Output::Type(t) = self.product_output(kind, a, b) {
+                        needed.insert(t);
+                    }
+                }
+                if self.has(Op::Add) {
+                    if let Output::Type(t) = self.sum_output(a, b) {
+                        needed.insert(t);
+                    }
+                }
+            }
+        }
+        let unary_sources: Vec<TypeId> = needed.iter().copied().collect();
+        for t in unary_sources {
+            for extra in self.unary_needs(t) {
+                needed.insert(extra);
+            }
+        }
+        needed.remove(&TypeId::SCALAR);
+        needed.into_iter().collect()
+    }
+
+    /// Types that the unary operations of `t` return or use internally.
+    fn unary_needs(&self, t: TypeId) -> Vec<TypeId> {
+        let n = self.metric.dimension();
+        let blades = &self.types.get(t).blades;
+        let mut needs = Vec::new();
+        let mut push = |output: Output| {
+            if let Output::Type(id) = output {
+                needs.push(id);
+            }
+        };
+        if self.has(Op::Dual) {
+            push(self.types.smallest_holding(blades.iter().map(|&b| self.metric.dual(b).1)));
+            push(self.types.smallest_holding(blades.iter().map(|&b| self.metric.undual(b).1)));
+        }
+        if self.has(Op::Grade) {
+            for k in self.types.grades_of(t) {
+                if k > 0 {
+                    needs.push(TypeId::grade(k));
+                }
+            }
+            if self.types.get(t).kind == TypeKind::Multivector {
+                needs.extend([TypeId::even(n), TypeId::odd(n)]);
+            }
+        }
+        if self.has(Op::Inverse) {
+            if let Output::Type(id) = self.inverse_output(t) {
+                needs.push(id);
+            }
+            if !self.has_scalar_self_product(t) {
+                needs.push(TypeId::multivector(n));
+            }
+        }
+        let kind = self.types.get(t).kind;
+        if kind == TypeKind::Grade(2) && (self.has(Op::Exp) || self.has(Op::Factor)) {
+            needs.push(TypeId::even(n));
+            needs.push(TypeId::grade(1));
+            if (4..=5).contains(&n) {
+                needs.push(TypeId::grade(4));
+            }
+            if n >= 6 {
+                needs.push(TypeId::multivector(n));
+            }
+        }
+        if self.has(Op::Factor) && matches!(kind, TypeKind::Grade(_)) {
+            needs.push(TypeId::grade(1));
+            needs.push(TypeId::multivector(n));
+        }
+        if kind == TypeKind::Even && self.has(Op::Log) && n >= 2 && n <= 4 {
+            needs.push(TypeId::grade(2));
+            if n == 4 {
+                needs.push(TypeId::grade(4));
+            }
+        }
+        needs
+    }
+
+    /// The output of a product of two types.
+    pub fn product_output(&self, kind: ProductKind, a: TypeId, b: TypeId) -> Output {
+        let terms = bilinear(
+            &self.metric,
+            kind,
+            &self.types.get(a).blades,
+            &self.types.get(b).blades,
+        );
+        self.types.smallest_holding_preferring(terms.keys().copied(), &[a, b])
+    }
+
+    /// The output of `a + b`: the smallest type holding both.
+    pub fn sum_output(&self, a: TypeId, b: TypeId) -> Output {
+        let blades = self.types.get(a).blades.iter().chain(&self.types.get(b).blades).copied();
+        self.types.smallest_holding_preferring(blades, &[a, b])
+    }
+
+    /// Whether `A ~A` is a scalar for every `A` of this type, so that the inverse is
+    /// `~A / <A ~A>`.
+    pub fn has_scalar_self_product(&self, t: TypeId) -> bool {
+        let q = quadratic_self(&self.metric, &self.types.get(t).blades, crate::algebra::Involution::Reverse);
+        q.keys().all(|&blade| blade == 0)
+    }
+
+    /// The type of `A^-1`: the inverse keeps the parity of `A` and the sign reversion
+    /// gives it, so only grades congruent to A's mod 4 can appear.
+    pub fn inverse_output(&self, t: TypeId) -> Output {
+        if self.has_scalar_self_product(t) {
+            return Output::Type(t);
+        }
+        let def = self.types.get(t);
+        match def.kind {
+            TypeKind::Grade(k) => {
+                let n = self.metric.dimension();
+                let grades: Vec<usize> = (0..=n).filter(|g| g % 4 == k % 4).collect();
+                let blades = crate::algebra::canonical_blades(n)
+                    .into_iter()
+                    .filter(|&b| grades.contains(&(crate::algebra::grade(b) as usize)));
+                self.types.smallest_holding(blades)
+            }
+            _ => Output::Type(t),
+        }
+    }
+
+    /// The emitted types that act as versors in `sandwich`.
+    pub fn versors(&self) -> Vec<TypeId> {
+        let n = self.metric.dimension();
+        [TypeId::grade(1), TypeId::even(n), TypeId::odd(n)]
+            .into_iter()
+            .filter(|t| self.emitted.contains(t))
+            .collect()
+    }
+}
+
+/// The op that switches a product on.
+pub fn product_op(kind: ProductKind) -> Op {
+    match kind {
+        ProductKind::Geometric => Op::Geometric,
+        ProductKind::Outer => Op::Outer,
+        ProductKind::Inner => Op::Inner,
+        ProductKind::LeftContraction => Op::LeftContraction,
+        ProductKind::RightContraction => Op::RightContraction,
+        ProductKind::Scalar => Op::ScalarProduct,
+        ProductKind::Commutator => Op::Commutator,
+    }
+}
+
+const ALL_OPS: [Op; 20] = [
+    Op::Geometric,
+    Op::Outer,
+    Op::Inner,
+    Op::LeftContraction,
+    Op::RightContraction,
+    Op::ScalarProduct,
+    Op::Commutator,
+    Op::Add,
+    Op::Reverse,
+    Op::GradeInvolution,
+    Op::Conjugate,
+    Op::Dual,
+    Op::Norm,
+    Op::Inverse,
+    Op::Grade,
+    Op::Sandwich,
+    Op::Reflect,
+    Op::Exp,
+    Op::Log,
+    Op::Factor,
+];
+
+impl Types {
+    /// The id of a requested type.
+    pub fn id_of_request(&self, request: &TypeRequest) -> TypeId {
+        let n = self.dimension();
+        match request {
+            TypeRequest::Grade(k) => TypeId::grade(*k),
+            TypeRequest::Even => TypeId::even(n),
+            TypeRequest::Odd => TypeId::odd(n),
+            TypeRequest::Multivector => TypeId::multivector(n),
+            TypeRequest::User { name, .. } => self.id_by_name(name),
+        }
+    }
+}

@@ -1,0 +1,9 @@
+//! The front end: the macro input parsed with its spans (`parse`), then checked and turned
+//! into a [`Spec`] that the back end can trust (`validate`).
+
+mod ctxt;
+mod parse;
+mod validate;
+
+pub use parse::{RawAlgebra, RawDerive};
+pub use validate::{grade_type_name, validate, Op, Scalar, Spec, TypeRequest};

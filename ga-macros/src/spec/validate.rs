@@ -1,0 +1,370 @@
+use std::collections::BTreeSet;
+
+use proc_macro2::Span;
+use syn::{Attribute, Expr, ExprLit, ExprUnary, Ident, Lit, UnOp, Visibility};
+
+use super::ctxt::Ctxt;
+use super::parse::{RawEntry, RawMetric, RawOps, RawSignature, RawTypes};
+use crate::algebra::{parse_blade, Blade, Metric};
+
+/// The largest dimension the generator accepts: G6 already has 4,096 terms in one full
+/// product, and each dimension more multiplies the emitted code by four.
+pub const MAX_DIMENSION: usize = 6;
+
+/// A validated request: everything the back end needs, and nothing it must re-check.
+pub struct Spec {
+    pub attrs: Vec<Attribute>,
+    pub vis: Visibility,
+    pub name: Ident,
+    pub metric: Metric,
+    pub scalar: Scalar,
+    pub types: Option<Vec<TypeRequest>>,
+    pub ops: Option<BTreeSet<Op>>,
+}
+
+/// The scalar type of the algebra.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub enum Scalar {
+    F32,
+    F64,
+}
+
+/// One entry of a `types: [...]` list.
+#[derive(Clone, PartialEq, Eq)]
+pub enum TypeRequest {
+    /// A grade 1..=n.
+    Grade(usize),
+    /// `Even` or `Rotor`.
+    Even,
+    /// `Odd`.
+    Odd,
+    /// `Multivector`.
+    Multivector,
+    /// `Name = [e12, e13]`: a struct with exactly these components.
+    User { name: String, blades: Vec<Blade> },
+}
+
+/// The operations that an `ops: [...]` list can name.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Op {
+    Geometric,
+    Outer,
+    Inner,
+    LeftContraction,
+    RightContraction,
+    ScalarProduct,
+    Commutator,
+    Add,
+    Reverse,
+    GradeInvolution,
+    Conjugate,
+    Dual,
+    Norm,
+    Inverse,
+    Grade,
+    Sandwich,
+    Reflect,
+    Exp,
+    Log,
+    Factor,
+}
+
+impl Op {
+    const NAMES: [(&'static str, Op); 20] = [
+        ("geometric", Op::Geometric),
+        ("outer", Op::Outer),
+        ("inner", Op::Inner),
+        ("left_contraction", Op::LeftContraction),
+        ("right_contraction", Op::RightContraction),
+        ("scalar_product", Op::ScalarProduct),
+        ("commutator", Op::Commutator),
+        ("add", Op::Add),
+        ("reverse", Op::Reverse),
+        ("grade_involution", Op::GradeInvolution),
+        ("conjugate", Op::Conjugate),
+        ("dual", Op::Dual),
+        ("norm", Op::Norm),
+        ("inverse", Op::Inverse),
+        ("grade", Op::Grade),
+        ("sandwich", Op::Sandwich),
+        ("reflect", Op::Reflect),
+        ("exp", Op::Exp),
+        ("log", Op::Log),
+        ("factor", Op::Factor),
+    ];
+
+    fn from_name(name: &str) -> Option<Op> {
+        Op::NAMES.iter().find(|(n, _)| *n == name).map(|&(_, op)| op)
+    }
+
+    fn expected() -> String {
+        Op::NAMES.iter().map(|(n, _)| *n).collect::<Vec<_>>().join(", ")
+    }
+
+    /// The operations whose emitted code this one calls.
+    pub fn needs(self) -> &'static [Op] {
+        match self {
+            Op::Inverse => &[Op::Reverse, Op::Norm, Op::Geometric],
+            Op::Reflect => &[Op::Sandwich, Op::Norm],
+            Op::Factor => &[Op::Geometric, Op::Outer, Op::LeftContraction, Op::Inverse],
+            _ => &[],
+        }
+    }
+}
+
+const KEYS: &str = "metric, signature, scalar, types, ops";
+
+const GRADE_NAMES: [&str; MAX_DIMENSION] =
+    ["Vector", "Bivector", "Trivector", "Quadvector", "Pentavector", "Hexavector"];
+
+/// The struct name of grade `k` (1-based).
+pub fn grade_type_name(k: usize) -> &'static str {
+    GRADE_NAMES[k - 1]
+}
+
+/// Checks the raw entries and builds the [`Spec`], reporting every problem at once.
+pub fn validate(
+    attrs: Vec<Attribute>,
+    vis: Visibility,
+    name: Ident,
+    entries: Vec<RawEntry>,
+) -> syn::Result<Spec> {
+    let mut cx = Ctxt::default();
+    let mut seen: Vec<Ident> = Vec::new();
+    let (mut metric, mut signature, mut scalar, mut types, mut ops) = (None, None, None, None, None);
+    for entry in entries {
+        let key = entry.key.to_string();
+        if let Some(first) = seen.iter().find(|k| **k == entry.key) {
+            let _ = first;
+            cx.error_spanned_by(&entry.key, format!("duplicate key `{key}`: give each key once"));
+            continue;
+        }
+        seen.push(entry.key.clone());
+        let value = entry.value;
+        match key.as_str() {
+            "metric" => match syn::parse2::<RawMetric>(value) {
+                Ok(raw) => metric = Some((entry.key, raw)),
+                Err(e) => cx.syn_error(e),
+            },
+            "signature" => match syn::parse2::<RawSignature>(value) {
+                Ok(raw) => signature = Some((entry.key, raw)),
+                Err(e) => cx.syn_error(e),
+            },
+            "scalar" => match syn::parse2::<Ident>(value.clone()) {
+                Ok(ident) if ident == "f64" => scalar = Some(Scalar::F64),
+                Ok(ident) if ident == "f32" => scalar = Some(Scalar::F32),
+                _ => cx.error_spanned_by(
+                    value.clone(),
+                    format!("unsupported scalar type `{value}`: expected f32 or f64"),
+                ),
+            },
+            "types" => match syn::parse2::<RawTypes>(value) {
+                Ok(raw) => types = Some(raw),
+                Err(e) => cx.syn_error(e),
+            },
+            "ops" => match syn::parse2::<RawOps>(value) {
+                Ok(raw) => ops = Some(raw),
+                Err(e) => cx.syn_error(e),
+            },
+            _ => cx.error_spanned_by(
+                &entry.key,
+                format!("unknown key `{key}`: expected one of {KEYS}"),
+            ),
+        }
+    }
+
+    let squares = match (metric, signature) {
+        (Some((_, raw)), None) => check_metric(&mut cx, raw),
+        (None, Some((key, raw))) => check_signature(&mut cx, &key, raw),
+        (Some(_), Some((key, _))) => {
+            cx.error_spanned_by(&key, "give either `metric` or `signature`, not both");
+            None
+        }
+        (None, None) => {
+            cx.error_spanned_by(
+                &name,
+                "missing `metric`: give the squares of e1..en, e.g. `metric: [1, 1, 1]`, \
+                 or `signature: (p, q, r)`",
+            );
+            None
+        }
+    };
+    let types = match (&squares, types) {
+        (Some(squares), Some(raw)) => Some(check_types(&mut cx, squares.len(), raw)),
+        _ => None,
+    };
+    let ops = ops.map(|raw| check_ops(&mut cx, raw));
+    cx.check()?;
+    let Some(squares) = squares else {
+        return Err(syn::Error::new(Span::call_site(), "internal: metric missing after checks"));
+    };
+    Ok(Spec {
+        attrs,
+        vis,
+        name,
+        metric: Metric::new(squares),
+        scalar: scalar.unwrap_or(Scalar::F64),
+        types,
+        ops,
+    })
+}
+
+fn metric_entry(expr: &Expr) -> Option<i64> {
+    match expr {
+        Expr::Lit(ExprLit { lit: Lit::Int(lit), .. }) => lit.base10_parse().ok(),
+        Expr::Unary(ExprUnary { op: UnOp::Neg(_), expr, .. }) => metric_entry(expr).map(|v| -v),
+        _ => None,
+    }
+}
+
+fn check_dimension(cx: &mut Ctxt, span: Span, dimension: usize) -> bool {
+    if (1..=MAX_DIMENSION).contains(&dimension) {
+        return true;
+    }
+    cx.syn_error(syn::Error::new(
+        span,
+        format!("the dimension must be 1 to {MAX_DIMENSION}, found {dimension}"),
+    ));
+    false
+}
+
+fn check_metric(cx: &mut Ctxt, raw: RawMetric) -> Option<Vec<i8>> {
+    let mut squares = Vec::new();
+    let mut ok = true;
+    for entry in &raw.entries {
+        match metric_entry(entry) {
+            Some(v @ (-1..=1)) => squares.push(v as i8),
+            _ => {
+                ok = false;
+                cx.error_spanned_by(
+                    entry,
+                    format!(
+                        "metric entry `{}` must be 1, -1 or 0 (the square of its generator)",
+                        quote::quote!(#entry)
+                    ),
+                );
+            }
+        }
+    }
+    (check_dimension(cx, raw.bracket, raw.entries.len()) && ok).then_some(squares)
+}
+
+fn check_signature(cx: &mut Ctxt, key: &Ident, raw: RawSignature) -> Option<Vec<i8>> {
+    if raw.counts.len() != 3 {
+        cx.error_spanned_by(key, "`signature` takes three counts: (p, q, r)");
+        return None;
+    }
+    let mut counts = [0usize; 3];
+    for (count, lit) in counts.iter_mut().zip(&raw.counts) {
+        match lit.base10_parse() {
+            Ok(v) => *count = v,
+            Err(e) => {
+                cx.syn_error(e);
+                return None;
+            }
+        }
+    }
+    let [p, q, r] = counts;
+    let dimension = p.saturating_add(q).saturating_add(r);
+    if !check_dimension(cx, key.span(), dimension) {
+        return None;
+    }
+    let mut squares = vec![1; p];
+    squares.extend(vec![-1; q]);
+    squares.extend(vec![0; r]);
+    Some(squares)
+}
+
+fn builtin(name: &str, dimension: usize) -> Option<TypeRequest> {
+    match name {
+        "Even" | "Rotor" => Some(TypeRequest::Even),
+        "Odd" => Some(TypeRequest::Odd),
+        "Multivector" => Some(TypeRequest::Multivector),
+        "Pseudoscalar" => Some(TypeRequest::Grade(dimension)),
+        _ => GRADE_NAMES[..dimension]
+            .iter()
+            .position(|n| *n == name)
+            .map(|k| TypeRequest::Grade(k + 1)),
+    }
+}
+
+fn check_types(cx: &mut Ctxt, dimension: usize, raw: RawTypes) -> Vec<TypeRequest> {
+    let mut requests: Vec<TypeRequest> = Vec::new();
+    let mut names: Vec<String> = Vec::new();
+    for request in raw.0 {
+        let name = request.name.to_string();
+        if names.contains(&name) {
+            cx.error_spanned_by(&request.name, format!("type `{name}` is listed twice"));
+            continue;
+        }
+        names.push(name.clone());
+        match request.blades {
+            None => match builtin(&name, dimension) {
+                Some(t) => requests.push(t),
+                None => cx.error_spanned_by(
+                    &request.name,
+                    format!(
+                        "unknown type `{name}`: expected one of {}, Pseudoscalar, Even, Rotor, \
+                         Odd, Multivector, or a new type `{name} = [e12, e13]`",
+                        GRADE_NAMES[..dimension].join(", ")
+                    ),
+                ),
+            },
+            Some(blade_idents) => {
+                if builtin(&name, MAX_DIMENSION).is_some() || name == "Zero" {
+                    cx.error_spanned_by(
+                        &request.name,
+                        format!("`{name}` is a built-in type: give the new type another name"),
+                    );
+                    continue;
+                }
+                let mut blades = Vec::new();
+                for ident in &blade_idents {
+                    match parse_blade(&ident.to_string(), dimension) {
+                        Some(b) if blades.contains(&b) => cx.error_spanned_by(
+                            ident,
+                            format!("blade `{ident}` is repeated in `{name}`"),
+                        ),
+                        Some(b) => blades.push(b),
+                        None => cx.error_spanned_by(
+                            ident,
+                            format!(
+                                "unknown blade `{ident}`: write `s` or `e` followed by ascending \
+                                 indices from 1 to {dimension}, e.g. `e12`"
+                            ),
+                        ),
+                    }
+                }
+                if blade_idents.is_empty() {
+                    cx.error_spanned_by(&request.name, format!("type `{name}` has no blades"));
+                }
+                requests.push(TypeRequest::User { name, blades });
+            }
+        }
+    }
+    requests
+}
+
+fn check_ops(cx: &mut Ctxt, raw: RawOps) -> BTreeSet<Op> {
+    let mut ops = BTreeSet::new();
+    for ident in raw.0 {
+        match Op::from_name(&ident.to_string()) {
+            Some(op) => {
+                ops.insert(op);
+            }
+            None => cx.error_spanned_by(
+                &ident,
+                format!("unknown op `{ident}`: expected one of {}", Op::expected()),
+            ),
+        }
+    }
+    let mut pending: Vec<Op> = ops.iter().copied().collect();
+    while let Some(op) = pending.pop() {
+        for &need in op.needs() {
+            if ops.insert(need) {
+                pending.push(need);
+            }
+        }
+    }
+    ops
+}

@@ -1,0 +1,278 @@
+//! The one error type of the crate.
+//!
+//! Every message is a single line that starts with the field or parameter at fault and
+//! then states the rule it broke, e.g. `body.moments: moments must be positive, got -1`.
+//! Library constructors name their own parameter (`moments`, `mass`, `points[2]`); the
+//! scene loader prefixes the section with [`Error::within`], so the same check reads
+//! `body.shape.mass: ...` when it comes from a scene file.
+
+use std::path::PathBuf;
+
+/// Everything that can go wrong in `ga-rigid`, from a bad scene file to a failed write.
+#[derive(Debug, thiserror::Error)]
+pub enum Error {
+    /// A number is NaN or infinite.
+    #[error("{field}: {what} must be finite, got {value}")]
+    NotFinite {
+        /// The field or parameter at fault.
+        field: String,
+        /// What the number is (`mass`, `moments`, `coordinates`).
+        what: &'static str,
+        /// The offending value.
+        value: f64,
+    },
+
+    /// A number that must be strictly positive is zero or negative.
+    #[error("{field}: {what} must be positive, got {value}")]
+    NotPositive {
+        /// The field or parameter at fault.
+        field: String,
+        /// What the number is (`mass`, `moments`, `radius`).
+        what: &'static str,
+        /// The offending value.
+        value: f64,
+    },
+
+    /// Principal moments that no mass distribution can have: i_a + i_b < i_c.
+    #[error(
+        "{field}: moments must satisfy the triangle inequality i_a + i_b >= i_c, \
+         but {a} + {b} < {c}"
+    )]
+    TriangleInequality {
+        /// The field or parameter at fault.
+        field: String,
+        /// The smaller of the two moments on the left.
+        a: f64,
+        /// The larger of the two moments on the left.
+        b: f64,
+        /// The moment that exceeds their sum.
+        c: f64,
+    },
+
+    /// A rotor with every component zero, which cannot be normalised.
+    #[error("{field}: the rotor is zero")]
+    ZeroRotor {
+        /// The field or parameter at fault.
+        field: String,
+    },
+
+    /// Input that describes no rigid body with an invertible inertia (collinear points,
+    /// a flat mesh, an empty list).
+    #[error("{field}: degenerate input: {reason}")]
+    Degenerate {
+        /// The field or parameter at fault.
+        field: String,
+        /// Why the input is degenerate.
+        reason: String,
+    },
+
+    /// Any other broken rule: the message after the field states it.
+    #[error("{field}: {rule}")]
+    Invalid {
+        /// The field or parameter at fault.
+        field: String,
+        /// The rule that was broken.
+        rule: String,
+    },
+
+    /// A triangle mesh that is not a closed, consistently oriented surface.
+    #[error("{field}: the mesh is not closed: {reason}")]
+    OpenMesh {
+        /// The field or parameter at fault.
+        field: String,
+        /// The first edge found that breaks the rule.
+        reason: String,
+    },
+
+    /// A malformed line in a Wavefront OBJ file.
+    #[error("{field}: {}:{line}: {message}", path.display())]
+    Obj {
+        /// The field or parameter that named the file.
+        field: String,
+        /// The OBJ file.
+        path: PathBuf,
+        /// The 1-based line number.
+        line: usize,
+        /// What is wrong with the line.
+        message: String,
+    },
+
+    /// A TOML syntax error (or a duplicated key), which has a position but no field yet.
+    #[error("{}:{line}:{column}: {message}", path.display())]
+    Toml {
+        /// The scene file.
+        path: PathBuf,
+        /// The 1-based line number.
+        line: usize,
+        /// The 1-based column number.
+        column: usize,
+        /// The parser's message, joined onto one line.
+        message: String,
+    },
+
+    /// An input file that could not be read.
+    #[error("{field}: cannot read {}: {source}", path.display())]
+    Read {
+        /// The field or argument that named the file.
+        field: String,
+        /// The file.
+        path: PathBuf,
+        /// The operating system's reason.
+        source: std::io::Error,
+    },
+
+    /// An output file or stream that could not be written.
+    #[error("{field}: cannot write {}: {source}", path.display())]
+    Write {
+        /// The argument that named the output.
+        field: String,
+        /// The file (`-` for standard output).
+        path: PathBuf,
+        /// The operating system's reason.
+        source: std::io::Error,
+    },
+
+    /// A feature whose implementation has not landed yet.
+    #[error("{what}: not available yet")]
+    NotAvailable {
+        /// The command or method that is missing.
+        what: String,
+    },
+}
+
+impl Error {
+    /// Shorthand for [`Error::Invalid`].
+    pub fn invalid(field: impl Into<String>, rule: impl Into<String>) -> Self {
+        Error::Invalid {
+            field: field.into(),
+            rule: rule.into(),
+        }
+    }
+
+    /// Shorthand for [`Error::Degenerate`].
+    pub fn degenerate(field: impl Into<String>, reason: impl Into<String>) -> Self {
+        Error::Degenerate {
+            field: field.into(),
+            reason: reason.into(),
+        }
+    }
+
+    /// Prefix the field with the section it was read from: `mass` within `body.shape`
+    /// becomes `body.shape.mass`; `points[2]` within `body` becomes `body.points[2]`.
+    #[must_use]
+    pub fn within(mut self, prefix: &str) -> Self {
+        if let Some(field) = self.field_mut() {
+            *field = if field.is_empty() {
+                prefix.to_string()
+            } else if field.starts_with('[') {
+                format!("{prefix}{field}")
+            } else {
+                format!("{prefix}.{field}")
+            };
+        }
+        self
+    }
+
+    /// Replace the field outright, for checks whose own parameter name means nothing to
+    /// the user (a file read on behalf of `body.mesh`).
+    #[must_use]
+    pub fn at(mut self, field: &str) -> Self {
+        if let Some(f) = self.field_mut() {
+            *f = field.to_string();
+        }
+        self
+    }
+
+    /// The field or parameter the error names, if it names one.
+    pub fn field(&self) -> Option<&str> {
+        match self {
+            Error::NotFinite { field, .. }
+            | Error::NotPositive { field, .. }
+            | Error::TriangleInequality { field, .. }
+            | Error::ZeroRotor { field }
+            | Error::Degenerate { field, .. }
+            | Error::Invalid { field, .. }
+            | Error::OpenMesh { field, .. }
+            | Error::Obj { field, .. }
+            | Error::Read { field, .. }
+            | Error::Write { field, .. } => Some(field),
+            Error::Toml { .. } | Error::NotAvailable { .. } => None,
+        }
+    }
+
+    fn field_mut(&mut self) -> Option<&mut String> {
+        match self {
+            Error::NotFinite { field, .. }
+            | Error::NotPositive { field, .. }
+            | Error::TriangleInequality { field, .. }
+            | Error::ZeroRotor { field }
+            | Error::Degenerate { field, .. }
+            | Error::Invalid { field, .. }
+            | Error::OpenMesh { field, .. }
+            | Error::Obj { field, .. }
+            | Error::Read { field, .. }
+            | Error::Write { field, .. } => Some(field),
+            Error::Toml { .. } | Error::NotAvailable { .. } => None,
+        }
+    }
+
+    /// The process exit status for this error: 2 for bad input (the user can fix the
+    /// command line or the files), 1 for failures of the environment or of the program.
+    pub fn exit_code(&self) -> u8 {
+        match self {
+            Error::Write { .. } | Error::NotAvailable { .. } => 1,
+            _ => 2,
+        }
+    }
+}
+
+/// Check that a number is finite.
+pub(crate) fn finite(field: &str, what: &'static str, value: f64) -> Result<f64, Error> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(Error::NotFinite {
+            field: field.to_string(),
+            what,
+            value,
+        })
+    }
+}
+
+/// Check that a number is finite and strictly positive.
+pub(crate) fn positive(field: &str, what: &'static str, value: f64) -> Result<f64, Error> {
+    finite(field, what, value)?;
+    if value > 0.0 {
+        Ok(value)
+    } else {
+        Err(Error::NotPositive {
+            field: field.to_string(),
+            what,
+            value,
+        })
+    }
+}
+
+/// Check that every component of a vector is finite.
+pub(crate) fn finite3(field: &str, what: &'static str, v: [f64; 3]) -> Result<[f64; 3], Error> {
+    for x in v {
+        finite(field, what, x)?;
+    }
+    Ok(v)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn within_prefixes_plain_and_indexed_fields() {
+        let e = positive("moments", "moments", -1.0).unwrap_err().within("body");
+        assert_eq!(
+            e.to_string(),
+            "body.moments: moments must be positive, got -1"
+        );
+        let e = Error::invalid("[2]", "x").within("body.points");
+        assert_eq!(e.to_string(), "body.points[2]: x");
+    }
+}

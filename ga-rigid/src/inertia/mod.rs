@@ -1,0 +1,18 @@
+//! Inertia on bivectors: the map, its constructors (principal moments, solids, point
+//! masses, closed meshes) and the symmetric eigen-solver behind them.
+
+mod eigen;
+#[allow(clippy::module_inception)] // the module is named after the one type it holds
+mod inertia;
+mod mesh;
+mod point_masses;
+mod solids;
+
+pub use eigen::{
+    determinant, identity, matrix_from_rotor, mul_vec, multiply, rotor_from_matrix,
+    symmetric_eigen, transpose, Matrix3, SymmetricEigen,
+};
+pub use inertia::Inertia;
+pub(crate) use inertia::normalize_rotor;
+pub use mesh::{Mesh, MeshMoments};
+pub use solids::Solid;

@@ -1,0 +1,392 @@
+//! Scene files: a rigid body, its initial state, the run length and an optional torque,
+//! in TOML.
+//!
+//! ```toml
+//! [body]                      # exactly one of moments, shape, points, mesh
+//! moments = [2.0, 1.0, 0.6666666666666666]
+//! # shape = { kind = "box", mass = 2.0, size = [1, 2, 3] }
+//! # points = [[1.0, 0, 0, 1], [1.0, 0, 1, 0], [1.0, 1, 0, 0]]   # [m, x, y, z]
+//! # mesh = "body.obj"         # relative to this file; needs density = ...
+//!
+//! [initial]
+//! rotor = [1, 0, 0, 0]        # [s, e12, e13, e23], normalised on load
+//! omega = [0.45, 0, 1.4]      # body angular velocity w; Omega_B = I w
+//!
+//! [run]
+//! t_end = 10.0
+//! samples = 101               # output rows, including t = 0 and t = t_end
+//!
+//! [torque]                    # optional: uniform gravity
+//! g = [0, 0, -9.81]           # space frame
+//! com_offset = [0, 0, 0.1]    # body frame, from the fixed point to the centre of mass
+//! ```
+//!
+//! Loading goes in three stages, so that every error names its field: the TOML parser
+//! (syntax, duplicated keys: reported with line and column), serde on the parsed value
+//! (missing, unknown and mistyped fields: reported with the dotted path serde's value
+//! deserializer records), and the checks of this module and of the inertia constructors
+//! (non-finite numbers, non-positive moments, ...: named by [`Error::within`]).
+
+use std::path::{Path, PathBuf};
+
+use ga_core::f64::g3::*;
+use serde::Deserialize;
+
+use crate::error::{finite3, positive, Error};
+use crate::inertia::{normalize_rotor, Inertia, Mesh, Solid};
+
+/// A parsed and validated scene.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Scene {
+    /// How the body was described in the file.
+    pub body: BodySpec,
+    /// The body's inertia about its centre of mass, computed from `body`.
+    pub inertia: Inertia,
+    /// The initial attitude and angular velocity.
+    pub initial: Initial,
+    /// The length and sampling of the run.
+    pub run: Run,
+    /// Uniform gravity, when the scene has a `[torque]` section.
+    pub torque: Option<Gravity>,
+}
+
+/// The `[body]` section: one of the four ways to describe a body.
+#[derive(Clone, Debug, PartialEq)]
+pub enum BodySpec {
+    /// `moments = [i1, i2, i3]`: principal moments about e1, e2, e3 of the body frame.
+    Moments([f64; 3]),
+    /// `shape = { kind = ..., mass = ..., ... }`: a standard solid.
+    Shape(Solid),
+    /// `points = [[m, x, y, z], ...]`: point masses.
+    Points(Vec<(f64, [f64; 3])>),
+    /// `mesh = "file.obj"` with `density`: a closed triangle mesh.
+    Mesh {
+        /// The OBJ file, resolved against the scene file's directory.
+        path: PathBuf,
+        /// The density of the enclosed solid.
+        density: f64,
+    },
+}
+
+/// The `[initial]` section.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Initial {
+    /// The initial attitude (body to space: `y = R x ~R`), normalised.
+    pub rotor: Rotor,
+    /// The initial body angular velocity `[w1, w2, w3]`.
+    pub omega: [f64; 3],
+}
+
+impl Initial {
+    /// The body angular velocity as a bivector: `Omega_B = I w = w1 e23 - w2 e13 + w3 e12`.
+    #[must_use]
+    pub fn omega_bivector(&self) -> Bivector {
+        let [w1, w2, w3] = self.omega;
+        Bivector::new(w3, -w2, w1)
+    }
+}
+
+/// The `[run]` section.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Run {
+    /// The end time (positive); the run starts at t = 0.
+    pub t_end: f64,
+    /// The number of output rows, evenly spaced from 0 to `t_end` inclusive (at least 2).
+    pub samples: usize,
+}
+
+impl Run {
+    /// The sample times `k t_end / (samples - 1)`, the last one exactly `t_end`.
+    #[must_use]
+    pub fn times(&self) -> Vec<f64> {
+        let last = self.samples - 1;
+        (0..self.samples)
+            .map(|k| {
+                if k == last {
+                    self.t_end
+                } else {
+                    self.t_end * k as f64 / last as f64
+                }
+            })
+            .collect()
+    }
+}
+
+/// The `[torque]` section: uniform gravity acting at the centre of mass.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Gravity {
+    /// The gravitational acceleration in the space frame.
+    pub g: Vector,
+    /// The centre of mass relative to the fixed point, in the body frame.
+    pub com_offset: Vector,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SceneFile {
+    body: BodyFile,
+    initial: InitialFile,
+    run: RunFile,
+    torque: Option<TorqueFile>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct BodyFile {
+    moments: Option<[f64; 3]>,
+    shape: Option<Solid>,
+    points: Option<Vec<[f64; 4]>>,
+    mesh: Option<PathBuf>,
+    density: Option<f64>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct InitialFile {
+    rotor: [f64; 4],
+    omega: [f64; 3],
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RunFile {
+    t_end: f64,
+    // Signed, so that a negative count gets this module's message rather than serde's.
+    samples: i64,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct TorqueFile {
+    g: [f64; 3],
+    com_offset: [f64; 3],
+}
+
+impl Scene {
+    /// Read and validate a scene file; errors naming the file's own problems use the
+    /// field `SCENE`.
+    pub fn load(path: &Path) -> Result<Scene, Error> {
+        let text = std::fs::read_to_string(path).map_err(|source| Error::Read {
+            field: "SCENE".to_string(),
+            path: path.to_path_buf(),
+            source,
+        })?;
+        Scene::parse(&text, path)
+    }
+
+    /// Parse and validate scene text; `path` is the file it came from (for messages and
+    /// to resolve a relative `mesh` path).
+    pub fn parse(text: &str, path: &Path) -> Result<Scene, Error> {
+        let table: toml::Table = toml::from_str(text).map_err(|e| syntax_error(&e, text, path))?;
+        let file: SceneFile = toml::Value::Table(table)
+            .try_into()
+            .map_err(|e: toml::de::Error| field_error(&e))?;
+
+        let (body, inertia) = load_body(file.body, path)?;
+
+        let rotor = normalize_rotor("initial.rotor", file.initial.rotor)?;
+        let omega = finite3("initial.omega", "angular velocity", file.initial.omega)?;
+
+        let t_end = positive("run.t_end", "t_end", file.run.t_end)?;
+        let samples = file.run.samples;
+        if samples < 2 {
+            return Err(Error::invalid(
+                "run.samples",
+                format!("samples must be at least 2, got {samples}"),
+            ));
+        }
+        let samples = usize::try_from(samples).map_err(|_| {
+            Error::invalid("run.samples", format!("samples {samples} does not fit in memory"))
+        })?;
+
+        let torque = match file.torque {
+            None => None,
+            Some(t) => {
+                let [gx, gy, gz] = finite3("torque.g", "gravity", t.g)?;
+                let [cx, cy, cz] = finite3("torque.com_offset", "offset", t.com_offset)?;
+                Some(Gravity {
+                    g: Vector::new(gx, gy, gz),
+                    com_offset: Vector::new(cx, cy, cz),
+                })
+            }
+        };
+
+        Ok(Scene {
+            body,
+            inertia,
+            initial: Initial { rotor, omega },
+            run: Run { t_end, samples },
+            torque,
+        })
+    }
+}
+
+/// Pick the one body description and compute its inertia.
+fn load_body(body: BodyFile, scene_path: &Path) -> Result<(BodySpec, Inertia), Error> {
+    let given: Vec<&str> = [
+        ("moments", body.moments.is_some()),
+        ("shape", body.shape.is_some()),
+        ("points", body.points.is_some()),
+        ("mesh", body.mesh.is_some()),
+    ]
+    .into_iter()
+    .filter_map(|(name, present)| present.then_some(name))
+    .collect();
+    if given.len() != 1 {
+        let got = if given.is_empty() {
+            "none".to_string()
+        } else {
+            given
+                .iter()
+                .map(|g| format!("`{g}`"))
+                .collect::<Vec<_>>()
+                .join(" and ")
+        };
+        return Err(Error::invalid(
+            "body",
+            format!("exactly one of `moments`, `shape`, `points`, `mesh` must be given, got {got}"),
+        ));
+    }
+    if body.density.is_some() && body.mesh.is_none() {
+        return Err(Error::invalid(
+            "body.density",
+            "density is only used with `mesh`",
+        ));
+    }
+
+    if let Some(moments) = body.moments {
+        let inertia = Inertia::from_principal(moments).map_err(|e| e.within("body"))?;
+        return Ok((BodySpec::Moments(moments), inertia));
+    }
+    if let Some(solid) = body.shape {
+        let inertia = solid.inertia().map_err(|e| e.within("body.shape"))?;
+        return Ok((BodySpec::Shape(solid), inertia));
+    }
+    if let Some(points) = body.points {
+        let points: Vec<(f64, [f64; 3])> = points
+            .into_iter()
+            .map(|[m, x, y, z]| (m, [x, y, z]))
+            .collect();
+        let inertia = Inertia::from_point_masses(&points).map_err(|e| e.within("body"))?;
+        return Ok((BodySpec::Points(points), inertia));
+    }
+    // Exactly one description was given and it is not one of the three above.
+    let mesh_path = body.mesh.unwrap_or_default();
+    let density = body.density.ok_or_else(|| {
+        Error::invalid("body.density", "missing field: `mesh` needs a `density`")
+    })?;
+    positive("body.density", "density", density)?;
+    let path = match scene_path.parent() {
+        Some(dir) if mesh_path.is_relative() => dir.join(&mesh_path),
+        _ => mesh_path,
+    };
+    let mesh = Mesh::read_obj(&path).map_err(|e| e.within("body"))?;
+    let inertia = Inertia::from_mesh(&mesh, density).map_err(|e| e.within("body"))?;
+    Ok((BodySpec::Mesh { path, density }, inertia))
+}
+
+/// A TOML syntax error (or duplicated key, which the parser reports) as one line with
+/// its position.
+fn syntax_error(e: &toml::de::Error, text: &str, path: &Path) -> Error {
+    let (line, column) = match e.span() {
+        Some(span) => {
+            // Bytes, not chars: a span need not fall on a char boundary of `text`.
+            let before = &text.as_bytes()[..span.start.min(text.len())];
+            let line = before.iter().filter(|&&b| b == b'\n').count() + 1;
+            let column = before.len() - before.iter().rposition(|&b| b == b'\n').map_or(0, |i| i + 1) + 1;
+            (line, column)
+        }
+        None => (0, 0),
+    };
+    Error::Toml {
+        path: path.to_path_buf(),
+        line,
+        column,
+        message: one_line(e.message()),
+    }
+}
+
+/// A serde error on the parsed document, turned into `section.field: rule`.
+///
+/// toml's value deserializer appends the dotted key path as a final line "in `a.b`";
+/// serde's own messages name the field for unknown and missing fields. Combining the
+/// two gives the full path of the offending field.
+fn field_error(e: &toml::de::Error) -> Error {
+    let message = e.message();
+    let display = e.to_string();
+    let path = display
+        .lines()
+        .rev()
+        .find_map(|l| l.strip_prefix("in `").and_then(|l| l.strip_suffix('`')))
+        .unwrap_or("")
+        .to_string();
+    let join = |name: &str| {
+        if path.is_empty() {
+            name.to_string()
+        } else {
+            format!("{path}.{name}")
+        }
+    };
+    if let Some(rest) = message.strip_prefix("unknown field `") {
+        if let Some((name, expected)) = rest.split_once('`') {
+            let expected = expected.trim_start_matches(", ");
+            return Error::invalid(join(name), format!("unknown field, {expected}"));
+        }
+    }
+    if let Some(rest) = message.strip_prefix("missing field `") {
+        if let Some((name, _)) = rest.split_once('`') {
+            let what = if path.is_empty() { "section" } else { "field" };
+            return Error::invalid(join(name), format!("missing {what}"));
+        }
+    }
+    let field = if path.is_empty() {
+        "SCENE".to_string()
+    } else {
+        path
+    };
+    Error::invalid(field, one_line(message))
+}
+
+fn one_line(message: &str) -> String {
+    message
+        .lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty())
+        .collect::<Vec<_>>()
+        .join("; ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse(text: &str) -> Result<Scene, Error> {
+        Scene::parse(text, Path::new("scene.toml"))
+    }
+
+    const RUN: &str = "[initial]\nrotor = [1, 0, 0, 0]\nomega = [1, 0, 0]\n[run]\nt_end = 1\nsamples = 3\n";
+
+    #[test]
+    fn minimal_scene_loads_and_normalises_the_rotor() {
+        let s = parse(&format!(
+            "[body]\nmoments = [1, 2, 2.5]\n{}",
+            RUN.replace("[1, 0, 0, 0]", "[2, 0, 0, 0]")
+        ))
+        .unwrap();
+        assert_eq!(s.initial.rotor, Rotor::ONE);
+        assert_eq!(s.inertia.moments(), [1.0, 2.0, 2.5]);
+        assert_eq!(s.run.times(), vec![0.0, 0.5, 1.0]);
+    }
+
+    #[test]
+    fn nested_unknown_field_names_its_full_path() {
+        let e = parse(&format!(
+            "[body]\nshape = {{ kind = \"box\", mass = 1, size = [1, 1, 1], colour = 3 }}\n{RUN}"
+        ))
+        .unwrap_err();
+        assert!(
+            e.to_string().starts_with("body.shape.colour: unknown field"),
+            "{e}"
+        );
+    }
+}
