@@ -10,9 +10,9 @@
 use glam::{DQuat, DVec3, Quat, Vec3};
 use nalgebra::{Quaternion, RealField, UnitQuaternion, Vector3};
 use ultraviolet::{
-    f32x4, f32x8, f64x2, f64x4, Bivec3, Bivec3x4, Bivec3x8, DBivec3, DBivec3x2, DBivec3x4,
-    DRotor3, DRotor3x2, DRotor3x4, DVec3 as UvDVec3, DVec3x2, DVec3x4, Rotor3, Rotor3x4,
-    Rotor3x8, Vec3 as UvVec3, Vec3x4, Vec3x8,
+    f32x4, f32x8, f64x2, f64x4, Bivec3, Bivec3x4, Bivec3x8, DBivec3, DBivec3x2, DBivec3x4, DRotor3,
+    DRotor3x2, DRotor3x4, DVec3 as UvDVec3, DVec3x2, DVec3x4, Rotor3, Rotor3x4, Rotor3x8,
+    Vec3 as UvVec3, Vec3x4, Vec3x8,
 };
 
 /// A type built from a G3 rotor `[s, e12, e13, e23]` (per lane for wide types).
@@ -62,7 +62,11 @@ pub fn pack<S: Copy, V: Lanes<S, L>, T, const L: usize, const K: usize>(
 ) -> Vec<T> {
     items
         .chunks_exact(L)
-        .map(|chunk| build(std::array::from_fn(|k| V::from_lanes(std::array::from_fn(|l| chunk[l][k])))))
+        .map(|chunk| {
+            build(std::array::from_fn(|k| {
+                V::from_lanes(std::array::from_fn(|l| chunk[l][k]))
+            }))
+        })
         .collect()
 }
 
@@ -181,14 +185,25 @@ mod tests {
         for (r, v) in g3_rotors(200, 1).into_iter().zip(g3_vectors(200, 2)) {
             let rotor = b.algebra.embed(&b.even, &r);
             let vector = b.algebra.embed(&b.vector, &v);
-            let expected = b.algebra.extract(&b.vector, &b.algebra.sandwich(&rotor, &vector));
+            let expected = b
+                .algebra
+                .extract(&b.vector, &b.algebra.sandwich(&rotor, &vector));
 
             let glam = DQuat::from_rotor3(r).mul_vec3(DVec3::from_vector3(v));
             let na = UnitQuaternion::from_rotor3(r) * Vector3::from_vector3(v);
             let uv = DRotor3::from_rotor3(r) * UvDVec3::from_vector3(v);
-            assert!(close(&expected, &glam.to_array()), "glam {expected:?} {glam:?}");
-            assert!(close(&expected, na.as_slice()), "nalgebra {expected:?} {na:?}");
-            assert!(close(&expected, &[uv.x, uv.y, uv.z]), "ultraviolet {expected:?} {uv:?}");
+            assert!(
+                close(&expected, &glam.to_array()),
+                "glam {expected:?} {glam:?}"
+            );
+            assert!(
+                close(&expected, na.as_slice()),
+                "nalgebra {expected:?} {na:?}"
+            );
+            assert!(
+                close(&expected, &[uv.x, uv.y, uv.z]),
+                "ultraviolet {expected:?} {uv:?}"
+            );
         }
     }
 
@@ -198,10 +213,9 @@ mod tests {
         let rotors = g3_rotors(200, 3);
         for pair in rotors.windows(2) {
             let (p, q) = (pair[0], pair[1]);
-            let product = b.algebra.geometric(
-                &b.algebra.embed(&b.even, &p),
-                &b.algebra.embed(&b.even, &q),
-            );
+            let product = b
+                .algebra
+                .geometric(&b.algebra.embed(&b.even, &p), &b.algebra.embed(&b.even, &q));
             let e = b.algebra.extract(&b.even, &product);
             let as_glam = DQuat::from_rotor3([e[0], e[1], e[2], e[3]]);
             let glam = DQuat::from_rotor3(p) * DQuat::from_rotor3(q);

@@ -10,7 +10,11 @@ impl XorShift64 {
     /// A generator started from `seed`; a zero seed is replaced, since zero is a fixed point.
     #[must_use]
     pub fn new(seed: u64) -> Self {
-        let state = if seed == 0 { 0x9E37_79B9_7F4A_7C15 } else { seed };
+        let state = if seed == 0 {
+            0x9E37_79B9_7F4A_7C15
+        } else {
+            seed
+        };
         Self { state }
     }
 

@@ -421,10 +421,18 @@ mod tests {
     }
 
     #[test]
-    fn g3_blade_squares_are_plus_one_for_vectors_and_minus_one_for_bivectors_and_the_pseudoscalar(
-    ) {
+    fn g3_blade_squares_are_plus_one_for_vectors_and_minus_one_for_bivectors_and_the_pseudoscalar()
+    {
         let g3 = G3::euclidean();
-        for (mask, square) in [(E1, 1), (E2, 1), (E3, 1), (E12, -1), (E13, -1), (E23, -1), (E123, -1)] {
+        for (mask, square) in [
+            (E1, 1),
+            (E2, 1),
+            (E3, 1),
+            (E12, -1),
+            (E13, -1),
+            (E23, -1),
+            (E123, -1),
+        ] {
             assert_eq!(g3.blade_product(mask, mask), (square, 0), "blade {mask:#b}");
         }
     }
@@ -486,7 +494,10 @@ mod tests {
 
     #[test]
     fn canonical_order_is_grade_then_lexicographic() {
-        assert_eq!(G3::euclidean().canonical_blades(), [0, E1, E2, E3, E12, E13, E23, E123]);
+        assert_eq!(
+            G3::euclidean().canonical_blades(),
+            [0, E1, E2, E3, E12, E13, E23, E123]
+        );
         let g4 = G4::euclidean();
         assert_eq!(
             g4.blades_of_grades(&[2]),

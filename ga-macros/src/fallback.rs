@@ -5,7 +5,10 @@ use proc_macro2::TokenStream;
 use quote::quote;
 
 /// The compile errors and, when the module's name is known, an empty stand-in.
-pub fn with_errors(error: syn::Error, stand_in: Option<(&syn::Visibility, &syn::Ident)>) -> TokenStream {
+pub fn with_errors(
+    error: syn::Error,
+    stand_in: Option<(&syn::Visibility, &syn::Ident)>,
+) -> TokenStream {
     let errors = error.into_compile_error();
     match stand_in {
         Some((vis, name)) => quote! {

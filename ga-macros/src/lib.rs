@@ -49,8 +49,13 @@ pub fn algebra(input: TokenStream) -> TokenStream {
 #[proc_macro_derive(Algebra, attributes(algebra))]
 pub fn derive_algebra(input: TokenStream) -> TokenStream {
     let input = syn::parse_macro_input!(input as syn::DeriveInput);
-    expand::derive(input).unwrap_or_else(|e| fallback::with_errors(e, None)).into()
+    expand::derive(input)
+        .unwrap_or_else(|e| fallback::with_errors(e, None))
+        .into()
 }
 
 #[cfg(test)]
 mod snapshot_tests;
+
+#[cfg(test)]
+mod restriction_tests;

@@ -17,9 +17,12 @@ fn check(name: &str, input: &str) {
          // Do not edit: rewrite with `GA_SNAPSHOTS=overwrite cargo test -p ga-macros`.\n\n"
     );
     let actual = header + &expansion(input);
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("snapshots").join(format!("{name}.rs"));
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("snapshots")
+        .join(format!("{name}.rs"));
     if std::env::var("GA_SNAPSHOTS").as_deref() == Ok("overwrite") {
-        std::fs::create_dir_all(path.parent().expect("snapshot folder")).expect("create snapshots/");
+        std::fs::create_dir_all(path.parent().expect("snapshot folder"))
+            .expect("create snapshots/");
         std::fs::write(&path, &actual).expect("write snapshot");
         return;
     }

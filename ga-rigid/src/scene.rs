@@ -3,7 +3,9 @@
 //!
 //! ```toml
 //! [body]                      # exactly one of moments, shape, points, mesh
-//! moments = [2.0, 1.0, 0.6666666666666666]
+//! moments = [1.0, 2.0, 2.5]
+//! # allow_unphysical = true  # with moments only: skip the triangle inequality, for
+//! #                          # test bodies such as (2, 1, 2/3) that no mass distribution has
 //! # shape = { kind = "box", mass = 2.0, size = [1, 2, 3] }
 //! # points = [[1.0, 0, 0, 1], [1.0, 0, 1, 0], [1.0, 1, 0, 0]]   # [m, x, y, z]
 //! # mesh = "body.obj"         # relative to this file; needs density = ...
@@ -138,6 +140,7 @@ struct BodyFile {
     points: Option<Vec<[f64; 4]>>,
     mesh: Option<PathBuf>,
     density: Option<f64>,
+    allow_unphysical: Option<bool>,
 }
 
 #[derive(Deserialize)]
@@ -254,8 +257,20 @@ fn load_body(body: BodyFile, scene_path: &Path) -> Result<(BodySpec, Inertia), E
         ));
     }
 
+    if body.allow_unphysical.is_some() && body.moments.is_none() {
+        return Err(Error::invalid(
+            "body.allow_unphysical",
+            "allow_unphysical is only used with `moments`",
+        ));
+    }
+
     if let Some(moments) = body.moments {
-        let inertia = Inertia::from_principal(moments).map_err(|e| e.within("body"))?;
+        let inertia = if body.allow_unphysical == Some(true) {
+            Inertia::from_principal_unphysical(moments)
+        } else {
+            Inertia::from_principal(moments)
+        }
+        .map_err(|e| e.within("body"))?;
         return Ok((BodySpec::Moments(moments), inertia));
     }
     if let Some(solid) = body.shape {
@@ -285,25 +300,68 @@ fn load_body(body: BodyFile, scene_path: &Path) -> Result<(BodySpec, Inertia), E
     Ok((BodySpec::Mesh { path, density }, inertia))
 }
 
-/// A TOML syntax error (or duplicated key, which the parser reports) as one line with
-/// its position.
+/// A TOML syntax error as one line with its position; a duplicated key (which the
+/// parser reports as "duplicate key `k` in table `t`") is named as the field `t.k`.
 fn syntax_error(e: &toml::de::Error, text: &str, path: &Path) -> Error {
     let (line, column) = match e.span() {
         Some(span) => {
             // Bytes, not chars: a span need not fall on a char boundary of `text`.
             let before = &text.as_bytes()[..span.start.min(text.len())];
             let line = before.iter().filter(|&&b| b == b'\n').count() + 1;
-            let column = before.len() - before.iter().rposition(|&b| b == b'\n').map_or(0, |i| i + 1) + 1;
-            (line, column)
+            let start = before.iter().rposition(|&b| b == b'\n').map_or(0, |i| i + 1);
+            (line, before.len() - start + 1)
         }
         None => (0, 0),
     };
+    let message = one_line(e.message());
+    if let Some(field) = duplicated_key(&message, text, e.span().map_or(0, |s| s.start)) {
+        return Error::invalid(
+            field,
+            format!(
+                "duplicated key (again at {}:{line}); each field may appear once",
+                path.display()
+            ),
+        );
+    }
     Error::Toml {
         path: path.to_path_buf(),
         line,
         column,
-        message: one_line(e.message()),
+        message,
     }
+}
+
+/// The dotted field of a "duplicate key `k` in table `t`" or "... in document root"
+/// message. Inside an inline table the parser names neither, so the table is found from
+/// the text: the last `[header]` before `offset` and the key that starts its line.
+fn duplicated_key(message: &str, text: &str, offset: usize) -> Option<String> {
+    let rest = &message[message.find("duplicate key `")? + "duplicate key `".len()..];
+    let (key, rest) = rest.split_once('`')?;
+    if let Some(table) = rest
+        .strip_prefix(" in table `")
+        .and_then(|t| t.split_once('`'))
+        .map(|(t, _)| t)
+    {
+        return Some(format!("{table}.{key}"));
+    }
+    if rest.starts_with(" in document root") {
+        return Some(key.to_string());
+    }
+    let before = text.get(..offset.min(text.len()))?;
+    let line = before.rsplit('\n').next().unwrap_or("");
+    let outer = line.split_once('=').map(|(k, _)| k.trim()).unwrap_or("");
+    let header = before
+        .lines()
+        .rev()
+        .map(str::trim)
+        .find(|l| l.starts_with('[') && l.ends_with(']'))
+        .map(|l| l.trim_matches(|c| c == '[' || c == ']').trim())
+        .unwrap_or("");
+    let path: Vec<&str> = [header, outer, key]
+        .into_iter()
+        .filter(|p| !p.is_empty())
+        .collect();
+    Some(path.join("."))
 }
 
 /// A serde error on the parsed document, turned into `section.field: rule`.
@@ -330,7 +388,8 @@ fn field_error(e: &toml::de::Error) -> Error {
     if let Some(rest) = message.strip_prefix("unknown field `") {
         if let Some((name, expected)) = rest.split_once('`') {
             let expected = expected.trim_start_matches(", ");
-            return Error::invalid(join(name), format!("unknown field, {expected}"));
+            let what = if path.is_empty() { "section" } else { "field" };
+            return Error::invalid(join(name), format!("unknown {what}, {expected}"));
         }
     }
     if let Some(rest) = message.strip_prefix("missing field `") {

@@ -52,7 +52,12 @@ pub fn batch2<A: Copy, B: Copy, O>(
     g.bench_function(id, |bencher| {
         bencher.iter(|| {
             out.clear();
-            out.extend(black_box(a).iter().zip(black_box(b)).map(|(&x, &y)| f(x, y)));
+            out.extend(
+                black_box(a)
+                    .iter()
+                    .zip(black_box(b))
+                    .map(|(&x, &y)| f(x, y)),
+            );
             black_box(&mut out);
         })
     });
@@ -60,7 +65,12 @@ pub fn batch2<A: Copy, B: Copy, O>(
 
 /// Throughput of an in-place batch kernel (ultraviolet's `rotate_vecs`). The items are
 /// transformed again on every iteration, so `f` must keep them bounded (a rotation).
-pub fn in_place<T>(g: &mut BenchmarkGroup<WallTime>, id: &str, items: &mut [T], f: impl Fn(&mut [T])) {
+pub fn in_place<T>(
+    g: &mut BenchmarkGroup<WallTime>,
+    id: &str,
+    items: &mut [T],
+    f: impl Fn(&mut [T]),
+) {
     g.bench_function(id, |bencher| bencher.iter(|| f(black_box(&mut *items))));
 }
 

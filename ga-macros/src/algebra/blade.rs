@@ -8,7 +8,10 @@ pub fn grade(blade: Blade) -> u32 {
 
 /// The indices of a blade's generators, ascending and 1-based.
 fn indices(blade: Blade) -> Vec<u32> {
-    (0..32).filter(|i| blade & (1 << i) != 0).map(|i| i + 1).collect()
+    (0..32)
+        .filter(|i| blade & (1 << i) != 0)
+        .map(|i| i + 1)
+        .collect()
 }
 
 /// The field name of a blade: `s` for the scalar, otherwise `e` and the ascending indices.

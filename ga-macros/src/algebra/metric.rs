@@ -53,6 +53,7 @@ impl ProductKind {
 }
 
 /// The grade-sign rules that map each blade to plus or minus itself.
+#[allow(clippy::enum_variant_names)] // `GradeInvolution` is the name of the operation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Involution {
     /// Leaves every blade alone.
@@ -69,8 +70,8 @@ impl Involution {
     /// The sign this involution puts on a blade.
     pub fn sign(self, blade: Blade) -> i8 {
         let k = grade(blade);
-        let reverse = if (k / 2) % 2 == 0 { 1 } else { -1 };
-        let parity = if k % 2 == 0 { 1 } else { -1 };
+        let reverse = if (k / 2).is_multiple_of(2) { 1 } else { -1 };
+        let parity = if k.is_multiple_of(2) { 1 } else { -1 };
         match self {
             Involution::Identity => 1,
             Involution::Reverse => reverse,
@@ -190,7 +191,12 @@ mod tests {
 
     #[test]
     fn geometric_product_is_associative_on_blades_for_every_metric() {
-        for squares in [vec![1, 1, 1, 1], vec![1, -1, -1, -1], vec![1, 1, 1, 0], vec![1, 1, 1, 1, -1]] {
+        for squares in [
+            vec![1, 1, 1, 1],
+            vec![1, -1, -1, -1],
+            vec![1, 1, 1, 0],
+            vec![1, 1, 1, 1, -1],
+        ] {
             let m = Metric::new(squares);
             let blades = canonical_blades(m.dimension());
             for &a in &blades {
@@ -223,11 +229,20 @@ mod tests {
         let m = g3();
         assert_eq!(m.product(ProductKind::Outer, 0b001, 0b010), (1, 0b011));
         assert_eq!(m.product(ProductKind::Outer, 0b001, 0b001).0, 0);
-        assert_eq!(m.product(ProductKind::LeftContraction, 0b001, 0b011), (1, 0b010));
+        assert_eq!(
+            m.product(ProductKind::LeftContraction, 0b001, 0b011),
+            (1, 0b010)
+        );
         assert_eq!(m.product(ProductKind::LeftContraction, 0b011, 0b001).0, 0);
-        assert_eq!(m.product(ProductKind::RightContraction, 0b011, 0b001), (-1, 0b010));
+        assert_eq!(
+            m.product(ProductKind::RightContraction, 0b011, 0b001),
+            (-1, 0b010)
+        );
         assert_eq!(m.product(ProductKind::Inner, 0b011, 0b001), (-1, 0b010));
-        assert_eq!(m.product(ProductKind::Commutator, 0b011, 0b101), (-1, 0b110));
+        assert_eq!(
+            m.product(ProductKind::Commutator, 0b011, 0b101),
+            (-1, 0b110)
+        );
         assert_eq!(m.product(ProductKind::Commutator, 0b011, 0b100).0, 0);
     }
 }

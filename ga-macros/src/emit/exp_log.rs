@@ -10,7 +10,11 @@ use crate::plan::{quadratic_self, Output, Plan, TypeId};
 
 /// `sum c a_i a_j` over the grade-`blade` part of `A A` (like terms collected).
 fn self_square_component(plan: &Plan, operand: &Operand, blade: Blade) -> TokenStream {
-    let q = quadratic_self(&plan.metric, &plan.types.get(operand.ty).blades, Involution::Identity);
+    let q = quadratic_self(
+        &plan.metric,
+        &plan.types.get(operand.ty).blades,
+        Involution::Identity,
+    );
     let terms: Vec<(i32, TokenStream)> = q
         .get(&blade)
         .map(|per_k| {
@@ -55,7 +59,10 @@ pub fn emit_exp(plan: &Plan) -> TokenStream {
         // B^2 act on the two-dimensional commutative algebra {1, Q}.
         let quad = grade_blades(plan, 4);
         let q_fields: Vec<_> = quad.iter().map(|&bl| field_ident(bl)).collect();
-        let q_values: Vec<_> = quad.iter().map(|&bl| self_square_component(plan, &b, bl)).collect();
+        let q_values: Vec<_> = quad
+            .iter()
+            .map(|&bl| self_square_component(plan, &b, bl))
+            .collect();
         let q = Operand::new(quote!(q), TypeId::grade(4));
         let t = self_square_component(plan, &q, 0);
         let (bq, bq_output) = product_value(plan, ProductKind::Geometric, &b, &q);
@@ -90,7 +97,10 @@ pub fn emit_exp(plan: &Plan) -> TokenStream {
     } else {
         // No closed form is emitted above five dimensions: scaling and squaring of the
         // Taylor series, in the even subalgebra.
-        let bivector_fields: Vec<_> = grade_blades(plan, 2).iter().map(|&bl| field_ident(bl)).collect();
+        let bivector_fields: Vec<_> = grade_blades(plan, 2)
+            .iter()
+            .map(|&bl| field_ident(bl))
+            .collect();
         let even_blades = plan.types.get(TypeId::even(n)).blades.clone();
         let acc = Operand::new(quote!(acc), TypeId::even(n));
         let x = Operand::new(quote!(x), TypeId::grade(2));
@@ -144,7 +154,10 @@ pub fn emit_log(plan: &Plan) -> TokenStream {
     let s = scalar_type(plan);
     let r = Operand::new(quote!(self), TypeId::even(n));
     let bivector = TypeId::grade(2);
-    let p_fields: Vec<_> = grade_blades(plan, 2).iter().map(|&bl| field_ident(bl)).collect();
+    let p_fields: Vec<_> = grade_blades(plan, 2)
+        .iter()
+        .map(|&bl| field_ident(bl))
+        .collect();
     let p = Operand::new(quote!(p), bivector);
     let p_square = self_square_component(plan, &p, 0);
     let body = if n <= 3 {

@@ -35,7 +35,12 @@ impl Operand {
 
     /// The expression that reads the component on `blade`, if the operand has it.
     pub fn blade(&self, plan: &Plan, blade: Blade) -> Option<TokenStream> {
-        let index = plan.types.get(self.ty).blades.iter().position(|&b| b == blade)?;
+        let index = plan
+            .types
+            .get(self.ty)
+            .blades
+            .iter()
+            .position(|&b| b == blade)?;
         Some(self.component(plan, index))
     }
 }
@@ -144,9 +149,10 @@ pub fn construct(
 ) -> TokenStream {
     match output {
         Output::Zero => quote!(Zero),
-        Output::Type(id) if id == TypeId::SCALAR => {
-            component(0).unwrap_or_else(|| { let z = float(0.0); quote!(#z) })
-        }
+        Output::Type(id) if id == TypeId::SCALAR => component(0).unwrap_or_else(|| {
+            let z = float(0.0);
+            quote!(#z)
+        }),
         Output::Type(id) => {
             let name = type_tokens(plan, id);
             let fields = plan.types.get(id).blades.iter().map(|&blade| {

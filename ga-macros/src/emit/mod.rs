@@ -22,11 +22,17 @@ pub fn module_items(spec: &Spec, plan: &Plan) -> TokenStream {
     for &t in &plan.emitted {
         items.extend(types::emit_struct(plan, t));
         items.extend(unary::emit_unary(plan, t));
-        if plan.has(Op::Reflect) && plan.emitted.contains(&TypeId::grade(1)) && plan.has(Op::Sandwich) {
+        if plan.has(Op::Reflect)
+            && plan.emitted.contains(&TypeId::grade(1))
+            && plan.has(Op::Sandwich)
+        {
             items.extend(versor::emit_reflect(plan, t));
         }
         let mv_available = plan.emitted.contains(&TypeId::multivector(n));
-        if plan.has(Op::Factor) && mv_available && matches!(plan.types.get(t).kind, TypeKind::Grade(_)) {
+        if plan.has(Op::Factor)
+            && mv_available
+            && matches!(plan.types.get(t).kind, TypeKind::Grade(_))
+        {
             items.extend(versor::emit_blades(plan, t));
         }
     }
@@ -46,7 +52,8 @@ pub fn module_items(spec: &Spec, plan: &Plan) -> TokenStream {
     }
     let bivector = TypeId::grade(2);
     let has_exp = n >= 2 && plan.has(Op::Exp) && plan.emitted.contains(&bivector);
-    let has_log = (2..=4).contains(&n) && plan.has(Op::Log) && plan.emitted.contains(&TypeId::even(n));
+    let has_log =
+        (2..=4).contains(&n) && plan.has(Op::Log) && plan.emitted.contains(&TypeId::even(n));
     if has_exp {
         items.extend(exp_log::emit_exp(plan));
     }

@@ -34,8 +34,16 @@ fn sum_impl(plan: &Plan, a: TypeId, b: TypeId, subtract: bool) -> TokenStream {
             (None, None, _) => None,
         }
     });
-    let (lhs_ty, rhs_ty, out_ty) = (type_tokens(plan, a), type_tokens(plan, b), output_type(plan, output));
-    let (op, method) = if subtract { (quote!(Sub), quote!(sub)) } else { (quote!(Add), quote!(add)) };
+    let (lhs_ty, rhs_ty, out_ty) = (
+        type_tokens(plan, a),
+        type_tokens(plan, b),
+        output_type(plan, output),
+    );
+    let (op, method) = if subtract {
+        (quote!(Sub), quote!(sub))
+    } else {
+        (quote!(Add), quote!(add))
+    };
     let assign = if output == Output::Type(a) {
         let (op_assign, method_assign) = if subtract {
             (quote!(SubAssign), quote!(sub_assign))
@@ -67,13 +75,22 @@ fn sum_impl(plan: &Plan, a: TypeId, b: TypeId, subtract: bool) -> TokenStream {
 
 /// Negation and scalar multiplication and division only (when `add` is not requested).
 pub fn emit_scaling(plan: &Plan) -> TokenStream {
-    plan.emitted.iter().map(|&t| unary_operators(plan, t)).collect()
+    plan.emitted
+        .iter()
+        .map(|&t| unary_operators(plan, t))
+        .collect()
 }
 
 fn unary_operators(plan: &Plan, t: TypeId) -> TokenStream {
     let name = type_tokens(plan, t);
     let s = scalar_type(plan);
-    let fields: Vec<_> = plan.types.get(t).blades.iter().map(|&b| super::expr::field_ident(b)).collect();
+    let fields: Vec<_> = plan
+        .types
+        .get(t)
+        .blades
+        .iter()
+        .map(|&b| super::expr::field_ident(b))
+        .collect();
     // `Mul<S>` comes from the geometric product for paired types; others need it here.
     let scale = if plan.has(crate::spec::Op::Geometric) && plan.paired.contains(&t) {
         quote!()

@@ -8,14 +8,21 @@ use crate::algebra::ProductKind;
 use crate::plan::{bilinear, Output, Plan, TypeId};
 
 /// The straight-line value of `lhs (kind) rhs`, and its type.
-pub fn product_value(plan: &Plan, kind: ProductKind, lhs: &Operand, rhs: &Operand) -> (TokenStream, Output) {
+pub fn product_value(
+    plan: &Plan,
+    kind: ProductKind,
+    lhs: &Operand,
+    rhs: &Operand,
+) -> (TokenStream, Output) {
     let terms = bilinear(
         &plan.metric,
         kind,
         &plan.types.get(lhs.ty).blades,
         &plan.types.get(rhs.ty).blades,
     );
-    let output = plan.types.smallest_holding_preferring(terms.keys().copied(), &[lhs.ty, rhs.ty]);
+    let output = plan
+        .types
+        .smallest_holding_preferring(terms.keys().copied(), &[lhs.ty, rhs.ty]);
     let value = construct(plan, output, |blade| {
         let list = terms.get(&blade)?;
         let summands: Vec<(i32, TokenStream)> = list
@@ -33,16 +40,22 @@ pub fn product_value(plan: &Plan, kind: ProductKind, lhs: &Operand, rhs: &Operan
 
 /// The number of multiply terms of a product: what `TERM_COUNTS` reports.
 pub fn term_count(plan: &Plan, kind: ProductKind, lhs: TypeId, rhs: TypeId) -> usize {
-    bilinear(&plan.metric, kind, &plan.types.get(lhs).blades, &plan.types.get(rhs).blades)
-        .values()
-        .map(Vec::len)
-        .sum()
+    bilinear(
+        &plan.metric,
+        kind,
+        &plan.types.get(lhs).blades,
+        &plan.types.get(rhs).blades,
+    )
+    .values()
+    .map(Vec::len)
+    .sum()
 }
 
 /// The operand pairs that get products: the scalar and every paired type, both ways.
 pub fn operand_pairs(plan: &Plan) -> Vec<(TypeId, TypeId)> {
-    let operands: Vec<TypeId> =
-        std::iter::once(TypeId::SCALAR).chain(plan.paired.iter().copied()).collect();
+    let operands: Vec<TypeId> = std::iter::once(TypeId::SCALAR)
+        .chain(plan.paired.iter().copied())
+        .collect();
     let mut pairs = Vec::new();
     for &a in &operands {
         for &b in &operands {
@@ -61,8 +74,11 @@ pub fn emit_products(plan: &Plan) -> TokenStream {
     for &kind in &plan.products {
         for (a, b) in operand_pairs(plan) {
             impls.extend(product_impl(plan, kind, a, b));
-            let (kind_name, a_name, b_name) =
-                (kind.name(), plan.types.get(a).name.clone(), plan.types.get(b).name.clone());
+            let (kind_name, a_name, b_name) = (
+                kind.name(),
+                plan.types.get(a).name.clone(),
+                plan.types.get(b).name.clone(),
+            );
             let count = term_count(plan, kind, a, b);
             counts.push(quote!((#kind_name, #a_name, #b_name, #count)));
         }
@@ -80,7 +96,11 @@ fn product_impl(plan: &Plan, kind: ProductKind, a: TypeId, b: TypeId) -> TokenSt
     let lhs = Operand::new(quote!(self), a);
     let rhs = Operand::new(quote!(rhs), b);
     let (value, output) = product_value(plan, kind, &lhs, &rhs);
-    let (lhs_ty, rhs_ty, out_ty) = (type_tokens(plan, a), type_tokens(plan, b), output_type(plan, output));
+    let (lhs_ty, rhs_ty, out_ty) = (
+        type_tokens(plan, a),
+        type_tokens(plan, b),
+        output_type(plan, output),
+    );
     let unused = if output == Output::Zero {
         quote!(let _ = (self, rhs);)
     } else {
@@ -90,8 +110,12 @@ fn product_impl(plan: &Plan, kind: ProductKind, a: TypeId, b: TypeId) -> TokenSt
         ProductKind::Geometric => (quote!(::core::ops::Mul), format_ident!("mul")),
         ProductKind::Outer => (quote!(::core::ops::BitXor), format_ident!("bitxor")),
         ProductKind::Inner => (quote!(::core::ops::BitOr), format_ident!("bitor")),
-        ProductKind::LeftContraction => (quote!(LeftContraction), format_ident!("left_contraction")),
-        ProductKind::RightContraction => (quote!(RightContraction), format_ident!("right_contraction")),
+        ProductKind::LeftContraction => {
+            (quote!(LeftContraction), format_ident!("left_contraction"))
+        }
+        ProductKind::RightContraction => {
+            (quote!(RightContraction), format_ident!("right_contraction"))
+        }
         ProductKind::Scalar => (quote!(ScalarProduct), format_ident!("scalar_product")),
         ProductKind::Commutator => (quote!(Commutator), format_ident!("commutator")),
     };

@@ -28,12 +28,19 @@ pub fn emit_struct(plan: &Plan, id: TypeId) -> TokenStream {
     let s = scalar_type(plan);
     let doc = describe(plan, id);
     let fields: Vec<_> = def.blades.iter().map(|&b| field_ident(b)).collect();
-    let field_docs = def.blades.iter().map(|&b| format!("The `{}` component.", blade_name(b)));
+    let field_docs = def
+        .blades
+        .iter()
+        .map(|&b| format!("The `{}` component.", blade_name(b)));
     let len = def.blades.len();
     let zero = float(0.0);
     let one = float(1.0);
     let basis = def.blades.iter().enumerate().map(|(i, &blade)| {
-        let constant = if blade == 0 { format_ident!("ONE") } else { format_ident!("{}", blade_name(blade).to_uppercase()) };
+        let constant = if blade == 0 {
+            format_ident!("ONE")
+        } else {
+            format_ident!("{}", blade_name(blade).to_uppercase())
+        };
         let values = (0..len).map(|j| if i == j { quote!(#one) } else { quote!(#zero) });
         let doc = format!("The basis blade `{}`.", blade_name(blade));
         quote! {
@@ -43,7 +50,9 @@ pub fn emit_struct(plan: &Plan, id: TypeId) -> TokenStream {
     });
     let indices: Vec<usize> = (0..len).collect();
     let zeros = vec![zero.clone(); len];
-    let into_multivector = if plan.emitted.contains(&TypeId::multivector(plan.metric.dimension()))
+    let into_multivector = if plan
+        .emitted
+        .contains(&TypeId::multivector(plan.metric.dimension()))
         && def.kind != TypeKind::Multivector
     {
         let values = def.blades.iter().map(|&b| {

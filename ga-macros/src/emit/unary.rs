@@ -3,7 +3,9 @@
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 
-use super::expr::{construct, field_ident, float, output_type, scalar_type, signed_sum, type_tokens, Operand};
+use super::expr::{
+    construct, field_ident, float, output_type, scalar_type, signed_sum, type_tokens, Operand,
+};
 use crate::algebra::{grade, Involution};
 use crate::plan::{quadratic_self, Output, Plan, TypeId, TypeKind};
 use crate::spec::Op;
@@ -13,9 +15,24 @@ pub fn emit_unary(plan: &Plan, t: TypeId) -> TokenStream {
     let name = type_tokens(plan, t);
     let mut methods = TokenStream::new();
     let involutions = [
-        (Op::Reverse, Involution::Reverse, "reverse", "The reverse ~A: flips grades 2 and 3 mod 4."),
-        (Op::GradeInvolution, Involution::GradeInvolution, "grade_involution", "The grade involution: flips odd grades."),
-        (Op::Conjugate, Involution::Conjugate, "conjugate", "The Clifford conjugate: flips grades 1 and 2 mod 4."),
+        (
+            Op::Reverse,
+            Involution::Reverse,
+            "reverse",
+            "The reverse ~A: flips grades 2 and 3 mod 4.",
+        ),
+        (
+            Op::GradeInvolution,
+            Involution::GradeInvolution,
+            "grade_involution",
+            "The grade involution: flips odd grades.",
+        ),
+        (
+            Op::Conjugate,
+            Involution::Conjugate,
+            "conjugate",
+            "The Clifford conjugate: flips grades 1 and 2 mod 4.",
+        ),
     ];
     let this = Operand::new(quote!(self), t);
     for (op, involution, method, doc) in involutions {
@@ -25,7 +42,11 @@ pub fn emit_unary(plan: &Plan, t: TypeId) -> TokenStream {
         let method = format_ident!("{method}");
         let value = construct(plan, Output::Type(t), |blade| {
             let x = this.blade(plan, blade)?;
-            Some(if involution.sign(blade) > 0 { x } else { quote!(-#x) })
+            Some(if involution.sign(blade) > 0 {
+                x
+            } else {
+                quote!(-#x)
+            })
         });
         methods.extend(quote! {
             #[doc = #doc]
@@ -58,15 +79,27 @@ pub fn emit_unary(plan: &Plan, t: TypeId) -> TokenStream {
 
 fn complement(plan: &Plan, t: TypeId, dual: bool) -> TokenStream {
     let blades = &plan.types.get(t).blades;
-    let map = |b| if dual { plan.metric.dual(b) } else { plan.metric.undual(b) };
-    let output = plan.types.smallest_holding(blades.iter().map(|&b| map(b).1));
+    let map = |b| {
+        if dual {
+            plan.metric.dual(b)
+        } else {
+            plan.metric.undual(b)
+        }
+    };
+    let output = plan
+        .types
+        .smallest_holding(blades.iter().map(|&b| map(b).1));
     let this = Operand::new(quote!(self), t);
     let value = construct(plan, output, |target| {
         blades.iter().enumerate().find_map(|(i, &b)| {
             let (sign, image) = map(b);
             (image == target).then(|| {
                 let x = this.component(plan, i);
-                if sign > 0 { x } else { quote!(-#x) }
+                if sign > 0 {
+                    x
+                } else {
+                    quote!(-#x)
+                }
             })
         })
     });
@@ -202,7 +235,11 @@ fn projections(plan: &Plan, t: TypeId) -> TokenStream {
     let this = Operand::new(quote!(self), t);
     let mut out = TokenStream::new();
     for k in plan.types.grades_of(t) {
-        let target = if k == 0 { TypeId::SCALAR } else { TypeId::grade(k) };
+        let target = if k == 0 {
+            TypeId::SCALAR
+        } else {
+            TypeId::grade(k)
+        };
         let method = format_ident!("grade{k}");
         let ty = type_tokens(plan, target);
         let value = construct(plan, Output::Type(target), |blade| this.blade(plan, blade));
@@ -250,7 +287,6 @@ pub fn emit_multivector_inverse(plan: &Plan) -> TokenStream {
         let entries = blades.iter().map(|&b| {
             let (sign, blade) = plan.metric.geometric(a, b);
             let k = blades.iter().position(|&x| x == blade).unwrap_or(0);
-            let sign = sign as i8;
             quote!((#k, #sign))
         });
         quote!([#(#entries),*])

@@ -77,12 +77,21 @@ fn fused_multiplies(q: &Quadratic, operand: &[u32]) -> usize {
 
 fn chained_multiplies(plan: &Plan, v: TypeId, x: TypeId) -> usize {
     let versor = &plan.types.get(v).blades;
-    let first = bilinear(&plan.metric, ProductKind::Geometric, versor, &plan.types.get(x).blades);
+    let first = bilinear(
+        &plan.metric,
+        ProductKind::Geometric,
+        versor,
+        &plan.types.get(x).blades,
+    );
     let middle: Vec<u32> = first.keys().copied().collect();
     let second = bilinear(&plan.metric, ProductKind::Geometric, &middle, versor);
     let operand = &plan.types.get(x).blades;
     first.values().map(Vec::len).sum::<usize>()
-        + second.iter().filter(|(b, _)| operand.contains(b)).map(|(_, t)| t.len()).sum::<usize>()
+        + second
+            .iter()
+            .filter(|(b, _)| operand.contains(b))
+            .map(|(_, t)| t.len())
+            .sum::<usize>()
 }
 
 /// The quadratic form: products of pairs of the versor's components first, then each
@@ -153,7 +162,11 @@ fn chained_body(plan: &Plan, v: TypeId, x: TypeId, odd: bool) -> TokenStream {
         let summands: Vec<(i32, TokenStream)> = terms
             .iter()
             .map(|t| {
-                let sign = if odd { Involution::GradeInvolution.sign(operand[t.rhs]) } else { 1 };
+                let sign = if odd {
+                    Involution::GradeInvolution.sign(operand[t.rhs])
+                } else {
+                    1
+                };
                 let (a, b) = (this.component(plan, t.lhs), arg.component(plan, t.rhs));
                 ((t.sign * sign) as i32, quote!(#a * #b))
             })
@@ -229,7 +242,13 @@ pub fn emit_blades(plan: &Plan, t: TypeId) -> TokenStream {
     let n = plan.metric.dimension();
     let mv = TypeId::multivector(n);
     let k_lit = k;
-    let fields = plan.types.get(TypeId::grade(1)).blades.iter().map(|&b| field_ident(b)).collect::<Vec<_>>();
+    let fields = plan
+        .types
+        .get(TypeId::grade(1))
+        .blades
+        .iter()
+        .map(|&b| field_ident(b))
+        .collect::<Vec<_>>();
     let zero = float(0.0);
     methods.extend(quote! {
         /// Factors a blade into orthogonal vectors whose geometric product is the blade,

@@ -67,8 +67,9 @@ impl Plan {
     /// The paired types closed under what their products and operations return.
     fn needed_types(&self) -> Vec<TypeId> {
         let mut needed: BTreeSet<TypeId> = self.paired.iter().copied().collect();
-        let operands: Vec<TypeId> =
-            std::iter::once(TypeId::SCALAR).chain(self.paired.iter().copied()).collect();
+        let operands: Vec<TypeId> = std::iter::once(TypeId::SCALAR)
+            .chain(self.paired.iter().copied())
+            .collect();
         for &a in &operands {
             for &b in &operands {
                 if a == TypeId::SCALAR && b == TypeId::SCALAR {
@@ -107,8 +108,14 @@ impl Plan {
             }
         };
         if self.has(Op::Dual) {
-            push(self.types.smallest_holding(blades.iter().map(|&b| self.metric.dual(b).1)));
-            push(self.types.smallest_holding(blades.iter().map(|&b| self.metric.undual(b).1)));
+            push(
+                self.types
+                    .smallest_holding(blades.iter().map(|&b| self.metric.dual(b).1)),
+            );
+            push(
+                self.types
+                    .smallest_holding(blades.iter().map(|&b| self.metric.undual(b).1)),
+            );
         }
         if self.has(Op::Grade) {
             for k in self.types.grades_of(t) {
@@ -143,7 +150,7 @@ impl Plan {
             needs.push(TypeId::grade(1));
             needs.push(TypeId::multivector(n));
         }
-        if kind == TypeKind::Even && self.has(Op::Log) && n >= 2 && n <= 4 {
+        if kind == TypeKind::Even && self.has(Op::Log) && (2..=4).contains(&n) {
             needs.push(TypeId::grade(2));
             if n == 4 {
                 needs.push(TypeId::grade(4));
@@ -160,19 +167,30 @@ impl Plan {
             &self.types.get(a).blades,
             &self.types.get(b).blades,
         );
-        self.types.smallest_holding_preferring(terms.keys().copied(), &[a, b])
+        self.types
+            .smallest_holding_preferring(terms.keys().copied(), &[a, b])
     }
 
     /// The output of `a + b`: the smallest type holding both.
     pub fn sum_output(&self, a: TypeId, b: TypeId) -> Output {
-        let blades = self.types.get(a).blades.iter().chain(&self.types.get(b).blades).copied();
+        let blades = self
+            .types
+            .get(a)
+            .blades
+            .iter()
+            .chain(&self.types.get(b).blades)
+            .copied();
         self.types.smallest_holding_preferring(blades, &[a, b])
     }
 
     /// Whether `A ~A` is a scalar for every `A` of this type, so that the inverse is
     /// `~A / <A ~A>`.
     pub fn has_scalar_self_product(&self, t: TypeId) -> bool {
-        let q = quadratic_self(&self.metric, &self.types.get(t).blades, crate::algebra::Involution::Reverse);
+        let q = quadratic_self(
+            &self.metric,
+            &self.types.get(t).blades,
+            crate::algebra::Involution::Reverse,
+        );
         q.keys().all(|&blade| blade == 0)
     }
 

@@ -24,7 +24,11 @@ pub fn bilinear(
         for (j, &b) in rhs.iter().enumerate() {
             let (sign, blade) = metric.product(kind, a, b);
             if sign != 0 {
-                out.entry(blade).or_default().push(Term { lhs: i, rhs: j, sign });
+                out.entry(blade).or_default().push(Term {
+                    lhs: i,
+                    rhs: j,
+                    sign,
+                });
             }
         }
     }
@@ -38,7 +42,13 @@ pub type Quadratic = BTreeMap<Blade, BTreeMap<usize, BTreeMap<(usize, usize), i3
 
 fn add_term(q: &mut Quadratic, blade: Blade, k: usize, i: usize, j: usize, coefficient: i32) {
     let key = (i.min(j), i.max(j));
-    let slot = q.entry(blade).or_default().entry(k).or_default().entry(key).or_default();
+    let slot = q
+        .entry(blade)
+        .or_default()
+        .entry(k)
+        .or_default()
+        .entry(key)
+        .or_default();
     *slot += coefficient;
 }
 
@@ -72,7 +82,11 @@ pub fn quadratic_self(metric: &Metric, blades: &[Blade], involution: Involution)
 /// expanded symbolically: for each output blade and each component of `x`, a quadratic
 /// form in `v`'s components with like terms collected.
 pub fn sandwich(metric: &Metric, versor: &[Blade], odd: bool, x: &[Blade]) -> Quadratic {
-    let twist = if odd { Involution::GradeInvolution } else { Involution::Identity };
+    let twist = if odd {
+        Involution::GradeInvolution
+    } else {
+        Involution::Identity
+    };
     let mut q = Quadratic::new();
     for (i, &vi) in versor.iter().enumerate() {
         for (k, &xk) in x.iter().enumerate() {
@@ -103,7 +117,10 @@ mod tests {
     }
 
     fn of_grade(n: usize, keep: impl Fn(u32) -> bool) -> Vec<Blade> {
-        canonical_blades(n).into_iter().filter(|&b| keep(grade(b))).collect()
+        canonical_blades(n)
+            .into_iter()
+            .filter(|&b| keep(grade(b)))
+            .collect()
     }
 
     #[test]

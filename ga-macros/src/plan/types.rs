@@ -74,7 +74,11 @@ impl Types {
         let with = |keep: &dyn Fn(Blade) -> bool| -> Vec<Blade> {
             all.iter().copied().filter(|&b| keep(b)).collect()
         };
-        let mut defs = vec![TypeDef { name: "Scalar".into(), blades: vec![0], kind: TypeKind::Scalar }];
+        let mut defs = vec![TypeDef {
+            name: "Scalar".into(),
+            blades: vec![0],
+            kind: TypeKind::Scalar,
+        }];
         for k in 1..=dimension {
             defs.push(TypeDef {
                 name: grade_type_name(k).into(),
@@ -82,14 +86,30 @@ impl Types {
                 kind: TypeKind::Grade(k),
             });
         }
-        defs.push(TypeDef { name: "Even".into(), blades: with(&|b| grade(b) % 2 == 0), kind: TypeKind::Even });
-        defs.push(TypeDef { name: "Odd".into(), blades: with(&|b| grade(b) % 2 == 1), kind: TypeKind::Odd });
-        defs.push(TypeDef { name: "Multivector".into(), blades: all.clone(), kind: TypeKind::Multivector });
+        defs.push(TypeDef {
+            name: "Even".into(),
+            blades: with(&|b| grade(b).is_multiple_of(2)),
+            kind: TypeKind::Even,
+        });
+        defs.push(TypeDef {
+            name: "Odd".into(),
+            blades: with(&|b| grade(b) % 2 == 1),
+            kind: TypeKind::Odd,
+        });
+        defs.push(TypeDef {
+            name: "Multivector".into(),
+            blades: all.clone(),
+            kind: TypeKind::Multivector,
+        });
         for request in requests {
             if let TypeRequest::User { name, blades } = request {
                 let set: BTreeSet<Blade> = blades.iter().copied().collect();
                 let ordered = all.iter().copied().filter(|b| set.contains(b)).collect();
-                defs.push(TypeDef { name: name.clone(), blades: ordered, kind: TypeKind::User });
+                defs.push(TypeDef {
+                    name: name.clone(),
+                    blades: ordered,
+                    kind: TypeKind::User,
+                });
             }
         }
         Types { dimension, defs }
@@ -117,7 +137,12 @@ impl Types {
 
     /// The grades a type has components in.
     pub fn grades_of(&self, id: TypeId) -> Vec<usize> {
-        let set: BTreeSet<usize> = self.get(id).blades.iter().map(|&b| grade(b) as usize).collect();
+        let set: BTreeSet<usize> = self
+            .get(id)
+            .blades
+            .iter()
+            .map(|&b| grade(b) as usize)
+            .collect();
         set.into_iter().collect()
     }
 
@@ -147,7 +172,7 @@ impl Types {
         let mut best: Option<(usize, TypeId)> = None;
         for (i, def) in self.defs.iter().enumerate() {
             if wanted.iter().all(|b| def.blades.contains(b))
-                && best.map_or(true, |(len, _)| def.blades.len() < len)
+                && best.is_none_or(|(len, _)| def.blades.len() < len)
             {
                 best = Some((def.blades.len(), TypeId(i)));
             }

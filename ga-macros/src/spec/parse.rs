@@ -61,7 +61,12 @@ impl Parse for RawAlgebra {
         if !input.is_empty() {
             return Err(input.error("expected one `mod` item in `algebra!`"));
         }
-        Ok(RawAlgebra { attrs, vis, name, entries })
+        Ok(RawAlgebra {
+            attrs,
+            vis,
+            name,
+            entries,
+        })
     }
 }
 
@@ -84,8 +89,17 @@ impl RawDerive {
                 "missing `#[algebra(metric = [...], scalar = f64)]` on the marker type",
             ));
         }
-        let attrs = input.attrs.into_iter().filter(|a| a.path().is_ident("doc")).collect();
-        Ok(RawDerive { attrs, vis: input.vis, name: input.ident, entries })
+        let attrs = input
+            .attrs
+            .into_iter()
+            .filter(|a| a.path().is_ident("doc"))
+            .collect();
+        Ok(RawDerive {
+            attrs,
+            vis: input.vis,
+            name: input.ident,
+            entries,
+        })
     }
 }
 
@@ -108,7 +122,10 @@ fn parse_entries(input: ParseStream, style: EntryStyle) -> syn::Result<Vec<RawEn
             value.extend([tree]);
         }
         if value.is_empty() {
-            return Err(syn::Error::new_spanned(&key, format!("`{key}` needs a value")));
+            return Err(syn::Error::new_spanned(
+                &key,
+                format!("`{key}` needs a value"),
+            ));
         }
         entries.push(RawEntry { key, value });
         if !input.is_empty() {
@@ -123,7 +140,10 @@ impl Parse for RawMetric {
         let content;
         let bracket = bracketed!(content in input);
         let entries = Punctuated::<Expr, Token![,]>::parse_terminated(&content)?;
-        Ok(RawMetric { bracket: bracket.span.join(), entries: entries.into_iter().collect() })
+        Ok(RawMetric {
+            bracket: bracket.span.join(),
+            entries: entries.into_iter().collect(),
+        })
     }
 }
 
@@ -132,7 +152,9 @@ impl Parse for RawSignature {
         let content;
         parenthesized!(content in input);
         let counts = Punctuated::<LitInt, Token![,]>::parse_terminated(&content)?;
-        Ok(RawSignature { counts: counts.into_iter().collect() })
+        Ok(RawSignature {
+            counts: counts.into_iter().collect(),
+        })
     }
 }
 

@@ -94,11 +94,18 @@ impl Op {
     ];
 
     fn from_name(name: &str) -> Option<Op> {
-        Op::NAMES.iter().find(|(n, _)| *n == name).map(|&(_, op)| op)
+        Op::NAMES
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|&(_, op)| op)
     }
 
     fn expected() -> String {
-        Op::NAMES.iter().map(|(n, _)| *n).collect::<Vec<_>>().join(", ")
+        Op::NAMES
+            .iter()
+            .map(|(n, _)| *n)
+            .collect::<Vec<_>>()
+            .join(", ")
     }
 
     /// The operations whose emitted code this one calls.
@@ -114,8 +121,14 @@ impl Op {
 
 const KEYS: &str = "metric, signature, scalar, types, ops";
 
-const GRADE_NAMES: [&str; MAX_DIMENSION] =
-    ["Vector", "Bivector", "Trivector", "Quadvector", "Pentavector", "Hexavector"];
+const GRADE_NAMES: [&str; MAX_DIMENSION] = [
+    "Vector",
+    "Bivector",
+    "Trivector",
+    "Quadvector",
+    "Pentavector",
+    "Hexavector",
+];
 
 /// The struct name of grade `k` (1-based).
 pub fn grade_type_name(k: usize) -> &'static str {
@@ -131,12 +144,16 @@ pub fn validate(
 ) -> syn::Result<Spec> {
     let mut cx = Ctxt::default();
     let mut seen: Vec<Ident> = Vec::new();
-    let (mut metric, mut signature, mut scalar, mut types, mut ops) = (None, None, None, None, None);
+    let (mut metric, mut signature, mut scalar, mut types, mut ops) =
+        (None, None, None, None, None);
     for entry in entries {
         let key = entry.key.to_string();
         if let Some(first) = seen.iter().find(|k| **k == entry.key) {
             let _ = first;
-            cx.error_spanned_by(&entry.key, format!("duplicate key `{key}`: give each key once"));
+            cx.error_spanned_by(
+                &entry.key,
+                format!("duplicate key `{key}`: give each key once"),
+            );
             continue;
         }
         seen.push(entry.key.clone());
@@ -196,7 +213,10 @@ pub fn validate(
     let ops = ops.map(|raw| check_ops(&mut cx, raw));
     cx.check()?;
     let Some(squares) = squares else {
-        return Err(syn::Error::new(Span::call_site(), "internal: metric missing after checks"));
+        return Err(syn::Error::new(
+            Span::call_site(),
+            "internal: metric missing after checks",
+        ));
     };
     Ok(Spec {
         attrs,
@@ -211,8 +231,14 @@ pub fn validate(
 
 fn metric_entry(expr: &Expr) -> Option<i64> {
     match expr {
-        Expr::Lit(ExprLit { lit: Lit::Int(lit), .. }) => lit.base10_parse().ok(),
-        Expr::Unary(ExprUnary { op: UnOp::Neg(_), expr, .. }) => metric_entry(expr).map(|v| -v),
+        Expr::Lit(ExprLit {
+            lit: Lit::Int(lit), ..
+        }) => lit.base10_parse().ok(),
+        Expr::Unary(ExprUnary {
+            op: UnOp::Neg(_),
+            expr,
+            ..
+        }) => metric_entry(expr).map(|v| -v),
         _ => None,
     }
 }

@@ -49,6 +49,19 @@ impl Inertia {
         Ok(Self::new_unchecked(moments, Rotor::ONE, None, Vector::ZERO))
     }
 
+    /// Like [`Inertia::from_principal`] but without the triangle inequality: for the test
+    /// bodies of the literature that no mass distribution has, such as Hairer, Lubich and
+    /// Wanner's (2, 1, 2/3), the EULR problem's (0.5, 2, 3) or Principia's (3, 5, 9).
+    /// Euler's equations are well posed for any positive moments.
+    ///
+    /// Errors name the parameter `moments`: non-finite, zero or negative moments.
+    pub fn from_principal_unphysical(moments: [f64; 3]) -> Result<Self, Error> {
+        for i in moments {
+            positive("moments", "moments", i)?;
+        }
+        Ok(Self::new_unchecked(moments, Rotor::ONE, None, Vector::ZERO))
+    }
+
     /// Like [`Inertia::from_principal`], with principal axes `R e_k ~R` in the reference
     /// frame; `rotor` is normalised (a zero rotor is an error naming `rotor`).
     pub fn from_principal_frame(moments: [f64; 3], rotor: Rotor) -> Result<Self, Error> {

@@ -1,0 +1,50 @@
+//! `types:` and `ops:` lists cut what is emitted: only the listed types, the products
+//! between them, the listed operations, and what those need.
+
+fn items(input: &str) -> (Vec<String>, usize) {
+    let raw: crate::spec::RawAlgebra = syn::parse_str(input).expect("input parses");
+    let tokens = crate::expand::algebra(raw).expect("input is valid");
+    let file: syn::File = syn::parse2(tokens).expect("expansion parses");
+    let syn::Item::Mod(module) = &file.items[0] else {
+        panic!("expected one module")
+    };
+    let content = &module.content.as_ref().expect("inline module").1;
+    let structs = content
+        .iter()
+        .filter_map(|item| match item {
+            syn::Item::Struct(s) => Some(s.ident.to_string()),
+            _ => None,
+        })
+        .collect();
+    let size = quote::quote!(#file).to_string().len();
+    (structs, size)
+}
+
+#[test]
+fn restricted_g6_emits_only_rotors_vectors_and_what_they_need() {
+    let (full_structs, full_size) = items("mod g6 { metric: [1, 1, 1, 1, 1, 1], scalar: f64 }");
+    let (structs, size) = items(
+        "mod g6 { metric: [1, 1, 1, 1, 1, 1], scalar: f64, \
+         types: [Rotor, Vector], ops: [geometric, sandwich] }",
+    );
+    assert_eq!(full_structs.len(), 10, "{full_structs:?}");
+    // Vector * Vector is Even, Even * Vector is Odd: Odd is needed, nothing else.
+    assert_eq!(structs, ["Zero", "Vector", "Even", "Odd"]);
+    assert!(
+        size * 5 < full_size,
+        "restricted {size} bytes vs full {full_size} bytes"
+    );
+}
+
+#[test]
+fn user_types_hold_exactly_their_blades_in_canonical_order() {
+    let (structs, _) =
+        items("mod g3 { metric: [1, 1, 1], scalar: f32, types: [Plane = [e13, e12]], ops: [add] }");
+    // `Plane + f64` holds s, e12 and e13: the smallest type for it is Even.
+    assert_eq!(structs, ["Zero", "Even", "Plane"]);
+    let raw: crate::spec::RawAlgebra =
+        syn::parse_str("mod g3 { metric: [1, 1, 1], types: [Plane = [e13, e12]], ops: [add] }")
+            .unwrap();
+    let text = crate::expand::algebra(raw).unwrap().to_string();
+    assert!(text.contains("pub struct Plane { # [doc = \"The `e12` component.\"] pub e12 : f64 , # [doc = \"The `e13` component.\"] pub e13 : f64 , }"), "{text}");
+}

@@ -1,0 +1,5 @@
+#[derive(ga_macros::Algebra)]
+#[algebra(metric: [1, 1, 1], scalar = f64)]
+pub struct G3;
+
+fn main() {}

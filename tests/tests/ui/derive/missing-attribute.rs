@@ -1,0 +1,4 @@
+#[derive(ga_macros::Algebra)]
+pub struct G3;
+
+fn main() {}

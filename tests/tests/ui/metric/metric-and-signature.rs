@@ -1,0 +1,9 @@
+ga_macros::algebra! {
+    pub mod g3 {
+        metric: [1, 1, 1],
+        signature: (3, 0, 0),
+        scalar: f64,
+    }
+}
+
+fn main() {}
