@@ -4662,12 +4662,13 @@ pub mod g2 {
     impl Sandwich<Vector> for Vector {
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
+            let two_e1 = self.e1 + self.e1;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
+            let e1_e2 = two_e1 * self.e2;
             let e2_e2 = self.e2 * self.e2;
             Vector {
-                e1: (e2_e2 - e1_e1) * x.e1 + (-2.0 * e1_e2) * x.e2,
-                e2: (-2.0 * e1_e2) * x.e1 + (e1_e1 - e2_e2) * x.e2,
+                e1: (e2_e2 - e1_e1) * x.e1 - e1_e2 * x.e2,
+                e2: (e1_e1 - e2_e2) * x.e2 - e1_e2 * x.e1,
             }
         }
     }
@@ -4695,25 +4696,27 @@ pub mod g2 {
     impl Sandwich<Odd> for Vector {
         #[inline]
         fn sandwich(self, x: Odd) -> Odd {
+            let two_e1 = self.e1 + self.e1;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
+            let e1_e2 = two_e1 * self.e2;
             let e2_e2 = self.e2 * self.e2;
             Odd {
-                e1: (e2_e2 - e1_e1) * x.e1 + (-2.0 * e1_e2) * x.e2,
-                e2: (-2.0 * e1_e2) * x.e1 + (e1_e1 - e2_e2) * x.e2,
+                e1: (e2_e2 - e1_e1) * x.e1 - e1_e2 * x.e2,
+                e2: (e1_e1 - e2_e2) * x.e2 - e1_e2 * x.e1,
             }
         }
     }
     impl Sandwich<Multivector> for Vector {
         #[inline]
         fn sandwich(self, x: Multivector) -> Multivector {
+            let two_e1 = self.e1 + self.e1;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
+            let e1_e2 = two_e1 * self.e2;
             let e2_e2 = self.e2 * self.e2;
             Multivector {
                 s: (e1_e1 + e2_e2) * x.s,
-                e1: (e2_e2 - e1_e1) * x.e1 + (-2.0 * e1_e2) * x.e2,
-                e2: (-2.0 * e1_e2) * x.e1 + (e1_e1 - e2_e2) * x.e2,
+                e1: (e2_e2 - e1_e1) * x.e1 - e1_e2 * x.e2,
+                e2: (e1_e1 - e2_e2) * x.e2 - e1_e2 * x.e1,
                 e12: (-e1_e1 - e2_e2) * x.e12,
             }
         }
@@ -4721,12 +4724,13 @@ pub mod g2 {
     impl Sandwich<Vector> for Even {
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
+            let two_s = self.s + self.s;
             let s_s = self.s * self.s;
-            let s_e12 = self.s * self.e12;
+            let s_e12 = two_s * self.e12;
             let e12_e12 = self.e12 * self.e12;
             Vector {
-                e1: (s_s - e12_e12) * x.e1 + (2.0 * s_e12) * x.e2,
-                e2: (-2.0 * s_e12) * x.e1 + (s_s - e12_e12) * x.e2,
+                e1: (s_s - e12_e12) * x.e1 + s_e12 * x.e2,
+                e2: (s_s - e12_e12) * x.e2 - s_e12 * x.e1,
             }
         }
     }
@@ -4754,25 +4758,27 @@ pub mod g2 {
     impl Sandwich<Odd> for Even {
         #[inline]
         fn sandwich(self, x: Odd) -> Odd {
+            let two_s = self.s + self.s;
             let s_s = self.s * self.s;
-            let s_e12 = self.s * self.e12;
+            let s_e12 = two_s * self.e12;
             let e12_e12 = self.e12 * self.e12;
             Odd {
-                e1: (s_s - e12_e12) * x.e1 + (2.0 * s_e12) * x.e2,
-                e2: (-2.0 * s_e12) * x.e1 + (s_s - e12_e12) * x.e2,
+                e1: (s_s - e12_e12) * x.e1 + s_e12 * x.e2,
+                e2: (s_s - e12_e12) * x.e2 - s_e12 * x.e1,
             }
         }
     }
     impl Sandwich<Multivector> for Even {
         #[inline]
         fn sandwich(self, x: Multivector) -> Multivector {
+            let two_s = self.s + self.s;
             let s_s = self.s * self.s;
-            let s_e12 = self.s * self.e12;
+            let s_e12 = two_s * self.e12;
             let e12_e12 = self.e12 * self.e12;
             Multivector {
                 s: (s_s + e12_e12) * x.s,
-                e1: (s_s - e12_e12) * x.e1 + (2.0 * s_e12) * x.e2,
-                e2: (-2.0 * s_e12) * x.e1 + (s_s - e12_e12) * x.e2,
+                e1: (s_s - e12_e12) * x.e1 + s_e12 * x.e2,
+                e2: (s_s - e12_e12) * x.e2 - s_e12 * x.e1,
                 e12: (s_s + e12_e12) * x.e12,
             }
         }
@@ -4780,12 +4786,13 @@ pub mod g2 {
     impl Sandwich<Vector> for Odd {
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
+            let two_e1 = self.e1 + self.e1;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
+            let e1_e2 = two_e1 * self.e2;
             let e2_e2 = self.e2 * self.e2;
             Vector {
-                e1: (e2_e2 - e1_e1) * x.e1 + (-2.0 * e1_e2) * x.e2,
-                e2: (-2.0 * e1_e2) * x.e1 + (e1_e1 - e2_e2) * x.e2,
+                e1: (e2_e2 - e1_e1) * x.e1 - e1_e2 * x.e2,
+                e2: (e1_e1 - e2_e2) * x.e2 - e1_e2 * x.e1,
             }
         }
     }
@@ -4813,25 +4820,27 @@ pub mod g2 {
     impl Sandwich<Odd> for Odd {
         #[inline]
         fn sandwich(self, x: Odd) -> Odd {
+            let two_e1 = self.e1 + self.e1;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
+            let e1_e2 = two_e1 * self.e2;
             let e2_e2 = self.e2 * self.e2;
             Odd {
-                e1: (e2_e2 - e1_e1) * x.e1 + (-2.0 * e1_e2) * x.e2,
-                e2: (-2.0 * e1_e2) * x.e1 + (e1_e1 - e2_e2) * x.e2,
+                e1: (e2_e2 - e1_e1) * x.e1 - e1_e2 * x.e2,
+                e2: (e1_e1 - e2_e2) * x.e2 - e1_e2 * x.e1,
             }
         }
     }
     impl Sandwich<Multivector> for Odd {
         #[inline]
         fn sandwich(self, x: Multivector) -> Multivector {
+            let two_e1 = self.e1 + self.e1;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
+            let e1_e2 = two_e1 * self.e2;
             let e2_e2 = self.e2 * self.e2;
             Multivector {
                 s: (e1_e1 + e2_e2) * x.s,
-                e1: (e2_e2 - e1_e1) * x.e1 + (-2.0 * e1_e2) * x.e2,
-                e2: (-2.0 * e1_e2) * x.e1 + (e1_e1 - e2_e2) * x.e2,
+                e1: (e2_e2 - e1_e1) * x.e1 - e1_e2 * x.e2,
+                e2: (e1_e1 - e2_e2) * x.e2 - e1_e2 * x.e1,
                 e12: (-e1_e1 - e2_e2) * x.e12,
             }
         }

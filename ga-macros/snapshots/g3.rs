@@ -7397,38 +7397,36 @@ pub mod g3 {
     impl Sandwich<Vector> for Vector {
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
+            let two_e1 = self.e1 + self.e1;
+            let two_e2 = self.e2 + self.e2;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
-            let e1_e3 = self.e1 * self.e3;
+            let e1_e2 = two_e1 * self.e2;
+            let e1_e3 = two_e1 * self.e3;
             let e2_e2 = self.e2 * self.e2;
-            let e2_e3 = self.e2 * self.e3;
+            let e2_e3 = two_e2 * self.e3;
             let e3_e3 = self.e3 * self.e3;
             Vector {
-                e1: (e2_e2 + e3_e3 - e1_e1) * x.e1 + (-2.0 * e1_e2) * x.e2
-                    + (-2.0 * e1_e3) * x.e3,
-                e2: (-2.0 * e1_e2) * x.e1 + (e1_e1 + e3_e3 - e2_e2) * x.e2
-                    + (-2.0 * e2_e3) * x.e3,
-                e3: (-2.0 * e1_e3) * x.e1 + (-2.0 * e2_e3) * x.e2
-                    + (e1_e1 + e2_e2 - e3_e3) * x.e3,
+                e1: (e2_e2 + e3_e3 - e1_e1) * x.e1 - e1_e2 * x.e2 - e1_e3 * x.e3,
+                e2: (e1_e1 + e3_e3 - e2_e2) * x.e2 - e1_e2 * x.e1 - e2_e3 * x.e3,
+                e3: (e1_e1 + e2_e2 - e3_e3) * x.e3 - e1_e3 * x.e1 - e2_e3 * x.e2,
             }
         }
     }
     impl Sandwich<Bivector> for Vector {
         #[inline]
         fn sandwich(self, x: Bivector) -> Bivector {
+            let two_e1 = self.e1 + self.e1;
+            let two_e2 = self.e2 + self.e2;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
-            let e1_e3 = self.e1 * self.e3;
+            let e1_e2 = two_e1 * self.e2;
+            let e1_e3 = two_e1 * self.e3;
             let e2_e2 = self.e2 * self.e2;
-            let e2_e3 = self.e2 * self.e3;
+            let e2_e3 = two_e2 * self.e3;
             let e3_e3 = self.e3 * self.e3;
             Bivector {
-                e12: (e3_e3 - e1_e1 - e2_e2) * x.e12 + (-2.0 * e2_e3) * x.e13
-                    + (2.0 * e1_e3) * x.e23,
-                e13: (-2.0 * e2_e3) * x.e12 + (e2_e2 - e1_e1 - e3_e3) * x.e13
-                    + (-2.0 * e1_e2) * x.e23,
-                e23: (2.0 * e1_e3) * x.e12 + (-2.0 * e1_e2) * x.e13
-                    + (e1_e1 - e2_e2 - e3_e3) * x.e23,
+                e12: (e3_e3 - e1_e1 - e2_e2) * x.e12 + e1_e3 * x.e23 - e2_e3 * x.e13,
+                e13: (e2_e2 - e1_e1 - e3_e3) * x.e13 - e2_e3 * x.e12 - e1_e2 * x.e23,
+                e23: e1_e3 * x.e12 + (e1_e1 - e2_e2 - e3_e3) * x.e23 - e1_e2 * x.e13,
             }
         }
     }
@@ -7446,39 +7444,37 @@ pub mod g3 {
     impl Sandwich<Even> for Vector {
         #[inline]
         fn sandwich(self, x: Even) -> Even {
+            let two_e1 = self.e1 + self.e1;
+            let two_e2 = self.e2 + self.e2;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
-            let e1_e3 = self.e1 * self.e3;
+            let e1_e2 = two_e1 * self.e2;
+            let e1_e3 = two_e1 * self.e3;
             let e2_e2 = self.e2 * self.e2;
-            let e2_e3 = self.e2 * self.e3;
+            let e2_e3 = two_e2 * self.e3;
             let e3_e3 = self.e3 * self.e3;
             Even {
                 s: (e1_e1 + e2_e2 + e3_e3) * x.s,
-                e12: (e3_e3 - e1_e1 - e2_e2) * x.e12 + (-2.0 * e2_e3) * x.e13
-                    + (2.0 * e1_e3) * x.e23,
-                e13: (-2.0 * e2_e3) * x.e12 + (e2_e2 - e1_e1 - e3_e3) * x.e13
-                    + (-2.0 * e1_e2) * x.e23,
-                e23: (2.0 * e1_e3) * x.e12 + (-2.0 * e1_e2) * x.e13
-                    + (e1_e1 - e2_e2 - e3_e3) * x.e23,
+                e12: (e3_e3 - e1_e1 - e2_e2) * x.e12 + e1_e3 * x.e23 - e2_e3 * x.e13,
+                e13: (e2_e2 - e1_e1 - e3_e3) * x.e13 - e2_e3 * x.e12 - e1_e2 * x.e23,
+                e23: e1_e3 * x.e12 + (e1_e1 - e2_e2 - e3_e3) * x.e23 - e1_e2 * x.e13,
             }
         }
     }
     impl Sandwich<Odd> for Vector {
         #[inline]
         fn sandwich(self, x: Odd) -> Odd {
+            let two_e1 = self.e1 + self.e1;
+            let two_e2 = self.e2 + self.e2;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
-            let e1_e3 = self.e1 * self.e3;
+            let e1_e2 = two_e1 * self.e2;
+            let e1_e3 = two_e1 * self.e3;
             let e2_e2 = self.e2 * self.e2;
-            let e2_e3 = self.e2 * self.e3;
+            let e2_e3 = two_e2 * self.e3;
             let e3_e3 = self.e3 * self.e3;
             Odd {
-                e1: (e2_e2 + e3_e3 - e1_e1) * x.e1 + (-2.0 * e1_e2) * x.e2
-                    + (-2.0 * e1_e3) * x.e3,
-                e2: (-2.0 * e1_e2) * x.e1 + (e1_e1 + e3_e3 - e2_e2) * x.e2
-                    + (-2.0 * e2_e3) * x.e3,
-                e3: (-2.0 * e1_e3) * x.e1 + (-2.0 * e2_e3) * x.e2
-                    + (e1_e1 + e2_e2 - e3_e3) * x.e3,
+                e1: (e2_e2 + e3_e3 - e1_e1) * x.e1 - e1_e2 * x.e2 - e1_e3 * x.e3,
+                e2: (e1_e1 + e3_e3 - e2_e2) * x.e2 - e1_e2 * x.e1 - e2_e3 * x.e3,
+                e3: (e1_e1 + e2_e2 - e3_e3) * x.e3 - e1_e3 * x.e1 - e2_e3 * x.e2,
                 e123: (-e1_e1 - e2_e2 - e3_e3) * x.e123,
             }
         }
@@ -7486,26 +7482,22 @@ pub mod g3 {
     impl Sandwich<Multivector> for Vector {
         #[inline]
         fn sandwich(self, x: Multivector) -> Multivector {
+            let two_e1 = self.e1 + self.e1;
+            let two_e2 = self.e2 + self.e2;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
-            let e1_e3 = self.e1 * self.e3;
+            let e1_e2 = two_e1 * self.e2;
+            let e1_e3 = two_e1 * self.e3;
             let e2_e2 = self.e2 * self.e2;
-            let e2_e3 = self.e2 * self.e3;
+            let e2_e3 = two_e2 * self.e3;
             let e3_e3 = self.e3 * self.e3;
             Multivector {
                 s: (e1_e1 + e2_e2 + e3_e3) * x.s,
-                e1: (e2_e2 + e3_e3 - e1_e1) * x.e1 + (-2.0 * e1_e2) * x.e2
-                    + (-2.0 * e1_e3) * x.e3,
-                e2: (-2.0 * e1_e2) * x.e1 + (e1_e1 + e3_e3 - e2_e2) * x.e2
-                    + (-2.0 * e2_e3) * x.e3,
-                e3: (-2.0 * e1_e3) * x.e1 + (-2.0 * e2_e3) * x.e2
-                    + (e1_e1 + e2_e2 - e3_e3) * x.e3,
-                e12: (e3_e3 - e1_e1 - e2_e2) * x.e12 + (-2.0 * e2_e3) * x.e13
-                    + (2.0 * e1_e3) * x.e23,
-                e13: (-2.0 * e2_e3) * x.e12 + (e2_e2 - e1_e1 - e3_e3) * x.e13
-                    + (-2.0 * e1_e2) * x.e23,
-                e23: (2.0 * e1_e3) * x.e12 + (-2.0 * e1_e2) * x.e13
-                    + (e1_e1 - e2_e2 - e3_e3) * x.e23,
+                e1: (e2_e2 + e3_e3 - e1_e1) * x.e1 - e1_e2 * x.e2 - e1_e3 * x.e3,
+                e2: (e1_e1 + e3_e3 - e2_e2) * x.e2 - e1_e2 * x.e1 - e2_e3 * x.e3,
+                e3: (e1_e1 + e2_e2 - e3_e3) * x.e3 - e1_e3 * x.e1 - e2_e3 * x.e2,
+                e12: (e3_e3 - e1_e1 - e2_e2) * x.e12 + e1_e3 * x.e23 - e2_e3 * x.e13,
+                e13: (e2_e2 - e1_e1 - e3_e3) * x.e13 - e2_e3 * x.e12 - e1_e2 * x.e23,
+                e23: e1_e3 * x.e12 + (e1_e1 - e2_e2 - e3_e3) * x.e23 - e1_e2 * x.e13,
                 e123: (-e1_e1 - e2_e2 - e3_e3) * x.e123,
             }
         }
@@ -7513,24 +7505,26 @@ pub mod g3 {
     impl Sandwich<Vector> for Even {
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
+            let two_s = self.s + self.s;
+            let two_e12 = self.e12 + self.e12;
+            let two_e13 = self.e13 + self.e13;
             let s_s = self.s * self.s;
-            let s_e12 = self.s * self.e12;
-            let s_e13 = self.s * self.e13;
-            let s_e23 = self.s * self.e23;
+            let s_e12 = two_s * self.e12;
+            let s_e13 = two_s * self.e13;
+            let s_e23 = two_s * self.e23;
             let e12_e12 = self.e12 * self.e12;
-            let e12_e13 = self.e12 * self.e13;
-            let e12_e23 = self.e12 * self.e23;
+            let e12_e13 = two_e12 * self.e13;
+            let e12_e23 = two_e12 * self.e23;
             let e13_e13 = self.e13 * self.e13;
-            let e13_e23 = self.e13 * self.e23;
+            let e13_e23 = two_e13 * self.e23;
             let e23_e23 = self.e23 * self.e23;
             Vector {
-                e1: (s_s + e23_e23 - e12_e12 - e13_e13) * x.e1
-                    + (2.0 * (s_e12 - e13_e23)) * x.e2
-                    + (2.0 * (s_e13 + e12_e23)) * x.e3,
-                e2: (-2.0 * (s_e12 + e13_e23)) * x.e1
+                e1: (s_s + e23_e23 - e12_e12 - e13_e13) * x.e1 + (s_e12 - e13_e23) * x.e2
+                    + (s_e13 + e12_e23) * x.e3,
+                e2: (-s_e12 - e13_e23) * x.e1
                     + (s_s + e13_e13 - e12_e12 - e23_e23) * x.e2
-                    + (2.0 * (s_e23 - e12_e13)) * x.e3,
-                e3: (2.0 * (e12_e23 - s_e13)) * x.e1 + (-2.0 * (s_e23 + e12_e13)) * x.e2
+                    + (s_e23 - e12_e13) * x.e3,
+                e3: (e12_e23 - s_e13) * x.e1 + (-s_e23 - e12_e13) * x.e2
                     + (s_s + e12_e12 - e13_e13 - e23_e23) * x.e3,
             }
         }
@@ -7538,25 +7532,26 @@ pub mod g3 {
     impl Sandwich<Bivector> for Even {
         #[inline]
         fn sandwich(self, x: Bivector) -> Bivector {
+            let two_s = self.s + self.s;
+            let two_e12 = self.e12 + self.e12;
+            let two_e13 = self.e13 + self.e13;
             let s_s = self.s * self.s;
-            let s_e12 = self.s * self.e12;
-            let s_e13 = self.s * self.e13;
-            let s_e23 = self.s * self.e23;
+            let s_e12 = two_s * self.e12;
+            let s_e13 = two_s * self.e13;
+            let s_e23 = two_s * self.e23;
             let e12_e12 = self.e12 * self.e12;
-            let e12_e13 = self.e12 * self.e13;
-            let e12_e23 = self.e12 * self.e23;
+            let e12_e13 = two_e12 * self.e13;
+            let e12_e23 = two_e12 * self.e23;
             let e13_e13 = self.e13 * self.e13;
-            let e13_e23 = self.e13 * self.e23;
+            let e13_e23 = two_e13 * self.e23;
             let e23_e23 = self.e23 * self.e23;
             Bivector {
                 e12: (s_s + e12_e12 - e13_e13 - e23_e23) * x.e12
-                    + (2.0 * (s_e23 + e12_e13)) * x.e13
-                    + (2.0 * (e12_e23 - s_e13)) * x.e23,
-                e13: (2.0 * (e12_e13 - s_e23)) * x.e12
+                    + (s_e23 + e12_e13) * x.e13 + (e12_e23 - s_e13) * x.e23,
+                e13: (e12_e13 - s_e23) * x.e12
                     + (s_s + e13_e13 - e12_e12 - e23_e23) * x.e13
-                    + (2.0 * (s_e12 + e13_e23)) * x.e23,
-                e23: (2.0 * (s_e13 + e12_e23)) * x.e12
-                    + (2.0 * (e13_e23 - s_e12)) * x.e13
+                    + (s_e12 + e13_e23) * x.e23,
+                e23: (s_e13 + e12_e23) * x.e12 + (e13_e23 - s_e12) * x.e13
                     + (s_s + e23_e23 - e12_e12 - e13_e13) * x.e23,
             }
         }
@@ -7576,26 +7571,27 @@ pub mod g3 {
     impl Sandwich<Even> for Even {
         #[inline]
         fn sandwich(self, x: Even) -> Even {
+            let two_s = self.s + self.s;
+            let two_e12 = self.e12 + self.e12;
+            let two_e13 = self.e13 + self.e13;
             let s_s = self.s * self.s;
-            let s_e12 = self.s * self.e12;
-            let s_e13 = self.s * self.e13;
-            let s_e23 = self.s * self.e23;
+            let s_e12 = two_s * self.e12;
+            let s_e13 = two_s * self.e13;
+            let s_e23 = two_s * self.e23;
             let e12_e12 = self.e12 * self.e12;
-            let e12_e13 = self.e12 * self.e13;
-            let e12_e23 = self.e12 * self.e23;
+            let e12_e13 = two_e12 * self.e13;
+            let e12_e23 = two_e12 * self.e23;
             let e13_e13 = self.e13 * self.e13;
-            let e13_e23 = self.e13 * self.e23;
+            let e13_e23 = two_e13 * self.e23;
             let e23_e23 = self.e23 * self.e23;
             Even {
                 s: (s_s + e12_e12 + e13_e13 + e23_e23) * x.s,
                 e12: (s_s + e12_e12 - e13_e13 - e23_e23) * x.e12
-                    + (2.0 * (s_e23 + e12_e13)) * x.e13
-                    + (2.0 * (e12_e23 - s_e13)) * x.e23,
-                e13: (2.0 * (e12_e13 - s_e23)) * x.e12
+                    + (s_e23 + e12_e13) * x.e13 + (e12_e23 - s_e13) * x.e23,
+                e13: (e12_e13 - s_e23) * x.e12
                     + (s_s + e13_e13 - e12_e12 - e23_e23) * x.e13
-                    + (2.0 * (s_e12 + e13_e23)) * x.e23,
-                e23: (2.0 * (s_e13 + e12_e23)) * x.e12
-                    + (2.0 * (e13_e23 - s_e12)) * x.e13
+                    + (s_e12 + e13_e23) * x.e23,
+                e23: (s_e13 + e12_e23) * x.e12 + (e13_e23 - s_e12) * x.e13
                     + (s_s + e23_e23 - e12_e12 - e13_e13) * x.e23,
             }
         }
@@ -7603,24 +7599,26 @@ pub mod g3 {
     impl Sandwich<Odd> for Even {
         #[inline]
         fn sandwich(self, x: Odd) -> Odd {
+            let two_s = self.s + self.s;
+            let two_e12 = self.e12 + self.e12;
+            let two_e13 = self.e13 + self.e13;
             let s_s = self.s * self.s;
-            let s_e12 = self.s * self.e12;
-            let s_e13 = self.s * self.e13;
-            let s_e23 = self.s * self.e23;
+            let s_e12 = two_s * self.e12;
+            let s_e13 = two_s * self.e13;
+            let s_e23 = two_s * self.e23;
             let e12_e12 = self.e12 * self.e12;
-            let e12_e13 = self.e12 * self.e13;
-            let e12_e23 = self.e12 * self.e23;
+            let e12_e13 = two_e12 * self.e13;
+            let e12_e23 = two_e12 * self.e23;
             let e13_e13 = self.e13 * self.e13;
-            let e13_e23 = self.e13 * self.e23;
+            let e13_e23 = two_e13 * self.e23;
             let e23_e23 = self.e23 * self.e23;
             Odd {
-                e1: (s_s + e23_e23 - e12_e12 - e13_e13) * x.e1
-                    + (2.0 * (s_e12 - e13_e23)) * x.e2
-                    + (2.0 * (s_e13 + e12_e23)) * x.e3,
-                e2: (-2.0 * (s_e12 + e13_e23)) * x.e1
+                e1: (s_s + e23_e23 - e12_e12 - e13_e13) * x.e1 + (s_e12 - e13_e23) * x.e2
+                    + (s_e13 + e12_e23) * x.e3,
+                e2: (-s_e12 - e13_e23) * x.e1
                     + (s_s + e13_e13 - e12_e12 - e23_e23) * x.e2
-                    + (2.0 * (s_e23 - e12_e13)) * x.e3,
-                e3: (2.0 * (e12_e23 - s_e13)) * x.e1 + (-2.0 * (s_e23 + e12_e13)) * x.e2
+                    + (s_e23 - e12_e13) * x.e3,
+                e3: (e12_e23 - s_e13) * x.e1 + (-s_e23 - e12_e13) * x.e2
                     + (s_s + e12_e12 - e13_e13 - e23_e23) * x.e3,
                 e123: (s_s + e12_e12 + e13_e13 + e23_e23) * x.e123,
             }
@@ -7629,34 +7627,34 @@ pub mod g3 {
     impl Sandwich<Multivector> for Even {
         #[inline]
         fn sandwich(self, x: Multivector) -> Multivector {
+            let two_s = self.s + self.s;
+            let two_e12 = self.e12 + self.e12;
+            let two_e13 = self.e13 + self.e13;
             let s_s = self.s * self.s;
-            let s_e12 = self.s * self.e12;
-            let s_e13 = self.s * self.e13;
-            let s_e23 = self.s * self.e23;
+            let s_e12 = two_s * self.e12;
+            let s_e13 = two_s * self.e13;
+            let s_e23 = two_s * self.e23;
             let e12_e12 = self.e12 * self.e12;
-            let e12_e13 = self.e12 * self.e13;
-            let e12_e23 = self.e12 * self.e23;
+            let e12_e13 = two_e12 * self.e13;
+            let e12_e23 = two_e12 * self.e23;
             let e13_e13 = self.e13 * self.e13;
-            let e13_e23 = self.e13 * self.e23;
+            let e13_e23 = two_e13 * self.e23;
             let e23_e23 = self.e23 * self.e23;
             Multivector {
                 s: (s_s + e12_e12 + e13_e13 + e23_e23) * x.s,
-                e1: (s_s + e23_e23 - e12_e12 - e13_e13) * x.e1
-                    + (2.0 * (s_e12 - e13_e23)) * x.e2
-                    + (2.0 * (s_e13 + e12_e23)) * x.e3,
-                e2: (-2.0 * (s_e12 + e13_e23)) * x.e1
+                e1: (s_s + e23_e23 - e12_e12 - e13_e13) * x.e1 + (s_e12 - e13_e23) * x.e2
+                    + (s_e13 + e12_e23) * x.e3,
+                e2: (-s_e12 - e13_e23) * x.e1
                     + (s_s + e13_e13 - e12_e12 - e23_e23) * x.e2
-                    + (2.0 * (s_e23 - e12_e13)) * x.e3,
-                e3: (2.0 * (e12_e23 - s_e13)) * x.e1 + (-2.0 * (s_e23 + e12_e13)) * x.e2
+                    + (s_e23 - e12_e13) * x.e3,
+                e3: (e12_e23 - s_e13) * x.e1 + (-s_e23 - e12_e13) * x.e2
                     + (s_s + e12_e12 - e13_e13 - e23_e23) * x.e3,
                 e12: (s_s + e12_e12 - e13_e13 - e23_e23) * x.e12
-                    + (2.0 * (s_e23 + e12_e13)) * x.e13
-                    + (2.0 * (e12_e23 - s_e13)) * x.e23,
-                e13: (2.0 * (e12_e13 - s_e23)) * x.e12
+                    + (s_e23 + e12_e13) * x.e13 + (e12_e23 - s_e13) * x.e23,
+                e13: (e12_e13 - s_e23) * x.e12
                     + (s_s + e13_e13 - e12_e12 - e23_e23) * x.e13
-                    + (2.0 * (s_e12 + e13_e23)) * x.e23,
-                e23: (2.0 * (s_e13 + e12_e23)) * x.e12
-                    + (2.0 * (e13_e23 - s_e12)) * x.e13
+                    + (s_e12 + e13_e23) * x.e23,
+                e23: (s_e13 + e12_e23) * x.e12 + (e13_e23 - s_e12) * x.e13
                     + (s_s + e23_e23 - e12_e12 - e13_e13) * x.e23,
                 e123: (s_s + e12_e12 + e13_e13 + e23_e23) * x.e123,
             }
@@ -7665,24 +7663,26 @@ pub mod g3 {
     impl Sandwich<Vector> for Odd {
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
+            let two_e1 = self.e1 + self.e1;
+            let two_e2 = self.e2 + self.e2;
+            let two_e3 = self.e3 + self.e3;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
-            let e1_e3 = self.e1 * self.e3;
-            let e1_e123 = self.e1 * self.e123;
+            let e1_e2 = two_e1 * self.e2;
+            let e1_e3 = two_e1 * self.e3;
+            let e1_e123 = two_e1 * self.e123;
             let e2_e2 = self.e2 * self.e2;
-            let e2_e3 = self.e2 * self.e3;
-            let e2_e123 = self.e2 * self.e123;
+            let e2_e3 = two_e2 * self.e3;
+            let e2_e123 = two_e2 * self.e123;
             let e3_e3 = self.e3 * self.e3;
-            let e3_e123 = self.e3 * self.e123;
+            let e3_e123 = two_e3 * self.e123;
             let e123_e123 = self.e123 * self.e123;
             Vector {
-                e1: (e2_e2 + e3_e3 - e1_e1 - e123_e123) * x.e1
-                    + (2.0 * (e3_e123 - e1_e2)) * x.e2
-                    + (-2.0 * (e1_e3 + e2_e123)) * x.e3,
-                e2: (-2.0 * (e1_e2 + e3_e123)) * x.e1
+                e1: (e2_e2 + e3_e3 - e1_e1 - e123_e123) * x.e1 + (e3_e123 - e1_e2) * x.e2
+                    + (-e1_e3 - e2_e123) * x.e3,
+                e2: (-e1_e2 - e3_e123) * x.e1
                     + (e1_e1 + e3_e3 - e2_e2 - e123_e123) * x.e2
-                    + (2.0 * (e1_e123 - e2_e3)) * x.e3,
-                e3: (2.0 * (e2_e123 - e1_e3)) * x.e1 + (-2.0 * (e1_e123 + e2_e3)) * x.e2
+                    + (e1_e123 - e2_e3) * x.e3,
+                e3: (e2_e123 - e1_e3) * x.e1 + (-e1_e123 - e2_e3) * x.e2
                     + (e1_e1 + e2_e2 - e3_e3 - e123_e123) * x.e3,
             }
         }
@@ -7690,25 +7690,26 @@ pub mod g3 {
     impl Sandwich<Bivector> for Odd {
         #[inline]
         fn sandwich(self, x: Bivector) -> Bivector {
+            let two_e1 = self.e1 + self.e1;
+            let two_e2 = self.e2 + self.e2;
+            let two_e3 = self.e3 + self.e3;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
-            let e1_e3 = self.e1 * self.e3;
-            let e1_e123 = self.e1 * self.e123;
+            let e1_e2 = two_e1 * self.e2;
+            let e1_e3 = two_e1 * self.e3;
+            let e1_e123 = two_e1 * self.e123;
             let e2_e2 = self.e2 * self.e2;
-            let e2_e3 = self.e2 * self.e3;
-            let e2_e123 = self.e2 * self.e123;
+            let e2_e3 = two_e2 * self.e3;
+            let e2_e123 = two_e2 * self.e123;
             let e3_e3 = self.e3 * self.e3;
-            let e3_e123 = self.e3 * self.e123;
+            let e3_e123 = two_e3 * self.e123;
             let e123_e123 = self.e123 * self.e123;
             Bivector {
                 e12: (e3_e3 + e123_e123 - e1_e1 - e2_e2) * x.e12
-                    + (-2.0 * (e1_e123 + e2_e3)) * x.e13
-                    + (2.0 * (e1_e3 - e2_e123)) * x.e23,
-                e13: (2.0 * (e1_e123 - e2_e3)) * x.e12
+                    + (-e1_e123 - e2_e3) * x.e13 + (e1_e3 - e2_e123) * x.e23,
+                e13: (e1_e123 - e2_e3) * x.e12
                     + (e2_e2 + e123_e123 - e1_e1 - e3_e3) * x.e13
-                    + (-2.0 * (e1_e2 + e3_e123)) * x.e23,
-                e23: (2.0 * (e1_e3 + e2_e123)) * x.e12
-                    + (2.0 * (e3_e123 - e1_e2)) * x.e13
+                    + (-e1_e2 - e3_e123) * x.e23,
+                e23: (e1_e3 + e2_e123) * x.e12 + (e3_e123 - e1_e2) * x.e13
                     + (e1_e1 + e123_e123 - e2_e2 - e3_e3) * x.e23,
             }
         }
@@ -7728,26 +7729,27 @@ pub mod g3 {
     impl Sandwich<Even> for Odd {
         #[inline]
         fn sandwich(self, x: Even) -> Even {
+            let two_e1 = self.e1 + self.e1;
+            let two_e2 = self.e2 + self.e2;
+            let two_e3 = self.e3 + self.e3;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
-            let e1_e3 = self.e1 * self.e3;
-            let e1_e123 = self.e1 * self.e123;
+            let e1_e2 = two_e1 * self.e2;
+            let e1_e3 = two_e1 * self.e3;
+            let e1_e123 = two_e1 * self.e123;
             let e2_e2 = self.e2 * self.e2;
-            let e2_e3 = self.e2 * self.e3;
-            let e2_e123 = self.e2 * self.e123;
+            let e2_e3 = two_e2 * self.e3;
+            let e2_e123 = two_e2 * self.e123;
             let e3_e3 = self.e3 * self.e3;
-            let e3_e123 = self.e3 * self.e123;
+            let e3_e123 = two_e3 * self.e123;
             let e123_e123 = self.e123 * self.e123;
             Even {
                 s: (e1_e1 + e2_e2 + e3_e3 + e123_e123) * x.s,
                 e12: (e3_e3 + e123_e123 - e1_e1 - e2_e2) * x.e12
-                    + (-2.0 * (e1_e123 + e2_e3)) * x.e13
-                    + (2.0 * (e1_e3 - e2_e123)) * x.e23,
-                e13: (2.0 * (e1_e123 - e2_e3)) * x.e12
+                    + (-e1_e123 - e2_e3) * x.e13 + (e1_e3 - e2_e123) * x.e23,
+                e13: (e1_e123 - e2_e3) * x.e12
                     + (e2_e2 + e123_e123 - e1_e1 - e3_e3) * x.e13
-                    + (-2.0 * (e1_e2 + e3_e123)) * x.e23,
-                e23: (2.0 * (e1_e3 + e2_e123)) * x.e12
-                    + (2.0 * (e3_e123 - e1_e2)) * x.e13
+                    + (-e1_e2 - e3_e123) * x.e23,
+                e23: (e1_e3 + e2_e123) * x.e12 + (e3_e123 - e1_e2) * x.e13
                     + (e1_e1 + e123_e123 - e2_e2 - e3_e3) * x.e23,
             }
         }
@@ -7755,24 +7757,26 @@ pub mod g3 {
     impl Sandwich<Odd> for Odd {
         #[inline]
         fn sandwich(self, x: Odd) -> Odd {
+            let two_e1 = self.e1 + self.e1;
+            let two_e2 = self.e2 + self.e2;
+            let two_e3 = self.e3 + self.e3;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
-            let e1_e3 = self.e1 * self.e3;
-            let e1_e123 = self.e1 * self.e123;
+            let e1_e2 = two_e1 * self.e2;
+            let e1_e3 = two_e1 * self.e3;
+            let e1_e123 = two_e1 * self.e123;
             let e2_e2 = self.e2 * self.e2;
-            let e2_e3 = self.e2 * self.e3;
-            let e2_e123 = self.e2 * self.e123;
+            let e2_e3 = two_e2 * self.e3;
+            let e2_e123 = two_e2 * self.e123;
             let e3_e3 = self.e3 * self.e3;
-            let e3_e123 = self.e3 * self.e123;
+            let e3_e123 = two_e3 * self.e123;
             let e123_e123 = self.e123 * self.e123;
             Odd {
-                e1: (e2_e2 + e3_e3 - e1_e1 - e123_e123) * x.e1
-                    + (2.0 * (e3_e123 - e1_e2)) * x.e2
-                    + (-2.0 * (e1_e3 + e2_e123)) * x.e3,
-                e2: (-2.0 * (e1_e2 + e3_e123)) * x.e1
+                e1: (e2_e2 + e3_e3 - e1_e1 - e123_e123) * x.e1 + (e3_e123 - e1_e2) * x.e2
+                    + (-e1_e3 - e2_e123) * x.e3,
+                e2: (-e1_e2 - e3_e123) * x.e1
                     + (e1_e1 + e3_e3 - e2_e2 - e123_e123) * x.e2
-                    + (2.0 * (e1_e123 - e2_e3)) * x.e3,
-                e3: (2.0 * (e2_e123 - e1_e3)) * x.e1 + (-2.0 * (e1_e123 + e2_e3)) * x.e2
+                    + (e1_e123 - e2_e3) * x.e3,
+                e3: (e2_e123 - e1_e3) * x.e1 + (-e1_e123 - e2_e3) * x.e2
                     + (e1_e1 + e2_e2 - e3_e3 - e123_e123) * x.e3,
                 e123: (-e1_e1 - e2_e2 - e3_e3 - e123_e123) * x.e123,
             }
@@ -7781,34 +7785,34 @@ pub mod g3 {
     impl Sandwich<Multivector> for Odd {
         #[inline]
         fn sandwich(self, x: Multivector) -> Multivector {
+            let two_e1 = self.e1 + self.e1;
+            let two_e2 = self.e2 + self.e2;
+            let two_e3 = self.e3 + self.e3;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
-            let e1_e3 = self.e1 * self.e3;
-            let e1_e123 = self.e1 * self.e123;
+            let e1_e2 = two_e1 * self.e2;
+            let e1_e3 = two_e1 * self.e3;
+            let e1_e123 = two_e1 * self.e123;
             let e2_e2 = self.e2 * self.e2;
-            let e2_e3 = self.e2 * self.e3;
-            let e2_e123 = self.e2 * self.e123;
+            let e2_e3 = two_e2 * self.e3;
+            let e2_e123 = two_e2 * self.e123;
             let e3_e3 = self.e3 * self.e3;
-            let e3_e123 = self.e3 * self.e123;
+            let e3_e123 = two_e3 * self.e123;
             let e123_e123 = self.e123 * self.e123;
             Multivector {
                 s: (e1_e1 + e2_e2 + e3_e3 + e123_e123) * x.s,
-                e1: (e2_e2 + e3_e3 - e1_e1 - e123_e123) * x.e1
-                    + (2.0 * (e3_e123 - e1_e2)) * x.e2
-                    + (-2.0 * (e1_e3 + e2_e123)) * x.e3,
-                e2: (-2.0 * (e1_e2 + e3_e123)) * x.e1
+                e1: (e2_e2 + e3_e3 - e1_e1 - e123_e123) * x.e1 + (e3_e123 - e1_e2) * x.e2
+                    + (-e1_e3 - e2_e123) * x.e3,
+                e2: (-e1_e2 - e3_e123) * x.e1
                     + (e1_e1 + e3_e3 - e2_e2 - e123_e123) * x.e2
-                    + (2.0 * (e1_e123 - e2_e3)) * x.e3,
-                e3: (2.0 * (e2_e123 - e1_e3)) * x.e1 + (-2.0 * (e1_e123 + e2_e3)) * x.e2
+                    + (e1_e123 - e2_e3) * x.e3,
+                e3: (e2_e123 - e1_e3) * x.e1 + (-e1_e123 - e2_e3) * x.e2
                     + (e1_e1 + e2_e2 - e3_e3 - e123_e123) * x.e3,
                 e12: (e3_e3 + e123_e123 - e1_e1 - e2_e2) * x.e12
-                    + (-2.0 * (e1_e123 + e2_e3)) * x.e13
-                    + (2.0 * (e1_e3 - e2_e123)) * x.e23,
-                e13: (2.0 * (e1_e123 - e2_e3)) * x.e12
+                    + (-e1_e123 - e2_e3) * x.e13 + (e1_e3 - e2_e123) * x.e23,
+                e13: (e1_e123 - e2_e3) * x.e12
                     + (e2_e2 + e123_e123 - e1_e1 - e3_e3) * x.e13
-                    + (-2.0 * (e1_e2 + e3_e123)) * x.e23,
-                e23: (2.0 * (e1_e3 + e2_e123)) * x.e12
-                    + (2.0 * (e3_e123 - e1_e2)) * x.e13
+                    + (-e1_e2 - e3_e123) * x.e23,
+                e23: (e1_e3 + e2_e123) * x.e12 + (e3_e123 - e1_e2) * x.e13
                     + (e1_e1 + e123_e123 - e2_e2 - e3_e3) * x.e23,
                 e123: (-e1_e1 - e2_e2 - e3_e3 - e123_e123) * x.e123,
             }

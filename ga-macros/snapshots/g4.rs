@@ -13122,85 +13122,89 @@ pub mod g4 {
     impl Sandwich<Vector> for Vector {
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
+            let two_e1 = self.e1 + self.e1;
+            let two_e2 = self.e2 + self.e2;
+            let two_e3 = self.e3 + self.e3;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
-            let e1_e3 = self.e1 * self.e3;
-            let e1_e4 = self.e1 * self.e4;
+            let e1_e2 = two_e1 * self.e2;
+            let e1_e3 = two_e1 * self.e3;
+            let e1_e4 = two_e1 * self.e4;
             let e2_e2 = self.e2 * self.e2;
-            let e2_e3 = self.e2 * self.e3;
-            let e2_e4 = self.e2 * self.e4;
+            let e2_e3 = two_e2 * self.e3;
+            let e2_e4 = two_e2 * self.e4;
             let e3_e3 = self.e3 * self.e3;
-            let e3_e4 = self.e3 * self.e4;
+            let e3_e4 = two_e3 * self.e4;
             let e4_e4 = self.e4 * self.e4;
             Vector {
-                e1: (e2_e2 + e3_e3 + e4_e4 - e1_e1) * x.e1 + (-2.0 * e1_e2) * x.e2
-                    + (-2.0 * e1_e3) * x.e3 + (-2.0 * e1_e4) * x.e4,
-                e2: (-2.0 * e1_e2) * x.e1 + (e1_e1 + e3_e3 + e4_e4 - e2_e2) * x.e2
-                    + (-2.0 * e2_e3) * x.e3 + (-2.0 * e2_e4) * x.e4,
-                e3: (-2.0 * e1_e3) * x.e1 + (-2.0 * e2_e3) * x.e2
-                    + (e1_e1 + e2_e2 + e4_e4 - e3_e3) * x.e3 + (-2.0 * e3_e4) * x.e4,
-                e4: (-2.0 * e1_e4) * x.e1 + (-2.0 * e2_e4) * x.e2 + (-2.0 * e3_e4) * x.e3
-                    + (e1_e1 + e2_e2 + e3_e3 - e4_e4) * x.e4,
+                e1: (e2_e2 + e3_e3 + e4_e4 - e1_e1) * x.e1 - e1_e2 * x.e2 - e1_e3 * x.e3
+                    - e1_e4 * x.e4,
+                e2: (e1_e1 + e3_e3 + e4_e4 - e2_e2) * x.e2 - e1_e2 * x.e1 - e2_e3 * x.e3
+                    - e2_e4 * x.e4,
+                e3: (e1_e1 + e2_e2 + e4_e4 - e3_e3) * x.e3 - e1_e3 * x.e1 - e2_e3 * x.e2
+                    - e3_e4 * x.e4,
+                e4: (e1_e1 + e2_e2 + e3_e3 - e4_e4) * x.e4 - e1_e4 * x.e1 - e2_e4 * x.e2
+                    - e3_e4 * x.e3,
             }
         }
     }
     impl Sandwich<Bivector> for Vector {
         #[inline]
         fn sandwich(self, x: Bivector) -> Bivector {
+            let two_e1 = self.e1 + self.e1;
+            let two_e2 = self.e2 + self.e2;
+            let two_e3 = self.e3 + self.e3;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
-            let e1_e3 = self.e1 * self.e3;
-            let e1_e4 = self.e1 * self.e4;
+            let e1_e2 = two_e1 * self.e2;
+            let e1_e3 = two_e1 * self.e3;
+            let e1_e4 = two_e1 * self.e4;
             let e2_e2 = self.e2 * self.e2;
-            let e2_e3 = self.e2 * self.e3;
-            let e2_e4 = self.e2 * self.e4;
+            let e2_e3 = two_e2 * self.e3;
+            let e2_e4 = two_e2 * self.e4;
             let e3_e3 = self.e3 * self.e3;
-            let e3_e4 = self.e3 * self.e4;
+            let e3_e4 = two_e3 * self.e4;
             let e4_e4 = self.e4 * self.e4;
             Bivector {
-                e12: (e3_e3 + e4_e4 - e1_e1 - e2_e2) * x.e12 + (-2.0 * e2_e3) * x.e13
-                    + (-2.0 * e2_e4) * x.e14 + (2.0 * e1_e3) * x.e23
-                    + (2.0 * e1_e4) * x.e24,
-                e13: (-2.0 * e2_e3) * x.e12 + (e2_e2 + e4_e4 - e1_e1 - e3_e3) * x.e13
-                    + (-2.0 * e3_e4) * x.e14 + (-2.0 * e1_e2) * x.e23
-                    + (2.0 * e1_e4) * x.e34,
-                e14: (-2.0 * e2_e4) * x.e12 + (-2.0 * e3_e4) * x.e13
-                    + (e2_e2 + e3_e3 - e1_e1 - e4_e4) * x.e14 + (-2.0 * e1_e2) * x.e24
-                    + (-2.0 * e1_e3) * x.e34,
-                e23: (2.0 * e1_e3) * x.e12 + (-2.0 * e1_e2) * x.e13
-                    + (e1_e1 + e4_e4 - e2_e2 - e3_e3) * x.e23 + (-2.0 * e3_e4) * x.e24
-                    + (2.0 * e2_e4) * x.e34,
-                e24: (2.0 * e1_e4) * x.e12 + (-2.0 * e1_e2) * x.e14
-                    + (-2.0 * e3_e4) * x.e23 + (e1_e1 + e3_e3 - e2_e2 - e4_e4) * x.e24
-                    + (-2.0 * e2_e3) * x.e34,
-                e34: (2.0 * e1_e4) * x.e13 + (-2.0 * e1_e3) * x.e14
-                    + (2.0 * e2_e4) * x.e23 + (-2.0 * e2_e3) * x.e24
-                    + (e1_e1 + e2_e2 - e3_e3 - e4_e4) * x.e34,
+                e12: (e3_e3 + e4_e4 - e1_e1 - e2_e2) * x.e12 + e1_e3 * x.e23
+                    + e1_e4 * x.e24 - e2_e3 * x.e13 - e2_e4 * x.e14,
+                e13: (e2_e2 + e4_e4 - e1_e1 - e3_e3) * x.e13 + e1_e4 * x.e34
+                    - e2_e3 * x.e12 - e3_e4 * x.e14 - e1_e2 * x.e23,
+                e14: (e2_e2 + e3_e3 - e1_e1 - e4_e4) * x.e14 - e2_e4 * x.e12
+                    - e3_e4 * x.e13 - e1_e2 * x.e24 - e1_e3 * x.e34,
+                e23: e1_e3 * x.e12 + (e1_e1 + e4_e4 - e2_e2 - e3_e3) * x.e23
+                    + e2_e4 * x.e34 - e1_e2 * x.e13 - e3_e4 * x.e24,
+                e24: e1_e4 * x.e12 + (e1_e1 + e3_e3 - e2_e2 - e4_e4) * x.e24
+                    - e1_e2 * x.e14 - e3_e4 * x.e23 - e2_e3 * x.e34,
+                e34: e1_e4 * x.e13 + e2_e4 * x.e23
+                    + (e1_e1 + e2_e2 - e3_e3 - e4_e4) * x.e34 - e1_e3 * x.e14
+                    - e2_e3 * x.e24,
             }
         }
     }
     impl Sandwich<Trivector> for Vector {
         #[inline]
         fn sandwich(self, x: Trivector) -> Trivector {
+            let two_e1 = self.e1 + self.e1;
+            let two_e2 = self.e2 + self.e2;
+            let two_e3 = self.e3 + self.e3;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
-            let e1_e3 = self.e1 * self.e3;
-            let e1_e4 = self.e1 * self.e4;
+            let e1_e2 = two_e1 * self.e2;
+            let e1_e3 = two_e1 * self.e3;
+            let e1_e4 = two_e1 * self.e4;
             let e2_e2 = self.e2 * self.e2;
-            let e2_e3 = self.e2 * self.e3;
-            let e2_e4 = self.e2 * self.e4;
+            let e2_e3 = two_e2 * self.e3;
+            let e2_e4 = two_e2 * self.e4;
             let e3_e3 = self.e3 * self.e3;
-            let e3_e4 = self.e3 * self.e4;
+            let e3_e4 = two_e3 * self.e4;
             let e4_e4 = self.e4 * self.e4;
             Trivector {
-                e123: (e4_e4 - e1_e1 - e2_e2 - e3_e3) * x.e123 + (-2.0 * e3_e4) * x.e124
-                    + (2.0 * e2_e4) * x.e134 + (-2.0 * e1_e4) * x.e234,
-                e124: (-2.0 * e3_e4) * x.e123 + (e3_e3 - e1_e1 - e2_e2 - e4_e4) * x.e124
-                    + (-2.0 * e2_e3) * x.e134 + (2.0 * e1_e3) * x.e234,
-                e134: (2.0 * e2_e4) * x.e123 + (-2.0 * e2_e3) * x.e124
-                    + (e2_e2 - e1_e1 - e3_e3 - e4_e4) * x.e134 + (-2.0 * e1_e2) * x.e234,
-                e234: (-2.0 * e1_e4) * x.e123 + (2.0 * e1_e3) * x.e124
-                    + (-2.0 * e1_e2) * x.e134 + (e1_e1 - e2_e2 - e3_e3 - e4_e4) * x.e234,
+                e123: (e4_e4 - e1_e1 - e2_e2 - e3_e3) * x.e123 + e2_e4 * x.e134
+                    - e3_e4 * x.e124 - e1_e4 * x.e234,
+                e124: (e3_e3 - e1_e1 - e2_e2 - e4_e4) * x.e124 + e1_e3 * x.e234
+                    - e3_e4 * x.e123 - e2_e3 * x.e134,
+                e134: e2_e4 * x.e123 + (e2_e2 - e1_e1 - e3_e3 - e4_e4) * x.e134
+                    - e2_e3 * x.e124 - e1_e2 * x.e234,
+                e234: e1_e3 * x.e124 + (e1_e1 - e2_e2 - e3_e3 - e4_e4) * x.e234
+                    - e1_e4 * x.e123 - e1_e2 * x.e134,
             }
         }
     }
@@ -13219,36 +13223,34 @@ pub mod g4 {
     impl Sandwich<Even> for Vector {
         #[inline]
         fn sandwich(self, x: Even) -> Even {
+            let two_e1 = self.e1 + self.e1;
+            let two_e2 = self.e2 + self.e2;
+            let two_e3 = self.e3 + self.e3;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
-            let e1_e3 = self.e1 * self.e3;
-            let e1_e4 = self.e1 * self.e4;
+            let e1_e2 = two_e1 * self.e2;
+            let e1_e3 = two_e1 * self.e3;
+            let e1_e4 = two_e1 * self.e4;
             let e2_e2 = self.e2 * self.e2;
-            let e2_e3 = self.e2 * self.e3;
-            let e2_e4 = self.e2 * self.e4;
+            let e2_e3 = two_e2 * self.e3;
+            let e2_e4 = two_e2 * self.e4;
             let e3_e3 = self.e3 * self.e3;
-            let e3_e4 = self.e3 * self.e4;
+            let e3_e4 = two_e3 * self.e4;
             let e4_e4 = self.e4 * self.e4;
             Even {
                 s: (e1_e1 + e2_e2 + e3_e3 + e4_e4) * x.s,
-                e12: (e3_e3 + e4_e4 - e1_e1 - e2_e2) * x.e12 + (-2.0 * e2_e3) * x.e13
-                    + (-2.0 * e2_e4) * x.e14 + (2.0 * e1_e3) * x.e23
-                    + (2.0 * e1_e4) * x.e24,
-                e13: (-2.0 * e2_e3) * x.e12 + (e2_e2 + e4_e4 - e1_e1 - e3_e3) * x.e13
-                    + (-2.0 * e3_e4) * x.e14 + (-2.0 * e1_e2) * x.e23
-                    + (2.0 * e1_e4) * x.e34,
-                e14: (-2.0 * e2_e4) * x.e12 + (-2.0 * e3_e4) * x.e13
-                    + (e2_e2 + e3_e3 - e1_e1 - e4_e4) * x.e14 + (-2.0 * e1_e2) * x.e24
-                    + (-2.0 * e1_e3) * x.e34,
-                e23: (2.0 * e1_e3) * x.e12 + (-2.0 * e1_e2) * x.e13
-                    + (e1_e1 + e4_e4 - e2_e2 - e3_e3) * x.e23 + (-2.0 * e3_e4) * x.e24
-                    + (2.0 * e2_e4) * x.e34,
-                e24: (2.0 * e1_e4) * x.e12 + (-2.0 * e1_e2) * x.e14
-                    + (-2.0 * e3_e4) * x.e23 + (e1_e1 + e3_e3 - e2_e2 - e4_e4) * x.e24
-                    + (-2.0 * e2_e3) * x.e34,
-                e34: (2.0 * e1_e4) * x.e13 + (-2.0 * e1_e3) * x.e14
-                    + (2.0 * e2_e4) * x.e23 + (-2.0 * e2_e3) * x.e24
-                    + (e1_e1 + e2_e2 - e3_e3 - e4_e4) * x.e34,
+                e12: (e3_e3 + e4_e4 - e1_e1 - e2_e2) * x.e12 + e1_e3 * x.e23
+                    + e1_e4 * x.e24 - e2_e3 * x.e13 - e2_e4 * x.e14,
+                e13: (e2_e2 + e4_e4 - e1_e1 - e3_e3) * x.e13 + e1_e4 * x.e34
+                    - e2_e3 * x.e12 - e3_e4 * x.e14 - e1_e2 * x.e23,
+                e14: (e2_e2 + e3_e3 - e1_e1 - e4_e4) * x.e14 - e2_e4 * x.e12
+                    - e3_e4 * x.e13 - e1_e2 * x.e24 - e1_e3 * x.e34,
+                e23: e1_e3 * x.e12 + (e1_e1 + e4_e4 - e2_e2 - e3_e3) * x.e23
+                    + e2_e4 * x.e34 - e1_e2 * x.e13 - e3_e4 * x.e24,
+                e24: e1_e4 * x.e12 + (e1_e1 + e3_e3 - e2_e2 - e4_e4) * x.e24
+                    - e1_e2 * x.e14 - e3_e4 * x.e23 - e2_e3 * x.e34,
+                e34: e1_e4 * x.e13 + e2_e4 * x.e23
+                    + (e1_e1 + e2_e2 - e3_e3 - e4_e4) * x.e34 - e1_e3 * x.e14
+                    - e2_e3 * x.e24,
                 e1234: (-e1_e1 - e2_e2 - e3_e3 - e4_e4) * x.e1234,
             }
         }
@@ -13256,85 +13258,86 @@ pub mod g4 {
     impl Sandwich<Odd> for Vector {
         #[inline]
         fn sandwich(self, x: Odd) -> Odd {
+            let two_e1 = self.e1 + self.e1;
+            let two_e2 = self.e2 + self.e2;
+            let two_e3 = self.e3 + self.e3;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
-            let e1_e3 = self.e1 * self.e3;
-            let e1_e4 = self.e1 * self.e4;
+            let e1_e2 = two_e1 * self.e2;
+            let e1_e3 = two_e1 * self.e3;
+            let e1_e4 = two_e1 * self.e4;
             let e2_e2 = self.e2 * self.e2;
-            let e2_e3 = self.e2 * self.e3;
-            let e2_e4 = self.e2 * self.e4;
+            let e2_e3 = two_e2 * self.e3;
+            let e2_e4 = two_e2 * self.e4;
             let e3_e3 = self.e3 * self.e3;
-            let e3_e4 = self.e3 * self.e4;
+            let e3_e4 = two_e3 * self.e4;
             let e4_e4 = self.e4 * self.e4;
             Odd {
-                e1: (e2_e2 + e3_e3 + e4_e4 - e1_e1) * x.e1 + (-2.0 * e1_e2) * x.e2
-                    + (-2.0 * e1_e3) * x.e3 + (-2.0 * e1_e4) * x.e4,
-                e2: (-2.0 * e1_e2) * x.e1 + (e1_e1 + e3_e3 + e4_e4 - e2_e2) * x.e2
-                    + (-2.0 * e2_e3) * x.e3 + (-2.0 * e2_e4) * x.e4,
-                e3: (-2.0 * e1_e3) * x.e1 + (-2.0 * e2_e3) * x.e2
-                    + (e1_e1 + e2_e2 + e4_e4 - e3_e3) * x.e3 + (-2.0 * e3_e4) * x.e4,
-                e4: (-2.0 * e1_e4) * x.e1 + (-2.0 * e2_e4) * x.e2 + (-2.0 * e3_e4) * x.e3
-                    + (e1_e1 + e2_e2 + e3_e3 - e4_e4) * x.e4,
-                e123: (e4_e4 - e1_e1 - e2_e2 - e3_e3) * x.e123 + (-2.0 * e3_e4) * x.e124
-                    + (2.0 * e2_e4) * x.e134 + (-2.0 * e1_e4) * x.e234,
-                e124: (-2.0 * e3_e4) * x.e123 + (e3_e3 - e1_e1 - e2_e2 - e4_e4) * x.e124
-                    + (-2.0 * e2_e3) * x.e134 + (2.0 * e1_e3) * x.e234,
-                e134: (2.0 * e2_e4) * x.e123 + (-2.0 * e2_e3) * x.e124
-                    + (e2_e2 - e1_e1 - e3_e3 - e4_e4) * x.e134 + (-2.0 * e1_e2) * x.e234,
-                e234: (-2.0 * e1_e4) * x.e123 + (2.0 * e1_e3) * x.e124
-                    + (-2.0 * e1_e2) * x.e134 + (e1_e1 - e2_e2 - e3_e3 - e4_e4) * x.e234,
+                e1: (e2_e2 + e3_e3 + e4_e4 - e1_e1) * x.e1 - e1_e2 * x.e2 - e1_e3 * x.e3
+                    - e1_e4 * x.e4,
+                e2: (e1_e1 + e3_e3 + e4_e4 - e2_e2) * x.e2 - e1_e2 * x.e1 - e2_e3 * x.e3
+                    - e2_e4 * x.e4,
+                e3: (e1_e1 + e2_e2 + e4_e4 - e3_e3) * x.e3 - e1_e3 * x.e1 - e2_e3 * x.e2
+                    - e3_e4 * x.e4,
+                e4: (e1_e1 + e2_e2 + e3_e3 - e4_e4) * x.e4 - e1_e4 * x.e1 - e2_e4 * x.e2
+                    - e3_e4 * x.e3,
+                e123: (e4_e4 - e1_e1 - e2_e2 - e3_e3) * x.e123 + e2_e4 * x.e134
+                    - e3_e4 * x.e124 - e1_e4 * x.e234,
+                e124: (e3_e3 - e1_e1 - e2_e2 - e4_e4) * x.e124 + e1_e3 * x.e234
+                    - e3_e4 * x.e123 - e2_e3 * x.e134,
+                e134: e2_e4 * x.e123 + (e2_e2 - e1_e1 - e3_e3 - e4_e4) * x.e134
+                    - e2_e3 * x.e124 - e1_e2 * x.e234,
+                e234: e1_e3 * x.e124 + (e1_e1 - e2_e2 - e3_e3 - e4_e4) * x.e234
+                    - e1_e4 * x.e123 - e1_e2 * x.e134,
             }
         }
     }
     impl Sandwich<Multivector> for Vector {
         #[inline]
         fn sandwich(self, x: Multivector) -> Multivector {
+            let two_e1 = self.e1 + self.e1;
+            let two_e2 = self.e2 + self.e2;
+            let two_e3 = self.e3 + self.e3;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
-            let e1_e3 = self.e1 * self.e3;
-            let e1_e4 = self.e1 * self.e4;
+            let e1_e2 = two_e1 * self.e2;
+            let e1_e3 = two_e1 * self.e3;
+            let e1_e4 = two_e1 * self.e4;
             let e2_e2 = self.e2 * self.e2;
-            let e2_e3 = self.e2 * self.e3;
-            let e2_e4 = self.e2 * self.e4;
+            let e2_e3 = two_e2 * self.e3;
+            let e2_e4 = two_e2 * self.e4;
             let e3_e3 = self.e3 * self.e3;
-            let e3_e4 = self.e3 * self.e4;
+            let e3_e4 = two_e3 * self.e4;
             let e4_e4 = self.e4 * self.e4;
             Multivector {
                 s: (e1_e1 + e2_e2 + e3_e3 + e4_e4) * x.s,
-                e1: (e2_e2 + e3_e3 + e4_e4 - e1_e1) * x.e1 + (-2.0 * e1_e2) * x.e2
-                    + (-2.0 * e1_e3) * x.e3 + (-2.0 * e1_e4) * x.e4,
-                e2: (-2.0 * e1_e2) * x.e1 + (e1_e1 + e3_e3 + e4_e4 - e2_e2) * x.e2
-                    + (-2.0 * e2_e3) * x.e3 + (-2.0 * e2_e4) * x.e4,
-                e3: (-2.0 * e1_e3) * x.e1 + (-2.0 * e2_e3) * x.e2
-                    + (e1_e1 + e2_e2 + e4_e4 - e3_e3) * x.e3 + (-2.0 * e3_e4) * x.e4,
-                e4: (-2.0 * e1_e4) * x.e1 + (-2.0 * e2_e4) * x.e2 + (-2.0 * e3_e4) * x.e3
-                    + (e1_e1 + e2_e2 + e3_e3 - e4_e4) * x.e4,
-                e12: (e3_e3 + e4_e4 - e1_e1 - e2_e2) * x.e12 + (-2.0 * e2_e3) * x.e13
-                    + (-2.0 * e2_e4) * x.e14 + (2.0 * e1_e3) * x.e23
-                    + (2.0 * e1_e4) * x.e24,
-                e13: (-2.0 * e2_e3) * x.e12 + (e2_e2 + e4_e4 - e1_e1 - e3_e3) * x.e13
-                    + (-2.0 * e3_e4) * x.e14 + (-2.0 * e1_e2) * x.e23
-                    + (2.0 * e1_e4) * x.e34,
-                e14: (-2.0 * e2_e4) * x.e12 + (-2.0 * e3_e4) * x.e13
-                    + (e2_e2 + e3_e3 - e1_e1 - e4_e4) * x.e14 + (-2.0 * e1_e2) * x.e24
-                    + (-2.0 * e1_e3) * x.e34,
-                e23: (2.0 * e1_e3) * x.e12 + (-2.0 * e1_e2) * x.e13
-                    + (e1_e1 + e4_e4 - e2_e2 - e3_e3) * x.e23 + (-2.0 * e3_e4) * x.e24
-                    + (2.0 * e2_e4) * x.e34,
-                e24: (2.0 * e1_e4) * x.e12 + (-2.0 * e1_e2) * x.e14
-                    + (-2.0 * e3_e4) * x.e23 + (e1_e1 + e3_e3 - e2_e2 - e4_e4) * x.e24
-                    + (-2.0 * e2_e3) * x.e34,
-                e34: (2.0 * e1_e4) * x.e13 + (-2.0 * e1_e3) * x.e14
-                    + (2.0 * e2_e4) * x.e23 + (-2.0 * e2_e3) * x.e24
-                    + (e1_e1 + e2_e2 - e3_e3 - e4_e4) * x.e34,
-                e123: (e4_e4 - e1_e1 - e2_e2 - e3_e3) * x.e123 + (-2.0 * e3_e4) * x.e124
-                    + (2.0 * e2_e4) * x.e134 + (-2.0 * e1_e4) * x.e234,
-                e124: (-2.0 * e3_e4) * x.e123 + (e3_e3 - e1_e1 - e2_e2 - e4_e4) * x.e124
-                    + (-2.0 * e2_e3) * x.e134 + (2.0 * e1_e3) * x.e234,
-                e134: (2.0 * e2_e4) * x.e123 + (-2.0 * e2_e3) * x.e124
-                    + (e2_e2 - e1_e1 - e3_e3 - e4_e4) * x.e134 + (-2.0 * e1_e2) * x.e234,
-                e234: (-2.0 * e1_e4) * x.e123 + (2.0 * e1_e3) * x.e124
-                    + (-2.0 * e1_e2) * x.e134 + (e1_e1 - e2_e2 - e3_e3 - e4_e4) * x.e234,
+                e1: (e2_e2 + e3_e3 + e4_e4 - e1_e1) * x.e1 - e1_e2 * x.e2 - e1_e3 * x.e3
+                    - e1_e4 * x.e4,
+                e2: (e1_e1 + e3_e3 + e4_e4 - e2_e2) * x.e2 - e1_e2 * x.e1 - e2_e3 * x.e3
+                    - e2_e4 * x.e4,
+                e3: (e1_e1 + e2_e2 + e4_e4 - e3_e3) * x.e3 - e1_e3 * x.e1 - e2_e3 * x.e2
+                    - e3_e4 * x.e4,
+                e4: (e1_e1 + e2_e2 + e3_e3 - e4_e4) * x.e4 - e1_e4 * x.e1 - e2_e4 * x.e2
+                    - e3_e4 * x.e3,
+                e12: (e3_e3 + e4_e4 - e1_e1 - e2_e2) * x.e12 + e1_e3 * x.e23
+                    + e1_e4 * x.e24 - e2_e3 * x.e13 - e2_e4 * x.e14,
+                e13: (e2_e2 + e4_e4 - e1_e1 - e3_e3) * x.e13 + e1_e4 * x.e34
+                    - e2_e3 * x.e12 - e3_e4 * x.e14 - e1_e2 * x.e23,
+                e14: (e2_e2 + e3_e3 - e1_e1 - e4_e4) * x.e14 - e2_e4 * x.e12
+                    - e3_e4 * x.e13 - e1_e2 * x.e24 - e1_e3 * x.e34,
+                e23: e1_e3 * x.e12 + (e1_e1 + e4_e4 - e2_e2 - e3_e3) * x.e23
+                    + e2_e4 * x.e34 - e1_e2 * x.e13 - e3_e4 * x.e24,
+                e24: e1_e4 * x.e12 + (e1_e1 + e3_e3 - e2_e2 - e4_e4) * x.e24
+                    - e1_e2 * x.e14 - e3_e4 * x.e23 - e2_e3 * x.e34,
+                e34: e1_e4 * x.e13 + e2_e4 * x.e23
+                    + (e1_e1 + e2_e2 - e3_e3 - e4_e4) * x.e34 - e1_e3 * x.e14
+                    - e2_e3 * x.e24,
+                e123: (e4_e4 - e1_e1 - e2_e2 - e3_e3) * x.e123 + e2_e4 * x.e134
+                    - e3_e4 * x.e124 - e1_e4 * x.e234,
+                e124: (e3_e3 - e1_e1 - e2_e2 - e4_e4) * x.e124 + e1_e3 * x.e234
+                    - e3_e4 * x.e123 - e2_e3 * x.e134,
+                e134: e2_e4 * x.e123 + (e2_e2 - e1_e1 - e3_e3 - e4_e4) * x.e134
+                    - e2_e3 * x.e124 - e1_e2 * x.e234,
+                e234: e1_e3 * x.e124 + (e1_e1 - e2_e2 - e3_e3 - e4_e4) * x.e234
+                    - e1_e4 * x.e123 - e1_e2 * x.e134,
                 e1234: (-e1_e1 - e2_e2 - e3_e3 - e4_e4) * x.e1234,
             }
         }
@@ -13342,57 +13345,64 @@ pub mod g4 {
     impl Sandwich<Vector> for Even {
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
+            let two_s = self.s + self.s;
+            let two_e12 = self.e12 + self.e12;
+            let two_e13 = self.e13 + self.e13;
+            let two_e14 = self.e14 + self.e14;
+            let two_e23 = self.e23 + self.e23;
+            let two_e24 = self.e24 + self.e24;
+            let two_e34 = self.e34 + self.e34;
             let s_s = self.s * self.s;
-            let s_e12 = self.s * self.e12;
-            let s_e13 = self.s * self.e13;
-            let s_e14 = self.s * self.e14;
-            let s_e23 = self.s * self.e23;
-            let s_e24 = self.s * self.e24;
-            let s_e34 = self.s * self.e34;
+            let s_e12 = two_s * self.e12;
+            let s_e13 = two_s * self.e13;
+            let s_e14 = two_s * self.e14;
+            let s_e23 = two_s * self.e23;
+            let s_e24 = two_s * self.e24;
+            let s_e34 = two_s * self.e34;
             let e12_e12 = self.e12 * self.e12;
-            let e12_e13 = self.e12 * self.e13;
-            let e12_e14 = self.e12 * self.e14;
-            let e12_e23 = self.e12 * self.e23;
-            let e12_e24 = self.e12 * self.e24;
-            let e12_e1234 = self.e12 * self.e1234;
+            let e12_e13 = two_e12 * self.e13;
+            let e12_e14 = two_e12 * self.e14;
+            let e12_e23 = two_e12 * self.e23;
+            let e12_e24 = two_e12 * self.e24;
+            let e12_e1234 = two_e12 * self.e1234;
             let e13_e13 = self.e13 * self.e13;
-            let e13_e14 = self.e13 * self.e14;
-            let e13_e23 = self.e13 * self.e23;
-            let e13_e34 = self.e13 * self.e34;
-            let e13_e1234 = self.e13 * self.e1234;
+            let e13_e14 = two_e13 * self.e14;
+            let e13_e23 = two_e13 * self.e23;
+            let e13_e34 = two_e13 * self.e34;
+            let e13_e1234 = two_e13 * self.e1234;
             let e14_e14 = self.e14 * self.e14;
-            let e14_e24 = self.e14 * self.e24;
-            let e14_e34 = self.e14 * self.e34;
-            let e14_e1234 = self.e14 * self.e1234;
+            let e14_e24 = two_e14 * self.e24;
+            let e14_e34 = two_e14 * self.e34;
+            let e14_e1234 = two_e14 * self.e1234;
             let e23_e23 = self.e23 * self.e23;
-            let e23_e24 = self.e23 * self.e24;
-            let e23_e34 = self.e23 * self.e34;
-            let e23_e1234 = self.e23 * self.e1234;
+            let e23_e24 = two_e23 * self.e24;
+            let e23_e34 = two_e23 * self.e34;
+            let e23_e1234 = two_e23 * self.e1234;
             let e24_e24 = self.e24 * self.e24;
-            let e24_e34 = self.e24 * self.e34;
-            let e24_e1234 = self.e24 * self.e1234;
+            let e24_e34 = two_e24 * self.e34;
+            let e24_e1234 = two_e24 * self.e1234;
             let e34_e34 = self.e34 * self.e34;
-            let e34_e1234 = self.e34 * self.e1234;
+            let e34_e1234 = two_e34 * self.e1234;
             let e1234_e1234 = self.e1234 * self.e1234;
             Vector {
                 e1: (s_s + e23_e23 + e24_e24 + e34_e34 - e12_e12 - e13_e13 - e14_e14
                     - e1234_e1234) * x.e1
-                    + (2.0 * (s_e12 + e34_e1234 - e13_e23 - e14_e24)) * x.e2
-                    + (2.0 * (s_e13 + e12_e23 - e14_e34 - e24_e1234)) * x.e3
-                    + (2.0 * (s_e14 + e12_e24 + e13_e34 + e23_e1234)) * x.e4,
-                e2: (-2.0 * (s_e12 + e13_e23 + e14_e24 + e34_e1234)) * x.e1
+                    + (s_e12 + e34_e1234 - e13_e23 - e14_e24) * x.e2
+                    + (s_e13 + e12_e23 - e14_e34 - e24_e1234) * x.e3
+                    + (s_e14 + e12_e24 + e13_e34 + e23_e1234) * x.e4,
+                e2: (-s_e12 - e13_e23 - e14_e24 - e34_e1234) * x.e1
                     + (s_s + e13_e13 + e14_e14 + e34_e34 - e12_e12 - e23_e23 - e24_e24
                         - e1234_e1234) * x.e2
-                    + (2.0 * (s_e23 + e14_e1234 - e12_e13 - e24_e34)) * x.e3
-                    + (2.0 * (s_e24 + e23_e34 - e12_e14 - e13_e1234)) * x.e4,
-                e3: (2.0 * (e12_e23 + e24_e1234 - s_e13 - e14_e34)) * x.e1
-                    + (-2.0 * (s_e23 + e12_e13 + e14_e1234 + e24_e34)) * x.e2
+                    + (s_e23 + e14_e1234 - e12_e13 - e24_e34) * x.e3
+                    + (s_e24 + e23_e34 - e12_e14 - e13_e1234) * x.e4,
+                e3: (e12_e23 + e24_e1234 - s_e13 - e14_e34) * x.e1
+                    + (-s_e23 - e12_e13 - e14_e1234 - e24_e34) * x.e2
                     + (s_s + e12_e12 + e14_e14 + e24_e24 - e13_e13 - e23_e23 - e34_e34
                         - e1234_e1234) * x.e3
-                    + (2.0 * (s_e34 + e12_e1234 - e13_e14 - e23_e24)) * x.e4,
-                e4: (2.0 * (e12_e24 + e13_e34 - s_e14 - e23_e1234)) * x.e1
-                    + (2.0 * (e13_e1234 + e23_e34 - s_e24 - e12_e14)) * x.e2
-                    + (-2.0 * (s_e34 + e12_e1234 + e13_e14 + e23_e24)) * x.e3
+                    + (s_e34 + e12_e1234 - e13_e14 - e23_e24) * x.e4,
+                e4: (e12_e24 + e13_e34 - s_e14 - e23_e1234) * x.e1
+                    + (e13_e1234 + e23_e34 - s_e24 - e12_e14) * x.e2
+                    + (-s_e34 - e12_e1234 - e13_e14 - e23_e24) * x.e3
                     + (s_s + e12_e12 + e13_e13 + e23_e23 - e14_e14 - e24_e24 - e34_e34
                         - e1234_e1234) * x.e4,
             }
@@ -13401,83 +13411,89 @@ pub mod g4 {
     impl Sandwich<Bivector> for Even {
         #[inline]
         fn sandwich(self, x: Bivector) -> Bivector {
+            let two_s = self.s + self.s;
+            let two_e12 = self.e12 + self.e12;
+            let two_e13 = self.e13 + self.e13;
+            let two_e14 = self.e14 + self.e14;
+            let two_e23 = self.e23 + self.e23;
+            let two_e24 = self.e24 + self.e24;
+            let two_e34 = self.e34 + self.e34;
             let s_s = self.s * self.s;
-            let s_e12 = self.s * self.e12;
-            let s_e13 = self.s * self.e13;
-            let s_e14 = self.s * self.e14;
-            let s_e23 = self.s * self.e23;
-            let s_e24 = self.s * self.e24;
-            let s_e34 = self.s * self.e34;
-            let s_e1234 = self.s * self.e1234;
+            let s_e12 = two_s * self.e12;
+            let s_e13 = two_s * self.e13;
+            let s_e14 = two_s * self.e14;
+            let s_e23 = two_s * self.e23;
+            let s_e24 = two_s * self.e24;
+            let s_e34 = two_s * self.e34;
+            let s_e1234 = two_s * self.e1234;
             let e12_e12 = self.e12 * self.e12;
-            let e12_e13 = self.e12 * self.e13;
-            let e12_e14 = self.e12 * self.e14;
-            let e12_e23 = self.e12 * self.e23;
-            let e12_e24 = self.e12 * self.e24;
-            let e12_e34 = self.e12 * self.e34;
-            let e12_e1234 = self.e12 * self.e1234;
+            let e12_e13 = two_e12 * self.e13;
+            let e12_e14 = two_e12 * self.e14;
+            let e12_e23 = two_e12 * self.e23;
+            let e12_e24 = two_e12 * self.e24;
+            let e12_e34 = two_e12 * self.e34;
+            let e12_e1234 = two_e12 * self.e1234;
             let e13_e13 = self.e13 * self.e13;
-            let e13_e14 = self.e13 * self.e14;
-            let e13_e23 = self.e13 * self.e23;
-            let e13_e24 = self.e13 * self.e24;
-            let e13_e34 = self.e13 * self.e34;
-            let e13_e1234 = self.e13 * self.e1234;
+            let e13_e14 = two_e13 * self.e14;
+            let e13_e23 = two_e13 * self.e23;
+            let e13_e24 = two_e13 * self.e24;
+            let e13_e34 = two_e13 * self.e34;
+            let e13_e1234 = two_e13 * self.e1234;
             let e14_e14 = self.e14 * self.e14;
-            let e14_e23 = self.e14 * self.e23;
-            let e14_e24 = self.e14 * self.e24;
-            let e14_e34 = self.e14 * self.e34;
-            let e14_e1234 = self.e14 * self.e1234;
+            let e14_e23 = two_e14 * self.e23;
+            let e14_e24 = two_e14 * self.e24;
+            let e14_e34 = two_e14 * self.e34;
+            let e14_e1234 = two_e14 * self.e1234;
             let e23_e23 = self.e23 * self.e23;
-            let e23_e24 = self.e23 * self.e24;
-            let e23_e34 = self.e23 * self.e34;
-            let e23_e1234 = self.e23 * self.e1234;
+            let e23_e24 = two_e23 * self.e24;
+            let e23_e34 = two_e23 * self.e34;
+            let e23_e1234 = two_e23 * self.e1234;
             let e24_e24 = self.e24 * self.e24;
-            let e24_e34 = self.e24 * self.e34;
-            let e24_e1234 = self.e24 * self.e1234;
+            let e24_e34 = two_e24 * self.e34;
+            let e24_e1234 = two_e24 * self.e1234;
             let e34_e34 = self.e34 * self.e34;
-            let e34_e1234 = self.e34 * self.e1234;
+            let e34_e1234 = two_e34 * self.e1234;
             let e1234_e1234 = self.e1234 * self.e1234;
             Bivector {
                 e12: (s_s + e12_e12 + e34_e34 + e1234_e1234 - e13_e13 - e14_e14 - e23_e23
-                    - e24_e24) * x.e12
-                    + (2.0 * (s_e23 + e12_e13 - e14_e1234 - e24_e34)) * x.e13
-                    + (2.0 * (s_e24 + e12_e14 + e13_e1234 + e23_e34)) * x.e14
-                    + (2.0 * (e12_e23 + e14_e34 - s_e13 - e24_e1234)) * x.e23
-                    + (2.0 * (e12_e24 + e23_e1234 - s_e14 - e13_e34)) * x.e24
-                    + (2.0 * (e12_e34 + e13_e24 - s_e1234 - e14_e23)) * x.e34,
-                e13: (2.0 * (e12_e13 + e14_e1234 - s_e23 - e24_e34)) * x.e12
+                    - e24_e24) * x.e12 + (s_e23 + e12_e13 - e14_e1234 - e24_e34) * x.e13
+                    + (s_e24 + e12_e14 + e13_e1234 + e23_e34) * x.e14
+                    + (e12_e23 + e14_e34 - s_e13 - e24_e1234) * x.e23
+                    + (e12_e24 + e23_e1234 - s_e14 - e13_e34) * x.e24
+                    + (e12_e34 + e13_e24 - s_e1234 - e14_e23) * x.e34,
+                e13: (e12_e13 + e14_e1234 - s_e23 - e24_e34) * x.e12
                     + (s_s + e13_e13 + e24_e24 + e1234_e1234 - e12_e12 - e14_e14
                         - e23_e23 - e34_e34) * x.e13
-                    + (2.0 * (s_e34 + e13_e14 - e12_e1234 - e23_e24)) * x.e14
-                    + (2.0 * (s_e12 + e13_e23 - e14_e24 - e34_e1234)) * x.e23
-                    + (2.0 * (s_e1234 + e12_e34 + e13_e24 + e14_e23)) * x.e24
-                    + (2.0 * (e13_e34 + e23_e1234 - s_e14 - e12_e24)) * x.e34,
-                e14: (2.0 * (e12_e14 + e23_e34 - s_e24 - e13_e1234)) * x.e12
-                    + (2.0 * (e12_e1234 + e13_e14 - s_e34 - e23_e24)) * x.e13
+                    + (s_e34 + e13_e14 - e12_e1234 - e23_e24) * x.e14
+                    + (s_e12 + e13_e23 - e14_e24 - e34_e1234) * x.e23
+                    + (s_e1234 + e12_e34 + e13_e24 + e14_e23) * x.e24
+                    + (e13_e34 + e23_e1234 - s_e14 - e12_e24) * x.e34,
+                e14: (e12_e14 + e23_e34 - s_e24 - e13_e1234) * x.e12
+                    + (e12_e1234 + e13_e14 - s_e34 - e23_e24) * x.e13
                     + (s_s + e14_e14 + e23_e23 + e1234_e1234 - e12_e12 - e13_e13
                         - e24_e24 - e34_e34) * x.e14
-                    + (2.0 * (e13_e24 + e14_e23 - s_e1234 - e12_e34)) * x.e23
-                    + (2.0 * (s_e12 + e14_e24 - e13_e23 - e34_e1234)) * x.e24
-                    + (2.0 * (s_e13 + e12_e23 + e14_e34 + e24_e1234)) * x.e34,
-                e23: (2.0 * (s_e13 + e12_e23 + e14_e34 + e24_e1234)) * x.e12
-                    + (2.0 * (e13_e23 + e34_e1234 - s_e12 - e14_e24)) * x.e13
-                    + (2.0 * (e13_e24 + e14_e23 - s_e1234 - e12_e34)) * x.e14
+                    + (e13_e24 + e14_e23 - s_e1234 - e12_e34) * x.e23
+                    + (s_e12 + e14_e24 - e13_e23 - e34_e1234) * x.e24
+                    + (s_e13 + e12_e23 + e14_e34 + e24_e1234) * x.e34,
+                e23: (s_e13 + e12_e23 + e14_e34 + e24_e1234) * x.e12
+                    + (e13_e23 + e34_e1234 - s_e12 - e14_e24) * x.e13
+                    + (e13_e24 + e14_e23 - s_e1234 - e12_e34) * x.e14
                     + (s_s + e14_e14 + e23_e23 + e1234_e1234 - e12_e12 - e13_e13
                         - e24_e24 - e34_e34) * x.e23
-                    + (2.0 * (s_e34 + e23_e24 - e12_e1234 - e13_e14)) * x.e24
-                    + (2.0 * (e12_e14 + e23_e34 - s_e24 - e13_e1234)) * x.e34,
-                e24: (2.0 * (s_e14 + e12_e24 - e13_e34 - e23_e1234)) * x.e12
-                    + (2.0 * (s_e1234 + e12_e34 + e13_e24 + e14_e23)) * x.e13
-                    + (2.0 * (e14_e24 + e34_e1234 - s_e12 - e13_e23)) * x.e14
-                    + (2.0 * (e12_e1234 + e23_e24 - s_e34 - e13_e14)) * x.e23
+                    + (s_e34 + e23_e24 - e12_e1234 - e13_e14) * x.e24
+                    + (e12_e14 + e23_e34 - s_e24 - e13_e1234) * x.e34,
+                e24: (s_e14 + e12_e24 - e13_e34 - e23_e1234) * x.e12
+                    + (s_e1234 + e12_e34 + e13_e24 + e14_e23) * x.e13
+                    + (e14_e24 + e34_e1234 - s_e12 - e13_e23) * x.e14
+                    + (e12_e1234 + e23_e24 - s_e34 - e13_e14) * x.e23
                     + (s_s + e13_e13 + e24_e24 + e1234_e1234 - e12_e12 - e14_e14
                         - e23_e23 - e34_e34) * x.e24
-                    + (2.0 * (s_e23 + e24_e34 - e12_e13 - e14_e1234)) * x.e34,
-                e34: (2.0 * (e12_e34 + e13_e24 - s_e1234 - e14_e23)) * x.e12
-                    + (2.0 * (s_e14 + e13_e34 - e12_e24 - e23_e1234)) * x.e13
-                    + (2.0 * (e12_e23 + e14_e34 - s_e13 - e24_e1234)) * x.e14
-                    + (2.0 * (s_e24 + e12_e14 + e13_e1234 + e23_e34)) * x.e23
-                    + (2.0 * (e14_e1234 + e24_e34 - s_e23 - e12_e13)) * x.e24
+                    + (s_e23 + e24_e34 - e12_e13 - e14_e1234) * x.e34,
+                e34: (e12_e34 + e13_e24 - s_e1234 - e14_e23) * x.e12
+                    + (s_e14 + e13_e34 - e12_e24 - e23_e1234) * x.e13
+                    + (e12_e23 + e14_e34 - s_e13 - e24_e1234) * x.e14
+                    + (s_e24 + e12_e14 + e13_e1234 + e23_e34) * x.e23
+                    + (e14_e1234 + e24_e34 - s_e23 - e12_e13) * x.e24
                     + (s_s + e12_e12 + e34_e34 + e1234_e1234 - e13_e13 - e14_e14
                         - e23_e23 - e24_e24) * x.e34,
             }
@@ -13486,57 +13502,64 @@ pub mod g4 {
     impl Sandwich<Trivector> for Even {
         #[inline]
         fn sandwich(self, x: Trivector) -> Trivector {
+            let two_s = self.s + self.s;
+            let two_e12 = self.e12 + self.e12;
+            let two_e13 = self.e13 + self.e13;
+            let two_e14 = self.e14 + self.e14;
+            let two_e23 = self.e23 + self.e23;
+            let two_e24 = self.e24 + self.e24;
+            let two_e34 = self.e34 + self.e34;
             let s_s = self.s * self.s;
-            let s_e12 = self.s * self.e12;
-            let s_e13 = self.s * self.e13;
-            let s_e14 = self.s * self.e14;
-            let s_e23 = self.s * self.e23;
-            let s_e24 = self.s * self.e24;
-            let s_e34 = self.s * self.e34;
+            let s_e12 = two_s * self.e12;
+            let s_e13 = two_s * self.e13;
+            let s_e14 = two_s * self.e14;
+            let s_e23 = two_s * self.e23;
+            let s_e24 = two_s * self.e24;
+            let s_e34 = two_s * self.e34;
             let e12_e12 = self.e12 * self.e12;
-            let e12_e13 = self.e12 * self.e13;
-            let e12_e14 = self.e12 * self.e14;
-            let e12_e23 = self.e12 * self.e23;
-            let e12_e24 = self.e12 * self.e24;
-            let e12_e1234 = self.e12 * self.e1234;
+            let e12_e13 = two_e12 * self.e13;
+            let e12_e14 = two_e12 * self.e14;
+            let e12_e23 = two_e12 * self.e23;
+            let e12_e24 = two_e12 * self.e24;
+            let e12_e1234 = two_e12 * self.e1234;
             let e13_e13 = self.e13 * self.e13;
-            let e13_e14 = self.e13 * self.e14;
-            let e13_e23 = self.e13 * self.e23;
-            let e13_e34 = self.e13 * self.e34;
-            let e13_e1234 = self.e13 * self.e1234;
+            let e13_e14 = two_e13 * self.e14;
+            let e13_e23 = two_e13 * self.e23;
+            let e13_e34 = two_e13 * self.e34;
+            let e13_e1234 = two_e13 * self.e1234;
             let e14_e14 = self.e14 * self.e14;
-            let e14_e24 = self.e14 * self.e24;
-            let e14_e34 = self.e14 * self.e34;
-            let e14_e1234 = self.e14 * self.e1234;
+            let e14_e24 = two_e14 * self.e24;
+            let e14_e34 = two_e14 * self.e34;
+            let e14_e1234 = two_e14 * self.e1234;
             let e23_e23 = self.e23 * self.e23;
-            let e23_e24 = self.e23 * self.e24;
-            let e23_e34 = self.e23 * self.e34;
-            let e23_e1234 = self.e23 * self.e1234;
+            let e23_e24 = two_e23 * self.e24;
+            let e23_e34 = two_e23 * self.e34;
+            let e23_e1234 = two_e23 * self.e1234;
             let e24_e24 = self.e24 * self.e24;
-            let e24_e34 = self.e24 * self.e34;
-            let e24_e1234 = self.e24 * self.e1234;
+            let e24_e34 = two_e24 * self.e34;
+            let e24_e1234 = two_e24 * self.e1234;
             let e34_e34 = self.e34 * self.e34;
-            let e34_e1234 = self.e34 * self.e1234;
+            let e34_e1234 = two_e34 * self.e1234;
             let e1234_e1234 = self.e1234 * self.e1234;
             Trivector {
                 e123: (s_s + e12_e12 + e13_e13 + e23_e23 - e14_e14 - e24_e24 - e34_e34
                     - e1234_e1234) * x.e123
-                    + (2.0 * (s_e34 + e12_e1234 + e13_e14 + e23_e24)) * x.e124
-                    + (2.0 * (e13_e1234 + e23_e34 - s_e24 - e12_e14)) * x.e134
-                    + (2.0 * (s_e14 + e23_e1234 - e12_e24 - e13_e34)) * x.e234,
-                e124: (2.0 * (e13_e14 + e23_e24 - s_e34 - e12_e1234)) * x.e123
+                    + (s_e34 + e12_e1234 + e13_e14 + e23_e24) * x.e124
+                    + (e13_e1234 + e23_e34 - s_e24 - e12_e14) * x.e134
+                    + (s_e14 + e23_e1234 - e12_e24 - e13_e34) * x.e234,
+                e124: (e13_e14 + e23_e24 - s_e34 - e12_e1234) * x.e123
                     + (s_s + e12_e12 + e14_e14 + e24_e24 - e13_e13 - e23_e23 - e34_e34
                         - e1234_e1234) * x.e124
-                    + (2.0 * (s_e23 + e12_e13 + e14_e1234 + e24_e34)) * x.e134
-                    + (2.0 * (e12_e23 + e24_e1234 - s_e13 - e14_e34)) * x.e234,
-                e134: (2.0 * (s_e24 + e23_e34 - e12_e14 - e13_e1234)) * x.e123
-                    + (2.0 * (e12_e13 + e24_e34 - s_e23 - e14_e1234)) * x.e124
+                    + (s_e23 + e12_e13 + e14_e1234 + e24_e34) * x.e134
+                    + (e12_e23 + e24_e1234 - s_e13 - e14_e34) * x.e234,
+                e134: (s_e24 + e23_e34 - e12_e14 - e13_e1234) * x.e123
+                    + (e12_e13 + e24_e34 - s_e23 - e14_e1234) * x.e124
                     + (s_s + e13_e13 + e14_e14 + e34_e34 - e12_e12 - e23_e23 - e24_e24
                         - e1234_e1234) * x.e134
-                    + (2.0 * (s_e12 + e13_e23 + e14_e24 + e34_e1234)) * x.e234,
-                e234: (-2.0 * (s_e14 + e12_e24 + e13_e34 + e23_e1234)) * x.e123
-                    + (2.0 * (s_e13 + e12_e23 - e14_e34 - e24_e1234)) * x.e124
-                    + (2.0 * (e13_e23 + e14_e24 - s_e12 - e34_e1234)) * x.e134
+                    + (s_e12 + e13_e23 + e14_e24 + e34_e1234) * x.e234,
+                e234: (-s_e14 - e12_e24 - e13_e34 - e23_e1234) * x.e123
+                    + (s_e13 + e12_e23 - e14_e34 - e24_e1234) * x.e124
+                    + (e13_e23 + e14_e24 - s_e12 - e34_e1234) * x.e134
                     + (s_s + e23_e23 + e24_e24 + e34_e34 - e12_e12 - e13_e13 - e14_e14
                         - e1234_e1234) * x.e234,
             }
@@ -13562,89 +13585,95 @@ pub mod g4 {
     impl Sandwich<Even> for Even {
         #[inline]
         fn sandwich(self, x: Even) -> Even {
+            let two_s = self.s + self.s;
+            let two_e12 = self.e12 + self.e12;
+            let two_e13 = self.e13 + self.e13;
+            let two_e14 = self.e14 + self.e14;
+            let two_e23 = self.e23 + self.e23;
+            let two_e24 = self.e24 + self.e24;
+            let two_e34 = self.e34 + self.e34;
             let s_s = self.s * self.s;
-            let s_e12 = self.s * self.e12;
-            let s_e13 = self.s * self.e13;
-            let s_e14 = self.s * self.e14;
-            let s_e23 = self.s * self.e23;
-            let s_e24 = self.s * self.e24;
-            let s_e34 = self.s * self.e34;
-            let s_e1234 = self.s * self.e1234;
+            let s_e12 = two_s * self.e12;
+            let s_e13 = two_s * self.e13;
+            let s_e14 = two_s * self.e14;
+            let s_e23 = two_s * self.e23;
+            let s_e24 = two_s * self.e24;
+            let s_e34 = two_s * self.e34;
+            let s_e1234 = two_s * self.e1234;
             let e12_e12 = self.e12 * self.e12;
-            let e12_e13 = self.e12 * self.e13;
-            let e12_e14 = self.e12 * self.e14;
-            let e12_e23 = self.e12 * self.e23;
-            let e12_e24 = self.e12 * self.e24;
-            let e12_e34 = self.e12 * self.e34;
-            let e12_e1234 = self.e12 * self.e1234;
+            let e12_e13 = two_e12 * self.e13;
+            let e12_e14 = two_e12 * self.e14;
+            let e12_e23 = two_e12 * self.e23;
+            let e12_e24 = two_e12 * self.e24;
+            let e12_e34 = two_e12 * self.e34;
+            let e12_e1234 = two_e12 * self.e1234;
             let e13_e13 = self.e13 * self.e13;
-            let e13_e14 = self.e13 * self.e14;
-            let e13_e23 = self.e13 * self.e23;
-            let e13_e24 = self.e13 * self.e24;
-            let e13_e34 = self.e13 * self.e34;
-            let e13_e1234 = self.e13 * self.e1234;
+            let e13_e14 = two_e13 * self.e14;
+            let e13_e23 = two_e13 * self.e23;
+            let e13_e24 = two_e13 * self.e24;
+            let e13_e34 = two_e13 * self.e34;
+            let e13_e1234 = two_e13 * self.e1234;
             let e14_e14 = self.e14 * self.e14;
-            let e14_e23 = self.e14 * self.e23;
-            let e14_e24 = self.e14 * self.e24;
-            let e14_e34 = self.e14 * self.e34;
-            let e14_e1234 = self.e14 * self.e1234;
+            let e14_e23 = two_e14 * self.e23;
+            let e14_e24 = two_e14 * self.e24;
+            let e14_e34 = two_e14 * self.e34;
+            let e14_e1234 = two_e14 * self.e1234;
             let e23_e23 = self.e23 * self.e23;
-            let e23_e24 = self.e23 * self.e24;
-            let e23_e34 = self.e23 * self.e34;
-            let e23_e1234 = self.e23 * self.e1234;
+            let e23_e24 = two_e23 * self.e24;
+            let e23_e34 = two_e23 * self.e34;
+            let e23_e1234 = two_e23 * self.e1234;
             let e24_e24 = self.e24 * self.e24;
-            let e24_e34 = self.e24 * self.e34;
-            let e24_e1234 = self.e24 * self.e1234;
+            let e24_e34 = two_e24 * self.e34;
+            let e24_e1234 = two_e24 * self.e1234;
             let e34_e34 = self.e34 * self.e34;
-            let e34_e1234 = self.e34 * self.e1234;
+            let e34_e1234 = two_e34 * self.e1234;
             let e1234_e1234 = self.e1234 * self.e1234;
             Even {
                 s: (s_s + e12_e12 + e13_e13 + e14_e14 + e23_e23 + e24_e24 + e34_e34
                     + e1234_e1234) * x.s
-                    + (2.0 * (s_e1234 + e13_e24 - e12_e34 - e14_e23)) * x.e1234,
+                    + (s_e1234 + e13_e24 - e12_e34 - e14_e23) * x.e1234,
                 e12: (s_s + e12_e12 + e34_e34 + e1234_e1234 - e13_e13 - e14_e14 - e23_e23
-                    - e24_e24) * x.e12
-                    + (2.0 * (s_e23 + e12_e13 - e14_e1234 - e24_e34)) * x.e13
-                    + (2.0 * (s_e24 + e12_e14 + e13_e1234 + e23_e34)) * x.e14
-                    + (2.0 * (e12_e23 + e14_e34 - s_e13 - e24_e1234)) * x.e23
-                    + (2.0 * (e12_e24 + e23_e1234 - s_e14 - e13_e34)) * x.e24
-                    + (2.0 * (e12_e34 + e13_e24 - s_e1234 - e14_e23)) * x.e34,
-                e13: (2.0 * (e12_e13 + e14_e1234 - s_e23 - e24_e34)) * x.e12
+                    - e24_e24) * x.e12 + (s_e23 + e12_e13 - e14_e1234 - e24_e34) * x.e13
+                    + (s_e24 + e12_e14 + e13_e1234 + e23_e34) * x.e14
+                    + (e12_e23 + e14_e34 - s_e13 - e24_e1234) * x.e23
+                    + (e12_e24 + e23_e1234 - s_e14 - e13_e34) * x.e24
+                    + (e12_e34 + e13_e24 - s_e1234 - e14_e23) * x.e34,
+                e13: (e12_e13 + e14_e1234 - s_e23 - e24_e34) * x.e12
                     + (s_s + e13_e13 + e24_e24 + e1234_e1234 - e12_e12 - e14_e14
                         - e23_e23 - e34_e34) * x.e13
-                    + (2.0 * (s_e34 + e13_e14 - e12_e1234 - e23_e24)) * x.e14
-                    + (2.0 * (s_e12 + e13_e23 - e14_e24 - e34_e1234)) * x.e23
-                    + (2.0 * (s_e1234 + e12_e34 + e13_e24 + e14_e23)) * x.e24
-                    + (2.0 * (e13_e34 + e23_e1234 - s_e14 - e12_e24)) * x.e34,
-                e14: (2.0 * (e12_e14 + e23_e34 - s_e24 - e13_e1234)) * x.e12
-                    + (2.0 * (e12_e1234 + e13_e14 - s_e34 - e23_e24)) * x.e13
+                    + (s_e34 + e13_e14 - e12_e1234 - e23_e24) * x.e14
+                    + (s_e12 + e13_e23 - e14_e24 - e34_e1234) * x.e23
+                    + (s_e1234 + e12_e34 + e13_e24 + e14_e23) * x.e24
+                    + (e13_e34 + e23_e1234 - s_e14 - e12_e24) * x.e34,
+                e14: (e12_e14 + e23_e34 - s_e24 - e13_e1234) * x.e12
+                    + (e12_e1234 + e13_e14 - s_e34 - e23_e24) * x.e13
                     + (s_s + e14_e14 + e23_e23 + e1234_e1234 - e12_e12 - e13_e13
                         - e24_e24 - e34_e34) * x.e14
-                    + (2.0 * (e13_e24 + e14_e23 - s_e1234 - e12_e34)) * x.e23
-                    + (2.0 * (s_e12 + e14_e24 - e13_e23 - e34_e1234)) * x.e24
-                    + (2.0 * (s_e13 + e12_e23 + e14_e34 + e24_e1234)) * x.e34,
-                e23: (2.0 * (s_e13 + e12_e23 + e14_e34 + e24_e1234)) * x.e12
-                    + (2.0 * (e13_e23 + e34_e1234 - s_e12 - e14_e24)) * x.e13
-                    + (2.0 * (e13_e24 + e14_e23 - s_e1234 - e12_e34)) * x.e14
+                    + (e13_e24 + e14_e23 - s_e1234 - e12_e34) * x.e23
+                    + (s_e12 + e14_e24 - e13_e23 - e34_e1234) * x.e24
+                    + (s_e13 + e12_e23 + e14_e34 + e24_e1234) * x.e34,
+                e23: (s_e13 + e12_e23 + e14_e34 + e24_e1234) * x.e12
+                    + (e13_e23 + e34_e1234 - s_e12 - e14_e24) * x.e13
+                    + (e13_e24 + e14_e23 - s_e1234 - e12_e34) * x.e14
                     + (s_s + e14_e14 + e23_e23 + e1234_e1234 - e12_e12 - e13_e13
                         - e24_e24 - e34_e34) * x.e23
-                    + (2.0 * (s_e34 + e23_e24 - e12_e1234 - e13_e14)) * x.e24
-                    + (2.0 * (e12_e14 + e23_e34 - s_e24 - e13_e1234)) * x.e34,
-                e24: (2.0 * (s_e14 + e12_e24 - e13_e34 - e23_e1234)) * x.e12
-                    + (2.0 * (s_e1234 + e12_e34 + e13_e24 + e14_e23)) * x.e13
-                    + (2.0 * (e14_e24 + e34_e1234 - s_e12 - e13_e23)) * x.e14
-                    + (2.0 * (e12_e1234 + e23_e24 - s_e34 - e13_e14)) * x.e23
+                    + (s_e34 + e23_e24 - e12_e1234 - e13_e14) * x.e24
+                    + (e12_e14 + e23_e34 - s_e24 - e13_e1234) * x.e34,
+                e24: (s_e14 + e12_e24 - e13_e34 - e23_e1234) * x.e12
+                    + (s_e1234 + e12_e34 + e13_e24 + e14_e23) * x.e13
+                    + (e14_e24 + e34_e1234 - s_e12 - e13_e23) * x.e14
+                    + (e12_e1234 + e23_e24 - s_e34 - e13_e14) * x.e23
                     + (s_s + e13_e13 + e24_e24 + e1234_e1234 - e12_e12 - e14_e14
                         - e23_e23 - e34_e34) * x.e24
-                    + (2.0 * (s_e23 + e24_e34 - e12_e13 - e14_e1234)) * x.e34,
-                e34: (2.0 * (e12_e34 + e13_e24 - s_e1234 - e14_e23)) * x.e12
-                    + (2.0 * (s_e14 + e13_e34 - e12_e24 - e23_e1234)) * x.e13
-                    + (2.0 * (e12_e23 + e14_e34 - s_e13 - e24_e1234)) * x.e14
-                    + (2.0 * (s_e24 + e12_e14 + e13_e1234 + e23_e34)) * x.e23
-                    + (2.0 * (e14_e1234 + e24_e34 - s_e23 - e12_e13)) * x.e24
+                    + (s_e23 + e24_e34 - e12_e13 - e14_e1234) * x.e34,
+                e34: (e12_e34 + e13_e24 - s_e1234 - e14_e23) * x.e12
+                    + (s_e14 + e13_e34 - e12_e24 - e23_e1234) * x.e13
+                    + (e12_e23 + e14_e34 - s_e13 - e24_e1234) * x.e14
+                    + (s_e24 + e12_e14 + e13_e1234 + e23_e34) * x.e23
+                    + (e14_e1234 + e24_e34 - s_e23 - e12_e13) * x.e24
                     + (s_s + e12_e12 + e34_e34 + e1234_e1234 - e13_e13 - e14_e14
                         - e23_e23 - e24_e24) * x.e34,
-                e1234: (2.0 * (s_e1234 + e13_e24 - e12_e34 - e14_e23)) * x.s
+                e1234: (s_e1234 + e13_e24 - e12_e34 - e14_e23) * x.s
                     + (s_s + e12_e12 + e13_e13 + e14_e14 + e23_e23 + e24_e24 + e34_e34
                         + e1234_e1234) * x.e1234,
             }
@@ -13653,77 +13682,84 @@ pub mod g4 {
     impl Sandwich<Odd> for Even {
         #[inline]
         fn sandwich(self, x: Odd) -> Odd {
+            let two_s = self.s + self.s;
+            let two_e12 = self.e12 + self.e12;
+            let two_e13 = self.e13 + self.e13;
+            let two_e14 = self.e14 + self.e14;
+            let two_e23 = self.e23 + self.e23;
+            let two_e24 = self.e24 + self.e24;
+            let two_e34 = self.e34 + self.e34;
             let s_s = self.s * self.s;
-            let s_e12 = self.s * self.e12;
-            let s_e13 = self.s * self.e13;
-            let s_e14 = self.s * self.e14;
-            let s_e23 = self.s * self.e23;
-            let s_e24 = self.s * self.e24;
-            let s_e34 = self.s * self.e34;
+            let s_e12 = two_s * self.e12;
+            let s_e13 = two_s * self.e13;
+            let s_e14 = two_s * self.e14;
+            let s_e23 = two_s * self.e23;
+            let s_e24 = two_s * self.e24;
+            let s_e34 = two_s * self.e34;
             let e12_e12 = self.e12 * self.e12;
-            let e12_e13 = self.e12 * self.e13;
-            let e12_e14 = self.e12 * self.e14;
-            let e12_e23 = self.e12 * self.e23;
-            let e12_e24 = self.e12 * self.e24;
-            let e12_e1234 = self.e12 * self.e1234;
+            let e12_e13 = two_e12 * self.e13;
+            let e12_e14 = two_e12 * self.e14;
+            let e12_e23 = two_e12 * self.e23;
+            let e12_e24 = two_e12 * self.e24;
+            let e12_e1234 = two_e12 * self.e1234;
             let e13_e13 = self.e13 * self.e13;
-            let e13_e14 = self.e13 * self.e14;
-            let e13_e23 = self.e13 * self.e23;
-            let e13_e34 = self.e13 * self.e34;
-            let e13_e1234 = self.e13 * self.e1234;
+            let e13_e14 = two_e13 * self.e14;
+            let e13_e23 = two_e13 * self.e23;
+            let e13_e34 = two_e13 * self.e34;
+            let e13_e1234 = two_e13 * self.e1234;
             let e14_e14 = self.e14 * self.e14;
-            let e14_e24 = self.e14 * self.e24;
-            let e14_e34 = self.e14 * self.e34;
-            let e14_e1234 = self.e14 * self.e1234;
+            let e14_e24 = two_e14 * self.e24;
+            let e14_e34 = two_e14 * self.e34;
+            let e14_e1234 = two_e14 * self.e1234;
             let e23_e23 = self.e23 * self.e23;
-            let e23_e24 = self.e23 * self.e24;
-            let e23_e34 = self.e23 * self.e34;
-            let e23_e1234 = self.e23 * self.e1234;
+            let e23_e24 = two_e23 * self.e24;
+            let e23_e34 = two_e23 * self.e34;
+            let e23_e1234 = two_e23 * self.e1234;
             let e24_e24 = self.e24 * self.e24;
-            let e24_e34 = self.e24 * self.e34;
-            let e24_e1234 = self.e24 * self.e1234;
+            let e24_e34 = two_e24 * self.e34;
+            let e24_e1234 = two_e24 * self.e1234;
             let e34_e34 = self.e34 * self.e34;
-            let e34_e1234 = self.e34 * self.e1234;
+            let e34_e1234 = two_e34 * self.e1234;
             let e1234_e1234 = self.e1234 * self.e1234;
             Odd {
                 e1: (s_s + e23_e23 + e24_e24 + e34_e34 - e12_e12 - e13_e13 - e14_e14
                     - e1234_e1234) * x.e1
-                    + (2.0 * (s_e12 + e34_e1234 - e13_e23 - e14_e24)) * x.e2
-                    + (2.0 * (s_e13 + e12_e23 - e14_e34 - e24_e1234)) * x.e3
-                    + (2.0 * (s_e14 + e12_e24 + e13_e34 + e23_e1234)) * x.e4,
-                e2: (-2.0 * (s_e12 + e13_e23 + e14_e24 + e34_e1234)) * x.e1
+                    + (s_e12 + e34_e1234 - e13_e23 - e14_e24) * x.e2
+                    + (s_e13 + e12_e23 - e14_e34 - e24_e1234) * x.e3
+                    + (s_e14 + e12_e24 + e13_e34 + e23_e1234) * x.e4,
+                e2: (-s_e12 - e13_e23 - e14_e24 - e34_e1234) * x.e1
                     + (s_s + e13_e13 + e14_e14 + e34_e34 - e12_e12 - e23_e23 - e24_e24
                         - e1234_e1234) * x.e2
-                    + (2.0 * (s_e23 + e14_e1234 - e12_e13 - e24_e34)) * x.e3
-                    + (2.0 * (s_e24 + e23_e34 - e12_e14 - e13_e1234)) * x.e4,
-                e3: (2.0 * (e12_e23 + e24_e1234 - s_e13 - e14_e34)) * x.e1
-                    + (-2.0 * (s_e23 + e12_e13 + e14_e1234 + e24_e34)) * x.e2
+                    + (s_e23 + e14_e1234 - e12_e13 - e24_e34) * x.e3
+                    + (s_e24 + e23_e34 - e12_e14 - e13_e1234) * x.e4,
+                e3: (e12_e23 + e24_e1234 - s_e13 - e14_e34) * x.e1
+                    + (-s_e23 - e12_e13 - e14_e1234 - e24_e34) * x.e2
                     + (s_s + e12_e12 + e14_e14 + e24_e24 - e13_e13 - e23_e23 - e34_e34
                         - e1234_e1234) * x.e3
-                    + (2.0 * (s_e34 + e12_e1234 - e13_e14 - e23_e24)) * x.e4,
-                e4: (2.0 * (e12_e24 + e13_e34 - s_e14 - e23_e1234)) * x.e1
-                    + (2.0 * (e13_e1234 + e23_e34 - s_e24 - e12_e14)) * x.e2
-                    + (-2.0 * (s_e34 + e12_e1234 + e13_e14 + e23_e24)) * x.e3
+                    + (s_e34 + e12_e1234 - e13_e14 - e23_e24) * x.e4,
+                e4: (e12_e24 + e13_e34 - s_e14 - e23_e1234) * x.e1
+                    + (e13_e1234 + e23_e34 - s_e24 - e12_e14) * x.e2
+                    + (-s_e34 - e12_e1234 - e13_e14 - e23_e24) * x.e3
                     + (s_s + e12_e12 + e13_e13 + e23_e23 - e14_e14 - e24_e24 - e34_e34
                         - e1234_e1234) * x.e4,
                 e123: (s_s + e12_e12 + e13_e13 + e23_e23 - e14_e14 - e24_e24 - e34_e34
                     - e1234_e1234) * x.e123
-                    + (2.0 * (s_e34 + e12_e1234 + e13_e14 + e23_e24)) * x.e124
-                    + (2.0 * (e13_e1234 + e23_e34 - s_e24 - e12_e14)) * x.e134
-                    + (2.0 * (s_e14 + e23_e1234 - e12_e24 - e13_e34)) * x.e234,
-                e124: (2.0 * (e13_e14 + e23_e24 - s_e34 - e12_e1234)) * x.e123
+                    + (s_e34 + e12_e1234 + e13_e14 + e23_e24) * x.e124
+                    + (e13_e1234 + e23_e34 - s_e24 - e12_e14) * x.e134
+                    + (s_e14 + e23_e1234 - e12_e24 - e13_e34) * x.e234,
+                e124: (e13_e14 + e23_e24 - s_e34 - e12_e1234) * x.e123
                     + (s_s + e12_e12 + e14_e14 + e24_e24 - e13_e13 - e23_e23 - e34_e34
                         - e1234_e1234) * x.e124
-                    + (2.0 * (s_e23 + e12_e13 + e14_e1234 + e24_e34)) * x.e134
-                    + (2.0 * (e12_e23 + e24_e1234 - s_e13 - e14_e34)) * x.e234,
-                e134: (2.0 * (s_e24 + e23_e34 - e12_e14 - e13_e1234)) * x.e123
-                    + (2.0 * (e12_e13 + e24_e34 - s_e23 - e14_e1234)) * x.e124
+                    + (s_e23 + e12_e13 + e14_e1234 + e24_e34) * x.e134
+                    + (e12_e23 + e24_e1234 - s_e13 - e14_e34) * x.e234,
+                e134: (s_e24 + e23_e34 - e12_e14 - e13_e1234) * x.e123
+                    + (e12_e13 + e24_e34 - s_e23 - e14_e1234) * x.e124
                     + (s_s + e13_e13 + e14_e14 + e34_e34 - e12_e12 - e23_e23 - e24_e24
                         - e1234_e1234) * x.e134
-                    + (2.0 * (s_e12 + e13_e23 + e14_e24 + e34_e1234)) * x.e234,
-                e234: (-2.0 * (s_e14 + e12_e24 + e13_e34 + e23_e1234)) * x.e123
-                    + (2.0 * (s_e13 + e12_e23 - e14_e34 - e24_e1234)) * x.e124
-                    + (2.0 * (e13_e23 + e14_e24 - s_e12 - e34_e1234)) * x.e134
+                    + (s_e12 + e13_e23 + e14_e24 + e34_e1234) * x.e234,
+                e234: (-s_e14 - e12_e24 - e13_e34 - e23_e1234) * x.e123
+                    + (s_e13 + e12_e23 - e14_e34 - e24_e1234) * x.e124
+                    + (e13_e23 + e14_e24 - s_e12 - e34_e1234) * x.e134
                     + (s_s + e23_e23 + e24_e24 + e34_e34 - e12_e12 - e13_e13 - e14_e14
                         - e1234_e1234) * x.e234,
             }
@@ -13732,129 +13768,135 @@ pub mod g4 {
     impl Sandwich<Multivector> for Even {
         #[inline]
         fn sandwich(self, x: Multivector) -> Multivector {
+            let two_s = self.s + self.s;
+            let two_e12 = self.e12 + self.e12;
+            let two_e13 = self.e13 + self.e13;
+            let two_e14 = self.e14 + self.e14;
+            let two_e23 = self.e23 + self.e23;
+            let two_e24 = self.e24 + self.e24;
+            let two_e34 = self.e34 + self.e34;
             let s_s = self.s * self.s;
-            let s_e12 = self.s * self.e12;
-            let s_e13 = self.s * self.e13;
-            let s_e14 = self.s * self.e14;
-            let s_e23 = self.s * self.e23;
-            let s_e24 = self.s * self.e24;
-            let s_e34 = self.s * self.e34;
-            let s_e1234 = self.s * self.e1234;
+            let s_e12 = two_s * self.e12;
+            let s_e13 = two_s * self.e13;
+            let s_e14 = two_s * self.e14;
+            let s_e23 = two_s * self.e23;
+            let s_e24 = two_s * self.e24;
+            let s_e34 = two_s * self.e34;
+            let s_e1234 = two_s * self.e1234;
             let e12_e12 = self.e12 * self.e12;
-            let e12_e13 = self.e12 * self.e13;
-            let e12_e14 = self.e12 * self.e14;
-            let e12_e23 = self.e12 * self.e23;
-            let e12_e24 = self.e12 * self.e24;
-            let e12_e34 = self.e12 * self.e34;
-            let e12_e1234 = self.e12 * self.e1234;
+            let e12_e13 = two_e12 * self.e13;
+            let e12_e14 = two_e12 * self.e14;
+            let e12_e23 = two_e12 * self.e23;
+            let e12_e24 = two_e12 * self.e24;
+            let e12_e34 = two_e12 * self.e34;
+            let e12_e1234 = two_e12 * self.e1234;
             let e13_e13 = self.e13 * self.e13;
-            let e13_e14 = self.e13 * self.e14;
-            let e13_e23 = self.e13 * self.e23;
-            let e13_e24 = self.e13 * self.e24;
-            let e13_e34 = self.e13 * self.e34;
-            let e13_e1234 = self.e13 * self.e1234;
+            let e13_e14 = two_e13 * self.e14;
+            let e13_e23 = two_e13 * self.e23;
+            let e13_e24 = two_e13 * self.e24;
+            let e13_e34 = two_e13 * self.e34;
+            let e13_e1234 = two_e13 * self.e1234;
             let e14_e14 = self.e14 * self.e14;
-            let e14_e23 = self.e14 * self.e23;
-            let e14_e24 = self.e14 * self.e24;
-            let e14_e34 = self.e14 * self.e34;
-            let e14_e1234 = self.e14 * self.e1234;
+            let e14_e23 = two_e14 * self.e23;
+            let e14_e24 = two_e14 * self.e24;
+            let e14_e34 = two_e14 * self.e34;
+            let e14_e1234 = two_e14 * self.e1234;
             let e23_e23 = self.e23 * self.e23;
-            let e23_e24 = self.e23 * self.e24;
-            let e23_e34 = self.e23 * self.e34;
-            let e23_e1234 = self.e23 * self.e1234;
+            let e23_e24 = two_e23 * self.e24;
+            let e23_e34 = two_e23 * self.e34;
+            let e23_e1234 = two_e23 * self.e1234;
             let e24_e24 = self.e24 * self.e24;
-            let e24_e34 = self.e24 * self.e34;
-            let e24_e1234 = self.e24 * self.e1234;
+            let e24_e34 = two_e24 * self.e34;
+            let e24_e1234 = two_e24 * self.e1234;
             let e34_e34 = self.e34 * self.e34;
-            let e34_e1234 = self.e34 * self.e1234;
+            let e34_e1234 = two_e34 * self.e1234;
             let e1234_e1234 = self.e1234 * self.e1234;
             Multivector {
                 s: (s_s + e12_e12 + e13_e13 + e14_e14 + e23_e23 + e24_e24 + e34_e34
                     + e1234_e1234) * x.s
-                    + (2.0 * (s_e1234 + e13_e24 - e12_e34 - e14_e23)) * x.e1234,
+                    + (s_e1234 + e13_e24 - e12_e34 - e14_e23) * x.e1234,
                 e1: (s_s + e23_e23 + e24_e24 + e34_e34 - e12_e12 - e13_e13 - e14_e14
                     - e1234_e1234) * x.e1
-                    + (2.0 * (s_e12 + e34_e1234 - e13_e23 - e14_e24)) * x.e2
-                    + (2.0 * (s_e13 + e12_e23 - e14_e34 - e24_e1234)) * x.e3
-                    + (2.0 * (s_e14 + e12_e24 + e13_e34 + e23_e1234)) * x.e4,
-                e2: (-2.0 * (s_e12 + e13_e23 + e14_e24 + e34_e1234)) * x.e1
+                    + (s_e12 + e34_e1234 - e13_e23 - e14_e24) * x.e2
+                    + (s_e13 + e12_e23 - e14_e34 - e24_e1234) * x.e3
+                    + (s_e14 + e12_e24 + e13_e34 + e23_e1234) * x.e4,
+                e2: (-s_e12 - e13_e23 - e14_e24 - e34_e1234) * x.e1
                     + (s_s + e13_e13 + e14_e14 + e34_e34 - e12_e12 - e23_e23 - e24_e24
                         - e1234_e1234) * x.e2
-                    + (2.0 * (s_e23 + e14_e1234 - e12_e13 - e24_e34)) * x.e3
-                    + (2.0 * (s_e24 + e23_e34 - e12_e14 - e13_e1234)) * x.e4,
-                e3: (2.0 * (e12_e23 + e24_e1234 - s_e13 - e14_e34)) * x.e1
-                    + (-2.0 * (s_e23 + e12_e13 + e14_e1234 + e24_e34)) * x.e2
+                    + (s_e23 + e14_e1234 - e12_e13 - e24_e34) * x.e3
+                    + (s_e24 + e23_e34 - e12_e14 - e13_e1234) * x.e4,
+                e3: (e12_e23 + e24_e1234 - s_e13 - e14_e34) * x.e1
+                    + (-s_e23 - e12_e13 - e14_e1234 - e24_e34) * x.e2
                     + (s_s + e12_e12 + e14_e14 + e24_e24 - e13_e13 - e23_e23 - e34_e34
                         - e1234_e1234) * x.e3
-                    + (2.0 * (s_e34 + e12_e1234 - e13_e14 - e23_e24)) * x.e4,
-                e4: (2.0 * (e12_e24 + e13_e34 - s_e14 - e23_e1234)) * x.e1
-                    + (2.0 * (e13_e1234 + e23_e34 - s_e24 - e12_e14)) * x.e2
-                    + (-2.0 * (s_e34 + e12_e1234 + e13_e14 + e23_e24)) * x.e3
+                    + (s_e34 + e12_e1234 - e13_e14 - e23_e24) * x.e4,
+                e4: (e12_e24 + e13_e34 - s_e14 - e23_e1234) * x.e1
+                    + (e13_e1234 + e23_e34 - s_e24 - e12_e14) * x.e2
+                    + (-s_e34 - e12_e1234 - e13_e14 - e23_e24) * x.e3
                     + (s_s + e12_e12 + e13_e13 + e23_e23 - e14_e14 - e24_e24 - e34_e34
                         - e1234_e1234) * x.e4,
                 e12: (s_s + e12_e12 + e34_e34 + e1234_e1234 - e13_e13 - e14_e14 - e23_e23
-                    - e24_e24) * x.e12
-                    + (2.0 * (s_e23 + e12_e13 - e14_e1234 - e24_e34)) * x.e13
-                    + (2.0 * (s_e24 + e12_e14 + e13_e1234 + e23_e34)) * x.e14
-                    + (2.0 * (e12_e23 + e14_e34 - s_e13 - e24_e1234)) * x.e23
-                    + (2.0 * (e12_e24 + e23_e1234 - s_e14 - e13_e34)) * x.e24
-                    + (2.0 * (e12_e34 + e13_e24 - s_e1234 - e14_e23)) * x.e34,
-                e13: (2.0 * (e12_e13 + e14_e1234 - s_e23 - e24_e34)) * x.e12
+                    - e24_e24) * x.e12 + (s_e23 + e12_e13 - e14_e1234 - e24_e34) * x.e13
+                    + (s_e24 + e12_e14 + e13_e1234 + e23_e34) * x.e14
+                    + (e12_e23 + e14_e34 - s_e13 - e24_e1234) * x.e23
+                    + (e12_e24 + e23_e1234 - s_e14 - e13_e34) * x.e24
+                    + (e12_e34 + e13_e24 - s_e1234 - e14_e23) * x.e34,
+                e13: (e12_e13 + e14_e1234 - s_e23 - e24_e34) * x.e12
                     + (s_s + e13_e13 + e24_e24 + e1234_e1234 - e12_e12 - e14_e14
                         - e23_e23 - e34_e34) * x.e13
-                    + (2.0 * (s_e34 + e13_e14 - e12_e1234 - e23_e24)) * x.e14
-                    + (2.0 * (s_e12 + e13_e23 - e14_e24 - e34_e1234)) * x.e23
-                    + (2.0 * (s_e1234 + e12_e34 + e13_e24 + e14_e23)) * x.e24
-                    + (2.0 * (e13_e34 + e23_e1234 - s_e14 - e12_e24)) * x.e34,
-                e14: (2.0 * (e12_e14 + e23_e34 - s_e24 - e13_e1234)) * x.e12
-                    + (2.0 * (e12_e1234 + e13_e14 - s_e34 - e23_e24)) * x.e13
+                    + (s_e34 + e13_e14 - e12_e1234 - e23_e24) * x.e14
+                    + (s_e12 + e13_e23 - e14_e24 - e34_e1234) * x.e23
+                    + (s_e1234 + e12_e34 + e13_e24 + e14_e23) * x.e24
+                    + (e13_e34 + e23_e1234 - s_e14 - e12_e24) * x.e34,
+                e14: (e12_e14 + e23_e34 - s_e24 - e13_e1234) * x.e12
+                    + (e12_e1234 + e13_e14 - s_e34 - e23_e24) * x.e13
                     + (s_s + e14_e14 + e23_e23 + e1234_e1234 - e12_e12 - e13_e13
                         - e24_e24 - e34_e34) * x.e14
-                    + (2.0 * (e13_e24 + e14_e23 - s_e1234 - e12_e34)) * x.e23
-                    + (2.0 * (s_e12 + e14_e24 - e13_e23 - e34_e1234)) * x.e24
-                    + (2.0 * (s_e13 + e12_e23 + e14_e34 + e24_e1234)) * x.e34,
-                e23: (2.0 * (s_e13 + e12_e23 + e14_e34 + e24_e1234)) * x.e12
-                    + (2.0 * (e13_e23 + e34_e1234 - s_e12 - e14_e24)) * x.e13
-                    + (2.0 * (e13_e24 + e14_e23 - s_e1234 - e12_e34)) * x.e14
+                    + (e13_e24 + e14_e23 - s_e1234 - e12_e34) * x.e23
+                    + (s_e12 + e14_e24 - e13_e23 - e34_e1234) * x.e24
+                    + (s_e13 + e12_e23 + e14_e34 + e24_e1234) * x.e34,
+                e23: (s_e13 + e12_e23 + e14_e34 + e24_e1234) * x.e12
+                    + (e13_e23 + e34_e1234 - s_e12 - e14_e24) * x.e13
+                    + (e13_e24 + e14_e23 - s_e1234 - e12_e34) * x.e14
                     + (s_s + e14_e14 + e23_e23 + e1234_e1234 - e12_e12 - e13_e13
                         - e24_e24 - e34_e34) * x.e23
-                    + (2.0 * (s_e34 + e23_e24 - e12_e1234 - e13_e14)) * x.e24
-                    + (2.0 * (e12_e14 + e23_e34 - s_e24 - e13_e1234)) * x.e34,
-                e24: (2.0 * (s_e14 + e12_e24 - e13_e34 - e23_e1234)) * x.e12
-                    + (2.0 * (s_e1234 + e12_e34 + e13_e24 + e14_e23)) * x.e13
-                    + (2.0 * (e14_e24 + e34_e1234 - s_e12 - e13_e23)) * x.e14
-                    + (2.0 * (e12_e1234 + e23_e24 - s_e34 - e13_e14)) * x.e23
+                    + (s_e34 + e23_e24 - e12_e1234 - e13_e14) * x.e24
+                    + (e12_e14 + e23_e34 - s_e24 - e13_e1234) * x.e34,
+                e24: (s_e14 + e12_e24 - e13_e34 - e23_e1234) * x.e12
+                    + (s_e1234 + e12_e34 + e13_e24 + e14_e23) * x.e13
+                    + (e14_e24 + e34_e1234 - s_e12 - e13_e23) * x.e14
+                    + (e12_e1234 + e23_e24 - s_e34 - e13_e14) * x.e23
                     + (s_s + e13_e13 + e24_e24 + e1234_e1234 - e12_e12 - e14_e14
                         - e23_e23 - e34_e34) * x.e24
-                    + (2.0 * (s_e23 + e24_e34 - e12_e13 - e14_e1234)) * x.e34,
-                e34: (2.0 * (e12_e34 + e13_e24 - s_e1234 - e14_e23)) * x.e12
-                    + (2.0 * (s_e14 + e13_e34 - e12_e24 - e23_e1234)) * x.e13
-                    + (2.0 * (e12_e23 + e14_e34 - s_e13 - e24_e1234)) * x.e14
-                    + (2.0 * (s_e24 + e12_e14 + e13_e1234 + e23_e34)) * x.e23
-                    + (2.0 * (e14_e1234 + e24_e34 - s_e23 - e12_e13)) * x.e24
+                    + (s_e23 + e24_e34 - e12_e13 - e14_e1234) * x.e34,
+                e34: (e12_e34 + e13_e24 - s_e1234 - e14_e23) * x.e12
+                    + (s_e14 + e13_e34 - e12_e24 - e23_e1234) * x.e13
+                    + (e12_e23 + e14_e34 - s_e13 - e24_e1234) * x.e14
+                    + (s_e24 + e12_e14 + e13_e1234 + e23_e34) * x.e23
+                    + (e14_e1234 + e24_e34 - s_e23 - e12_e13) * x.e24
                     + (s_s + e12_e12 + e34_e34 + e1234_e1234 - e13_e13 - e14_e14
                         - e23_e23 - e24_e24) * x.e34,
                 e123: (s_s + e12_e12 + e13_e13 + e23_e23 - e14_e14 - e24_e24 - e34_e34
                     - e1234_e1234) * x.e123
-                    + (2.0 * (s_e34 + e12_e1234 + e13_e14 + e23_e24)) * x.e124
-                    + (2.0 * (e13_e1234 + e23_e34 - s_e24 - e12_e14)) * x.e134
-                    + (2.0 * (s_e14 + e23_e1234 - e12_e24 - e13_e34)) * x.e234,
-                e124: (2.0 * (e13_e14 + e23_e24 - s_e34 - e12_e1234)) * x.e123
+                    + (s_e34 + e12_e1234 + e13_e14 + e23_e24) * x.e124
+                    + (e13_e1234 + e23_e34 - s_e24 - e12_e14) * x.e134
+                    + (s_e14 + e23_e1234 - e12_e24 - e13_e34) * x.e234,
+                e124: (e13_e14 + e23_e24 - s_e34 - e12_e1234) * x.e123
                     + (s_s + e12_e12 + e14_e14 + e24_e24 - e13_e13 - e23_e23 - e34_e34
                         - e1234_e1234) * x.e124
-                    + (2.0 * (s_e23 + e12_e13 + e14_e1234 + e24_e34)) * x.e134
-                    + (2.0 * (e12_e23 + e24_e1234 - s_e13 - e14_e34)) * x.e234,
-                e134: (2.0 * (s_e24 + e23_e34 - e12_e14 - e13_e1234)) * x.e123
-                    + (2.0 * (e12_e13 + e24_e34 - s_e23 - e14_e1234)) * x.e124
+                    + (s_e23 + e12_e13 + e14_e1234 + e24_e34) * x.e134
+                    + (e12_e23 + e24_e1234 - s_e13 - e14_e34) * x.e234,
+                e134: (s_e24 + e23_e34 - e12_e14 - e13_e1234) * x.e123
+                    + (e12_e13 + e24_e34 - s_e23 - e14_e1234) * x.e124
                     + (s_s + e13_e13 + e14_e14 + e34_e34 - e12_e12 - e23_e23 - e24_e24
                         - e1234_e1234) * x.e134
-                    + (2.0 * (s_e12 + e13_e23 + e14_e24 + e34_e1234)) * x.e234,
-                e234: (-2.0 * (s_e14 + e12_e24 + e13_e34 + e23_e1234)) * x.e123
-                    + (2.0 * (s_e13 + e12_e23 - e14_e34 - e24_e1234)) * x.e124
-                    + (2.0 * (e13_e23 + e14_e24 - s_e12 - e34_e1234)) * x.e134
+                    + (s_e12 + e13_e23 + e14_e24 + e34_e1234) * x.e234,
+                e234: (-s_e14 - e12_e24 - e13_e34 - e23_e1234) * x.e123
+                    + (s_e13 + e12_e23 - e14_e34 - e24_e1234) * x.e124
+                    + (e13_e23 + e14_e24 - s_e12 - e34_e1234) * x.e134
                     + (s_s + e23_e23 + e24_e24 + e34_e34 - e12_e12 - e13_e13 - e14_e14
                         - e1234_e1234) * x.e234,
-                e1234: (2.0 * (s_e1234 + e13_e24 - e12_e34 - e14_e23)) * x.s
+                e1234: (s_e1234 + e13_e24 - e12_e34 - e14_e23) * x.s
                     + (s_s + e12_e12 + e13_e13 + e14_e14 + e23_e23 + e24_e24 + e34_e34
                         + e1234_e1234) * x.e1234,
             }
@@ -13863,57 +13905,63 @@ pub mod g4 {
     impl Sandwich<Vector> for Odd {
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
+            let two_e1 = self.e1 + self.e1;
+            let two_e2 = self.e2 + self.e2;
+            let two_e3 = self.e3 + self.e3;
+            let two_e4 = self.e4 + self.e4;
+            let two_e123 = self.e123 + self.e123;
+            let two_e124 = self.e124 + self.e124;
+            let two_e134 = self.e134 + self.e134;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
-            let e1_e3 = self.e1 * self.e3;
-            let e1_e4 = self.e1 * self.e4;
-            let e1_e123 = self.e1 * self.e123;
-            let e1_e124 = self.e1 * self.e124;
-            let e1_e134 = self.e1 * self.e134;
+            let e1_e2 = two_e1 * self.e2;
+            let e1_e3 = two_e1 * self.e3;
+            let e1_e4 = two_e1 * self.e4;
+            let e1_e123 = two_e1 * self.e123;
+            let e1_e124 = two_e1 * self.e124;
+            let e1_e134 = two_e1 * self.e134;
             let e2_e2 = self.e2 * self.e2;
-            let e2_e3 = self.e2 * self.e3;
-            let e2_e4 = self.e2 * self.e4;
-            let e2_e123 = self.e2 * self.e123;
-            let e2_e124 = self.e2 * self.e124;
-            let e2_e234 = self.e2 * self.e234;
+            let e2_e3 = two_e2 * self.e3;
+            let e2_e4 = two_e2 * self.e4;
+            let e2_e123 = two_e2 * self.e123;
+            let e2_e124 = two_e2 * self.e124;
+            let e2_e234 = two_e2 * self.e234;
             let e3_e3 = self.e3 * self.e3;
-            let e3_e4 = self.e3 * self.e4;
-            let e3_e123 = self.e3 * self.e123;
-            let e3_e134 = self.e3 * self.e134;
-            let e3_e234 = self.e3 * self.e234;
+            let e3_e4 = two_e3 * self.e4;
+            let e3_e123 = two_e3 * self.e123;
+            let e3_e134 = two_e3 * self.e134;
+            let e3_e234 = two_e3 * self.e234;
             let e4_e4 = self.e4 * self.e4;
-            let e4_e124 = self.e4 * self.e124;
-            let e4_e134 = self.e4 * self.e134;
-            let e4_e234 = self.e4 * self.e234;
+            let e4_e124 = two_e4 * self.e124;
+            let e4_e134 = two_e4 * self.e134;
+            let e4_e234 = two_e4 * self.e234;
             let e123_e123 = self.e123 * self.e123;
-            let e123_e124 = self.e123 * self.e124;
-            let e123_e134 = self.e123 * self.e134;
-            let e123_e234 = self.e123 * self.e234;
+            let e123_e124 = two_e123 * self.e124;
+            let e123_e134 = two_e123 * self.e134;
+            let e123_e234 = two_e123 * self.e234;
             let e124_e124 = self.e124 * self.e124;
-            let e124_e134 = self.e124 * self.e134;
-            let e124_e234 = self.e124 * self.e234;
+            let e124_e134 = two_e124 * self.e134;
+            let e124_e234 = two_e124 * self.e234;
             let e134_e134 = self.e134 * self.e134;
-            let e134_e234 = self.e134 * self.e234;
+            let e134_e234 = two_e134 * self.e234;
             let e234_e234 = self.e234 * self.e234;
             Vector {
                 e1: (e2_e2 + e3_e3 + e4_e4 + e234_e234 - e1_e1 - e123_e123 - e124_e124
-                    - e134_e134) * x.e1
-                    + (2.0 * (e3_e123 + e4_e124 - e1_e2 - e134_e234)) * x.e2
-                    + (2.0 * (e4_e134 + e124_e234 - e1_e3 - e2_e123)) * x.e3
-                    + (-2.0 * (e1_e4 + e2_e124 + e3_e134 + e123_e234)) * x.e4,
-                e2: (-2.0 * (e1_e2 + e3_e123 + e4_e124 + e134_e234)) * x.e1
+                    - e134_e134) * x.e1 + (e3_e123 + e4_e124 - e1_e2 - e134_e234) * x.e2
+                    + (e4_e134 + e124_e234 - e1_e3 - e2_e123) * x.e3
+                    + (-e1_e4 - e2_e124 - e3_e134 - e123_e234) * x.e4,
+                e2: (-e1_e2 - e3_e123 - e4_e124 - e134_e234) * x.e1
                     + (e1_e1 + e3_e3 + e4_e4 + e134_e134 - e2_e2 - e123_e123 - e124_e124
                         - e234_e234) * x.e2
-                    + (2.0 * (e1_e123 + e4_e234 - e2_e3 - e124_e134)) * x.e3
-                    + (2.0 * (e1_e124 + e123_e134 - e2_e4 - e3_e234)) * x.e4,
-                e3: (2.0 * (e2_e123 + e124_e234 - e1_e3 - e4_e134)) * x.e1
-                    + (-2.0 * (e1_e123 + e2_e3 + e4_e234 + e124_e134)) * x.e2
+                    + (e1_e123 + e4_e234 - e2_e3 - e124_e134) * x.e3
+                    + (e1_e124 + e123_e134 - e2_e4 - e3_e234) * x.e4,
+                e3: (e2_e123 + e124_e234 - e1_e3 - e4_e134) * x.e1
+                    + (-e1_e123 - e2_e3 - e4_e234 - e124_e134) * x.e2
                     + (e1_e1 + e2_e2 + e4_e4 + e124_e124 - e3_e3 - e123_e123 - e134_e134
                         - e234_e234) * x.e3
-                    + (2.0 * (e1_e134 + e2_e234 - e3_e4 - e123_e124)) * x.e4,
-                e4: (2.0 * (e2_e124 + e3_e134 - e1_e4 - e123_e234)) * x.e1
-                    + (2.0 * (e3_e234 + e123_e134 - e1_e124 - e2_e4)) * x.e2
-                    + (-2.0 * (e1_e134 + e2_e234 + e3_e4 + e123_e124)) * x.e3
+                    + (e1_e134 + e2_e234 - e3_e4 - e123_e124) * x.e4,
+                e4: (e2_e124 + e3_e134 - e1_e4 - e123_e234) * x.e1
+                    + (e3_e234 + e123_e134 - e1_e124 - e2_e4) * x.e2
+                    + (-e1_e134 - e2_e234 - e3_e4 - e123_e124) * x.e3
                     + (e1_e1 + e2_e2 + e3_e3 + e123_e123 - e4_e4 - e124_e124 - e134_e134
                         - e234_e234) * x.e4,
             }
@@ -13922,83 +13970,90 @@ pub mod g4 {
     impl Sandwich<Bivector> for Odd {
         #[inline]
         fn sandwich(self, x: Bivector) -> Bivector {
+            let two_e1 = self.e1 + self.e1;
+            let two_e2 = self.e2 + self.e2;
+            let two_e3 = self.e3 + self.e3;
+            let two_e4 = self.e4 + self.e4;
+            let two_e123 = self.e123 + self.e123;
+            let two_e124 = self.e124 + self.e124;
+            let two_e134 = self.e134 + self.e134;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
-            let e1_e3 = self.e1 * self.e3;
-            let e1_e4 = self.e1 * self.e4;
-            let e1_e123 = self.e1 * self.e123;
-            let e1_e124 = self.e1 * self.e124;
-            let e1_e134 = self.e1 * self.e134;
-            let e1_e234 = self.e1 * self.e234;
+            let e1_e2 = two_e1 * self.e2;
+            let e1_e3 = two_e1 * self.e3;
+            let e1_e4 = two_e1 * self.e4;
+            let e1_e123 = two_e1 * self.e123;
+            let e1_e124 = two_e1 * self.e124;
+            let e1_e134 = two_e1 * self.e134;
+            let e1_e234 = two_e1 * self.e234;
             let e2_e2 = self.e2 * self.e2;
-            let e2_e3 = self.e2 * self.e3;
-            let e2_e4 = self.e2 * self.e4;
-            let e2_e123 = self.e2 * self.e123;
-            let e2_e124 = self.e2 * self.e124;
-            let e2_e134 = self.e2 * self.e134;
-            let e2_e234 = self.e2 * self.e234;
+            let e2_e3 = two_e2 * self.e3;
+            let e2_e4 = two_e2 * self.e4;
+            let e2_e123 = two_e2 * self.e123;
+            let e2_e124 = two_e2 * self.e124;
+            let e2_e134 = two_e2 * self.e134;
+            let e2_e234 = two_e2 * self.e234;
             let e3_e3 = self.e3 * self.e3;
-            let e3_e4 = self.e3 * self.e4;
-            let e3_e123 = self.e3 * self.e123;
-            let e3_e124 = self.e3 * self.e124;
-            let e3_e134 = self.e3 * self.e134;
-            let e3_e234 = self.e3 * self.e234;
+            let e3_e4 = two_e3 * self.e4;
+            let e3_e123 = two_e3 * self.e123;
+            let e3_e124 = two_e3 * self.e124;
+            let e3_e134 = two_e3 * self.e134;
+            let e3_e234 = two_e3 * self.e234;
             let e4_e4 = self.e4 * self.e4;
-            let e4_e123 = self.e4 * self.e123;
-            let e4_e124 = self.e4 * self.e124;
-            let e4_e134 = self.e4 * self.e134;
-            let e4_e234 = self.e4 * self.e234;
+            let e4_e123 = two_e4 * self.e123;
+            let e4_e124 = two_e4 * self.e124;
+            let e4_e134 = two_e4 * self.e134;
+            let e4_e234 = two_e4 * self.e234;
             let e123_e123 = self.e123 * self.e123;
-            let e123_e124 = self.e123 * self.e124;
-            let e123_e134 = self.e123 * self.e134;
-            let e123_e234 = self.e123 * self.e234;
+            let e123_e124 = two_e123 * self.e124;
+            let e123_e134 = two_e123 * self.e134;
+            let e123_e234 = two_e123 * self.e234;
             let e124_e124 = self.e124 * self.e124;
-            let e124_e134 = self.e124 * self.e134;
-            let e124_e234 = self.e124 * self.e234;
+            let e124_e134 = two_e124 * self.e134;
+            let e124_e234 = two_e124 * self.e234;
             let e134_e134 = self.e134 * self.e134;
-            let e134_e234 = self.e134 * self.e234;
+            let e134_e234 = two_e134 * self.e234;
             let e234_e234 = self.e234 * self.e234;
             Bivector {
                 e12: (e3_e3 + e4_e4 + e123_e123 + e124_e124 - e1_e1 - e2_e2 - e134_e134
                     - e234_e234) * x.e12
-                    + (2.0 * (e4_e234 + e124_e134 - e1_e123 - e2_e3)) * x.e13
-                    + (-2.0 * (e1_e124 + e2_e4 + e3_e234 + e123_e134)) * x.e14
-                    + (2.0 * (e1_e3 + e124_e234 - e2_e123 - e4_e134)) * x.e23
-                    + (2.0 * (e1_e4 + e3_e134 - e2_e124 - e123_e234)) * x.e24
-                    + (2.0 * (e1_e234 + e4_e123 - e2_e134 - e3_e124)) * x.e34,
-                e13: (2.0 * (e1_e123 + e124_e134 - e2_e3 - e4_e234)) * x.e12
+                    + (e4_e234 + e124_e134 - e1_e123 - e2_e3) * x.e13
+                    + (-e1_e124 - e2_e4 - e3_e234 - e123_e134) * x.e14
+                    + (e1_e3 + e124_e234 - e2_e123 - e4_e134) * x.e23
+                    + (e1_e4 + e3_e134 - e2_e124 - e123_e234) * x.e24
+                    + (e1_e234 + e4_e123 - e2_e134 - e3_e124) * x.e34,
+                e13: (e1_e123 + e124_e134 - e2_e3 - e4_e234) * x.e12
                     + (e2_e2 + e4_e4 + e123_e123 + e134_e134 - e1_e1 - e3_e3 - e124_e124
                         - e234_e234) * x.e13
-                    + (2.0 * (e2_e234 + e123_e124 - e1_e134 - e3_e4)) * x.e14
-                    + (2.0 * (e4_e124 + e134_e234 - e1_e2 - e3_e123)) * x.e23
-                    + (-2.0 * (e1_e234 + e2_e134 + e3_e124 + e4_e123)) * x.e24
-                    + (2.0 * (e1_e4 + e2_e124 - e3_e134 - e123_e234)) * x.e34,
-                e14: (2.0 * (e1_e124 + e3_e234 - e2_e4 - e123_e134)) * x.e12
-                    + (2.0 * (e1_e134 + e123_e124 - e2_e234 - e3_e4)) * x.e13
+                    + (e2_e234 + e123_e124 - e1_e134 - e3_e4) * x.e14
+                    + (e4_e124 + e134_e234 - e1_e2 - e3_e123) * x.e23
+                    + (-e1_e234 - e2_e134 - e3_e124 - e4_e123) * x.e24
+                    + (e1_e4 + e2_e124 - e3_e134 - e123_e234) * x.e34,
+                e14: (e1_e124 + e3_e234 - e2_e4 - e123_e134) * x.e12
+                    + (e1_e134 + e123_e124 - e2_e234 - e3_e4) * x.e13
                     + (e2_e2 + e3_e3 + e124_e124 + e134_e134 - e1_e1 - e4_e4 - e123_e123
                         - e234_e234) * x.e14
-                    + (2.0 * (e1_e234 + e2_e134 - e3_e124 - e4_e123)) * x.e23
-                    + (2.0 * (e3_e123 + e134_e234 - e1_e2 - e4_e124)) * x.e24
-                    + (-2.0 * (e1_e3 + e2_e123 + e4_e134 + e124_e234)) * x.e34,
-                e23: (2.0 * (e1_e3 + e2_e123 + e4_e134 + e124_e234)) * x.e12
-                    + (2.0 * (e3_e123 + e134_e234 - e1_e2 - e4_e124)) * x.e13
-                    + (2.0 * (e3_e124 + e4_e123 - e1_e234 - e2_e134)) * x.e14
+                    + (e1_e234 + e2_e134 - e3_e124 - e4_e123) * x.e23
+                    + (e3_e123 + e134_e234 - e1_e2 - e4_e124) * x.e24
+                    + (-e1_e3 - e2_e123 - e4_e134 - e124_e234) * x.e34,
+                e23: (e1_e3 + e2_e123 + e4_e134 + e124_e234) * x.e12
+                    + (e3_e123 + e134_e234 - e1_e2 - e4_e124) * x.e13
+                    + (e3_e124 + e4_e123 - e1_e234 - e2_e134) * x.e14
                     + (e1_e1 + e4_e4 + e123_e123 + e234_e234 - e2_e2 - e3_e3 - e124_e124
                         - e134_e134) * x.e23
-                    + (2.0 * (e1_e134 + e123_e124 - e2_e234 - e3_e4)) * x.e24
-                    + (2.0 * (e2_e4 + e123_e134 - e1_e124 - e3_e234)) * x.e34,
-                e24: (2.0 * (e1_e4 + e2_e124 - e3_e134 - e123_e234)) * x.e12
-                    + (2.0 * (e1_e234 + e2_e134 + e3_e124 + e4_e123)) * x.e13
-                    + (2.0 * (e4_e124 + e134_e234 - e1_e2 - e3_e123)) * x.e14
-                    + (2.0 * (e2_e234 + e123_e124 - e1_e134 - e3_e4)) * x.e23
+                    + (e1_e134 + e123_e124 - e2_e234 - e3_e4) * x.e24
+                    + (e2_e4 + e123_e134 - e1_e124 - e3_e234) * x.e34,
+                e24: (e1_e4 + e2_e124 - e3_e134 - e123_e234) * x.e12
+                    + (e1_e234 + e2_e134 + e3_e124 + e4_e123) * x.e13
+                    + (e4_e124 + e134_e234 - e1_e2 - e3_e123) * x.e14
+                    + (e2_e234 + e123_e124 - e1_e134 - e3_e4) * x.e23
                     + (e1_e1 + e3_e3 + e124_e124 + e234_e234 - e2_e2 - e4_e4 - e123_e123
                         - e134_e134) * x.e24
-                    + (2.0 * (e1_e123 + e124_e134 - e2_e3 - e4_e234)) * x.e34,
-                e34: (2.0 * (e2_e134 + e3_e124 - e1_e234 - e4_e123)) * x.e12
-                    + (2.0 * (e1_e4 + e3_e134 - e2_e124 - e123_e234)) * x.e13
-                    + (2.0 * (e2_e123 + e4_e134 - e1_e3 - e124_e234)) * x.e14
-                    + (2.0 * (e1_e124 + e2_e4 + e3_e234 + e123_e134)) * x.e23
-                    + (2.0 * (e4_e234 + e124_e134 - e1_e123 - e2_e3)) * x.e24
+                    + (e1_e123 + e124_e134 - e2_e3 - e4_e234) * x.e34,
+                e34: (e2_e134 + e3_e124 - e1_e234 - e4_e123) * x.e12
+                    + (e1_e4 + e3_e134 - e2_e124 - e123_e234) * x.e13
+                    + (e2_e123 + e4_e134 - e1_e3 - e124_e234) * x.e14
+                    + (e1_e124 + e2_e4 + e3_e234 + e123_e134) * x.e23
+                    + (e4_e234 + e124_e134 - e1_e123 - e2_e3) * x.e24
                     + (e1_e1 + e2_e2 + e134_e134 + e234_e234 - e3_e3 - e4_e4 - e123_e123
                         - e124_e124) * x.e34,
             }
@@ -14007,57 +14062,64 @@ pub mod g4 {
     impl Sandwich<Trivector> for Odd {
         #[inline]
         fn sandwich(self, x: Trivector) -> Trivector {
+            let two_e1 = self.e1 + self.e1;
+            let two_e2 = self.e2 + self.e2;
+            let two_e3 = self.e3 + self.e3;
+            let two_e4 = self.e4 + self.e4;
+            let two_e123 = self.e123 + self.e123;
+            let two_e124 = self.e124 + self.e124;
+            let two_e134 = self.e134 + self.e134;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
-            let e1_e3 = self.e1 * self.e3;
-            let e1_e4 = self.e1 * self.e4;
-            let e1_e123 = self.e1 * self.e123;
-            let e1_e124 = self.e1 * self.e124;
-            let e1_e134 = self.e1 * self.e134;
+            let e1_e2 = two_e1 * self.e2;
+            let e1_e3 = two_e1 * self.e3;
+            let e1_e4 = two_e1 * self.e4;
+            let e1_e123 = two_e1 * self.e123;
+            let e1_e124 = two_e1 * self.e124;
+            let e1_e134 = two_e1 * self.e134;
             let e2_e2 = self.e2 * self.e2;
-            let e2_e3 = self.e2 * self.e3;
-            let e2_e4 = self.e2 * self.e4;
-            let e2_e123 = self.e2 * self.e123;
-            let e2_e124 = self.e2 * self.e124;
-            let e2_e234 = self.e2 * self.e234;
+            let e2_e3 = two_e2 * self.e3;
+            let e2_e4 = two_e2 * self.e4;
+            let e2_e123 = two_e2 * self.e123;
+            let e2_e124 = two_e2 * self.e124;
+            let e2_e234 = two_e2 * self.e234;
             let e3_e3 = self.e3 * self.e3;
-            let e3_e4 = self.e3 * self.e4;
-            let e3_e123 = self.e3 * self.e123;
-            let e3_e134 = self.e3 * self.e134;
-            let e3_e234 = self.e3 * self.e234;
+            let e3_e4 = two_e3 * self.e4;
+            let e3_e123 = two_e3 * self.e123;
+            let e3_e134 = two_e3 * self.e134;
+            let e3_e234 = two_e3 * self.e234;
             let e4_e4 = self.e4 * self.e4;
-            let e4_e124 = self.e4 * self.e124;
-            let e4_e134 = self.e4 * self.e134;
-            let e4_e234 = self.e4 * self.e234;
+            let e4_e124 = two_e4 * self.e124;
+            let e4_e134 = two_e4 * self.e134;
+            let e4_e234 = two_e4 * self.e234;
             let e123_e123 = self.e123 * self.e123;
-            let e123_e124 = self.e123 * self.e124;
-            let e123_e134 = self.e123 * self.e134;
-            let e123_e234 = self.e123 * self.e234;
+            let e123_e124 = two_e123 * self.e124;
+            let e123_e134 = two_e123 * self.e134;
+            let e123_e234 = two_e123 * self.e234;
             let e124_e124 = self.e124 * self.e124;
-            let e124_e134 = self.e124 * self.e134;
-            let e124_e234 = self.e124 * self.e234;
+            let e124_e134 = two_e124 * self.e134;
+            let e124_e234 = two_e124 * self.e234;
             let e134_e134 = self.e134 * self.e134;
-            let e134_e234 = self.e134 * self.e234;
+            let e134_e234 = two_e134 * self.e234;
             let e234_e234 = self.e234 * self.e234;
             Trivector {
                 e123: (e4_e4 + e124_e124 + e134_e134 + e234_e234 - e1_e1 - e2_e2 - e3_e3
                     - e123_e123) * x.e123
-                    + (-2.0 * (e1_e134 + e2_e234 + e3_e4 + e123_e124)) * x.e124
-                    + (2.0 * (e1_e124 + e2_e4 - e3_e234 - e123_e134)) * x.e134
-                    + (2.0 * (e2_e124 + e3_e134 - e1_e4 - e123_e234)) * x.e234,
-                e124: (2.0 * (e1_e134 + e2_e234 - e3_e4 - e123_e124)) * x.e123
+                    + (-e1_e134 - e2_e234 - e3_e4 - e123_e124) * x.e124
+                    + (e1_e124 + e2_e4 - e3_e234 - e123_e134) * x.e134
+                    + (e2_e124 + e3_e134 - e1_e4 - e123_e234) * x.e234,
+                e124: (e1_e134 + e2_e234 - e3_e4 - e123_e124) * x.e123
                     + (e3_e3 + e123_e123 + e134_e134 + e234_e234 - e1_e1 - e2_e2 - e4_e4
                         - e124_e124) * x.e124
-                    + (-2.0 * (e1_e123 + e2_e3 + e4_e234 + e124_e134)) * x.e134
-                    + (2.0 * (e1_e3 + e4_e134 - e2_e123 - e124_e234)) * x.e234,
-                e134: (2.0 * (e2_e4 + e3_e234 - e1_e124 - e123_e134)) * x.e123
-                    + (2.0 * (e1_e123 + e4_e234 - e2_e3 - e124_e134)) * x.e124
+                    + (-e1_e123 - e2_e3 - e4_e234 - e124_e134) * x.e134
+                    + (e1_e3 + e4_e134 - e2_e123 - e124_e234) * x.e234,
+                e134: (e2_e4 + e3_e234 - e1_e124 - e123_e134) * x.e123
+                    + (e1_e123 + e4_e234 - e2_e3 - e124_e134) * x.e124
                     + (e2_e2 + e123_e123 + e124_e124 + e234_e234 - e1_e1 - e3_e3 - e4_e4
                         - e134_e134) * x.e134
-                    + (-2.0 * (e1_e2 + e3_e123 + e4_e124 + e134_e234)) * x.e234,
-                e234: (-2.0 * (e1_e4 + e2_e124 + e3_e134 + e123_e234)) * x.e123
-                    + (2.0 * (e1_e3 + e2_e123 - e4_e134 - e124_e234)) * x.e124
-                    + (2.0 * (e3_e123 + e4_e124 - e1_e2 - e134_e234)) * x.e134
+                    + (-e1_e2 - e3_e123 - e4_e124 - e134_e234) * x.e234,
+                e234: (-e1_e4 - e2_e124 - e3_e134 - e123_e234) * x.e123
+                    + (e1_e3 + e2_e123 - e4_e134 - e124_e234) * x.e124
+                    + (e3_e123 + e4_e124 - e1_e2 - e134_e234) * x.e134
                     + (e1_e1 + e123_e123 + e124_e124 + e134_e134 - e2_e2 - e3_e3 - e4_e4
                         - e234_e234) * x.e234,
             }
@@ -14083,89 +14145,96 @@ pub mod g4 {
     impl Sandwich<Even> for Odd {
         #[inline]
         fn sandwich(self, x: Even) -> Even {
+            let two_e1 = self.e1 + self.e1;
+            let two_e2 = self.e2 + self.e2;
+            let two_e3 = self.e3 + self.e3;
+            let two_e4 = self.e4 + self.e4;
+            let two_e123 = self.e123 + self.e123;
+            let two_e124 = self.e124 + self.e124;
+            let two_e134 = self.e134 + self.e134;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
-            let e1_e3 = self.e1 * self.e3;
-            let e1_e4 = self.e1 * self.e4;
-            let e1_e123 = self.e1 * self.e123;
-            let e1_e124 = self.e1 * self.e124;
-            let e1_e134 = self.e1 * self.e134;
-            let e1_e234 = self.e1 * self.e234;
+            let e1_e2 = two_e1 * self.e2;
+            let e1_e3 = two_e1 * self.e3;
+            let e1_e4 = two_e1 * self.e4;
+            let e1_e123 = two_e1 * self.e123;
+            let e1_e124 = two_e1 * self.e124;
+            let e1_e134 = two_e1 * self.e134;
+            let e1_e234 = two_e1 * self.e234;
             let e2_e2 = self.e2 * self.e2;
-            let e2_e3 = self.e2 * self.e3;
-            let e2_e4 = self.e2 * self.e4;
-            let e2_e123 = self.e2 * self.e123;
-            let e2_e124 = self.e2 * self.e124;
-            let e2_e134 = self.e2 * self.e134;
-            let e2_e234 = self.e2 * self.e234;
+            let e2_e3 = two_e2 * self.e3;
+            let e2_e4 = two_e2 * self.e4;
+            let e2_e123 = two_e2 * self.e123;
+            let e2_e124 = two_e2 * self.e124;
+            let e2_e134 = two_e2 * self.e134;
+            let e2_e234 = two_e2 * self.e234;
             let e3_e3 = self.e3 * self.e3;
-            let e3_e4 = self.e3 * self.e4;
-            let e3_e123 = self.e3 * self.e123;
-            let e3_e124 = self.e3 * self.e124;
-            let e3_e134 = self.e3 * self.e134;
-            let e3_e234 = self.e3 * self.e234;
+            let e3_e4 = two_e3 * self.e4;
+            let e3_e123 = two_e3 * self.e123;
+            let e3_e124 = two_e3 * self.e124;
+            let e3_e134 = two_e3 * self.e134;
+            let e3_e234 = two_e3 * self.e234;
             let e4_e4 = self.e4 * self.e4;
-            let e4_e123 = self.e4 * self.e123;
-            let e4_e124 = self.e4 * self.e124;
-            let e4_e134 = self.e4 * self.e134;
-            let e4_e234 = self.e4 * self.e234;
+            let e4_e123 = two_e4 * self.e123;
+            let e4_e124 = two_e4 * self.e124;
+            let e4_e134 = two_e4 * self.e134;
+            let e4_e234 = two_e4 * self.e234;
             let e123_e123 = self.e123 * self.e123;
-            let e123_e124 = self.e123 * self.e124;
-            let e123_e134 = self.e123 * self.e134;
-            let e123_e234 = self.e123 * self.e234;
+            let e123_e124 = two_e123 * self.e124;
+            let e123_e134 = two_e123 * self.e134;
+            let e123_e234 = two_e123 * self.e234;
             let e124_e124 = self.e124 * self.e124;
-            let e124_e134 = self.e124 * self.e134;
-            let e124_e234 = self.e124 * self.e234;
+            let e124_e134 = two_e124 * self.e134;
+            let e124_e234 = two_e124 * self.e234;
             let e134_e134 = self.e134 * self.e134;
-            let e134_e234 = self.e134 * self.e234;
+            let e134_e234 = two_e134 * self.e234;
             let e234_e234 = self.e234 * self.e234;
             Even {
                 s: (e1_e1 + e2_e2 + e3_e3 + e4_e4 + e123_e123 + e124_e124 + e134_e134
                     + e234_e234) * x.s
-                    + (2.0 * (e1_e234 + e3_e124 - e2_e134 - e4_e123)) * x.e1234,
+                    + (e1_e234 + e3_e124 - e2_e134 - e4_e123) * x.e1234,
                 e12: (e3_e3 + e4_e4 + e123_e123 + e124_e124 - e1_e1 - e2_e2 - e134_e134
                     - e234_e234) * x.e12
-                    + (2.0 * (e4_e234 + e124_e134 - e1_e123 - e2_e3)) * x.e13
-                    + (-2.0 * (e1_e124 + e2_e4 + e3_e234 + e123_e134)) * x.e14
-                    + (2.0 * (e1_e3 + e124_e234 - e2_e123 - e4_e134)) * x.e23
-                    + (2.0 * (e1_e4 + e3_e134 - e2_e124 - e123_e234)) * x.e24
-                    + (2.0 * (e1_e234 + e4_e123 - e2_e134 - e3_e124)) * x.e34,
-                e13: (2.0 * (e1_e123 + e124_e134 - e2_e3 - e4_e234)) * x.e12
+                    + (e4_e234 + e124_e134 - e1_e123 - e2_e3) * x.e13
+                    + (-e1_e124 - e2_e4 - e3_e234 - e123_e134) * x.e14
+                    + (e1_e3 + e124_e234 - e2_e123 - e4_e134) * x.e23
+                    + (e1_e4 + e3_e134 - e2_e124 - e123_e234) * x.e24
+                    + (e1_e234 + e4_e123 - e2_e134 - e3_e124) * x.e34,
+                e13: (e1_e123 + e124_e134 - e2_e3 - e4_e234) * x.e12
                     + (e2_e2 + e4_e4 + e123_e123 + e134_e134 - e1_e1 - e3_e3 - e124_e124
                         - e234_e234) * x.e13
-                    + (2.0 * (e2_e234 + e123_e124 - e1_e134 - e3_e4)) * x.e14
-                    + (2.0 * (e4_e124 + e134_e234 - e1_e2 - e3_e123)) * x.e23
-                    + (-2.0 * (e1_e234 + e2_e134 + e3_e124 + e4_e123)) * x.e24
-                    + (2.0 * (e1_e4 + e2_e124 - e3_e134 - e123_e234)) * x.e34,
-                e14: (2.0 * (e1_e124 + e3_e234 - e2_e4 - e123_e134)) * x.e12
-                    + (2.0 * (e1_e134 + e123_e124 - e2_e234 - e3_e4)) * x.e13
+                    + (e2_e234 + e123_e124 - e1_e134 - e3_e4) * x.e14
+                    + (e4_e124 + e134_e234 - e1_e2 - e3_e123) * x.e23
+                    + (-e1_e234 - e2_e134 - e3_e124 - e4_e123) * x.e24
+                    + (e1_e4 + e2_e124 - e3_e134 - e123_e234) * x.e34,
+                e14: (e1_e124 + e3_e234 - e2_e4 - e123_e134) * x.e12
+                    + (e1_e134 + e123_e124 - e2_e234 - e3_e4) * x.e13
                     + (e2_e2 + e3_e3 + e124_e124 + e134_e134 - e1_e1 - e4_e4 - e123_e123
                         - e234_e234) * x.e14
-                    + (2.0 * (e1_e234 + e2_e134 - e3_e124 - e4_e123)) * x.e23
-                    + (2.0 * (e3_e123 + e134_e234 - e1_e2 - e4_e124)) * x.e24
-                    + (-2.0 * (e1_e3 + e2_e123 + e4_e134 + e124_e234)) * x.e34,
-                e23: (2.0 * (e1_e3 + e2_e123 + e4_e134 + e124_e234)) * x.e12
-                    + (2.0 * (e3_e123 + e134_e234 - e1_e2 - e4_e124)) * x.e13
-                    + (2.0 * (e3_e124 + e4_e123 - e1_e234 - e2_e134)) * x.e14
+                    + (e1_e234 + e2_e134 - e3_e124 - e4_e123) * x.e23
+                    + (e3_e123 + e134_e234 - e1_e2 - e4_e124) * x.e24
+                    + (-e1_e3 - e2_e123 - e4_e134 - e124_e234) * x.e34,
+                e23: (e1_e3 + e2_e123 + e4_e134 + e124_e234) * x.e12
+                    + (e3_e123 + e134_e234 - e1_e2 - e4_e124) * x.e13
+                    + (e3_e124 + e4_e123 - e1_e234 - e2_e134) * x.e14
                     + (e1_e1 + e4_e4 + e123_e123 + e234_e234 - e2_e2 - e3_e3 - e124_e124
                         - e134_e134) * x.e23
-                    + (2.0 * (e1_e134 + e123_e124 - e2_e234 - e3_e4)) * x.e24
-                    + (2.0 * (e2_e4 + e123_e134 - e1_e124 - e3_e234)) * x.e34,
-                e24: (2.0 * (e1_e4 + e2_e124 - e3_e134 - e123_e234)) * x.e12
-                    + (2.0 * (e1_e234 + e2_e134 + e3_e124 + e4_e123)) * x.e13
-                    + (2.0 * (e4_e124 + e134_e234 - e1_e2 - e3_e123)) * x.e14
-                    + (2.0 * (e2_e234 + e123_e124 - e1_e134 - e3_e4)) * x.e23
+                    + (e1_e134 + e123_e124 - e2_e234 - e3_e4) * x.e24
+                    + (e2_e4 + e123_e134 - e1_e124 - e3_e234) * x.e34,
+                e24: (e1_e4 + e2_e124 - e3_e134 - e123_e234) * x.e12
+                    + (e1_e234 + e2_e134 + e3_e124 + e4_e123) * x.e13
+                    + (e4_e124 + e134_e234 - e1_e2 - e3_e123) * x.e14
+                    + (e2_e234 + e123_e124 - e1_e134 - e3_e4) * x.e23
                     + (e1_e1 + e3_e3 + e124_e124 + e234_e234 - e2_e2 - e4_e4 - e123_e123
                         - e134_e134) * x.e24
-                    + (2.0 * (e1_e123 + e124_e134 - e2_e3 - e4_e234)) * x.e34,
-                e34: (2.0 * (e2_e134 + e3_e124 - e1_e234 - e4_e123)) * x.e12
-                    + (2.0 * (e1_e4 + e3_e134 - e2_e124 - e123_e234)) * x.e13
-                    + (2.0 * (e2_e123 + e4_e134 - e1_e3 - e124_e234)) * x.e14
-                    + (2.0 * (e1_e124 + e2_e4 + e3_e234 + e123_e134)) * x.e23
-                    + (2.0 * (e4_e234 + e124_e134 - e1_e123 - e2_e3)) * x.e24
+                    + (e1_e123 + e124_e134 - e2_e3 - e4_e234) * x.e34,
+                e34: (e2_e134 + e3_e124 - e1_e234 - e4_e123) * x.e12
+                    + (e1_e4 + e3_e134 - e2_e124 - e123_e234) * x.e13
+                    + (e2_e123 + e4_e134 - e1_e3 - e124_e234) * x.e14
+                    + (e1_e124 + e2_e4 + e3_e234 + e123_e134) * x.e23
+                    + (e4_e234 + e124_e134 - e1_e123 - e2_e3) * x.e24
                     + (e1_e1 + e2_e2 + e134_e134 + e234_e234 - e3_e3 - e4_e4 - e123_e123
                         - e124_e124) * x.e34,
-                e1234: (2.0 * (e2_e134 + e4_e123 - e1_e234 - e3_e124)) * x.s
+                e1234: (e2_e134 + e4_e123 - e1_e234 - e3_e124) * x.s
                     + (-e1_e1 - e2_e2 - e3_e3 - e4_e4 - e123_e123 - e124_e124 - e134_e134
                         - e234_e234) * x.e1234,
             }
@@ -14174,77 +14243,83 @@ pub mod g4 {
     impl Sandwich<Odd> for Odd {
         #[inline]
         fn sandwich(self, x: Odd) -> Odd {
+            let two_e1 = self.e1 + self.e1;
+            let two_e2 = self.e2 + self.e2;
+            let two_e3 = self.e3 + self.e3;
+            let two_e4 = self.e4 + self.e4;
+            let two_e123 = self.e123 + self.e123;
+            let two_e124 = self.e124 + self.e124;
+            let two_e134 = self.e134 + self.e134;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
-            let e1_e3 = self.e1 * self.e3;
-            let e1_e4 = self.e1 * self.e4;
-            let e1_e123 = self.e1 * self.e123;
-            let e1_e124 = self.e1 * self.e124;
-            let e1_e134 = self.e1 * self.e134;
+            let e1_e2 = two_e1 * self.e2;
+            let e1_e3 = two_e1 * self.e3;
+            let e1_e4 = two_e1 * self.e4;
+            let e1_e123 = two_e1 * self.e123;
+            let e1_e124 = two_e1 * self.e124;
+            let e1_e134 = two_e1 * self.e134;
             let e2_e2 = self.e2 * self.e2;
-            let e2_e3 = self.e2 * self.e3;
-            let e2_e4 = self.e2 * self.e4;
-            let e2_e123 = self.e2 * self.e123;
-            let e2_e124 = self.e2 * self.e124;
-            let e2_e234 = self.e2 * self.e234;
+            let e2_e3 = two_e2 * self.e3;
+            let e2_e4 = two_e2 * self.e4;
+            let e2_e123 = two_e2 * self.e123;
+            let e2_e124 = two_e2 * self.e124;
+            let e2_e234 = two_e2 * self.e234;
             let e3_e3 = self.e3 * self.e3;
-            let e3_e4 = self.e3 * self.e4;
-            let e3_e123 = self.e3 * self.e123;
-            let e3_e134 = self.e3 * self.e134;
-            let e3_e234 = self.e3 * self.e234;
+            let e3_e4 = two_e3 * self.e4;
+            let e3_e123 = two_e3 * self.e123;
+            let e3_e134 = two_e3 * self.e134;
+            let e3_e234 = two_e3 * self.e234;
             let e4_e4 = self.e4 * self.e4;
-            let e4_e124 = self.e4 * self.e124;
-            let e4_e134 = self.e4 * self.e134;
-            let e4_e234 = self.e4 * self.e234;
+            let e4_e124 = two_e4 * self.e124;
+            let e4_e134 = two_e4 * self.e134;
+            let e4_e234 = two_e4 * self.e234;
             let e123_e123 = self.e123 * self.e123;
-            let e123_e124 = self.e123 * self.e124;
-            let e123_e134 = self.e123 * self.e134;
-            let e123_e234 = self.e123 * self.e234;
+            let e123_e124 = two_e123 * self.e124;
+            let e123_e134 = two_e123 * self.e134;
+            let e123_e234 = two_e123 * self.e234;
             let e124_e124 = self.e124 * self.e124;
-            let e124_e134 = self.e124 * self.e134;
-            let e124_e234 = self.e124 * self.e234;
+            let e124_e134 = two_e124 * self.e134;
+            let e124_e234 = two_e124 * self.e234;
             let e134_e134 = self.e134 * self.e134;
-            let e134_e234 = self.e134 * self.e234;
+            let e134_e234 = two_e134 * self.e234;
             let e234_e234 = self.e234 * self.e234;
             Odd {
                 e1: (e2_e2 + e3_e3 + e4_e4 + e234_e234 - e1_e1 - e123_e123 - e124_e124
-                    - e134_e134) * x.e1
-                    + (2.0 * (e3_e123 + e4_e124 - e1_e2 - e134_e234)) * x.e2
-                    + (2.0 * (e4_e134 + e124_e234 - e1_e3 - e2_e123)) * x.e3
-                    + (-2.0 * (e1_e4 + e2_e124 + e3_e134 + e123_e234)) * x.e4,
-                e2: (-2.0 * (e1_e2 + e3_e123 + e4_e124 + e134_e234)) * x.e1
+                    - e134_e134) * x.e1 + (e3_e123 + e4_e124 - e1_e2 - e134_e234) * x.e2
+                    + (e4_e134 + e124_e234 - e1_e3 - e2_e123) * x.e3
+                    + (-e1_e4 - e2_e124 - e3_e134 - e123_e234) * x.e4,
+                e2: (-e1_e2 - e3_e123 - e4_e124 - e134_e234) * x.e1
                     + (e1_e1 + e3_e3 + e4_e4 + e134_e134 - e2_e2 - e123_e123 - e124_e124
                         - e234_e234) * x.e2
-                    + (2.0 * (e1_e123 + e4_e234 - e2_e3 - e124_e134)) * x.e3
-                    + (2.0 * (e1_e124 + e123_e134 - e2_e4 - e3_e234)) * x.e4,
-                e3: (2.0 * (e2_e123 + e124_e234 - e1_e3 - e4_e134)) * x.e1
-                    + (-2.0 * (e1_e123 + e2_e3 + e4_e234 + e124_e134)) * x.e2
+                    + (e1_e123 + e4_e234 - e2_e3 - e124_e134) * x.e3
+                    + (e1_e124 + e123_e134 - e2_e4 - e3_e234) * x.e4,
+                e3: (e2_e123 + e124_e234 - e1_e3 - e4_e134) * x.e1
+                    + (-e1_e123 - e2_e3 - e4_e234 - e124_e134) * x.e2
                     + (e1_e1 + e2_e2 + e4_e4 + e124_e124 - e3_e3 - e123_e123 - e134_e134
                         - e234_e234) * x.e3
-                    + (2.0 * (e1_e134 + e2_e234 - e3_e4 - e123_e124)) * x.e4,
-                e4: (2.0 * (e2_e124 + e3_e134 - e1_e4 - e123_e234)) * x.e1
-                    + (2.0 * (e3_e234 + e123_e134 - e1_e124 - e2_e4)) * x.e2
-                    + (-2.0 * (e1_e134 + e2_e234 + e3_e4 + e123_e124)) * x.e3
+                    + (e1_e134 + e2_e234 - e3_e4 - e123_e124) * x.e4,
+                e4: (e2_e124 + e3_e134 - e1_e4 - e123_e234) * x.e1
+                    + (e3_e234 + e123_e134 - e1_e124 - e2_e4) * x.e2
+                    + (-e1_e134 - e2_e234 - e3_e4 - e123_e124) * x.e3
                     + (e1_e1 + e2_e2 + e3_e3 + e123_e123 - e4_e4 - e124_e124 - e134_e134
                         - e234_e234) * x.e4,
                 e123: (e4_e4 + e124_e124 + e134_e134 + e234_e234 - e1_e1 - e2_e2 - e3_e3
                     - e123_e123) * x.e123
-                    + (-2.0 * (e1_e134 + e2_e234 + e3_e4 + e123_e124)) * x.e124
-                    + (2.0 * (e1_e124 + e2_e4 - e3_e234 - e123_e134)) * x.e134
-                    + (2.0 * (e2_e124 + e3_e134 - e1_e4 - e123_e234)) * x.e234,
-                e124: (2.0 * (e1_e134 + e2_e234 - e3_e4 - e123_e124)) * x.e123
+                    + (-e1_e134 - e2_e234 - e3_e4 - e123_e124) * x.e124
+                    + (e1_e124 + e2_e4 - e3_e234 - e123_e134) * x.e134
+                    + (e2_e124 + e3_e134 - e1_e4 - e123_e234) * x.e234,
+                e124: (e1_e134 + e2_e234 - e3_e4 - e123_e124) * x.e123
                     + (e3_e3 + e123_e123 + e134_e134 + e234_e234 - e1_e1 - e2_e2 - e4_e4
                         - e124_e124) * x.e124
-                    + (-2.0 * (e1_e123 + e2_e3 + e4_e234 + e124_e134)) * x.e134
-                    + (2.0 * (e1_e3 + e4_e134 - e2_e123 - e124_e234)) * x.e234,
-                e134: (2.0 * (e2_e4 + e3_e234 - e1_e124 - e123_e134)) * x.e123
-                    + (2.0 * (e1_e123 + e4_e234 - e2_e3 - e124_e134)) * x.e124
+                    + (-e1_e123 - e2_e3 - e4_e234 - e124_e134) * x.e134
+                    + (e1_e3 + e4_e134 - e2_e123 - e124_e234) * x.e234,
+                e134: (e2_e4 + e3_e234 - e1_e124 - e123_e134) * x.e123
+                    + (e1_e123 + e4_e234 - e2_e3 - e124_e134) * x.e124
                     + (e2_e2 + e123_e123 + e124_e124 + e234_e234 - e1_e1 - e3_e3 - e4_e4
                         - e134_e134) * x.e134
-                    + (-2.0 * (e1_e2 + e3_e123 + e4_e124 + e134_e234)) * x.e234,
-                e234: (-2.0 * (e1_e4 + e2_e124 + e3_e134 + e123_e234)) * x.e123
-                    + (2.0 * (e1_e3 + e2_e123 - e4_e134 - e124_e234)) * x.e124
-                    + (2.0 * (e3_e123 + e4_e124 - e1_e2 - e134_e234)) * x.e134
+                    + (-e1_e2 - e3_e123 - e4_e124 - e134_e234) * x.e234,
+                e234: (-e1_e4 - e2_e124 - e3_e134 - e123_e234) * x.e123
+                    + (e1_e3 + e2_e123 - e4_e134 - e124_e234) * x.e124
+                    + (e3_e123 + e4_e124 - e1_e2 - e134_e234) * x.e134
                     + (e1_e1 + e123_e123 + e124_e124 + e134_e134 - e2_e2 - e3_e3 - e4_e4
                         - e234_e234) * x.e234,
             }
@@ -14253,129 +14328,135 @@ pub mod g4 {
     impl Sandwich<Multivector> for Odd {
         #[inline]
         fn sandwich(self, x: Multivector) -> Multivector {
+            let two_e1 = self.e1 + self.e1;
+            let two_e2 = self.e2 + self.e2;
+            let two_e3 = self.e3 + self.e3;
+            let two_e4 = self.e4 + self.e4;
+            let two_e123 = self.e123 + self.e123;
+            let two_e124 = self.e124 + self.e124;
+            let two_e134 = self.e134 + self.e134;
             let e1_e1 = self.e1 * self.e1;
-            let e1_e2 = self.e1 * self.e2;
-            let e1_e3 = self.e1 * self.e3;
-            let e1_e4 = self.e1 * self.e4;
-            let e1_e123 = self.e1 * self.e123;
-            let e1_e124 = self.e1 * self.e124;
-            let e1_e134 = self.e1 * self.e134;
-            let e1_e234 = self.e1 * self.e234;
+            let e1_e2 = two_e1 * self.e2;
+            let e1_e3 = two_e1 * self.e3;
+            let e1_e4 = two_e1 * self.e4;
+            let e1_e123 = two_e1 * self.e123;
+            let e1_e124 = two_e1 * self.e124;
+            let e1_e134 = two_e1 * self.e134;
+            let e1_e234 = two_e1 * self.e234;
             let e2_e2 = self.e2 * self.e2;
-            let e2_e3 = self.e2 * self.e3;
-            let e2_e4 = self.e2 * self.e4;
-            let e2_e123 = self.e2 * self.e123;
-            let e2_e124 = self.e2 * self.e124;
-            let e2_e134 = self.e2 * self.e134;
-            let e2_e234 = self.e2 * self.e234;
+            let e2_e3 = two_e2 * self.e3;
+            let e2_e4 = two_e2 * self.e4;
+            let e2_e123 = two_e2 * self.e123;
+            let e2_e124 = two_e2 * self.e124;
+            let e2_e134 = two_e2 * self.e134;
+            let e2_e234 = two_e2 * self.e234;
             let e3_e3 = self.e3 * self.e3;
-            let e3_e4 = self.e3 * self.e4;
-            let e3_e123 = self.e3 * self.e123;
-            let e3_e124 = self.e3 * self.e124;
-            let e3_e134 = self.e3 * self.e134;
-            let e3_e234 = self.e3 * self.e234;
+            let e3_e4 = two_e3 * self.e4;
+            let e3_e123 = two_e3 * self.e123;
+            let e3_e124 = two_e3 * self.e124;
+            let e3_e134 = two_e3 * self.e134;
+            let e3_e234 = two_e3 * self.e234;
             let e4_e4 = self.e4 * self.e4;
-            let e4_e123 = self.e4 * self.e123;
-            let e4_e124 = self.e4 * self.e124;
-            let e4_e134 = self.e4 * self.e134;
-            let e4_e234 = self.e4 * self.e234;
+            let e4_e123 = two_e4 * self.e123;
+            let e4_e124 = two_e4 * self.e124;
+            let e4_e134 = two_e4 * self.e134;
+            let e4_e234 = two_e4 * self.e234;
             let e123_e123 = self.e123 * self.e123;
-            let e123_e124 = self.e123 * self.e124;
-            let e123_e134 = self.e123 * self.e134;
-            let e123_e234 = self.e123 * self.e234;
+            let e123_e124 = two_e123 * self.e124;
+            let e123_e134 = two_e123 * self.e134;
+            let e123_e234 = two_e123 * self.e234;
             let e124_e124 = self.e124 * self.e124;
-            let e124_e134 = self.e124 * self.e134;
-            let e124_e234 = self.e124 * self.e234;
+            let e124_e134 = two_e124 * self.e134;
+            let e124_e234 = two_e124 * self.e234;
             let e134_e134 = self.e134 * self.e134;
-            let e134_e234 = self.e134 * self.e234;
+            let e134_e234 = two_e134 * self.e234;
             let e234_e234 = self.e234 * self.e234;
             Multivector {
                 s: (e1_e1 + e2_e2 + e3_e3 + e4_e4 + e123_e123 + e124_e124 + e134_e134
                     + e234_e234) * x.s
-                    + (2.0 * (e1_e234 + e3_e124 - e2_e134 - e4_e123)) * x.e1234,
+                    + (e1_e234 + e3_e124 - e2_e134 - e4_e123) * x.e1234,
                 e1: (e2_e2 + e3_e3 + e4_e4 + e234_e234 - e1_e1 - e123_e123 - e124_e124
-                    - e134_e134) * x.e1
-                    + (2.0 * (e3_e123 + e4_e124 - e1_e2 - e134_e234)) * x.e2
-                    + (2.0 * (e4_e134 + e124_e234 - e1_e3 - e2_e123)) * x.e3
-                    + (-2.0 * (e1_e4 + e2_e124 + e3_e134 + e123_e234)) * x.e4,
-                e2: (-2.0 * (e1_e2 + e3_e123 + e4_e124 + e134_e234)) * x.e1
+                    - e134_e134) * x.e1 + (e3_e123 + e4_e124 - e1_e2 - e134_e234) * x.e2
+                    + (e4_e134 + e124_e234 - e1_e3 - e2_e123) * x.e3
+                    + (-e1_e4 - e2_e124 - e3_e134 - e123_e234) * x.e4,
+                e2: (-e1_e2 - e3_e123 - e4_e124 - e134_e234) * x.e1
                     + (e1_e1 + e3_e3 + e4_e4 + e134_e134 - e2_e2 - e123_e123 - e124_e124
                         - e234_e234) * x.e2
-                    + (2.0 * (e1_e123 + e4_e234 - e2_e3 - e124_e134)) * x.e3
-                    + (2.0 * (e1_e124 + e123_e134 - e2_e4 - e3_e234)) * x.e4,
-                e3: (2.0 * (e2_e123 + e124_e234 - e1_e3 - e4_e134)) * x.e1
-                    + (-2.0 * (e1_e123 + e2_e3 + e4_e234 + e124_e134)) * x.e2
+                    + (e1_e123 + e4_e234 - e2_e3 - e124_e134) * x.e3
+                    + (e1_e124 + e123_e134 - e2_e4 - e3_e234) * x.e4,
+                e3: (e2_e123 + e124_e234 - e1_e3 - e4_e134) * x.e1
+                    + (-e1_e123 - e2_e3 - e4_e234 - e124_e134) * x.e2
                     + (e1_e1 + e2_e2 + e4_e4 + e124_e124 - e3_e3 - e123_e123 - e134_e134
                         - e234_e234) * x.e3
-                    + (2.0 * (e1_e134 + e2_e234 - e3_e4 - e123_e124)) * x.e4,
-                e4: (2.0 * (e2_e124 + e3_e134 - e1_e4 - e123_e234)) * x.e1
-                    + (2.0 * (e3_e234 + e123_e134 - e1_e124 - e2_e4)) * x.e2
-                    + (-2.0 * (e1_e134 + e2_e234 + e3_e4 + e123_e124)) * x.e3
+                    + (e1_e134 + e2_e234 - e3_e4 - e123_e124) * x.e4,
+                e4: (e2_e124 + e3_e134 - e1_e4 - e123_e234) * x.e1
+                    + (e3_e234 + e123_e134 - e1_e124 - e2_e4) * x.e2
+                    + (-e1_e134 - e2_e234 - e3_e4 - e123_e124) * x.e3
                     + (e1_e1 + e2_e2 + e3_e3 + e123_e123 - e4_e4 - e124_e124 - e134_e134
                         - e234_e234) * x.e4,
                 e12: (e3_e3 + e4_e4 + e123_e123 + e124_e124 - e1_e1 - e2_e2 - e134_e134
                     - e234_e234) * x.e12
-                    + (2.0 * (e4_e234 + e124_e134 - e1_e123 - e2_e3)) * x.e13
-                    + (-2.0 * (e1_e124 + e2_e4 + e3_e234 + e123_e134)) * x.e14
-                    + (2.0 * (e1_e3 + e124_e234 - e2_e123 - e4_e134)) * x.e23
-                    + (2.0 * (e1_e4 + e3_e134 - e2_e124 - e123_e234)) * x.e24
-                    + (2.0 * (e1_e234 + e4_e123 - e2_e134 - e3_e124)) * x.e34,
-                e13: (2.0 * (e1_e123 + e124_e134 - e2_e3 - e4_e234)) * x.e12
+                    + (e4_e234 + e124_e134 - e1_e123 - e2_e3) * x.e13
+                    + (-e1_e124 - e2_e4 - e3_e234 - e123_e134) * x.e14
+                    + (e1_e3 + e124_e234 - e2_e123 - e4_e134) * x.e23
+                    + (e1_e4 + e3_e134 - e2_e124 - e123_e234) * x.e24
+                    + (e1_e234 + e4_e123 - e2_e134 - e3_e124) * x.e34,
+                e13: (e1_e123 + e124_e134 - e2_e3 - e4_e234) * x.e12
                     + (e2_e2 + e4_e4 + e123_e123 + e134_e134 - e1_e1 - e3_e3 - e124_e124
                         - e234_e234) * x.e13
-                    + (2.0 * (e2_e234 + e123_e124 - e1_e134 - e3_e4)) * x.e14
-                    + (2.0 * (e4_e124 + e134_e234 - e1_e2 - e3_e123)) * x.e23
-                    + (-2.0 * (e1_e234 + e2_e134 + e3_e124 + e4_e123)) * x.e24
-                    + (2.0 * (e1_e4 + e2_e124 - e3_e134 - e123_e234)) * x.e34,
-                e14: (2.0 * (e1_e124 + e3_e234 - e2_e4 - e123_e134)) * x.e12
-                    + (2.0 * (e1_e134 + e123_e124 - e2_e234 - e3_e4)) * x.e13
+                    + (e2_e234 + e123_e124 - e1_e134 - e3_e4) * x.e14
+                    + (e4_e124 + e134_e234 - e1_e2 - e3_e123) * x.e23
+                    + (-e1_e234 - e2_e134 - e3_e124 - e4_e123) * x.e24
+                    + (e1_e4 + e2_e124 - e3_e134 - e123_e234) * x.e34,
+                e14: (e1_e124 + e3_e234 - e2_e4 - e123_e134) * x.e12
+                    + (e1_e134 + e123_e124 - e2_e234 - e3_e4) * x.e13
                     + (e2_e2 + e3_e3 + e124_e124 + e134_e134 - e1_e1 - e4_e4 - e123_e123
                         - e234_e234) * x.e14
-                    + (2.0 * (e1_e234 + e2_e134 - e3_e124 - e4_e123)) * x.e23
-                    + (2.0 * (e3_e123 + e134_e234 - e1_e2 - e4_e124)) * x.e24
-                    + (-2.0 * (e1_e3 + e2_e123 + e4_e134 + e124_e234)) * x.e34,
-                e23: (2.0 * (e1_e3 + e2_e123 + e4_e134 + e124_e234)) * x.e12
-                    + (2.0 * (e3_e123 + e134_e234 - e1_e2 - e4_e124)) * x.e13
-                    + (2.0 * (e3_e124 + e4_e123 - e1_e234 - e2_e134)) * x.e14
+                    + (e1_e234 + e2_e134 - e3_e124 - e4_e123) * x.e23
+                    + (e3_e123 + e134_e234 - e1_e2 - e4_e124) * x.e24
+                    + (-e1_e3 - e2_e123 - e4_e134 - e124_e234) * x.e34,
+                e23: (e1_e3 + e2_e123 + e4_e134 + e124_e234) * x.e12
+                    + (e3_e123 + e134_e234 - e1_e2 - e4_e124) * x.e13
+                    + (e3_e124 + e4_e123 - e1_e234 - e2_e134) * x.e14
                     + (e1_e1 + e4_e4 + e123_e123 + e234_e234 - e2_e2 - e3_e3 - e124_e124
                         - e134_e134) * x.e23
-                    + (2.0 * (e1_e134 + e123_e124 - e2_e234 - e3_e4)) * x.e24
-                    + (2.0 * (e2_e4 + e123_e134 - e1_e124 - e3_e234)) * x.e34,
-                e24: (2.0 * (e1_e4 + e2_e124 - e3_e134 - e123_e234)) * x.e12
-                    + (2.0 * (e1_e234 + e2_e134 + e3_e124 + e4_e123)) * x.e13
-                    + (2.0 * (e4_e124 + e134_e234 - e1_e2 - e3_e123)) * x.e14
-                    + (2.0 * (e2_e234 + e123_e124 - e1_e134 - e3_e4)) * x.e23
+                    + (e1_e134 + e123_e124 - e2_e234 - e3_e4) * x.e24
+                    + (e2_e4 + e123_e134 - e1_e124 - e3_e234) * x.e34,
+                e24: (e1_e4 + e2_e124 - e3_e134 - e123_e234) * x.e12
+                    + (e1_e234 + e2_e134 + e3_e124 + e4_e123) * x.e13
+                    + (e4_e124 + e134_e234 - e1_e2 - e3_e123) * x.e14
+                    + (e2_e234 + e123_e124 - e1_e134 - e3_e4) * x.e23
                     + (e1_e1 + e3_e3 + e124_e124 + e234_e234 - e2_e2 - e4_e4 - e123_e123
                         - e134_e134) * x.e24
-                    + (2.0 * (e1_e123 + e124_e134 - e2_e3 - e4_e234)) * x.e34,
-                e34: (2.0 * (e2_e134 + e3_e124 - e1_e234 - e4_e123)) * x.e12
-                    + (2.0 * (e1_e4 + e3_e134 - e2_e124 - e123_e234)) * x.e13
-                    + (2.0 * (e2_e123 + e4_e134 - e1_e3 - e124_e234)) * x.e14
-                    + (2.0 * (e1_e124 + e2_e4 + e3_e234 + e123_e134)) * x.e23
-                    + (2.0 * (e4_e234 + e124_e134 - e1_e123 - e2_e3)) * x.e24
+                    + (e1_e123 + e124_e134 - e2_e3 - e4_e234) * x.e34,
+                e34: (e2_e134 + e3_e124 - e1_e234 - e4_e123) * x.e12
+                    + (e1_e4 + e3_e134 - e2_e124 - e123_e234) * x.e13
+                    + (e2_e123 + e4_e134 - e1_e3 - e124_e234) * x.e14
+                    + (e1_e124 + e2_e4 + e3_e234 + e123_e134) * x.e23
+                    + (e4_e234 + e124_e134 - e1_e123 - e2_e3) * x.e24
                     + (e1_e1 + e2_e2 + e134_e134 + e234_e234 - e3_e3 - e4_e4 - e123_e123
                         - e124_e124) * x.e34,
                 e123: (e4_e4 + e124_e124 + e134_e134 + e234_e234 - e1_e1 - e2_e2 - e3_e3
                     - e123_e123) * x.e123
-                    + (-2.0 * (e1_e134 + e2_e234 + e3_e4 + e123_e124)) * x.e124
-                    + (2.0 * (e1_e124 + e2_e4 - e3_e234 - e123_e134)) * x.e134
-                    + (2.0 * (e2_e124 + e3_e134 - e1_e4 - e123_e234)) * x.e234,
-                e124: (2.0 * (e1_e134 + e2_e234 - e3_e4 - e123_e124)) * x.e123
+                    + (-e1_e134 - e2_e234 - e3_e4 - e123_e124) * x.e124
+                    + (e1_e124 + e2_e4 - e3_e234 - e123_e134) * x.e134
+                    + (e2_e124 + e3_e134 - e1_e4 - e123_e234) * x.e234,
+                e124: (e1_e134 + e2_e234 - e3_e4 - e123_e124) * x.e123
                     + (e3_e3 + e123_e123 + e134_e134 + e234_e234 - e1_e1 - e2_e2 - e4_e4
                         - e124_e124) * x.e124
-                    + (-2.0 * (e1_e123 + e2_e3 + e4_e234 + e124_e134)) * x.e134
-                    + (2.0 * (e1_e3 + e4_e134 - e2_e123 - e124_e234)) * x.e234,
-                e134: (2.0 * (e2_e4 + e3_e234 - e1_e124 - e123_e134)) * x.e123
-                    + (2.0 * (e1_e123 + e4_e234 - e2_e3 - e124_e134)) * x.e124
+                    + (-e1_e123 - e2_e3 - e4_e234 - e124_e134) * x.e134
+                    + (e1_e3 + e4_e134 - e2_e123 - e124_e234) * x.e234,
+                e134: (e2_e4 + e3_e234 - e1_e124 - e123_e134) * x.e123
+                    + (e1_e123 + e4_e234 - e2_e3 - e124_e134) * x.e124
                     + (e2_e2 + e123_e123 + e124_e124 + e234_e234 - e1_e1 - e3_e3 - e4_e4
                         - e134_e134) * x.e134
-                    + (-2.0 * (e1_e2 + e3_e123 + e4_e124 + e134_e234)) * x.e234,
-                e234: (-2.0 * (e1_e4 + e2_e124 + e3_e134 + e123_e234)) * x.e123
-                    + (2.0 * (e1_e3 + e2_e123 - e4_e134 - e124_e234)) * x.e124
-                    + (2.0 * (e3_e123 + e4_e124 - e1_e2 - e134_e234)) * x.e134
+                    + (-e1_e2 - e3_e123 - e4_e124 - e134_e234) * x.e234,
+                e234: (-e1_e4 - e2_e124 - e3_e134 - e123_e234) * x.e123
+                    + (e1_e3 + e2_e123 - e4_e134 - e124_e234) * x.e124
+                    + (e3_e123 + e4_e124 - e1_e2 - e134_e234) * x.e134
                     + (e1_e1 + e123_e123 + e124_e124 + e134_e134 - e2_e2 - e3_e3 - e4_e4
                         - e234_e234) * x.e234,
-                e1234: (2.0 * (e2_e134 + e4_e123 - e1_e234 - e3_e124)) * x.s
+                e1234: (e2_e134 + e4_e123 - e1_e234 - e3_e124) * x.s
                     + (-e1_e1 - e2_e2 - e3_e3 - e4_e4 - e123_e123 - e124_e124 - e134_e134
                         - e234_e234) * x.e1234,
             }

@@ -1,6 +1,6 @@
 //! `sandwich`, `reflect`, the blade test and blade factorisation.
 
-use std::collections::BTreeSet;
+use std::collections::{BTreeMap, BTreeSet};
 
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -102,21 +102,44 @@ fn fused_body(plan: &Plan, v: TypeId, x: TypeId, q: &Quadratic) -> TokenStream {
     let operand = &plan.types.get(x).blades;
     let this = Operand::new(quote!(self), v);
     let arg = Operand::new(quote!(x), x);
-    let mut used = BTreeSet::new();
+    // Every coefficient of each pair product, to see which pairs always come doubled.
+    let mut coefficients: BTreeMap<(usize, usize), Vec<i32>> = BTreeMap::new();
     for (blade, per_k) in q {
         if operand.contains(blade) {
             for pairs in per_k.values() {
-                used.extend(pairs.keys().copied());
+                for (&pair, &c) in pairs {
+                    coefficients.entry(pair).or_default().push(c);
+                }
             }
         }
     }
+    // A pair whose coefficients are all even is computed as `(v_i + v_i) * v_j`: the
+    // factor 2 costs an add once per component instead of a multiply per use.
+    let doubled: BTreeSet<(usize, usize)> = coefficients
+        .iter()
+        .filter(|(_, cs)| cs.iter().all(|c| c % 2 == 0))
+        .map(|(&pair, _)| pair)
+        .collect();
+    let doubled_components: BTreeSet<usize> = doubled.iter().map(|&(i, _)| i).collect();
     let pair_name = |(i, j): (usize, usize)| {
         format_ident!("{}_{}", blade_name(versor[i]), blade_name(versor[j]))
     };
-    let pair_lets = used.iter().map(|&(i, j)| {
+    let two_name = |i: usize| format_ident!("two_{}", blade_name(versor[i]));
+    let two_lets = doubled_components.iter().map(|&i| {
+        let name = two_name(i);
+        let a = this.component(plan, i);
+        quote!(let #name = #a + #a;)
+    });
+    let pair_lets = coefficients.keys().map(|&(i, j)| {
         let name = pair_name((i, j));
-        let (a, b) = (this.component(plan, i), this.component(plan, j));
-        quote!(let #name = #a * #b;)
+        let b = this.component(plan, j);
+        if doubled.contains(&(i, j)) {
+            let two = two_name(i);
+            quote!(let #name = #two * #b;)
+        } else {
+            let a = this.component(plan, i);
+            quote!(let #name = #a * #b;)
+        }
     });
     let value = construct(plan, Output::Type(x), |blade| {
         let per_k = q.get(&blade)?;
@@ -127,6 +150,7 @@ fn fused_body(plan: &Plan, v: TypeId, x: TypeId, q: &Quadratic) -> TokenStream {
                     .iter()
                     .map(|(&pair, &c)| {
                         let name = pair_name(pair);
+                        let c = if doubled.contains(&pair) { c / 2 } else { c };
                         (c, quote!(#name))
                     })
                     .collect();
@@ -144,6 +168,7 @@ fn fused_body(plan: &Plan, v: TypeId, x: TypeId, q: &Quadratic) -> TokenStream {
         Some(signed_sum(&terms))
     });
     quote! {
+        #(#two_lets)*
         #(#pair_lets)*
         #value
     }

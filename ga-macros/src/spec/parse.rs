@@ -34,6 +34,7 @@ pub struct RawMetric {
 
 /// `signature: (p, q, r)`.
 pub struct RawSignature {
+    pub paren: proc_macro2::Span,
     pub counts: Vec<LitInt>,
 }
 
@@ -112,9 +113,20 @@ fn parse_entries(input: ParseStream, style: EntryStyle) -> syn::Result<Vec<RawEn
     let mut entries = Vec::new();
     while !input.is_empty() {
         let key: Ident = input.parse()?;
-        match style {
-            EntryStyle::Colon => input.parse::<Token![:]>().map(drop)?,
-            EntryStyle::Equals => input.parse::<Token![=]>().map(drop)?,
+        // The two forms differ only here; say which one this is, since `metric: [..]`
+        // inside `#[algebra(..)]` (or `metric = [..]` in `algebra!`) is the usual slip.
+        let separated = match style {
+            EntryStyle::Colon => input.parse::<Token![:]>().map(drop),
+            EntryStyle::Equals => input.parse::<Token![=]>().map(drop),
+        };
+        if let Err(e) = separated {
+            let message = match style {
+                EntryStyle::Colon => format!("expected `:` after `{key}`: write `{key}: value`"),
+                EntryStyle::Equals => {
+                    format!("expected `=` after `{key}`: the attribute form writes `{key} = value`")
+                }
+            };
+            return Err(syn::Error::new(e.span(), message));
         }
         let mut value = TokenStream::new();
         while !input.is_empty() && !input.peek(Token![,]) {
@@ -124,7 +136,10 @@ fn parse_entries(input: ParseStream, style: EntryStyle) -> syn::Result<Vec<RawEn
         if value.is_empty() {
             return Err(syn::Error::new_spanned(
                 &key,
-                format!("`{key}` needs a value"),
+                format!(
+                    "`{key}` needs a value, e.g. {}",
+                    example_entry(&key, &style)
+                ),
             ));
         }
         entries.push(RawEntry { key, value });
@@ -133,6 +148,21 @@ fn parse_entries(input: ParseStream, style: EntryStyle) -> syn::Result<Vec<RawEn
         }
     }
     Ok(entries)
+}
+
+fn example_entry(key: &Ident, style: &EntryStyle) -> String {
+    let value = match key.to_string().as_str() {
+        "metric" => "[1, 1, 1]",
+        "signature" => "(3, 0, 0)",
+        "scalar" => "f64",
+        "types" => "[Rotor, Vector]",
+        "ops" => "[geometric, sandwich]",
+        _ => "...",
+    };
+    match style {
+        EntryStyle::Colon => format!("`{key}: {value}`"),
+        EntryStyle::Equals => format!("`{key} = {value}`"),
+    }
 }
 
 impl Parse for RawMetric {
@@ -150,9 +180,10 @@ impl Parse for RawMetric {
 impl Parse for RawSignature {
     fn parse(input: ParseStream) -> syn::Result<Self> {
         let content;
-        parenthesized!(content in input);
+        let paren = parenthesized!(content in input);
         let counts = Punctuated::<LitInt, Token![,]>::parse_terminated(&content)?;
         Ok(RawSignature {
+            paren: paren.span.join(),
             counts: counts.into_iter().collect(),
         })
     }

@@ -159,6 +159,12 @@ pub fn validate(
         seen.push(entry.key.clone());
         let value = entry.value;
         match key.as_str() {
+            "metric" | "signature" if seen.iter().any(|k| *k != entry.key && is_metric_key(k)) => {
+                cx.error_spanned_by(
+                    &entry.key,
+                    "give either `metric` or `signature`, not both: remove one of them",
+                );
+            }
             "metric" => match syn::parse2::<RawMetric>(value) {
                 Ok(raw) => metric = Some((entry.key, raw)),
                 Err(e) => cx.syn_error(e),
@@ -192,12 +198,10 @@ pub fn validate(
 
     let squares = match (metric, signature) {
         (Some((_, raw)), None) => check_metric(&mut cx, raw),
-        (None, Some((key, raw))) => check_signature(&mut cx, &key, raw),
-        (Some(_), Some((key, _))) => {
-            cx.error_spanned_by(&key, "give either `metric` or `signature`, not both");
-            None
-        }
-        (None, None) => {
+        (None, Some((_, raw))) => check_signature(&mut cx, raw),
+        // Both given, or given but malformed: already reported at the key or value.
+        _ if seen.iter().any(is_metric_key) => None,
+        _ => {
             cx.error_spanned_by(
                 &name,
                 "missing `metric`: give the squares of e1..en, e.g. `metric: [1, 1, 1]`, \
@@ -229,6 +233,10 @@ pub fn validate(
     })
 }
 
+fn is_metric_key(key: &Ident) -> bool {
+    key == "metric" || key == "signature"
+}
+
 fn metric_entry(expr: &Expr) -> Option<i64> {
     match expr {
         Expr::Lit(ExprLit {
@@ -243,13 +251,13 @@ fn metric_entry(expr: &Expr) -> Option<i64> {
     }
 }
 
-fn check_dimension(cx: &mut Ctxt, span: Span, dimension: usize) -> bool {
+fn check_dimension(cx: &mut Ctxt, span: Span, dimension: usize, what: &str) -> bool {
     if (1..=MAX_DIMENSION).contains(&dimension) {
         return true;
     }
     cx.syn_error(syn::Error::new(
         span,
-        format!("the dimension must be 1 to {MAX_DIMENSION}, found {dimension}"),
+        format!("{what} must give 1 to {MAX_DIMENSION} generators, found {dimension}"),
     ));
     false
 }
@@ -272,12 +280,19 @@ fn check_metric(cx: &mut Ctxt, raw: RawMetric) -> Option<Vec<i8>> {
             }
         }
     }
-    (check_dimension(cx, raw.bracket, raw.entries.len()) && ok).then_some(squares)
+    (check_dimension(cx, raw.bracket, raw.entries.len(), "the metric") && ok).then_some(squares)
 }
 
-fn check_signature(cx: &mut Ctxt, key: &Ident, raw: RawSignature) -> Option<Vec<i8>> {
+fn check_signature(cx: &mut Ctxt, raw: RawSignature) -> Option<Vec<i8>> {
     if raw.counts.len() != 3 {
-        cx.error_spanned_by(key, "`signature` takes three counts: (p, q, r)");
+        cx.syn_error(syn::Error::new(
+            raw.paren,
+            format!(
+                "`signature` takes three counts (p, q, r): the generators that square to 1, \
+                 -1 and 0, found {}",
+                raw.counts.len()
+            ),
+        ));
         return None;
     }
     let mut counts = [0usize; 3];
@@ -292,7 +307,7 @@ fn check_signature(cx: &mut Ctxt, key: &Ident, raw: RawSignature) -> Option<Vec<
     }
     let [p, q, r] = counts;
     let dimension = p.saturating_add(q).saturating_add(r);
-    if !check_dimension(cx, key.span(), dimension) {
+    if !check_dimension(cx, raw.paren, dimension, "the signature (p + q + r)") {
         return None;
     }
     let mut squares = vec![1; p];
@@ -320,13 +335,24 @@ fn check_types(cx: &mut Ctxt, dimension: usize, raw: RawTypes) -> Vec<TypeReques
     for request in raw.0 {
         let name = request.name.to_string();
         if names.contains(&name) {
-            cx.error_spanned_by(&request.name, format!("type `{name}` is listed twice"));
+            cx.error_spanned_by(
+                &request.name,
+                format!("type `{name}` is listed twice: list each type once"),
+            );
             continue;
         }
         names.push(name.clone());
         match request.blades {
             None => match builtin(&name, dimension) {
                 Some(t) => requests.push(t),
+                None if GRADE_NAMES.contains(&name.as_str()) => cx.error_spanned_by(
+                    &request.name,
+                    format!(
+                        "`{name}` needs more than {dimension} generators: the grades of this \
+                         algebra are {}",
+                        GRADE_NAMES[..dimension].join(", ")
+                    ),
+                ),
                 None => cx.error_spanned_by(
                     &request.name,
                     format!(
@@ -349,26 +375,59 @@ fn check_types(cx: &mut Ctxt, dimension: usize, raw: RawTypes) -> Vec<TypeReques
                     match parse_blade(&ident.to_string(), dimension) {
                         Some(b) if blades.contains(&b) => cx.error_spanned_by(
                             ident,
-                            format!("blade `{ident}` is repeated in `{name}`"),
-                        ),
-                        Some(b) => blades.push(b),
-                        None => cx.error_spanned_by(
-                            ident,
                             format!(
-                                "unknown blade `{ident}`: write `s` or `e` followed by ascending \
-                                 indices from 1 to {dimension}, e.g. `e12`"
+                                "blade `{ident}` is repeated in `{name}`: list each blade once"
                             ),
                         ),
+                        Some(b) => blades.push(b),
+                        None => cx.error_spanned_by(ident, blade_problem(ident, dimension)),
                     }
                 }
                 if blade_idents.is_empty() {
-                    cx.error_spanned_by(&request.name, format!("type `{name}` has no blades"));
+                    cx.error_spanned_by(
+                        &request.name,
+                        format!(
+                            "type `{name}` has no blades: list its components, \
+                             e.g. `{name} = [e12, e13]`"
+                        ),
+                    );
                 }
                 requests.push(TypeRequest::User { name, blades });
             }
         }
     }
     requests
+}
+
+/// Why `ident` is not a blade name of a `dimension`-dimensional algebra.
+fn blade_problem(ident: &Ident, dimension: usize) -> String {
+    let name = ident.to_string();
+    let expected =
+        format!("write `s` or `e` followed by ascending indices from 1 to {dimension}, e.g. `e12`");
+    let indices: Option<Vec<u32>> = name
+        .strip_prefix('e')
+        .filter(|digits| !digits.is_empty())
+        .and_then(|digits| digits.chars().map(|c| c.to_digit(10)).collect());
+    let Some(mut indices) = indices else {
+        return format!("unknown blade `{name}`: {expected}");
+    };
+    if let Some(&index) = indices.iter().find(|&&i| i == 0 || i as usize > dimension) {
+        return format!(
+            "blade `{name}` uses e{index}, but this algebra has e1 to e{dimension}: {expected}"
+        );
+    }
+    indices.sort_unstable();
+    if let Some(pair) = indices.windows(2).find(|pair| pair[0] == pair[1]) {
+        return format!(
+            "blade `{name}` repeats e{}: a blade names each generator once ({expected})",
+            pair[0]
+        );
+    }
+    let ascending: String = indices.iter().map(|i| i.to_string()).collect();
+    format!(
+        "blade `{name}` must list its indices in ascending order: write `e{ascending}` \
+         (the same blade up to sign)"
+    )
 }
 
 fn check_ops(cx: &mut Ctxt, raw: RawOps) -> BTreeSet<Op> {
