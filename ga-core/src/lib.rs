@@ -49,3 +49,8 @@ pub mod f32 {
         pub mod g4 { metric: [1, 1, 1, 1], scalar: f32 }
     }
 }
+
+/// The README's examples, compiled and run as doctests.
+#[cfg(all(doctest, feature = "glam"))]
+#[doc = include_str!("../../README.md")]
+struct ReadmeDoctests;
