@@ -26,7 +26,7 @@ pub mod f64 {
     }
     ga_macros::algebra! {
         /// Euclidean space, G(3, 0, 0), in `f64`.
-        pub mod g3 { metric: [1, 1, 1], scalar: f64 }
+        pub mod g3 { metric: [1, 1, 1], scalar: f64, lanes: [4] }
     }
     ga_macros::algebra! {
         /// Euclidean four-space, G(4, 0, 0), in `f64`.
@@ -42,11 +42,11 @@ pub mod f32 {
     }
     ga_macros::algebra! {
         /// Euclidean space, G(3, 0, 0), in `f32`.
-        pub mod g3 { metric: [1, 1, 1], scalar: f32 }
+        pub mod g3 { metric: [1, 1, 1], scalar: f32, lanes: [4, 8] }
     }
     ga_macros::algebra! {
         /// Euclidean four-space, G(4, 0, 0), in `f32`.
-        pub mod g4 { metric: [1, 1, 1, 1], scalar: f32 }
+        pub mod g4 { metric: [1, 1, 1, 1], scalar: f32, lanes: [4] }
     }
 }
 

@@ -50,11 +50,52 @@ pub fn field_ident(blade: Blade) -> proc_macro2::Ident {
     format_ident!("{}", blade_name(blade))
 }
 
-/// The scalar type's tokens.
+/// The scalar type's tokens (a `wide` vector in a batch module).
 pub fn scalar_type(plan: &Plan) -> TokenStream {
+    match (plan.scalar, plan.lanes) {
+        (Scalar::F32, None) => quote!(f32),
+        (Scalar::F64, None) => quote!(f64),
+        (scalar, Some(lanes)) => {
+            let base = if scalar == Scalar::F32 { "f32" } else { "f64" };
+            let name = format_ident!("{base}x{lanes}");
+            quote!(::wide::#name)
+        }
+    }
+}
+
+/// The plain scalar type even in a batch module (`f32` for `wide::f32x4`).
+pub fn item_scalar_type(plan: &Plan) -> TokenStream {
     match plan.scalar {
         Scalar::F32 => quote!(f32),
         Scalar::F64 => quote!(f64),
+    }
+}
+
+/// The scalar type's zero, usable in constants.
+pub fn zero(plan: &Plan) -> TokenStream {
+    match plan.lanes {
+        None => {
+            let z = float(0.0);
+            quote!(#z)
+        }
+        Some(_) => {
+            let s = scalar_type(plan);
+            quote!(#s::ZERO)
+        }
+    }
+}
+
+/// The scalar type's one, usable in constants.
+pub fn one(plan: &Plan) -> TokenStream {
+    match plan.lanes {
+        None => {
+            let o = float(1.0);
+            quote!(#o)
+        }
+        Some(_) => {
+            let s = scalar_type(plan);
+            quote!(#s::ONE)
+        }
     }
 }
 
@@ -149,18 +190,12 @@ pub fn construct(
 ) -> TokenStream {
     match output {
         Output::Zero => quote!(Zero),
-        Output::Type(id) if id == TypeId::SCALAR => component(0).unwrap_or_else(|| {
-            let z = float(0.0);
-            quote!(#z)
-        }),
+        Output::Type(id) if id == TypeId::SCALAR => component(0).unwrap_or_else(|| zero(plan)),
         Output::Type(id) => {
             let name = type_tokens(plan, id);
             let fields = plan.types.get(id).blades.iter().map(|&blade| {
                 let field = field_ident(blade);
-                let value = component(blade).unwrap_or_else(|| {
-                    let z = float(0.0);
-                    quote!(#z)
-                });
+                let value = component(blade).unwrap_or_else(|| zero(plan));
                 quote!(#field: #value)
             });
             quote!(#name { #(#fields,)* })

@@ -1,6 +1,7 @@
 //! The back end: writes the module from a [`Plan`]. Nothing here can fail: every choice
 //! was made and checked before.
 
+mod batch;
 mod exp_log;
 mod expr;
 mod operators;
@@ -46,7 +47,7 @@ pub fn module_items(spec: &Spec, plan: &Plan) -> TokenStream {
     if plan.has(Op::Sandwich) {
         items.extend(versor::emit_sandwiches(plan));
     }
-    if plan.emitted.contains(&TypeId::multivector(n)) {
+    if plan.lanes.is_none() && plan.emitted.contains(&TypeId::multivector(n)) {
         items.extend(unary::emit_multivector_inverse(plan));
         items.extend(versor::emit_multivector_helpers(plan));
     }
@@ -63,7 +64,11 @@ pub fn module_items(spec: &Spec, plan: &Plan) -> TokenStream {
     if has_exp || has_log {
         items.extend(exp_log::emit_scalar_functions(plan));
     }
-    let _ = spec;
+    if plan.lanes.is_none() {
+        for &lanes in &spec.lanes {
+            items.extend(batch::emit_batch_module(spec, plan, lanes));
+        }
+    }
     items
 }
 

@@ -3,7 +3,7 @@
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 
-use super::expr::{field_ident, float, scalar_type, type_tokens};
+use super::expr::{field_ident, scalar_type, type_tokens};
 use crate::algebra::{blade_name, grade};
 use crate::plan::{Plan, TypeId, TypeKind};
 
@@ -33,8 +33,8 @@ pub fn emit_struct(plan: &Plan, id: TypeId) -> TokenStream {
         .iter()
         .map(|&b| format!("The `{}` component.", blade_name(b)));
     let len = def.blades.len();
-    let zero = float(0.0);
-    let one = float(1.0);
+    let zero = super::expr::zero(plan);
+    let one = super::expr::one(plan);
     let basis = def.blades.iter().enumerate().map(|(i, &blade)| {
         let constant = if blade == 0 {
             format_ident!("ONE")
@@ -123,6 +123,7 @@ pub fn emit_struct(plan: &Plan, id: TypeId) -> TokenStream {
 pub fn emit_support_items(plan: &Plan) -> TokenStream {
     let n = plan.metric.dimension();
     let s = scalar_type(plan);
+    let zero = super::expr::zero(plan);
     let mut out = quote! {
         /// The result of a product that is zero for every input (for example the outer
         /// product of two parallel grades that cannot fit); converts into every type.
@@ -132,7 +133,7 @@ pub fn emit_support_items(plan: &Plan) -> TokenStream {
         impl ::core::convert::From<Zero> for #s {
             #[inline]
             fn from(_: Zero) -> #s {
-                0.0
+                #zero
             }
         }
 

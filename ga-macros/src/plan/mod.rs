@@ -25,6 +25,8 @@ pub struct Plan {
     pub products: Vec<ProductKind>,
     /// The operations that are emitted.
     pub ops: BTreeSet<Op>,
+    /// For a batch module: the number of lanes of each scalar (`wide::f32x4` for 4).
+    pub lanes: Option<usize>,
 }
 
 impl Plan {
@@ -59,9 +61,48 @@ impl Plan {
             paired,
             products,
             ops,
+            lanes: None,
         };
         plan.emitted = plan.needed_types();
         plan
+    }
+
+    /// The plan of a structure-of-arrays batch module: the same types with `lanes`-wide
+    /// scalars, and only the operations that are straight-line code (products, sums,
+    /// involutions, duals, projections, sandwiches); nothing that branches per item.
+    pub fn batch(&self, lanes: usize) -> Plan {
+        const STRAIGHT_LINE: [Op; 14] = [
+            Op::Geometric,
+            Op::Outer,
+            Op::Inner,
+            Op::LeftContraction,
+            Op::RightContraction,
+            Op::ScalarProduct,
+            Op::Commutator,
+            Op::Add,
+            Op::Reverse,
+            Op::GradeInvolution,
+            Op::Conjugate,
+            Op::Dual,
+            Op::Grade,
+            Op::Sandwich,
+        ];
+        let ops: BTreeSet<Op> = STRAIGHT_LINE
+            .into_iter()
+            .filter(|op| self.has(*op))
+            .collect();
+        let mut batch = Plan {
+            metric: self.metric.clone(),
+            scalar: self.scalar,
+            types: self.types.clone(),
+            emitted: Vec::new(),
+            paired: self.paired.clone(),
+            products: self.products.clone(),
+            ops,
+            lanes: Some(lanes),
+        };
+        batch.emitted = batch.needed_types();
+        batch
     }
 
     /// The paired types closed under what their products and operations return.

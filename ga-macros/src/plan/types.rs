@@ -62,6 +62,7 @@ pub enum Output {
 }
 
 /// Every type an algebra can use, built-in and user-named.
+#[derive(Clone)]
 pub struct Types {
     dimension: usize,
     defs: Vec<TypeDef>,

@@ -222,3 +222,15 @@ impl Parse for RawOps {
         Ok(RawOps(names.into_iter().collect()))
     }
 }
+
+/// `lanes: [4, 8]`.
+pub struct RawLanes(pub Vec<LitInt>);
+
+impl Parse for RawLanes {
+    fn parse(input: ParseStream) -> syn::Result<Self> {
+        let content;
+        bracketed!(content in input);
+        let counts = Punctuated::<LitInt, Token![,]>::parse_terminated(&content)?;
+        Ok(RawLanes(counts.into_iter().collect()))
+    }
+}

@@ -4,7 +4,7 @@ use proc_macro2::Span;
 use syn::{Attribute, Expr, ExprLit, ExprUnary, Ident, Lit, UnOp, Visibility};
 
 use super::ctxt::Ctxt;
-use super::parse::{RawEntry, RawMetric, RawOps, RawSignature, RawTypes};
+use super::parse::{RawEntry, RawLanes, RawMetric, RawOps, RawSignature, RawTypes};
 use crate::algebra::{parse_blade, Blade, Metric};
 
 /// The largest dimension the generator accepts: G6 already has 4,096 terms in one full
@@ -20,6 +20,8 @@ pub struct Spec {
     pub scalar: Scalar,
     pub types: Option<Vec<TypeRequest>>,
     pub ops: Option<BTreeSet<Op>>,
+    /// Lane counts of the structure-of-arrays batch modules (`x4`, `x8`).
+    pub lanes: Vec<usize>,
 }
 
 /// The scalar type of the algebra.
@@ -119,7 +121,7 @@ impl Op {
     }
 }
 
-const KEYS: &str = "metric, signature, scalar, types, ops";
+const KEYS: &str = "metric, signature, scalar, types, ops, lanes";
 
 const GRADE_NAMES: [&str; MAX_DIMENSION] = [
     "Vector",
@@ -146,6 +148,7 @@ pub fn validate(
     let mut seen: Vec<Ident> = Vec::new();
     let (mut metric, mut signature, mut scalar, mut types, mut ops) =
         (None, None, None, None, None);
+    let mut lanes: Option<RawLanes> = None;
     for entry in entries {
         let key = entry.key.to_string();
         if let Some(first) = seen.iter().find(|k| **k == entry.key) {
@@ -189,6 +192,10 @@ pub fn validate(
                 Ok(raw) => ops = Some(raw),
                 Err(e) => cx.syn_error(e),
             },
+            "lanes" => match syn::parse2::<RawLanes>(value) {
+                Ok(raw) => lanes = Some(raw),
+                Err(e) => cx.syn_error(e),
+            },
             _ => cx.error_spanned_by(
                 &entry.key,
                 format!("unknown key `{key}`: expected one of {KEYS}"),
@@ -215,6 +222,10 @@ pub fn validate(
         _ => None,
     };
     let ops = ops.map(|raw| check_ops(&mut cx, raw));
+    let scalar = scalar.unwrap_or(Scalar::F64);
+    let lanes = lanes
+        .map(|raw| check_lanes(&mut cx, scalar, raw))
+        .unwrap_or_default();
     cx.check()?;
     let Some(squares) = squares else {
         return Err(syn::Error::new(
@@ -227,9 +238,10 @@ pub fn validate(
         vis,
         name,
         metric: Metric::new(squares),
-        scalar: scalar.unwrap_or(Scalar::F64),
+        scalar,
         types,
         ops,
+        lanes,
     })
 }
 
@@ -251,13 +263,13 @@ fn metric_entry(expr: &Expr) -> Option<i64> {
     }
 }
 
-fn check_dimension(cx: &mut Ctxt, span: Span, dimension: usize, what: &str) -> bool {
+fn check_dimension(cx: &mut Ctxt, span: Span, dimension: usize, counted_as: &str) -> bool {
     if (1..=MAX_DIMENSION).contains(&dimension) {
         return true;
     }
     cx.syn_error(syn::Error::new(
         span,
-        format!("{what} must give 1 to {MAX_DIMENSION} generators, found {dimension}"),
+        format!("the dimension must be 1 to {MAX_DIMENSION}, found {dimension} ({counted_as})"),
     ));
     false
 }
@@ -280,7 +292,13 @@ fn check_metric(cx: &mut Ctxt, raw: RawMetric) -> Option<Vec<i8>> {
             }
         }
     }
-    (check_dimension(cx, raw.bracket, raw.entries.len(), "the metric") && ok).then_some(squares)
+    (check_dimension(
+        cx,
+        raw.bracket,
+        raw.entries.len(),
+        "one generator per metric entry",
+    ) && ok)
+        .then_some(squares)
 }
 
 fn check_signature(cx: &mut Ctxt, raw: RawSignature) -> Option<Vec<i8>> {
@@ -307,7 +325,7 @@ fn check_signature(cx: &mut Ctxt, raw: RawSignature) -> Option<Vec<i8>> {
     }
     let [p, q, r] = counts;
     let dimension = p.saturating_add(q).saturating_add(r);
-    if !check_dimension(cx, raw.paren, dimension, "the signature (p + q + r)") {
+    if !check_dimension(cx, raw.paren, dimension, "p + q + r") {
         return None;
     }
     let mut squares = vec![1; p];
@@ -402,24 +420,25 @@ fn check_types(cx: &mut Ctxt, dimension: usize, raw: RawTypes) -> Vec<TypeReques
 /// Why `ident` is not a blade name of a `dimension`-dimensional algebra.
 fn blade_problem(ident: &Ident, dimension: usize) -> String {
     let name = ident.to_string();
-    let expected =
-        format!("write `s` or `e` followed by ascending indices from 1 to {dimension}, e.g. `e12`");
     let indices: Option<Vec<u32>> = name
         .strip_prefix('e')
         .filter(|digits| !digits.is_empty())
         .and_then(|digits| digits.chars().map(|c| c.to_digit(10)).collect());
     let Some(mut indices) = indices else {
-        return format!("unknown blade `{name}`: {expected}");
+        return format!(
+            "unknown blade `{name}`: write `s` or `e` followed by ascending indices from 1 to \
+             {dimension}, e.g. `e12`"
+        );
     };
     if let Some(&index) = indices.iter().find(|&&i| i == 0 || i as usize > dimension) {
         return format!(
-            "blade `{name}` uses e{index}, but this algebra has e1 to e{dimension}: {expected}"
+            "blade `{name}` uses e{index}, but this algebra has only e1 to e{dimension}"
         );
     }
     indices.sort_unstable();
     if let Some(pair) = indices.windows(2).find(|pair| pair[0] == pair[1]) {
         return format!(
-            "blade `{name}` repeats e{}: a blade names each generator once ({expected})",
+            "blade `{name}` repeats e{}: name each generator at most once, in ascending order",
             pair[0]
         );
     }
@@ -452,4 +471,33 @@ fn check_ops(cx: &mut Ctxt, raw: RawOps) -> BTreeSet<Op> {
         }
     }
     ops
+}
+
+/// The lane counts `wide` has vector types for: f32x4, f32x8, f64x2, f64x4.
+fn check_lanes(cx: &mut Ctxt, scalar: Scalar, raw: RawLanes) -> Vec<usize> {
+    let allowed: &[usize] = match scalar {
+        Scalar::F32 => &[4, 8],
+        Scalar::F64 => &[2, 4],
+    };
+    let mut lanes = Vec::new();
+    for lit in raw.0 {
+        match lit.base10_parse::<usize>() {
+            Ok(n) if lanes.contains(&n) => {
+                cx.error_spanned_by(&lit, format!("lane count {n} is listed twice"))
+            }
+            Ok(n) if allowed.contains(&n) => lanes.push(n),
+            _ => cx.error_spanned_by(
+                &lit,
+                format!(
+                    "unsupported lane count `{lit}`: expected {} for this scalar type",
+                    allowed
+                        .iter()
+                        .map(|n| n.to_string())
+                        .collect::<Vec<_>>()
+                        .join(" or ")
+                ),
+            ),
+        }
+    }
+    lanes
 }
