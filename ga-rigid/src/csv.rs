@@ -35,7 +35,18 @@ impl Row {
         let [w1, w2, w3] = self.omega;
         let [l1, l2, l3] = self.momentum;
         [
-            self.t, r.s, r.e12, r.e13, r.e23, w1, w2, w3, self.energy, l1, l2, l3,
+            self.t,
+            r.s,
+            r.e12,
+            r.e13,
+            r.e23,
+            w1,
+            w2,
+            w3,
+            self.energy,
+            l1,
+            l2,
+            l3,
         ]
     }
 }
@@ -72,7 +83,7 @@ mod tests {
     fn numbers_round_trip_exactly() {
         let row = Row {
             t: 0.1,
-            rotor: Rotor::new(0.7071067811865476, -1e-300, 0.0, -0.7071067811865475),
+            rotor: Rotor::new(std::f64::consts::FRAC_1_SQRT_2, -1e-300, 0.0, -0.7),
             omega: [1.0 / 3.0, -2.5e17, 0.0],
             energy: std::f64::consts::PI,
             momentum: [f64::MIN_POSITIVE, f64::MAX, -0.0],

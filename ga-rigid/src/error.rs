@@ -267,7 +267,9 @@ mod tests {
 
     #[test]
     fn within_prefixes_plain_and_indexed_fields() {
-        let e = positive("moments", "moments", -1.0).unwrap_err().within("body");
+        let e = positive("moments", "moments", -1.0)
+            .unwrap_err()
+            .within("body");
         assert_eq!(
             e.to_string(),
             "body.moments: moments must be positive, got -1"

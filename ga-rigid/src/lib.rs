@@ -1,1 +1,9 @@
 //! Rigid-body dynamics in geometric algebra.
+pub mod cli;
+pub mod csv;
+pub mod dynamics;
+pub mod error;
+pub mod inertia;
+pub mod scene;
+pub mod special;
+pub mod exact_flow;

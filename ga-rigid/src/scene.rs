@@ -37,6 +37,10 @@ use serde::Deserialize;
 use crate::error::{finite3, positive, Error};
 use crate::inertia::{normalize_rotor, Inertia, Mesh, Solid};
 
+/// The most output rows a scene may ask for: ten million rows are about a gigabyte in
+/// memory and two and a half as CSV, so more is a typo rather than a plan.
+pub const MAX_SAMPLES: i64 = 10_000_000;
+
 /// A parsed and validated scene.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Scene {
@@ -93,7 +97,8 @@ impl Initial {
 pub struct Run {
     /// The end time (positive); the run starts at t = 0.
     pub t_end: f64,
-    /// The number of output rows, evenly spaced from 0 to `t_end` inclusive (at least 2).
+    /// The number of output rows, evenly spaced from 0 to `t_end` inclusive (at least 2,
+    /// at most [`MAX_SAMPLES`]).
     pub samples: usize,
 }
 
@@ -101,7 +106,8 @@ impl Run {
     /// The sample times `k t_end / (samples - 1)`, the last one exactly `t_end`.
     #[must_use]
     pub fn times(&self) -> Vec<f64> {
-        let last = self.samples - 1;
+        // `samples >= 2` after loading; stay panic-free for a hand-built `Run` too.
+        let last = self.samples.saturating_sub(1).max(1);
         (0..self.samples)
             .map(|k| {
                 if k == last {
@@ -198,9 +204,14 @@ impl Scene {
                 format!("samples must be at least 2, got {samples}"),
             ));
         }
-        let samples = usize::try_from(samples).map_err(|_| {
-            Error::invalid("run.samples", format!("samples {samples} does not fit in memory"))
-        })?;
+        if samples > MAX_SAMPLES {
+            return Err(Error::invalid(
+                "run.samples",
+                format!("samples must be at most {MAX_SAMPLES}, got {samples}"),
+            ));
+        }
+        // In range 2..=MAX_SAMPLES, so the conversion cannot fail.
+        let samples = usize::try_from(samples).unwrap_or(2);
 
         let torque = match file.torque {
             None => None,
@@ -287,9 +298,9 @@ fn load_body(body: BodyFile, scene_path: &Path) -> Result<(BodySpec, Inertia), E
     }
     // Exactly one description was given and it is not one of the three above.
     let mesh_path = body.mesh.unwrap_or_default();
-    let density = body.density.ok_or_else(|| {
-        Error::invalid("body.density", "missing field: `mesh` needs a `density`")
-    })?;
+    let density = body
+        .density
+        .ok_or_else(|| Error::invalid("body.density", "missing field: `mesh` needs a `density`"))?;
     positive("body.density", "density", density)?;
     let path = match scene_path.parent() {
         Some(dir) if mesh_path.is_relative() => dir.join(&mesh_path),
@@ -308,7 +319,10 @@ fn syntax_error(e: &toml::de::Error, text: &str, path: &Path) -> Error {
             // Bytes, not chars: a span need not fall on a char boundary of `text`.
             let before = &text.as_bytes()[..span.start.min(text.len())];
             let line = before.iter().filter(|&&b| b == b'\n').count() + 1;
-            let start = before.iter().rposition(|&b| b == b'\n').map_or(0, |i| i + 1);
+            let start = before
+                .iter()
+                .rposition(|&b| b == b'\n')
+                .map_or(0, |i| i + 1);
             (line, before.len() - start + 1)
         }
         None => (0, 0),
@@ -423,7 +437,8 @@ mod tests {
         Scene::parse(text, Path::new("scene.toml"))
     }
 
-    const RUN: &str = "[initial]\nrotor = [1, 0, 0, 0]\nomega = [1, 0, 0]\n[run]\nt_end = 1\nsamples = 3\n";
+    const RUN: &str =
+        "[initial]\nrotor = [1, 0, 0, 0]\nomega = [1, 0, 0]\n[run]\nt_end = 1\nsamples = 3\n";
 
     #[test]
     fn minimal_scene_loads_and_normalises_the_rotor() {
@@ -444,7 +459,8 @@ mod tests {
         ))
         .unwrap_err();
         assert!(
-            e.to_string().starts_with("body.shape.colour: unknown field"),
+            e.to_string()
+                .starts_with("body.shape.colour: unknown field"),
             "{e}"
         );
     }

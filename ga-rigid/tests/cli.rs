@@ -1,1 +1,794 @@
+//! The command line on bad input: exit status 2, one line on standard error naming the
+//! field, nothing on standard output, and no `--out` file. And `inertia` on good input.
 
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+const BIN: &str = env!("CARGO_BIN_EXE_ga-rigid");
+
+const BODY: &str = "[body]\nmoments = [1.0, 2.0, 2.5]\n";
+const INITIAL: &str = "[initial]\nrotor = [1, 0, 0, 0]\nomega = [0.1, 1.0, 0.2]\n";
+const RUN: &str = "[run]\nt_end = 10.0\nsamples = 11\n";
+
+/// A fresh directory for one test, under cargo's per-target temporary directory.
+fn test_dir(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join("ga-rigid-cli")
+        .join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn write(dir: &Path, file: &str, text: &str) -> PathBuf {
+    let path = dir.join(file);
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+fn run(dir: &Path, args: &[&str]) -> Output {
+    Command::new(BIN)
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .unwrap()
+}
+
+/// Run `simulate` on `scene` with `extra` arguments and check the failure contract:
+/// status 2, empty stdout, one stderr line starting with `field`, containing `rule`,
+/// and no output file.
+fn expect_rejected_with(name: &str, scene: &str, extra: &[&str], field: &str, rule: &str) {
+    expect_rejected_in(name, &[("scene.toml", scene)], extra, field, rule);
+}
+
+/// `expect_rejected_with` for a scene (`scene.toml`) with other files beside it.
+fn expect_rejected_in(name: &str, files: &[(&str, &str)], extra: &[&str], field: &str, rule: &str) {
+    let dir = test_dir(name);
+    for (file, text) in files {
+        write(&dir, file, text);
+    }
+    let mut args = vec!["simulate", "scene.toml"];
+    args.extend_from_slice(extra);
+    args.extend_from_slice(&["--out", "out.csv"]);
+    let out = run(&dir, &args);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{name}: stderr {stderr}");
+    assert!(out.stdout.is_empty(), "{name}: stdout not empty");
+    assert_eq!(stderr.lines().count(), 1, "{name}: not one line: {stderr}");
+    assert!(stderr.ends_with('\n'), "{name}: {stderr}");
+    assert!(
+        stderr.starts_with(field),
+        "{name}: expected the field {field:?} first: {stderr}"
+    );
+    assert!(
+        stderr.contains(rule),
+        "{name}: expected {rule:?} in: {stderr}"
+    );
+    assert!(!dir.join("out.csv").exists(), "{name}: --out was written");
+    let leftovers: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .filter_map(|e| e.ok())
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|n| !files.iter().any(|(f, _)| f == n))
+        .collect();
+    assert!(
+        leftovers.is_empty(),
+        "{name}: files left behind: {leftovers:?}"
+    );
+}
+
+/// `expect_rejected_with` with a fixed-step method.
+fn expect_rejected(name: &str, scene: &str, field: &str, rule: &str) {
+    expect_rejected_with(
+        name,
+        scene,
+        &["--method", "rk4", "--dt", "0.01"],
+        field,
+        rule,
+    );
+}
+
+fn scene(body: &str, initial: &str, run: &str) -> String {
+    format!("{body}{initial}{run}")
+}
+
+#[test]
+fn missing_field_is_named() {
+    let s = scene(BODY, INITIAL, "[run]\nsamples = 11\n");
+    expect_rejected("missing_field", &s, "run.t_end: ", "missing field");
+}
+
+#[test]
+fn missing_section_is_named() {
+    let s = format!("{BODY}{RUN}");
+    expect_rejected("missing_section", &s, "initial: ", "missing section");
+}
+
+#[test]
+fn unknown_field_is_named() {
+    let s = scene("[body]\nmoments = [1, 2, 2.5]\ncolour = 3\n", INITIAL, RUN);
+    expect_rejected("unknown_field", &s, "body.colour: ", "unknown field");
+}
+
+#[test]
+fn unknown_field_in_an_inline_table_is_named() {
+    let s = scene(
+        "[body]\nshape = { kind = \"box\", mass = 1, size = [1, 2, 3], colour = 3 }\n",
+        INITIAL,
+        RUN,
+    );
+    expect_rejected(
+        "unknown_inline_field",
+        &s,
+        "body.shape.colour: ",
+        "unknown field",
+    );
+}
+
+#[test]
+fn unknown_section_is_named() {
+    let s = format!("{}[extra]\nx = 1\n", scene(BODY, INITIAL, RUN));
+    expect_rejected("unknown_section", &s, "extra: ", "unknown section");
+}
+
+#[test]
+fn duplicated_field_is_named() {
+    let s = scene(
+        "[body]\nmoments = [1, 2, 2.5]\nmoments = [1, 2, 2.5]\n",
+        INITIAL,
+        RUN,
+    );
+    expect_rejected("duplicated_field", &s, "body.moments: ", "duplicated key");
+}
+
+#[test]
+fn duplicated_field_in_an_inline_table_is_named() {
+    let s = scene(
+        "[body]\nshape = { kind = \"box\", mass = 1, size = [1, 2, 3], mass = 2 }\n",
+        INITIAL,
+        RUN,
+    );
+    expect_rejected(
+        "duplicated_inline",
+        &s,
+        "body.shape.mass: ",
+        "duplicated key",
+    );
+}
+
+#[test]
+fn duplicated_section_is_named() {
+    let s = format!("{}[run]\nt_end = 1\n", scene(BODY, INITIAL, RUN));
+    expect_rejected("duplicated_section", &s, "run: ", "duplicated key");
+}
+
+#[test]
+fn toml_syntax_error_gives_the_position() {
+    let s = scene("[body]\nmoments = [1, 2, 2.5\n", INITIAL, RUN);
+    expect_rejected("syntax_error", &s, "scene.toml:3:", "expected");
+}
+
+#[test]
+fn wrong_type_is_named() {
+    let s = scene("[body]\nmoments = \"heavy\"\n", INITIAL, RUN);
+    expect_rejected("wrong_type", &s, "body.moments: ", "invalid type");
+}
+
+#[test]
+fn wrong_array_length_is_named() {
+    let s = scene("[body]\nmoments = [1, 2]\n", INITIAL, RUN);
+    expect_rejected("wrong_length", &s, "body.moments: ", "invalid length 2");
+}
+
+#[test]
+fn non_finite_moment_is_rejected() {
+    let s = scene("[body]\nmoments = [1, nan, 2]\n", INITIAL, RUN);
+    expect_rejected(
+        "nan_moment",
+        &s,
+        "body.moments: ",
+        "must be finite, got NaN",
+    );
+}
+
+#[test]
+fn non_finite_omega_is_rejected() {
+    let s = scene(
+        BODY,
+        "[initial]\nrotor = [1, 0, 0, 0]\nomega = [inf, 0, 0]\n",
+        RUN,
+    );
+    expect_rejected(
+        "inf_omega",
+        &s,
+        "initial.omega: ",
+        "must be finite, got inf",
+    );
+}
+
+#[test]
+fn non_finite_t_end_is_rejected() {
+    let s = scene(BODY, INITIAL, "[run]\nt_end = nan\nsamples = 11\n");
+    expect_rejected("nan_t_end", &s, "run.t_end: ", "must be finite");
+}
+
+#[test]
+fn non_finite_gravity_is_rejected() {
+    let s = format!(
+        "{}[torque]\ng = [0, 0, -inf]\ncom_offset = [0, 0, 1]\n",
+        scene(BODY, INITIAL, RUN)
+    );
+    expect_rejected("inf_gravity", &s, "torque.g: ", "must be finite");
+}
+
+#[test]
+fn negative_moment_is_rejected() {
+    let s = scene("[body]\nmoments = [1, -1, 2]\n", INITIAL, RUN);
+    expect_rejected(
+        "negative_moment",
+        &s,
+        "body.moments: ",
+        "moments must be positive, got -1",
+    );
+}
+
+#[test]
+fn zero_moment_is_rejected() {
+    let s = scene("[body]\nmoments = [1, 1, 0]\n", INITIAL, RUN);
+    expect_rejected(
+        "zero_moment",
+        &s,
+        "body.moments: ",
+        "moments must be positive, got 0",
+    );
+}
+
+#[test]
+fn triangle_inequality_is_enforced() {
+    let s = scene("[body]\nmoments = [1, 2, 3.5]\n", INITIAL, RUN);
+    expect_rejected("triangle", &s, "body.moments: ", "triangle inequality");
+}
+
+#[test]
+fn allow_unphysical_admits_the_literature_test_bodies() {
+    let dir = test_dir("unphysical");
+    let s = scene(
+        "[body]\nmoments = [2, 1, 0.6666666666666666]\nallow_unphysical = true\n",
+        INITIAL,
+        RUN,
+    );
+    write(&dir, "scene.toml", &s);
+    let out = run(&dir, &["inertia", "scene.toml"]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let s = scene(
+        "[body]\nshape = { kind = \"sphere\", mass = 1, radius = 1 }\nallow_unphysical = true\n",
+        INITIAL,
+        RUN,
+    );
+    expect_rejected(
+        "unphysical_shape",
+        &s,
+        "body.allow_unphysical: ",
+        "only used with",
+    );
+}
+
+#[test]
+fn negative_shape_mass_is_rejected() {
+    let s = scene(
+        "[body]\nshape = { kind = \"box\", mass = -2, size = [1, 2, 3] }\n",
+        INITIAL,
+        RUN,
+    );
+    expect_rejected(
+        "negative_mass",
+        &s,
+        "body.shape.mass: ",
+        "mass must be positive, got -2",
+    );
+}
+
+#[test]
+fn zero_shape_dimension_is_rejected() {
+    let s = scene(
+        "[body]\nshape = { kind = \"cone\", mass = 1, radius = 0, height = 1 }\n",
+        INITIAL,
+        RUN,
+    );
+    expect_rejected(
+        "zero_radius",
+        &s,
+        "body.shape.radius: ",
+        "must be positive, got 0",
+    );
+}
+
+#[test]
+fn unknown_shape_kind_is_named() {
+    let s = scene(
+        "[body]\nshape = { kind = \"cube\", mass = 1, size = [1, 2, 3] }\n",
+        INITIAL,
+        RUN,
+    );
+    expect_rejected(
+        "unknown_kind",
+        &s,
+        "body.shape.kind: ",
+        "unknown variant `cube`",
+    );
+}
+
+#[test]
+fn missing_shape_field_is_named() {
+    let s = scene(
+        "[body]\nshape = { kind = \"cylinder\", mass = 1, radius = 1 }\n",
+        INITIAL,
+        RUN,
+    );
+    expect_rejected("missing_height", &s, "body.shape.height: ", "missing field");
+}
+
+#[test]
+fn negative_point_mass_is_rejected() {
+    let s = scene(
+        "[body]\npoints = [[1, 0, 0, 1], [-1, 0, 1, 0], [1, 1, 0, 0]]\n",
+        INITIAL,
+        RUN,
+    );
+    expect_rejected(
+        "negative_point_mass",
+        &s,
+        "body.points[1]: ",
+        "mass must be positive, got -1",
+    );
+}
+
+#[test]
+fn collinear_points_are_degenerate() {
+    let s = scene(
+        "[body]\npoints = [[1, 0, 0, 0], [1, 0, 0, 1], [1, 0, 0, 2]]\n",
+        INITIAL,
+        RUN,
+    );
+    expect_rejected("collinear_points", &s, "body.points: ", "degenerate");
+}
+
+#[test]
+fn two_body_descriptions_are_rejected() {
+    let s = scene(
+        "[body]\nmoments = [1, 2, 2.5]\nshape = { kind = \"sphere\", mass = 1, radius = 1 }\n",
+        INITIAL,
+        RUN,
+    );
+    expect_rejected("two_bodies", &s, "body: ", "exactly one of");
+}
+
+#[test]
+fn no_body_description_is_rejected() {
+    let s = scene("[body]\n", INITIAL, RUN);
+    expect_rejected("no_body", &s, "body: ", "got none");
+}
+
+#[test]
+fn density_without_mesh_is_rejected() {
+    let s = scene("[body]\nmoments = [1, 2, 2.5]\ndensity = 3\n", INITIAL, RUN);
+    expect_rejected(
+        "density_without_mesh",
+        &s,
+        "body.density: ",
+        "only used with",
+    );
+}
+
+#[test]
+fn zero_rotor_is_rejected() {
+    let s = scene(
+        BODY,
+        "[initial]\nrotor = [0, 0, 0, 0]\nomega = [1, 0, 0]\n",
+        RUN,
+    );
+    expect_rejected("zero_rotor", &s, "initial.rotor: ", "the rotor is zero");
+}
+
+#[test]
+fn too_few_samples_are_rejected() {
+    let s = scene(BODY, INITIAL, "[run]\nt_end = 1\nsamples = 1\n");
+    expect_rejected("one_sample", &s, "run.samples: ", "at least 2, got 1");
+    let s = scene(BODY, INITIAL, "[run]\nt_end = 1\nsamples = -5\n");
+    expect_rejected(
+        "negative_samples",
+        &s,
+        "run.samples: ",
+        "at least 2, got -5",
+    );
+}
+
+#[test]
+fn absurd_sample_count_is_rejected() {
+    let s = scene(BODY, INITIAL, "[run]\nt_end = 1\nsamples = 100000000000\n");
+    expect_rejected("huge_samples", &s, "run.samples: ", "at most");
+}
+
+#[test]
+fn non_positive_t_end_is_rejected() {
+    let s = scene(BODY, INITIAL, "[run]\nt_end = 0\nsamples = 11\n");
+    expect_rejected("zero_t_end", &s, "run.t_end: ", "must be positive, got 0");
+    let s = scene(BODY, INITIAL, "[run]\nt_end = -1\nsamples = 11\n");
+    expect_rejected(
+        "negative_t_end",
+        &s,
+        "run.t_end: ",
+        "must be positive, got -1",
+    );
+}
+
+const CUBE_OBJ: &str = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n\
+f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 4 8 7 3\nf 4 1 5 8\n";
+
+#[test]
+fn open_mesh_is_rejected() {
+    let open = CUBE_OBJ.replace("f 4 1 5 8\n", "");
+    let s = scene("[body]\nmesh = \"open.obj\"\ndensity = 1\n", INITIAL, RUN);
+    expect_rejected_in(
+        "open_mesh",
+        &[("scene.toml", &s), ("open.obj", &open)],
+        &["--method", "rk4", "--dt", "0.1"],
+        "body.mesh: ",
+        "the mesh is not closed",
+    );
+}
+
+#[test]
+fn inside_out_mesh_is_rejected() {
+    let flipped: String = CUBE_OBJ
+        .lines()
+        .map(|l| match l.strip_prefix("f ") {
+            Some(rest) => {
+                let mut refs: Vec<&str> = rest.split_whitespace().collect();
+                refs.reverse();
+                format!("f {}\n", refs.join(" "))
+            }
+            None => format!("{l}\n"),
+        })
+        .collect();
+    let s = scene(
+        "[body]\nmesh = \"inside_out.obj\"\ndensity = 1\n",
+        INITIAL,
+        RUN,
+    );
+    expect_rejected_in(
+        "inside_out_mesh",
+        &[("scene.toml", &s), ("inside_out.obj", &flipped)],
+        &["--method", "rk4", "--dt", "0.1"],
+        "body.mesh: ",
+        "volume must be positive",
+    );
+}
+
+#[test]
+fn bad_obj_line_is_named() {
+    let bad = CUBE_OBJ.replace("f 4 1 5 8", "f 4 1 5 0");
+    let s = scene("[body]\nmesh = \"bad.obj\"\ndensity = 1\n", INITIAL, RUN);
+    expect_rejected_in(
+        "bad_obj_line",
+        &[("scene.toml", &s), ("bad.obj", &bad)],
+        &["--method", "rk4", "--dt", "0.1"],
+        "body.mesh: ",
+        ":14: vertex index 0",
+    );
+}
+
+#[test]
+fn non_positive_density_is_rejected() {
+    let s = scene("[body]\nmesh = \"cube.obj\"\ndensity = -1\n", INITIAL, RUN);
+    expect_rejected_in(
+        "negative_density",
+        &[("scene.toml", &s), ("cube.obj", CUBE_OBJ)],
+        &["--method", "rk4", "--dt", "0.1"],
+        "body.density: ",
+        "must be positive, got -1",
+    );
+}
+
+#[test]
+fn missing_mesh_file_is_named() {
+    let s = scene(
+        "[body]\nmesh = \"nowhere.obj\"\ndensity = 1\n",
+        INITIAL,
+        RUN,
+    );
+    expect_rejected("missing_mesh", &s, "body.mesh: ", "cannot read");
+}
+
+#[test]
+fn mesh_without_density_is_rejected() {
+    let s = scene("[body]\nmesh = \"cube.obj\"\n", INITIAL, RUN);
+    expect_rejected(
+        "mesh_without_density",
+        &s,
+        "body.density: ",
+        "needs a `density`",
+    );
+}
+
+#[test]
+fn mesh_scene_resolves_the_obj_next_to_the_scene_file() {
+    let dir = test_dir("mesh_relative");
+    std::fs::create_dir_all(dir.join("scenes")).unwrap();
+    write(&dir, "scenes/cube.obj", CUBE_OBJ);
+    let s = scene("[body]\nmesh = \"cube.obj\"\ndensity = 6\n", INITIAL, RUN);
+    write(&dir, "scenes/scene.toml", &s);
+    let out = run(&dir, &["inertia", "scenes/scene.toml"]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(stdout.contains("mass: 6\n"), "{stdout}");
+    assert!(
+        stdout.contains("centre_of_mass: [0.5, 0.5, 0.5]"),
+        "{stdout}"
+    );
+    // A unit cube of mass 6: 6 (1 + 1) / 12 = 1 about every axis.
+    let moments = parse_list(&stdout, "moments: ");
+    for m in moments {
+        assert!((m - 1.0).abs() < 1e-13, "{stdout}");
+    }
+}
+
+#[test]
+fn negative_dt_is_rejected() {
+    let s = scene(BODY, INITIAL, RUN);
+    expect_rejected_with(
+        "negative_dt",
+        &s,
+        &["--method", "rk4", "--dt", "-0.1"],
+        "--dt: ",
+        "positive",
+    );
+}
+
+#[test]
+fn zero_dt_is_rejected() {
+    let s = scene(BODY, INITIAL, RUN);
+    expect_rejected_with(
+        "zero_dt",
+        &s,
+        &["--method", "splitting", "--dt", "0"],
+        "--dt: ",
+        "got 0",
+    );
+}
+
+#[test]
+fn zero_tol_is_rejected() {
+    let s = scene(BODY, INITIAL, RUN);
+    expect_rejected_with(
+        "zero_tol",
+        &s,
+        &["--method", "dopri", "--tol", "0"],
+        "--tol: ",
+        "positive",
+    );
+}
+
+#[test]
+fn nan_dt_is_rejected() {
+    let s = scene(BODY, INITIAL, RUN);
+    expect_rejected_with(
+        "nan_dt",
+        &s,
+        &["--method", "rk4", "--dt", "NaN"],
+        "--dt: ",
+        "finite",
+    );
+}
+
+#[test]
+fn dt_and_tol_are_exclusive() {
+    let s = scene(BODY, INITIAL, RUN);
+    expect_rejected_with(
+        "dt_and_tol",
+        &s,
+        &["--method", "dopri", "--dt", "0.1", "--tol", "1e-8"],
+        "error: ",
+        "--tol",
+    );
+}
+
+#[test]
+fn fixed_step_method_needs_dt() {
+    let s = scene(BODY, INITIAL, RUN);
+    expect_rejected_with(
+        "rk4_without_dt",
+        &s,
+        &["--method", "rk4"],
+        "--dt: ",
+        "give --dt",
+    );
+    expect_rejected_with(
+        "rk4_with_tol",
+        &s,
+        &["--method", "lie-rk4", "--tol", "1e-9"],
+        "--tol: ",
+        "give --dt",
+    );
+}
+
+#[test]
+fn adaptive_method_needs_tol() {
+    let s = scene(BODY, INITIAL, RUN);
+    expect_rejected_with(
+        "dopri_without_tol",
+        &s,
+        &["--method", "dopri"],
+        "--tol: ",
+        "give --tol",
+    );
+    expect_rejected_with(
+        "dopri_with_dt",
+        &s,
+        &["--method", "dopri", "--dt", "0.1"],
+        "--dt: ",
+        "give --tol",
+    );
+}
+
+#[test]
+fn exact_method_takes_no_step() {
+    let s = scene(BODY, INITIAL, RUN);
+    expect_rejected_with(
+        "exact_with_dt",
+        &s,
+        &["--method", "exact", "--dt", "0.1"],
+        "--dt: ",
+        "no --dt",
+    );
+}
+
+#[test]
+fn unknown_method_is_a_usage_error() {
+    let s = scene(BODY, INITIAL, RUN);
+    expect_rejected_with(
+        "unknown_method",
+        &s,
+        &["--method", "euler"],
+        "error: ",
+        "--method",
+    );
+}
+
+#[test]
+fn missing_scene_file_is_named() {
+    let dir = test_dir("missing_scene");
+    let out = run(
+        &dir,
+        &[
+            "simulate",
+            "nowhere.toml",
+            "--method",
+            "rk4",
+            "--dt",
+            "0.1",
+            "--out",
+            "out.csv",
+        ],
+    );
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(out.stdout.is_empty());
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(
+        stderr.starts_with("SCENE: cannot read nowhere.toml"),
+        "{stderr}"
+    );
+    assert!(!dir.join("out.csv").exists());
+}
+
+#[test]
+fn out_in_a_missing_directory_is_rejected() {
+    let dir = test_dir("missing_out_dir");
+    write(&dir, "scene.toml", &scene(BODY, INITIAL, RUN));
+    let out = run(
+        &dir,
+        &[
+            "simulate",
+            "scene.toml",
+            "--method",
+            "rk4",
+            "--dt",
+            "0.1",
+            "--out",
+            "no/such/out.csv",
+        ],
+    );
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(out.stdout.is_empty());
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(stderr.starts_with("--out: "), "{stderr}");
+}
+
+#[test]
+fn missing_arguments_are_one_line_usage_errors() {
+    let dir = test_dir("missing_args");
+    for args in [
+        &["simulate"][..],
+        &[][..],
+        &["inertia"][..],
+        &["frobnicate"][..],
+    ] {
+        let out = run(&dir, args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(out.stdout.is_empty(), "{args:?}");
+        assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
+    }
+}
+
+fn parse_list(stdout: &str, prefix: &str) -> Vec<f64> {
+    let line = stdout
+        .lines()
+        .find_map(|l| l.strip_prefix(prefix))
+        .unwrap_or_else(|| panic!("no {prefix:?} line in {stdout}"));
+    line.trim_matches(|c| c == '[' || c == ']')
+        .split(", ")
+        .map(|x| x.parse().unwrap())
+        .collect()
+}
+
+#[test]
+fn inertia_prints_the_box_moments() {
+    let dir = test_dir("inertia_box");
+    let s = scene(
+        "[body]\nshape = { kind = \"box\", mass = 2.0, size = [1, 2, 3] }\n",
+        INITIAL,
+        RUN,
+    );
+    write(&dir, "scene.toml", &s);
+    let out = run(&dir, &["inertia", "scene.toml"]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(out.stderr.is_empty());
+    assert!(stdout.contains("mass: 2\n"), "{stdout}");
+    assert!(stdout.contains("centre_of_mass: [0, 0, 0]\n"), "{stdout}");
+    let moments = parse_list(&stdout, "moments: ");
+    let expected = [
+        2.0 * (4.0 + 9.0) / 12.0,
+        2.0 * (1.0 + 9.0) / 12.0,
+        2.0 * (1.0 + 4.0) / 12.0,
+    ];
+    assert_eq!(moments.len(), 3);
+    for (m, e) in moments.iter().zip(expected) {
+        assert!((m - e).abs() <= 1e-15 * e, "{stdout}");
+    }
+    assert_eq!(parse_list(&stdout, "rotor: "), vec![1.0, 0.0, 0.0, 0.0]);
+}
+
+#[test]
+fn inertia_of_bad_scene_fails_the_same_way() {
+    let dir = test_dir("inertia_bad");
+    write(
+        &dir,
+        "scene.toml",
+        &scene("[body]\nmoments = [1, 1, 0]\n", INITIAL, RUN),
+    );
+    let out = run(&dir, &["inertia", "scene.toml"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(out.stdout.is_empty());
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(stderr.starts_with("body.moments: "), "{stderr}");
+}

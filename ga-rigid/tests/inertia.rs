@@ -1,14 +1,17 @@
 //! Inertia: the bivector map against the classic matrix formula, textbook solids, exact
 //! polyhedral mass properties, OBJ reading, and the eigen-solver.
 
+// Index loops over 3x3 matrices read like the formulas they check (J_ab, V^T V = 1).
+#![allow(clippy::needless_range_loop)]
+
 use std::path::Path;
 
 use ga_core::f64::g3::*;
+use ga_rigid::error::Error;
 use ga_rigid::inertia::{
     determinant, matrix_from_rotor, mul_vec, multiply, rotor_from_matrix, symmetric_eigen,
     transpose, Inertia, Matrix3, Mesh,
 };
-use ga_rigid::Error;
 
 /// xorshift64*: a seeded generator, so failures reproduce (ga-rigid has no proptest).
 struct Rng(u64);

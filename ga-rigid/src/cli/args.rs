@@ -35,7 +35,12 @@ pub struct SimulateArgs {
     pub method: Method,
     /// The fixed step size, for fixed-step methods.
     // Negative numbers must reach our own check (with its message), not be taken for flags.
-    #[arg(long, value_name = "DT", allow_negative_numbers = true, conflicts_with = "tol")]
+    #[arg(
+        long,
+        value_name = "DT",
+        allow_negative_numbers = true,
+        conflicts_with = "tol"
+    )]
     pub dt: Option<f64>,
     /// The error tolerance, for adaptive methods.
     #[arg(long, value_name = "TOL", allow_negative_numbers = true)]

@@ -20,10 +20,6 @@ pub fn describe(scene: &Scene) -> String {
     let [i1, i2, i3] = inertia.moments();
     let _ = writeln!(out, "moments: [{i1}, {i2}, {i3}]");
     let r = inertia.rotor();
-    let _ = writeln!(
-        out,
-        "rotor: [{}, {}, {}, {}]",
-        r.s, r.e12, r.e13, r.e23
-    );
+    let _ = writeln!(out, "rotor: [{}, {}, {}, {}]", r.s, r.e12, r.e13, r.e23);
     out
 }

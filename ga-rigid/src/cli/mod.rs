@@ -16,9 +16,7 @@ use std::process::ExitCode;
 
 use clap::Parser;
 
-pub use args::{
-    Cli, Command, InertiaArgs, Method, ReportArgs, SimulateArgs, Step, StepKind,
-};
+pub use args::{Cli, Command, InertiaArgs, Method, ReportArgs, SimulateArgs, Step, StepKind};
 pub use inertia_cmd::describe as describe_inertia;
 
 use crate::csv::{to_csv, Row};
@@ -247,10 +245,9 @@ fn emit(field: &str, out: Option<&Path>, text: &str) -> Result<(), Error> {
                 source,
             });
     };
-    let name = out.file_name().map_or_else(
-        || OsString::from("out"),
-        std::ffi::OsStr::to_os_string,
-    );
+    let name = out
+        .file_name()
+        .map_or_else(|| OsString::from("out"), std::ffi::OsStr::to_os_string);
     let mut tmp_name = OsString::from(".");
     tmp_name.push(&name);
     tmp_name.push(format!(".tmp-{}", std::process::id()));

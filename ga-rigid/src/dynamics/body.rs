@@ -26,7 +26,11 @@ impl RigidBody {
     /// and every pair at least the third (the triangle inequality of real bodies).
     pub fn new(moments: [f64; 3]) -> Result<Self, Error> {
         crate::inertia::Inertia::from_principal(moments)?;
-        Ok(RigidBody { moments, inverse_moments: moments.map(|i| 1.0 / i), torque: None })
+        Ok(RigidBody {
+            moments,
+            inverse_moments: moments.map(|i| 1.0 / i),
+            torque: None,
+        })
     }
 
     /// The same body driven by `torque`.

@@ -72,7 +72,10 @@ impl SymmetricTop {
     pub fn state(&self, t: f64) -> State {
         let spin = (self.right * t).exp();
         let omega = spin.reverse().sandwich(self.initial.omega);
-        State { rotor: self.rotor(t), omega }
+        State {
+            rotor: self.rotor(t),
+            omega,
+        }
     }
 
     /// The principal moments of the body this was built for.

@@ -62,7 +62,9 @@ pub fn symmetric_eigen(a: &Matrix3) -> SymmetricEigen {
             // them any more: zero it instead of rotating (Numerical Recipes' test, used
             // from the fourth sweep on so that early sweeps always rotate).
             let small = 100.0 * apq.abs();
-            if sweep > 3 && m[p][p].abs() + small == m[p][p].abs() && m[q][q].abs() + small == m[q][q].abs()
+            if sweep > 3
+                && m[p][p].abs() + small == m[p][p].abs()
+                && m[q][q].abs() + small == m[q][q].abs()
             {
                 m[p][q] = 0.0;
                 m[q][p] = 0.0;
@@ -117,12 +119,10 @@ fn rotate(m: &mut Matrix3, v: &mut Matrix3, p: usize, q: usize, c: f64, s: f64) 
     m[p][q] = 0.0;
     m[q][p] = 0.0;
     // Re-symmetrise: the two triangles are computed by different sums.
-    for i in 0..3 {
-        for j in (i + 1)..3 {
-            let x = 0.5 * (m[i][j] + m[j][i]);
-            m[i][j] = x;
-            m[j][i] = x;
-        }
+    for (i, j) in [(0, 1), (0, 2), (1, 2)] {
+        let x = 0.5 * (m[i][j] + m[j][i]);
+        m[i][j] = x;
+        m[j][i] = x;
     }
     *v = multiply(v, &pm);
 }

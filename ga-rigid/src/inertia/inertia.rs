@@ -111,7 +111,7 @@ impl Inertia {
         )?;
         let eigen = symmetric_eigen(j);
         let [i1, i2, i3] = eigen.values;
-        if !(i3 > 0.0) || i1.abs() <= DEGENERATE_RATIO * i3 {
+        if i3 <= 0.0 || i1.abs() <= DEGENERATE_RATIO * i3 {
             return Err(Error::degenerate(
                 field,
                 format!(

@@ -111,7 +111,8 @@ impl Mesh {
                         ));
                     }
                     for k in 1..polygon.len() - 1 {
-                        mesh.triangles.push([polygon[0], polygon[k], polygon[k + 1]]);
+                        mesh.triangles
+                            .push([polygon[0], polygon[k], polygon[k + 1]]);
                         face_lines.push(line_no);
                     }
                 }
@@ -131,7 +132,10 @@ impl Mesh {
             }
         }
         if mesh.triangles.is_empty() {
-            return Err(err(text.lines().count(), "the file has no faces".to_string()));
+            return Err(err(
+                text.lines().count(),
+                "the file has no faces".to_string(),
+            ));
         }
         Ok(mesh)
     }
@@ -235,8 +239,7 @@ impl Mesh {
             for i in 0..3 {
                 first[i] += det * s[i];
                 for j in 0..3 {
-                    second[i][j] +=
-                        det * (a[i] * a[j] + b[i] * b[j] + c[i] * c[j] + s[i] * s[j]);
+                    second[i][j] += det * (a[i] * a[j] + b[i] * b[j] + c[i] * c[j] + s[i] * s[j]);
                 }
             }
         }
@@ -290,7 +293,7 @@ impl Inertia {
         let rho = positive("density", "density", density)?;
         mesh.check_closed()?;
         let moments = mesh.moments();
-        if !(moments.volume > 0.0) {
+        if moments.volume.is_nan() || moments.volume <= 0.0 {
             return Err(Error::invalid(
                 "mesh",
                 format!(

@@ -12,7 +12,7 @@ pub use eigen::{
     determinant, identity, matrix_from_rotor, mul_vec, multiply, rotor_from_matrix,
     symmetric_eigen, transpose, Matrix3, SymmetricEigen,
 };
-pub use inertia::Inertia;
 pub(crate) use inertia::normalize_rotor;
+pub use inertia::Inertia;
 pub use mesh::{Mesh, MeshMoments};
 pub use solids::Solid;

@@ -13,7 +13,10 @@ impl Inertia {
     /// or `points[k]` (a non-positive or non-finite mass, a non-finite position).
     pub fn from_point_masses(points: &[(f64, [f64; 3])]) -> Result<Self, Error> {
         if points.is_empty() {
-            return Err(Error::degenerate("points", "the list of point masses is empty"));
+            return Err(Error::degenerate(
+                "points",
+                "the list of point masses is empty",
+            ));
         }
         let mut mass = 0.0;
         let mut moment = [0.0; 3];

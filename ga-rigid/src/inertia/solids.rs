@@ -182,9 +182,7 @@ fn centred(mass: f64, moments: [f64; 3], dimension: &str) -> Result<Inertia, Err
     } else {
         Err(Error::invalid(
             dimension,
-            format!(
-                "the moments {moments:?} are out of floating-point range: rescale the units"
-            ),
+            format!("the moments {moments:?} are out of floating-point range: rescale the units"),
         ))
     }
 }
