@@ -23,7 +23,8 @@ pub fn derive(input: syn::DeriveInput) -> syn::Result<TokenStream> {
     Ok(emit::module(&spec, &plan))
 }
 
-fn snake_case(name: &str) -> String {
+/// `SpaceTime` -> `space_time`: the derive form's module name.
+pub fn snake_case(name: &str) -> String {
     let mut out = String::new();
     for (i, c) in name.chars().enumerate() {
         if c.is_uppercase() {

@@ -49,8 +49,13 @@ pub fn algebra(input: TokenStream) -> TokenStream {
 #[proc_macro_derive(Algebra, attributes(algebra))]
 pub fn derive_algebra(input: TokenStream) -> TokenStream {
     let input = syn::parse_macro_input!(input as syn::DeriveInput);
+    let module = syn::Ident::new(
+        &expand::snake_case(&input.ident.to_string()),
+        input.ident.span(),
+    );
+    let vis = input.vis.clone();
     expand::derive(input)
-        .unwrap_or_else(|e| fallback::with_errors(e, None))
+        .unwrap_or_else(|e| fallback::with_errors(e, Some((&vis, &module))))
         .into()
 }
 

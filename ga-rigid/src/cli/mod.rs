@@ -8,6 +8,7 @@
 
 mod args;
 mod inertia_cmd;
+mod simulate;
 
 use std::ffi::OsString;
 use std::io::Write as _;
@@ -18,8 +19,9 @@ use clap::Parser;
 
 pub use args::{Cli, Command, InertiaArgs, Method, ReportArgs, SimulateArgs, Step, StepKind};
 pub use inertia_cmd::describe as describe_inertia;
+pub use simulate::{integrator_for, principal_body, run_simulation};
 
-use crate::csv::{to_csv, Row};
+use crate::csv::to_csv;
 use crate::error::Error;
 use crate::scene::Scene;
 
@@ -164,18 +166,6 @@ pub fn step_control(method: Method, dt: Option<f64>, tol: Option<f64>) -> Result
             "--dt and --tol are mutually exclusive: give one",
         )),
     }
-}
-
-/// The simulation hook: integrate `scene` with `method` and return one [`Row`] per
-/// sample time (`scene.run.times()`).
-///
-/// STUB: the integrators are wired in by the lead; until then every method fails with
-/// [`Error::NotAvailable`].
-pub fn run_simulation(scene: &Scene, method: Method, step: Step) -> Result<Vec<Row>, Error> {
-    let _ = (scene, step);
-    Err(Error::NotAvailable {
-        what: format!("--method {}", method.name()),
-    })
 }
 
 /// `inertia`: load the scene and print its body's mass properties.

@@ -33,6 +33,19 @@ impl RigidBody {
         })
     }
 
+    /// A torque-free body whose moments need only be finite and positive: the numerical
+    /// test problems of the literature (Hairer-Lubich-Wanner's (2, 1, 2/3)) break the
+    /// triangle inequality that real mass distributions keep, and Euler's equations do not
+    /// need it.
+    pub fn new_unphysical(moments: [f64; 3]) -> Result<Self, Error> {
+        crate::inertia::Inertia::from_principal_unphysical(moments)?;
+        Ok(RigidBody {
+            moments,
+            inverse_moments: moments.map(|i| 1.0 / i),
+            torque: None,
+        })
+    }
+
     /// The same body driven by `torque`.
     #[must_use]
     pub fn with_torque(mut self, torque: impl Torque + Send + Sync + 'static) -> Self {

@@ -11,9 +11,9 @@ fn main() {
     let a = Vector::new(1.0, 2.0, 3.0);
     let b = Vector::E2;
     let ab: Even = a * b;
-    assert_eq!(ab, Even::new(2.0, -1.0, 0.0, -3.0));
+    assert_eq!(ab, Even::new(2.0, 1.0, 0.0, -3.0));
     let outer: Bivector = a ^ b;
-    assert_eq!(outer, Bivector::new(-1.0, 0.0, -3.0));
+    assert_eq!(outer, Bivector::new(1.0, 0.0, -3.0));
     let inner: f64 = a | b;
     assert_eq!(inner, 2.0);
     let rotor = (Bivector::E12 * (-std::f64::consts::FRAC_PI_4)).exp();

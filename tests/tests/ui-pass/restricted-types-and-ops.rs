@@ -16,8 +16,8 @@ fn main() {
     let plane = Plane::new(1.0, 0.0);
     assert_eq!(Plane::LEN, 2);
     let x = Vector::E1;
-    let y: Vector = x * plane;
-    assert_eq!(y, Vector::new(0.0, 1.0, 0.0));
+    let y: Odd = x * plane;
+    assert_eq!(y, Odd::new(0.0, 1.0, 0.0, 0.0));
     let half_turn: Even = Vector::E1 * Vector::E2;
     let turned: Vector = half_turn.sandwich(Vector::E1);
     assert_eq!(turned, Vector::new(-1.0, 0.0, 0.0));

@@ -1,0 +1,70 @@
+//! The one interface every method implements, and the checks they share.
+
+use ga_core::f64::g3::{Bivector, Rotor};
+
+use crate::dynamics::{RigidBody, State};
+use crate::error::{self, Error};
+
+/// A method that advances a rigid body's [`State`] in time.
+///
+/// Fixed-step methods split `dt` into `ceil(|dt| / h)` equal sub-steps of at most their
+/// step `h`; adaptive methods choose their own steps. A step allocates nothing.
+pub trait Integrator {
+    /// A short lowercase name for tables and scene files (`rk4`, `splitting`, ...).
+    fn name(&self) -> &'static str;
+
+    /// The state at time `t + dt` from `state` at time `t`. `dt` may be zero (the state
+    /// comes back unchanged) or negative where the method supports it; an error if `dt` is
+    /// not finite, if the method cannot treat this body, or if the solution stops being
+    /// finite.
+    fn advance(&mut self, body: &RigidBody, t: f64, state: State, dt: f64) -> Result<State, Error>;
+}
+
+/// Check a method's step size: finite and positive.
+pub(crate) fn check_step(h: f64) -> Result<f64, Error> {
+    error::positive("step", "step", h)
+}
+
+/// The number of equal sub-steps of at most `h` that cover `dt`, and their signed length.
+pub(crate) fn substeps(h: f64, dt: f64) -> Result<(u64, f64), Error> {
+    error::finite("dt", "time step", dt)?;
+    if dt == 0.0 {
+        return Ok((0, 0.0));
+    }
+    let n = (dt.abs() / h).ceil().max(1.0);
+    if n > u64::MAX as f64 {
+        return Err(Error::invalid(
+            "dt",
+            format!("{dt} needs more than 2^64 sub-steps of {h}"),
+        ));
+    }
+    // `as` saturates and `n` is a positive whole number below 2^64 here.
+    Ok((n as u64, dt / n))
+}
+
+/// An error naming the method unless every component of `state` is finite.
+pub(crate) fn check_finite(method: &'static str, state: State) -> Result<State, Error> {
+    let Rotor { s, e12, e13, e23 } = state.rotor;
+    let Bivector {
+        e12: o12,
+        e13: o13,
+        e23: o23,
+    } = state.omega;
+    for value in [s, e12, e13, e23, o12, o13, o23] {
+        if !value.is_finite() {
+            return Err(Error::NotFinite {
+                field: method.to_string(),
+                what: "the integrated state",
+                value,
+            });
+        }
+    }
+    Ok(state)
+}
+
+/// The rotor scaled to unit norm (the sign kept).
+#[inline]
+#[must_use]
+pub(crate) fn unit(rotor: Rotor) -> Rotor {
+    rotor / rotor.norm()
+}

@@ -1,0 +1,20 @@
+//! Time-stepping methods for the rigid body of [`crate::dynamics`]: one file per method,
+//! each citing the paper it follows, all behind the one [`Integrator`] trait.
+
+mod closed_form;
+mod dopri;
+mod exact;
+mod integrator;
+mod lie_rk4;
+mod midpoint;
+mod rk4;
+mod splitting;
+
+pub use closed_form::ClosedForm;
+pub use dopri::{DormandPrince, DormandPrinceStats};
+pub use exact::ExactFreeBody;
+pub use integrator::Integrator;
+pub use lie_rk4::LieRk4;
+pub use midpoint::ImplicitMidpoint;
+pub use rk4::Rk4;
+pub use splitting::Splitting;
