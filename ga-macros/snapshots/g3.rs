@@ -232,7 +232,7 @@ pub mod g3 {
             let mut rest = blade;
             let mut factors = [Vector::ZERO; 1usize];
             for slot in factors.iter_mut().take(1usize - 1) {
-                let inverse = multivector_inverse(rest)?;
+                let inverse = mv_blade_inverse(rest)?;
                 let mut best = Vector::ZERO;
                 let mut best_size: f64 = 0.0;
                 for basis in [
@@ -249,17 +249,15 @@ pub mod g3 {
                         e2: projected.e2,
                         e3: projected.e3,
                     };
-                    let candidate_size = candidate
-                        .to_array()
-                        .iter()
-                        .map(|c| c * c)
-                        .sum::<f64>();
+                    let candidate_size = (candidate.e1 * candidate.e1
+                        + candidate.e2 * candidate.e2 + candidate.e3 * candidate.e3)
+                        .abs();
                     if candidate_size > best_size {
                         best = candidate;
                         best_size = candidate_size;
                     }
                 }
-                let best_inverse = multivector_inverse(Multivector::from(best))?;
+                let best_inverse = mv_blade_inverse(Multivector::from(best))?;
                 rest = mv_geometric(best_inverse, rest);
                 *slot = best;
             }
@@ -279,7 +277,12 @@ pub mod g3 {
                 .map(|(p, b)| (p - b) * (p - b))
                 .sum::<f64>()
                 .sqrt();
-            if error <= 1024.0 * f64::EPSILON * size { Some(factors) } else { None }
+            let scale = factors
+                .iter()
+                .map(|f| f.to_array().iter().map(|c| c * c).sum::<f64>().sqrt())
+                .product::<f64>()
+                .max(size);
+            if error <= 1024.0 * f64::EPSILON * scale { Some(factors) } else { None }
         }
     }
     ///A grade-2 multivector: components e12, e13, e23.
@@ -480,7 +483,7 @@ pub mod g3 {
             let mut rest = blade;
             let mut factors = [Vector::ZERO; 2usize];
             for slot in factors.iter_mut().take(2usize - 1) {
-                let inverse = multivector_inverse(rest)?;
+                let inverse = mv_blade_inverse(rest)?;
                 let mut best = Vector::ZERO;
                 let mut best_size: f64 = 0.0;
                 for basis in [
@@ -497,17 +500,15 @@ pub mod g3 {
                         e2: projected.e2,
                         e3: projected.e3,
                     };
-                    let candidate_size = candidate
-                        .to_array()
-                        .iter()
-                        .map(|c| c * c)
-                        .sum::<f64>();
+                    let candidate_size = (candidate.e1 * candidate.e1
+                        + candidate.e2 * candidate.e2 + candidate.e3 * candidate.e3)
+                        .abs();
                     if candidate_size > best_size {
                         best = candidate;
                         best_size = candidate_size;
                     }
                 }
-                let best_inverse = multivector_inverse(Multivector::from(best))?;
+                let best_inverse = mv_blade_inverse(Multivector::from(best))?;
                 rest = mv_geometric(best_inverse, rest);
                 *slot = best;
             }
@@ -527,7 +528,12 @@ pub mod g3 {
                 .map(|(p, b)| (p - b) * (p - b))
                 .sum::<f64>()
                 .sqrt();
-            if error <= 1024.0 * f64::EPSILON * size { Some(factors) } else { None }
+            let scale = factors
+                .iter()
+                .map(|f| f.to_array().iter().map(|c| c * c).sum::<f64>().sqrt())
+                .product::<f64>()
+                .max(size);
+            if error <= 1024.0 * f64::EPSILON * scale { Some(factors) } else { None }
         }
     }
     ///A grade-3 multivector: components e123.
@@ -682,7 +688,7 @@ pub mod g3 {
             let mut rest = blade;
             let mut factors = [Vector::ZERO; 3usize];
             for slot in factors.iter_mut().take(3usize - 1) {
-                let inverse = multivector_inverse(rest)?;
+                let inverse = mv_blade_inverse(rest)?;
                 let mut best = Vector::ZERO;
                 let mut best_size: f64 = 0.0;
                 for basis in [
@@ -699,17 +705,15 @@ pub mod g3 {
                         e2: projected.e2,
                         e3: projected.e3,
                     };
-                    let candidate_size = candidate
-                        .to_array()
-                        .iter()
-                        .map(|c| c * c)
-                        .sum::<f64>();
+                    let candidate_size = (candidate.e1 * candidate.e1
+                        + candidate.e2 * candidate.e2 + candidate.e3 * candidate.e3)
+                        .abs();
                     if candidate_size > best_size {
                         best = candidate;
                         best_size = candidate_size;
                     }
                 }
-                let best_inverse = multivector_inverse(Multivector::from(best))?;
+                let best_inverse = mv_blade_inverse(Multivector::from(best))?;
                 rest = mv_geometric(best_inverse, rest);
                 *slot = best;
             }
@@ -729,7 +733,12 @@ pub mod g3 {
                 .map(|(p, b)| (p - b) * (p - b))
                 .sum::<f64>()
                 .sqrt();
-            if error <= 1024.0 * f64::EPSILON * size { Some(factors) } else { None }
+            let scale = factors
+                .iter()
+                .map(|f| f.to_array().iter().map(|c| c * c).sum::<f64>().sqrt())
+                .product::<f64>()
+                .max(size);
+            if error <= 1024.0 * f64::EPSILON * scale { Some(factors) } else { None }
         }
     }
     ///An even multivector (a rotor when unit): components s, e12, e13, e23.
@@ -7955,6 +7964,28 @@ pub mod g3 {
         } else {
             None
         }
+    }
+    /// The inverse of a blade (or any `A` with `A ~A` a scalar): `~A / <A ~A>`, exact
+    /// where a general linear solve would lose digits; `None` for a null blade.
+    #[allow(dead_code)]
+    fn mv_blade_inverse(a: Multivector) -> Option<Multivector> {
+        let norm_squared: f64 = a.s * a.s + a.e1 * a.e1 + a.e2 * a.e2 + a.e3 * a.e3
+            + a.e12 * a.e12 + a.e13 * a.e13 + a.e23 * a.e23 + a.e123 * a.e123;
+        if norm_squared == 0.0 || !norm_squared.is_finite() {
+            return None;
+        }
+        let reverse = Multivector {
+            s: a.s,
+            e1: a.e1,
+            e2: a.e2,
+            e3: a.e3,
+            e12: -a.e12,
+            e13: -a.e13,
+            e23: -a.e23,
+            e123: -a.e123,
+        };
+        let scale = 1.0 / norm_squared;
+        Some(Multivector::from_array(reverse.to_array().map(|c| c * scale)))
     }
     #[allow(dead_code)]
     fn mv_geometric(a: Multivector, b: Multivector) -> Multivector {

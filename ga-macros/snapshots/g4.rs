@@ -245,7 +245,7 @@ pub mod g4 {
             let mut rest = blade;
             let mut factors = [Vector::ZERO; 1usize];
             for slot in factors.iter_mut().take(1usize - 1) {
-                let inverse = multivector_inverse(rest)?;
+                let inverse = mv_blade_inverse(rest)?;
                 let mut best = Vector::ZERO;
                 let mut best_size: f64 = 0.0;
                 for basis in [
@@ -264,17 +264,16 @@ pub mod g4 {
                         e3: projected.e3,
                         e4: projected.e4,
                     };
-                    let candidate_size = candidate
-                        .to_array()
-                        .iter()
-                        .map(|c| c * c)
-                        .sum::<f64>();
+                    let candidate_size = (candidate.e1 * candidate.e1
+                        + candidate.e2 * candidate.e2 + candidate.e3 * candidate.e3
+                        + candidate.e4 * candidate.e4)
+                        .abs();
                     if candidate_size > best_size {
                         best = candidate;
                         best_size = candidate_size;
                     }
                 }
-                let best_inverse = multivector_inverse(Multivector::from(best))?;
+                let best_inverse = mv_blade_inverse(Multivector::from(best))?;
                 rest = mv_geometric(best_inverse, rest);
                 *slot = best;
             }
@@ -295,7 +294,12 @@ pub mod g4 {
                 .map(|(p, b)| (p - b) * (p - b))
                 .sum::<f64>()
                 .sqrt();
-            if error <= 1024.0 * f64::EPSILON * size { Some(factors) } else { None }
+            let scale = factors
+                .iter()
+                .map(|f| f.to_array().iter().map(|c| c * c).sum::<f64>().sqrt())
+                .product::<f64>()
+                .max(size);
+            if error <= 1024.0 * f64::EPSILON * scale { Some(factors) } else { None }
         }
     }
     ///A grade-2 multivector: components e12, e13, e14, e23, e24, e34.
@@ -549,7 +553,7 @@ pub mod g4 {
             let mut rest = blade;
             let mut factors = [Vector::ZERO; 2usize];
             for slot in factors.iter_mut().take(2usize - 1) {
-                let inverse = multivector_inverse(rest)?;
+                let inverse = mv_blade_inverse(rest)?;
                 let mut best = Vector::ZERO;
                 let mut best_size: f64 = 0.0;
                 for basis in [
@@ -568,17 +572,16 @@ pub mod g4 {
                         e3: projected.e3,
                         e4: projected.e4,
                     };
-                    let candidate_size = candidate
-                        .to_array()
-                        .iter()
-                        .map(|c| c * c)
-                        .sum::<f64>();
+                    let candidate_size = (candidate.e1 * candidate.e1
+                        + candidate.e2 * candidate.e2 + candidate.e3 * candidate.e3
+                        + candidate.e4 * candidate.e4)
+                        .abs();
                     if candidate_size > best_size {
                         best = candidate;
                         best_size = candidate_size;
                     }
                 }
-                let best_inverse = multivector_inverse(Multivector::from(best))?;
+                let best_inverse = mv_blade_inverse(Multivector::from(best))?;
                 rest = mv_geometric(best_inverse, rest);
                 *slot = best;
             }
@@ -599,7 +602,12 @@ pub mod g4 {
                 .map(|(p, b)| (p - b) * (p - b))
                 .sum::<f64>()
                 .sqrt();
-            if error <= 1024.0 * f64::EPSILON * size { Some(factors) } else { None }
+            let scale = factors
+                .iter()
+                .map(|f| f.to_array().iter().map(|c| c * c).sum::<f64>().sqrt())
+                .product::<f64>()
+                .max(size);
+            if error <= 1024.0 * f64::EPSILON * scale { Some(factors) } else { None }
         }
     }
     ///A grade-3 multivector: components e123, e124, e134, e234.
@@ -806,7 +814,7 @@ pub mod g4 {
             let mut rest = blade;
             let mut factors = [Vector::ZERO; 3usize];
             for slot in factors.iter_mut().take(3usize - 1) {
-                let inverse = multivector_inverse(rest)?;
+                let inverse = mv_blade_inverse(rest)?;
                 let mut best = Vector::ZERO;
                 let mut best_size: f64 = 0.0;
                 for basis in [
@@ -825,17 +833,16 @@ pub mod g4 {
                         e3: projected.e3,
                         e4: projected.e4,
                     };
-                    let candidate_size = candidate
-                        .to_array()
-                        .iter()
-                        .map(|c| c * c)
-                        .sum::<f64>();
+                    let candidate_size = (candidate.e1 * candidate.e1
+                        + candidate.e2 * candidate.e2 + candidate.e3 * candidate.e3
+                        + candidate.e4 * candidate.e4)
+                        .abs();
                     if candidate_size > best_size {
                         best = candidate;
                         best_size = candidate_size;
                     }
                 }
-                let best_inverse = multivector_inverse(Multivector::from(best))?;
+                let best_inverse = mv_blade_inverse(Multivector::from(best))?;
                 rest = mv_geometric(best_inverse, rest);
                 *slot = best;
             }
@@ -856,7 +863,12 @@ pub mod g4 {
                 .map(|(p, b)| (p - b) * (p - b))
                 .sum::<f64>()
                 .sqrt();
-            if error <= 1024.0 * f64::EPSILON * size { Some(factors) } else { None }
+            let scale = factors
+                .iter()
+                .map(|f| f.to_array().iter().map(|c| c * c).sum::<f64>().sqrt())
+                .product::<f64>()
+                .max(size);
+            if error <= 1024.0 * f64::EPSILON * scale { Some(factors) } else { None }
         }
     }
     ///A grade-4 multivector: components e1234.
@@ -1011,7 +1023,7 @@ pub mod g4 {
             let mut rest = blade;
             let mut factors = [Vector::ZERO; 4usize];
             for slot in factors.iter_mut().take(4usize - 1) {
-                let inverse = multivector_inverse(rest)?;
+                let inverse = mv_blade_inverse(rest)?;
                 let mut best = Vector::ZERO;
                 let mut best_size: f64 = 0.0;
                 for basis in [
@@ -1030,17 +1042,16 @@ pub mod g4 {
                         e3: projected.e3,
                         e4: projected.e4,
                     };
-                    let candidate_size = candidate
-                        .to_array()
-                        .iter()
-                        .map(|c| c * c)
-                        .sum::<f64>();
+                    let candidate_size = (candidate.e1 * candidate.e1
+                        + candidate.e2 * candidate.e2 + candidate.e3 * candidate.e3
+                        + candidate.e4 * candidate.e4)
+                        .abs();
                     if candidate_size > best_size {
                         best = candidate;
                         best_size = candidate_size;
                     }
                 }
-                let best_inverse = multivector_inverse(Multivector::from(best))?;
+                let best_inverse = mv_blade_inverse(Multivector::from(best))?;
                 rest = mv_geometric(best_inverse, rest);
                 *slot = best;
             }
@@ -1061,7 +1072,12 @@ pub mod g4 {
                 .map(|(p, b)| (p - b) * (p - b))
                 .sum::<f64>()
                 .sqrt();
-            if error <= 1024.0 * f64::EPSILON * size { Some(factors) } else { None }
+            let scale = factors
+                .iter()
+                .map(|f| f.to_array().iter().map(|c| c * c).sum::<f64>().sqrt())
+                .product::<f64>()
+                .max(size);
+            if error <= 1024.0 * f64::EPSILON * scale { Some(factors) } else { None }
         }
     }
     ///An even multivector (a rotor when unit): components s, e12, e13, e14, e23, e24, e34, e1234.
@@ -14807,6 +14823,38 @@ pub mod g4 {
         } else {
             None
         }
+    }
+    /// The inverse of a blade (or any `A` with `A ~A` a scalar): `~A / <A ~A>`, exact
+    /// where a general linear solve would lose digits; `None` for a null blade.
+    #[allow(dead_code)]
+    fn mv_blade_inverse(a: Multivector) -> Option<Multivector> {
+        let norm_squared: f64 = a.s * a.s + a.e1 * a.e1 + a.e2 * a.e2 + a.e3 * a.e3
+            + a.e4 * a.e4 + a.e12 * a.e12 + a.e13 * a.e13 + a.e14 * a.e14 + a.e23 * a.e23
+            + a.e24 * a.e24 + a.e34 * a.e34 + a.e123 * a.e123 + a.e124 * a.e124
+            + a.e134 * a.e134 + a.e234 * a.e234 + a.e1234 * a.e1234;
+        if norm_squared == 0.0 || !norm_squared.is_finite() {
+            return None;
+        }
+        let reverse = Multivector {
+            s: a.s,
+            e1: a.e1,
+            e2: a.e2,
+            e3: a.e3,
+            e4: a.e4,
+            e12: -a.e12,
+            e13: -a.e13,
+            e14: -a.e14,
+            e23: -a.e23,
+            e24: -a.e24,
+            e34: -a.e34,
+            e123: -a.e123,
+            e124: -a.e124,
+            e134: -a.e134,
+            e234: -a.e234,
+            e1234: a.e1234,
+        };
+        let scale = 1.0 / norm_squared;
+        Some(Multivector::from_array(reverse.to_array().map(|c| c * scale)))
     }
     #[allow(dead_code)]
     fn mv_geometric(a: Multivector, b: Multivector) -> Multivector {

@@ -1,4 +1,5 @@
-//! The six algebras under test, and their embedding in the reference.
+//! The six algebras under test, and their embedding in the reference (with the
+//! `f32` G2, G3 and G4 of `ga_core::f32`, checked to single-precision tolerance).
 //!
 //! G2, G3 and G4 are `ga_core::f64`'s; the space-time algebra, 3D projective
 //! geometric algebra and 3D conformal geometric algebra are generated here, once,
@@ -30,29 +31,78 @@ ga_macros::algebra! {
 }
 
 mod embedding {
+    mod g2_f32 {
+        use ga_core::f32::g2::*;
+        crate::embed_types!(f32; Vector, Bivector, Even, Odd, Multivector);
+    }
+    mod g3_f32 {
+        use ga_core::f32::g3::*;
+        crate::embed_types!(f32; Vector, Bivector, Trivector, Even, Odd, Multivector);
+    }
+    mod g4_f32 {
+        use ga_core::f32::g4::*;
+        crate::embed_types!(
+            f32;
+            Vector,
+            Bivector,
+            Trivector,
+            Quadvector,
+            Even,
+            Odd,
+            Multivector
+        );
+    }
     mod g2 {
         use ga_core::f64::g2::*;
-        crate::embed_types!(Vector, Bivector, Even, Odd, Multivector);
+        crate::embed_types!(f64; Vector, Bivector, Even, Odd, Multivector);
     }
     mod g3 {
         use ga_core::f64::g3::*;
-        crate::embed_types!(Vector, Bivector, Trivector, Even, Odd, Multivector);
+        crate::embed_types!(f64; Vector, Bivector, Trivector, Even, Odd, Multivector);
     }
     mod g4 {
         use ga_core::f64::g4::*;
-        crate::embed_types!(Vector, Bivector, Trivector, Quadvector, Even, Odd, Multivector);
+        crate::embed_types!(
+            f64;
+            Vector,
+            Bivector,
+            Trivector,
+            Quadvector,
+            Even,
+            Odd,
+            Multivector
+        );
     }
     mod sta {
         use crate::algebras::sta::*;
-        crate::embed_types!(Vector, Bivector, Trivector, Quadvector, Even, Odd, Multivector);
+        crate::embed_types!(
+            f64;
+            Vector,
+            Bivector,
+            Trivector,
+            Quadvector,
+            Even,
+            Odd,
+            Multivector
+        );
     }
     mod pga {
         use crate::algebras::pga::*;
-        crate::embed_types!(Vector, Bivector, Trivector, Quadvector, Even, Odd, Multivector);
+        crate::embed_types!(
+            f64;
+            Vector,
+            Bivector,
+            Trivector,
+            Quadvector,
+            Even,
+            Odd,
+            Multivector
+        );
     }
     mod cga {
         use crate::algebras::cga::*;
         crate::embed_types!(
+            f64;
             Vector,
             Bivector,
             Trivector,

@@ -149,18 +149,18 @@ macro_rules! assert_close {
     ($actual:expr, $expected:expr $(,)?) => {
         $crate::assert_close!($actual, $expected, rel = 1e-12)
     };
-    ($actual:expr, $expected:expr, rel = $rel:expr $(, $($context:tt)+)?) => {{
+    ($actual:expr, $expected:expr, rel = $rel:expr $(, $fmt:literal $(, $arg:expr)*)? $(,)?) => {{
         let actual = $crate::close::Components::components(&$actual);
         let expected = $crate::close::Components::components(&$expected);
         let scale = $crate::close::magnitude(&actual, &expected);
-        $crate::assert_close!(actual, expected, scale = scale, rel = $rel $(, $($context)+)?)
+        $crate::assert_close!(actual, expected, scale = scale, rel = $rel $(, $fmt $(, $arg)*)?)
     }};
-    ($actual:expr, $expected:expr, scale = $scale:expr, rel = $rel:expr $(, $($context:tt)+)?) => {{
+    ($actual:expr, $expected:expr, scale = $scale:expr, rel = $rel:expr $(, $fmt:literal $(, $arg:expr)*)? $(,)?) => {{
         let actual = $crate::close::Components::components(&$actual);
         let expected = $crate::close::Components::components(&$expected);
         let scale = $crate::close::Scale::per_component(&$scale, actual.len());
         if let Err(report) = $crate::close::compare(&actual, &expected, &scale, $rel) {
-            let context: String = ::std::string::String::new() $(+ &format!($($context)+))?;
+            let context: String = ::std::string::String::new() $(+ &format!($fmt $(, $arg)*))?;
             panic!(
                 "assert_close!({}, {}) failed {}\n{}",
                 stringify!($actual),
@@ -179,18 +179,18 @@ macro_rules! prop_assert_close {
     ($actual:expr, $expected:expr $(,)?) => {
         $crate::prop_assert_close!($actual, $expected, rel = 1e-12)
     };
-    ($actual:expr, $expected:expr, rel = $rel:expr $(, $($context:tt)+)?) => {{
+    ($actual:expr, $expected:expr, rel = $rel:expr $(, $fmt:literal $(, $arg:expr)*)? $(,)?) => {{
         let actual = $crate::close::Components::components(&$actual);
         let expected = $crate::close::Components::components(&$expected);
         let scale = $crate::close::magnitude(&actual, &expected);
-        $crate::prop_assert_close!(actual, expected, scale = scale, rel = $rel $(, $($context)+)?)
+        $crate::prop_assert_close!(actual, expected, scale = scale, rel = $rel $(, $fmt $(, $arg)*)?)
     }};
-    ($actual:expr, $expected:expr, scale = $scale:expr, rel = $rel:expr $(, $($context:tt)+)?) => {{
+    ($actual:expr, $expected:expr, scale = $scale:expr, rel = $rel:expr $(, $fmt:literal $(, $arg:expr)*)? $(,)?) => {{
         let actual = $crate::close::Components::components(&$actual);
         let expected = $crate::close::Components::components(&$expected);
         let scale = $crate::close::Scale::per_component(&$scale, actual.len());
         if let Err(report) = $crate::close::compare(&actual, &expected, &scale, $rel) {
-            let context: String = ::std::string::String::new() $(+ &format!($($context)+))?;
+            let context: String = ::std::string::String::new() $(+ &format!($fmt $(, $arg)*))?;
             return Err(::proptest::test_runner::TestCaseError::fail(format!(
                 "prop_assert_close!({}, {}) failed {}\n{}",
                 stringify!($actual),

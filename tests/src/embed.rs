@@ -32,10 +32,18 @@ pub trait Embed<M>: Copy {
 /// blades, holding the values `1..=len`.
 #[must_use]
 pub fn blades_from_debug(text: &str, len: usize) -> Vec<usize> {
-    let open = text.find('{').unwrap_or_else(|| panic!("no fields in {text}"));
-    let close = text.rfind('}').unwrap_or_else(|| panic!("no fields in {text}"));
+    let open = text
+        .find('{')
+        .unwrap_or_else(|| panic!("no fields in {text}"));
+    let close = text
+        .rfind('}')
+        .unwrap_or_else(|| panic!("no fields in {text}"));
     let mut blades = vec![None; len];
-    for field in text[open + 1..close].split(',').map(str::trim).filter(|f| !f.is_empty()) {
+    for field in text[open + 1..close]
+        .split(',')
+        .map(str::trim)
+        .filter(|f| !f.is_empty())
+    {
         let (name, value) = field
             .split_once(':')
             .unwrap_or_else(|| panic!("not a field: {field} in {text}"));
@@ -60,10 +68,12 @@ pub fn blades_from_debug(text: &str, len: usize) -> Vec<usize> {
 }
 
 /// Implements [`Embed`] for the listed types of the algebra in scope (its
-/// `Multivector` must be in scope) and for the scalar `f64`, named `Scalar`.
+/// `Multivector` must be in scope) and for its scalar type (`f64` or `f32`),
+/// named `Scalar`. The reference is `f64`: an `f32` algebra's values widen
+/// exactly on the way out and round on the way in.
 #[macro_export]
 macro_rules! embed_types {
-    ($($ty:ident),* $(,)?) => {
+    ($scalar:ident; $($ty:ident),* $(,)?) => {
         $(
             impl $crate::embed::Embed<Multivector> for $ty {
                 const NAME: &'static str = stringify!($ty);
@@ -74,7 +84,7 @@ macro_rules! embed_types {
                     BLADES.get_or_init(|| {
                         let mut values = <$ty>::ZERO.to_array();
                         for (k, value) in values.iter_mut().enumerate() {
-                            *value = (k + 1) as f64;
+                            *value = (k + 1) as $scalar;
                         }
                         let text = format!("{:?}", <$ty>::from_array(values));
                         $crate::embed::blades_from_debug(&text, values.len())
@@ -85,7 +95,7 @@ macro_rules! embed_types {
                     let mut dense = vec![0.0; Multivector::ZERO.to_array().len()];
                     let blades = <Self as $crate::embed::Embed<Multivector>>::blades();
                     for (&blade, value) in blades.iter().zip(self.to_array()) {
-                        dense[blade] = value;
+                        dense[blade] = f64::from(value);
                     }
                     dense
                 }
@@ -94,14 +104,14 @@ macro_rules! embed_types {
                     let mut values = <$ty>::ZERO.to_array();
                     let blades = <Self as $crate::embed::Embed<Multivector>>::blades();
                     for (value, &blade) in values.iter_mut().zip(blades) {
-                        *value = dense[blade];
+                        *value = dense[blade] as $scalar;
                     }
                     <$ty>::from_array(values)
                 }
             }
         )*
 
-        impl $crate::embed::Embed<Multivector> for f64 {
+        impl $crate::embed::Embed<Multivector> for $scalar {
             const NAME: &'static str = "Scalar";
 
             fn blades() -> &'static [usize] {
@@ -110,12 +120,12 @@ macro_rules! embed_types {
 
             fn to_reference(self) -> ::std::vec::Vec<f64> {
                 let mut dense = vec![0.0; Multivector::ZERO.to_array().len()];
-                dense[0] = self;
+                dense[0] = f64::from(self);
                 dense
             }
 
             fn from_reference(dense: &[f64]) -> Self {
-                dense[0]
+                dense[0] as $scalar
             }
         }
     };

@@ -2,18 +2,24 @@
 //! geometric algebra to check the generated ones against.
 //!
 //! - [`blade`]: blades as bitmasks, reordering signs, canonical order, names;
-//! - [`reference`]: dense multivectors over any metric of squares 1, -1, 0, with
+//! - [`reference`](mod@reference): dense multivectors over any metric of squares 1, -1, 0, with
 //!   every product, involution, dual, `exp` and `inverse` written from the
 //!   definitions of the lecture;
 //! - [`close`]: [`assert_close!`] and [`prop_assert_close!`];
+//! - [`embed`]: the generated types seen as dense reference multivectors, their
+//!   blades read from their field names;
+//! - [`algebras`]: the six algebras under test (STA, PGA and CGA generated here)
+//!   and the macros that enumerate them and their type pairs;
 //! - [`harness`]: the fixed-seed proptest drivers that check tables of generated
 //!   operations against the reference.
 //!
 //! None of this shares code with `ga-macros`: it is a second, deliberately naive
 //! implementation, so that the two can only agree by both being right.
 
+pub mod algebras;
 pub mod blade;
 pub mod close;
+pub mod embed;
 pub mod harness;
 pub mod reference;
 

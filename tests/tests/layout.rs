@@ -4,7 +4,6 @@
 
 use ga_tests::blade::{binomial, blades_of_grades, canonical_blades, grades_of_type};
 use ga_tests::harness::{dense, run};
-use ga_tests::prop_assert_close;
 
 macro_rules! layout_tests {
     (
@@ -52,11 +51,24 @@ macro_rules! layout_tests {
                         let direct = <$ty as Embed<Multivector>>::to_reference(value);
                         let expected: Vec<f64> = (0..x.len())
                             .map(|blade| {
-                                if <$ty as Embed<Multivector>>::blades().contains(&blade) { x[blade] } else { 0.0 }
+                                let held = <$ty as Embed<Multivector>>::blades().contains(&blade);
+                                if held { x[blade] } else { 0.0 }
                             })
                             .collect();
-                        prop_assert_close!(direct, expected, rel = 0.0, "round trip of {}", stringify!($ty));
-                        prop_assert_close!(ga_tests::dense!(value), expected, rel = 0.0, "Multivector::from({})", stringify!($ty));
+                        prop_assert_close!(
+                            direct,
+                            expected,
+                            rel = 0.0,
+                            "round trip of {}",
+                            stringify!($ty),
+                        );
+                        prop_assert_close!(
+                            ga_tests::dense!(value),
+                            expected,
+                            rel = 0.0,
+                            "Multivector::from({})",
+                            stringify!($ty),
+                        );
                     )*
                     Ok(())
                 });

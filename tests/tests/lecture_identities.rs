@@ -4,7 +4,7 @@
 
 use ga_tests::blade::grades_of_type;
 use ga_tests::harness::{dense, run};
-use ga_tests::{prop_assert_close, Algebra};
+use ga_tests::Algebra;
 
 /// The sum of the absolute values of the components.
 fn l1(x: &[f64]) -> f64 {
@@ -12,7 +12,7 @@ fn l1(x: &[f64]) -> f64 {
 }
 
 /// One generated product of a pair of homogeneous types: the grades of the two
-/// operands and the dense product.
+/// operands, the dense product, and the product of the operands' magnitudes.
 type GradedProduct = fn(&[f64], &[f64]) -> (usize, usize, Vec<f64>, f64);
 
 macro_rules! push_graded_product {
@@ -90,7 +90,12 @@ macro_rules! lecture_tests {
                 run(64, &(dense(SIZE), dense(SIZE), dense(SIZE)), |(x, y, z)| {
                     let (a, b, c) = (mv(&x), mv(&y), mv(&z));
                     let scale = l1(&x) * l1(&y) * l1(&z);
-                    prop_assert_close!(dense!((a * b) * c), dense!(a * (b * c)), scale = scale, rel = 1e-12);
+                    prop_assert_close!(
+                        dense!((a * b) * c),
+                        dense!(a * (b * c)),
+                        scale = scale,
+                        rel = 1e-12,
+                    );
                     Ok(())
                 });
             }
@@ -101,8 +106,18 @@ macro_rules! lecture_tests {
                 run(64, &(dense(SIZE), dense(SIZE), dense(SIZE)), |(x, y, z)| {
                     let (a, b, c) = (mv(&x), mv(&y), mv(&z));
                     let scale = l1(&x) * (l1(&y) + l1(&z));
-                    prop_assert_close!(dense!(a * (b + c)), dense!(a * b + a * c), scale = scale, rel = 1e-12);
-                    prop_assert_close!(dense!((b + c) * a), dense!(b * a + c * a), scale = scale, rel = 1e-12);
+                    prop_assert_close!(
+                        dense!(a * (b + c)),
+                        dense!(a * b + a * c),
+                        scale = scale,
+                        rel = 1e-12,
+                    );
+                    prop_assert_close!(
+                        dense!((b + c) * a),
+                        dense!(b * a + c * a),
+                        scale = scale,
+                        rel = 1e-12,
+                    );
                     Ok(())
                 });
             }
@@ -115,8 +130,15 @@ macro_rules! lecture_tests {
                     let a = vector(&x);
                     let square = dense!(a * a);
                     let mut expected = vec![0.0; SIZE];
-                    expected[0] = (0..$dim).map(|i| f64::from(metric[i]) * x[1 << i] * x[1 << i]).sum();
-                    prop_assert_close!(square, expected, scale = l1(&vector_part(&x)).powi(2), rel = 1e-12);
+                    expected[0] = (0..$dim)
+                        .map(|i| f64::from(metric[i]) * x[1 << i] * x[1 << i])
+                        .sum();
+                    prop_assert_close!(
+                        square,
+                        expected,
+                        scale = l1(&vector_part(&x)).powi(2),
+                        rel = 1e-12,
+                    );
                     Ok(())
                 });
             }
@@ -167,15 +189,41 @@ macro_rules! lecture_tests {
                         let sign = if r % 2 == 0 { 1.0 } else { -1.0 };
                         let (a_big, big_a) = (dense!(a * big), dense!(big * a));
                         let (inner, outer) = (dense!(a | big), dense!(a ^ big));
-                        let scale = l1(&vector_part(&x)) * l1(&<$grade_type as Embed<Multivector>>::to_reference(big));
+                        let big_part = <$grade_type as Embed<Multivector>>::to_reference(big);
+                        let scale = l1(&vector_part(&x)) * l1(&big_part);
                         let what = stringify!($grade_type);
-                        prop_assert_close!(a_big, algebra.add(&inner, &outer), scale = scale, rel = 1e-12, "a {what}");
-                        let lowered = algebra.scale(&algebra.sub(&a_big, &algebra.scale(&big_a, sign)), 0.5);
-                        let raised = algebra.scale(&algebra.add(&a_big, &algebra.scale(&big_a, sign)), 0.5);
-                        prop_assert_close!(inner, lowered, scale = scale, rel = 1e-12, "a . {what}");
+                        prop_assert_close!(
+                            a_big,
+                            algebra.add(&inner, &outer),
+                            scale = scale,
+                            rel = 1e-12,
+                            "a {what}",
+                        );
+                        let signed_big_a = algebra.scale(&big_a, sign);
+                        let lowered = algebra.scale(&algebra.sub(&a_big, &signed_big_a), 0.5);
+                        let raised = algebra.scale(&algebra.add(&a_big, &signed_big_a), 0.5);
+                        prop_assert_close!(
+                            inner,
+                            lowered,
+                            scale = scale,
+                            rel = 1e-12,
+                            "a . {what}",
+                        );
                         prop_assert_close!(outer, raised, scale = scale, rel = 1e-12, "a ^ {what}");
-                        prop_assert_close!(inner, algebra.grade(&inner, r - 1), scale = scale, rel = 1e-12, "grade of a . {what}");
-                        prop_assert_close!(outer, algebra.grade(&outer, r + 1), scale = scale, rel = 1e-12, "grade of a ^ {what}");
+                        prop_assert_close!(
+                            inner,
+                            algebra.grade(&inner, r - 1),
+                            scale = scale,
+                            rel = 1e-12,
+                            "grade of a . {what}",
+                        );
+                        prop_assert_close!(
+                            outer,
+                            algebra.grade(&outer, r + 1),
+                            scale = scale,
+                            rel = 1e-12,
+                            "grade of a ^ {what}",
+                        );
                     )*
                     Ok(())
                 });
@@ -186,7 +234,9 @@ macro_rules! lecture_tests {
             fn product_of_grades_r_and_s_has_grades_from_difference_to_sum_in_steps_of_two() {
                 let algebra = algebra();
                 let mut cases: Vec<GradedProduct> = Vec::new();
-                ga_tests::cartesian!(push_graded_product!(cases); [$($grade_type),*]; [$($grade_type),*]);
+                ga_tests::cartesian!(
+                    push_graded_product!(cases); [$($grade_type),*]; [$($grade_type),*]
+                );
                 run(64, &(dense(SIZE), dense(SIZE)), |(x, y)| {
                     for case in &cases {
                         let (r, s, product, scale) = case(&x, &y);
@@ -194,7 +244,13 @@ macro_rules! lecture_tests {
                         for t in (r.abs_diff(s)..=r + s).step_by(2) {
                             allowed = algebra.add(&allowed, &algebra.grade(&product, t));
                         }
-                        prop_assert_close!(product, allowed, scale = scale, rel = 1e-12, "grades {r} times {s}");
+                        prop_assert_close!(
+                            product,
+                            allowed,
+                            scale = scale,
+                            rel = 1e-12,
+                            "grades {r} times {s}",
+                        );
                     }
                     Ok(())
                 });
@@ -206,7 +262,12 @@ macro_rules! lecture_tests {
                 run(64, &(dense(SIZE), dense(SIZE), dense(SIZE)), |(x, y, z)| {
                     let (a, b, c) = (mv(&x), mv(&y), mv(&z));
                     let scale = l1(&x) * l1(&y) * l1(&z);
-                    prop_assert_close!(dense!((a ^ b) ^ c), dense!(a ^ (b ^ c)), scale = scale, rel = 1e-12);
+                    prop_assert_close!(
+                        dense!((a ^ b) ^ c),
+                        dense!(a ^ (b ^ c)),
+                        scale = scale,
+                        rel = 1e-12,
+                    );
                     Ok(())
                 });
             }
@@ -217,7 +278,12 @@ macro_rules! lecture_tests {
                 run(64, &(dense(SIZE), dense(SIZE)), |(x, y)| {
                     let (a, b) = (mv(&x), mv(&y));
                     let scale = l1(&x) * l1(&y);
-                    prop_assert_close!(dense!((a * b).reverse()), dense!(b.reverse() * a.reverse()), scale = scale, rel = 1e-12);
+                    prop_assert_close!(
+                        dense!((a * b).reverse()),
+                        dense!(b.reverse() * a.reverse()),
+                        scale = scale,
+                        rel = 1e-12,
+                    );
                     Ok(())
                 });
             }

@@ -31,7 +31,7 @@ macro_rules! for_types {
 }
 
 macro_rules! unary_test {
-    ($name:ident, $method:ident, $op:expr, $metric:tt, $types:tt) => {
+    ($name:ident, $method:ident, $op:expr, $metric:tt, $types:tt $(,)?) => {
         #[test]
         fn $name() {
             let mut cases = Vec::new();
@@ -61,12 +61,48 @@ macro_rules! unary_tests {
             #[allow(clippy::wildcard_imports)] // every generated type is needed
             use $($path)::+::*;
 
-            unary_test!(reverse_of_every_type_matches_the_reference, reverse, Unary::Reverse, $metric, $types);
-            unary_test!(grade_involution_of_every_type_matches_the_reference, grade_involution, Unary::GradeInvolution, $metric, $types);
-            unary_test!(conjugate_of_every_type_matches_the_reference, conjugate, Unary::Conjugate, $metric, $types);
-            unary_test!(dual_of_every_type_is_the_right_complement, dual, Unary::Dual, $metric, $types);
-            unary_test!(undual_of_every_type_inverts_the_right_complement, undual, Unary::Undual, $metric, $types);
-            unary_test!(norm_squared_of_every_type_is_the_scalar_part_of_x_times_its_reverse, norm_squared, Unary::NormSquared, $metric, $types);
+            unary_test!(
+                reverse_of_every_type_matches_the_reference,
+                reverse,
+                Unary::Reverse,
+                $metric,
+                $types,
+            );
+            unary_test!(
+                grade_involution_of_every_type_matches_the_reference,
+                grade_involution,
+                Unary::GradeInvolution,
+                $metric,
+                $types,
+            );
+            unary_test!(
+                conjugate_of_every_type_matches_the_reference,
+                conjugate,
+                Unary::Conjugate,
+                $metric,
+                $types,
+            );
+            unary_test!(
+                dual_of_every_type_is_the_right_complement,
+                dual,
+                Unary::Dual,
+                $metric,
+                $types,
+            );
+            unary_test!(
+                undual_of_every_type_inverts_the_right_complement,
+                undual,
+                Unary::Undual,
+                $metric,
+                $types,
+            );
+            unary_test!(
+                norm_squared_of_every_type_is_the_scalar_part_of_x_times_its_reverse,
+                norm_squared,
+                Unary::NormSquared,
+                $metric,
+                $types,
+            );
 
             #[test]
             fn grade_projections_of_every_type_match_the_reference() {
@@ -78,7 +114,8 @@ macro_rules! unary_tests {
                         eval: |x| {
                             let value = <$ty as Embed<Multivector>>::from_reference(x);
                             let out = value.$projection();
-                            [<$ty as Embed<Multivector>>::to_reference(value), ga_tests::dense!(out)]
+                            let operand = <$ty as Embed<Multivector>>::to_reference(value);
+                            [operand, ga_tests::dense!(out)]
                         },
                     });
                 )*)*

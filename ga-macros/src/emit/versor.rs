@@ -275,6 +275,8 @@ pub fn emit_blades(plan: &Plan, t: TypeId) -> TokenStream {
         .map(|&b| field_ident(b))
         .collect::<Vec<_>>();
     let zero = float(0.0);
+    let candidate_square =
+        super::unary::norm_squared_expr(plan, &Operand::new(quote!(candidate), TypeId::grade(1)));
     methods.extend(quote! {
         /// Factors a blade into orthogonal vectors whose geometric product is the blade,
         /// as in the lecture: take `a` in the blade, then `b' = a^-1 (a ^ b)` and so on by
@@ -289,19 +291,21 @@ pub fn emit_blades(plan: &Plan, t: TypeId) -> TokenStream {
             let mut rest = blade;
             let mut factors = [Vector::ZERO; #k_lit];
             for slot in factors.iter_mut().take(#k_lit - 1) {
-                let inverse = multivector_inverse(rest)?;
+                let inverse = mv_blade_inverse(rest)?;
                 let mut best = Vector::ZERO;
                 let mut best_size: #s = 0.0;
                 for basis in [#(Vector { #fields: 1.0, ..Vector::ZERO }),*] {
                     let projected = mv_geometric(mv_left_contraction(Multivector::from(basis), rest), inverse);
                     let candidate = Vector { #(#fields: projected.#fields),* };
-                    let candidate_size = candidate.to_array().iter().map(|c| c * c).sum::<#s>();
+                    // The metric square, not the Euclidean size: in a Minkowski metric the
+                    // largest projection can be nearly null, and its inverse ill-conditioned.
+                    let candidate_size = (#candidate_square).abs();
                     if candidate_size > best_size {
                         best = candidate;
                         best_size = candidate_size;
                     }
                 }
-                let best_inverse = multivector_inverse(Multivector::from(best))?;
+                let best_inverse = mv_blade_inverse(Multivector::from(best))?;
                 rest = mv_geometric(best_inverse, rest);
                 *slot = best;
             }
@@ -317,7 +321,14 @@ pub fn emit_blades(plan: &Plan, t: TypeId) -> TokenStream {
                 .map(|(p, b)| (p - b) * (p - b))
                 .sum::<#s>()
                 .sqrt();
-            if error <= 1024.0 * #s::EPSILON * size {
+            // Rounding grows with the factors' own sizes, which exceed the blade's when the
+            // metric makes their products cancel (Minkowski directions).
+            let scale = factors
+                .iter()
+                .map(|f| f.to_array().iter().map(|c| c * c).sum::<#s>().sqrt())
+                .product::<#s>()
+                .max(size);
+            if error <= 1024.0 * #s::EPSILON * scale {
                 Some(factors)
             } else {
                 None
@@ -340,7 +351,30 @@ pub fn emit_multivector_helpers(plan: &Plan) -> TokenStream {
     let b = Operand::new(quote!(b), mv);
     let (geometric, _) = product_value(plan, ProductKind::Geometric, &a, &b);
     let (contraction, _) = product_value(plan, ProductKind::LeftContraction, &a, &b);
+    let reverse = super::expr::construct(plan, Output::Type(mv), |blade| {
+        let x = a.blade(plan, blade)?;
+        Some(if Involution::Reverse.sign(blade) > 0 {
+            x
+        } else {
+            quote!(-#x)
+        })
+    });
+    let norm_squared = super::unary::norm_squared_expr(plan, &a);
+    let s = scalar_type(plan);
     quote! {
+        /// The inverse of a blade (or any `A` with `A ~A` a scalar): `~A / <A ~A>`, exact
+        /// where a general linear solve would lose digits; `None` for a null blade.
+        #[allow(dead_code)]
+        fn mv_blade_inverse(a: Multivector) -> Option<Multivector> {
+            let norm_squared: #s = #norm_squared;
+            if norm_squared == 0.0 || !norm_squared.is_finite() {
+                return None;
+            }
+            let reverse = #reverse;
+            let scale = 1.0 / norm_squared;
+            Some(Multivector::from_array(reverse.to_array().map(|c| c * scale)))
+        }
+
         #[allow(dead_code)]
         fn mv_geometric(a: Multivector, b: Multivector) -> Multivector {
             #geometric
