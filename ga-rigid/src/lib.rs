@@ -6,5 +6,6 @@ pub mod error;
 pub mod exact_flow;
 pub mod inertia;
 pub mod integrators;
+pub mod report;
 pub mod scene;
 pub mod special;

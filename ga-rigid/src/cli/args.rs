@@ -64,6 +64,9 @@ pub struct ReportArgs {
     /// Write the report to this file instead of standard output (created only on success).
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
+    /// Three settings per method and one timing run instead of nine and the best of three.
+    #[arg(long)]
+    pub quick: bool,
 }
 
 /// The integration methods `simulate` offers.

@@ -183,14 +183,14 @@ fn report(args: &ReportArgs) -> Result<(), Error> {
     emit("--out", args.out.as_deref(), &text)
 }
 
-/// The report hook: return the full report text.
-///
-/// STUB: the lead fills this in; until then it fails with [`Error::NotAvailable`].
+/// The report text: every method on the reference scenes, then the stability cases.
 pub fn run_report(args: &ReportArgs) -> Result<String, Error> {
-    let _ = args;
-    Err(Error::NotAvailable {
-        what: "report".to_string(),
-    })
+    let size = if args.quick {
+        crate::report::Size::Quick
+    } else {
+        crate::report::Size::Full
+    };
+    crate::report::report(size)
 }
 
 /// Fail early, before any work, if `out` cannot be created: its directory must exist and

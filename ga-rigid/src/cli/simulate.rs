@@ -74,26 +74,18 @@ pub fn run_simulation(scene: &Scene, method: Method, step: Step) -> Result<Vec<R
     for &sample in &times {
         state = integrator.advance(&body, t, state, sample - t)?;
         t = sample;
-        rows.push(row(scene, &body, principal, t, &state));
+        rows.push(row(&body, principal, t, &state));
     }
     Ok(rows)
 }
 
-fn row(scene: &Scene, body: &RigidBody, principal: Rotor, t: f64, state: &State) -> Row {
-    let potential = match scene.torque {
-        Some(gravity) => {
-            let mass = scene.inertia.mass().unwrap_or(1.0);
-            let offset = principal.reverse().sandwich(gravity.com_offset);
-            -mass * (gravity.g | state.rotor.sandwich(offset))
-        }
-        None => 0.0,
-    };
+fn row(body: &RigidBody, principal: Rotor, t: f64, state: &State) -> Row {
     let momentum = body.space_momentum(state).undual();
     Row {
         t,
         rotor: state.rotor * principal.reverse(),
         omega: omega_to_vector(principal.sandwich(state.omega)),
-        energy: body.energy(state.omega) + potential,
+        energy: body.total_energy(t, state),
         momentum: momentum.to_array(),
     }
 }

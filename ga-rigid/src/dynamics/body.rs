@@ -114,6 +114,16 @@ impl RigidBody {
         -0.5 * (omega | self.inertia(omega))
     }
 
+    /// The kinetic energy plus the torque's potential, conserved when the torque has one.
+    #[must_use]
+    pub fn total_energy(&self, t: f64, state: &State) -> f64 {
+        let potential = self
+            .torque
+            .as_ref()
+            .map_or(0.0, |torque| torque.potential(t, state.rotor));
+        self.energy(state.omega) + potential
+    }
+
     /// The body angular momentum bivector `I(Omega_B)`.
     #[inline]
     #[must_use]

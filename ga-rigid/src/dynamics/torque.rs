@@ -4,6 +4,12 @@ use ga_core::f64::g3::{Bivector, Rotor, Sandwich, Vector};
 pub trait Torque {
     /// The body-frame torque bivector at time `t` in state (`rotor`, `omega`).
     fn torque(&self, t: f64, rotor: Rotor, omega: Bivector) -> Bivector;
+
+    /// The potential energy whose gradient the torque is, when it has one (zero otherwise),
+    /// so that the total energy can be checked.
+    fn potential(&self, _t: f64, _rotor: Rotor) -> f64 {
+        0.0
+    }
 }
 
 /// Uniform gravity on a body whose centre of mass sits at `com_offset` (body frame) from
@@ -23,5 +29,10 @@ impl Torque for Gravity {
     fn torque(&self, _t: f64, rotor: Rotor, _omega: Bivector) -> Bivector {
         let force_body = rotor.reverse().sandwich(self.g * self.mass);
         self.com_offset ^ force_body
+    }
+
+    /// `-m g . (R c ~R)`: the height of the centre of mass against gravity.
+    fn potential(&self, _t: f64, rotor: Rotor) -> f64 {
+        -self.mass * (self.g | rotor.sandwich(self.com_offset))
     }
 }
