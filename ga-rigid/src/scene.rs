@@ -87,8 +87,7 @@ impl Initial {
     /// The body angular velocity as a bivector: `Omega_B = I w = w1 e23 - w2 e13 + w3 e12`.
     #[must_use]
     pub fn omega_bivector(&self) -> Bivector {
-        let [w1, w2, w3] = self.omega;
-        Bivector::new(w3, -w2, w1)
+        crate::dynamics::omega_from_vector(self.omega)
     }
 }
 

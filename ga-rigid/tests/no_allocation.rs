@@ -1,0 +1,76 @@
+//! An integrator step never touches the heap: a counting global allocator sees no
+//! allocation while every method advances a state (after construction).
+
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::hint::black_box;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use ga_core::f64::g3::{Rotor, Vector};
+use ga_rigid::dynamics::{omega_from_vector, Gravity, RigidBody, State};
+use ga_rigid::integrators::{
+    ClosedForm, DormandPrince, ExactFreeBody, ImplicitMidpoint, Integrator, LieRk4, Rk4, Splitting,
+};
+
+struct Counting;
+
+static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
+
+// SAFETY: forwards to the system allocator unchanged, only counting calls.
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        ALLOCATIONS.fetch_add(1, Ordering::SeqCst);
+        // SAFETY: same contract as the caller's.
+        unsafe { System.alloc(layout) }
+    }
+
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        // SAFETY: same contract as the caller's.
+        unsafe { System.dealloc(ptr, layout) }
+    }
+}
+
+#[global_allocator]
+static GLOBAL: Counting = Counting;
+
+fn allocations_during(f: impl FnOnce()) -> usize {
+    let before = ALLOCATIONS.load(Ordering::SeqCst);
+    f();
+    ALLOCATIONS.load(Ordering::SeqCst) - before
+}
+
+// One test function only: the harness runs tests on parallel threads, and another test's
+// allocations would land in this one's count.
+#[test]
+fn integrator_steps_do_not_allocate() {
+    let free = RigidBody::new_unphysical([2.0, 1.0, 2.0 / 3.0]).unwrap();
+    let symmetric = RigidBody::new([2.0, 2.0, 1.0]).unwrap();
+    let heavy = RigidBody::new([1.0, 1.0, 0.5])
+        .unwrap()
+        .with_torque(Gravity {
+            mass: 1.0,
+            g: Vector::new(0.0, 0.0, -9.81),
+            com_offset: Vector::new(0.0, 0.0, 0.5),
+        });
+    let state = State {
+        rotor: Rotor::ONE,
+        omega: omega_from_vector([0.4, -0.2, 1.1]),
+    };
+    let mut methods: Vec<Box<dyn Integrator>> = vec![
+        Box::new(Rk4::new(0.01).unwrap()),
+        Box::new(LieRk4::new(0.01).unwrap()),
+        Box::new(ImplicitMidpoint::new(0.01).unwrap()),
+        Box::new(Splitting::new(0.01).unwrap()),
+        Box::new(DormandPrince::new(1e-9, 1e-12).unwrap()),
+    ];
+    let (mut exact, mut closed) = (ExactFreeBody::new(), ClosedForm::new());
+    let count = allocations_during(|| {
+        for method in methods.iter_mut() {
+            for body in [&free, &heavy] {
+                black_box(method.advance(body, 0.0, state, 0.5).unwrap());
+            }
+        }
+        black_box(exact.advance(&free, 0.0, state, 3.0).unwrap());
+        black_box(closed.advance(&symmetric, 0.0, state, 3.0).unwrap());
+    });
+    assert_eq!(count, 0);
+}
