@@ -43,7 +43,7 @@ impl Plan {
         let types = Types::new(dimension, spec.types.as_deref().unwrap_or(&[]));
         let ops: BTreeSet<Op> = match &spec.ops {
             Some(ops) => ops.clone(),
-            None => ALL_OPS.iter().copied().collect(),
+            None => Op::ALL.iter().copied().collect(),
         };
         let products: Vec<ProductKind> = ProductKind::ALL
             .into_iter()
@@ -277,29 +277,6 @@ pub fn product_op(kind: ProductKind) -> Op {
         ProductKind::Commutator => Op::Commutator,
     }
 }
-
-const ALL_OPS: [Op; 20] = [
-    Op::Geometric,
-    Op::Outer,
-    Op::Inner,
-    Op::LeftContraction,
-    Op::RightContraction,
-    Op::ScalarProduct,
-    Op::Commutator,
-    Op::Add,
-    Op::Reverse,
-    Op::GradeInvolution,
-    Op::Conjugate,
-    Op::Dual,
-    Op::Norm,
-    Op::Inverse,
-    Op::Grade,
-    Op::Sandwich,
-    Op::Reflect,
-    Op::Exp,
-    Op::Log,
-    Op::Factor,
-];
 
 impl Types {
     /// The id of a requested type.

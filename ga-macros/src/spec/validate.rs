@@ -95,6 +95,17 @@ impl Op {
         ("factor", Op::Factor),
     ];
 
+    /// Every operation, in the order of `NAMES`.
+    pub const ALL: [Op; 20] = {
+        let mut all = [Op::Geometric; 20];
+        let mut i = 0;
+        while i < 20 {
+            all[i] = Op::NAMES[i].1;
+            i += 1;
+        }
+        all
+    };
+
     fn from_name(name: &str) -> Option<Op> {
         Op::NAMES
             .iter()

@@ -1,5 +1,5 @@
-//! An integrator step never touches the heap: a counting global allocator sees no
-//! allocation while every method advances a state (after construction).
+//! Products, sandwiches, exp, log, inverses and integrator steps never touch the heap: a
+//! counting global allocator sees no allocation while they run.
 
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::hint::black_box;
@@ -41,7 +41,13 @@ fn allocations_during(f: impl FnOnce()) -> usize {
 // One test function only: the harness runs tests on parallel threads, and another test's
 // allocations would land in this one's count.
 #[test]
-fn integrator_steps_do_not_allocate() {
+fn products_exp_log_inverse_and_integrator_steps_do_not_allocate() {
+    g3_operations();
+    g4_operations();
+    integrator_steps();
+}
+
+fn integrator_steps() {
     let free = RigidBody::new_unphysical([2.0, 1.0, 2.0 / 3.0]).unwrap();
     let symmetric = RigidBody::new([2.0, 2.0, 1.0]).unwrap();
     let heavy = RigidBody::new([1.0, 1.0, 0.5])
@@ -71,6 +77,46 @@ fn integrator_steps_do_not_allocate() {
         }
         black_box(exact.advance(&free, 0.0, state, 3.0).unwrap());
         black_box(closed.advance(&symmetric, 0.0, state, 3.0).unwrap());
+    });
+    assert_eq!(count, 0);
+}
+
+fn g3_operations() {
+    use ga_core::f64::g3::*;
+    let a = black_box(Multivector::from_array([
+        0.1, 0.2, -0.3, 0.4, 0.5, -0.6, 0.7, 0.8,
+    ]));
+    let b = black_box(Multivector::from_array([
+        -0.8, 0.7, 0.6, -0.5, 0.4, 0.3, 0.2, -0.1,
+    ]));
+    let v = black_box(Vector::new(1.0, 2.0, 3.0));
+    let bivector = black_box(Bivector::new(0.3, -0.2, 0.9));
+    let count = allocations_during(|| {
+        black_box(a * b);
+        black_box(a ^ b);
+        black_box(a | b);
+        black_box(a.left_contraction(b));
+        black_box(a.commutator(b));
+        let r = bivector.exp();
+        black_box(r.sandwich(v));
+        black_box(r.log());
+        black_box(r * r);
+        black_box(a.inverse());
+        black_box(v.reflect(Vector::E1));
+    });
+    assert_eq!(count, 0);
+}
+
+fn g4_operations() {
+    use ga_core::f64::g4::*;
+    let bivector = black_box(Bivector::new(0.3, -0.2, 0.9, 0.1, -0.4, 0.25));
+    let count = allocations_during(|| {
+        let r = bivector.exp();
+        black_box(r.log());
+        black_box(r * r);
+        black_box(r.inverse());
+        black_box(r.sandwich(Vector::E1));
+        black_box(bivector.factor());
     });
     assert_eq!(count, 0);
 }
