@@ -25,20 +25,17 @@ macro_rules! g3_product_benches {
     ) => {
         mod $module {
             use super::*;
+            use ga_core::$s::g3 as ga;
 
             type S = $s;
             const PRECISION: &str = stringify!($s);
-
-            // ---- ga-core (compiled with `--features ga-core-api` until ga-core lands) ----
-            #[cfg(feature = "ga-core-api")]
-            use ga_core::$s::g3 as ga;
-            // ---- end ga-core ----
 
             fn dense<const K: usize>(table: &G3, grades: &[u32], xs: &[[S; K]]) -> Vec<[S; 8]> {
                 let blades = table.blades_of_grades(grades);
                 xs.iter().map(|x| table.embed(&blades, x)).collect()
             }
 
+            /// Vector * vector (peers: dot and cross, or dot and wedge).
             pub fn vector_mul(c: &mut Criterion) {
                 let a: Vec<[S; 3]> = cast_all(&g3_vectors(BATCH, 21));
                 let b: Vec<[S; 3]> = cast_all(&g3_vectors(BATCH, 22));
@@ -48,7 +45,6 @@ macro_rules! g3_product_benches {
                 let na_vec = <Vector3<S> as FromVector3<S>>::from_vector3;
 
                 let mut g = group(c, &format!("g3/vector_mul/{PRECISION}/batch"));
-                #[cfg(feature = "ga-core-api")]
                 batch2(&mut g, "ga-core", &conv(&a, ga::Vector::from_array), &conv(&b, ga::Vector::from_array), |a, b| a * b);
                 batch2(&mut g, "glam", &conv(&a, glam_vec), &conv(&b, glam_vec), |a, b| (a.dot(b), a.cross(b)));
                 batch2(&mut g, "nalgebra", &conv(&a, na_vec), &conv(&b, na_vec), |a, b| (a.dot(&b), a.cross(&b)));
@@ -67,7 +63,6 @@ macro_rules! g3_product_benches {
                 // a <- a x b + (a . b) b = (e23, -e13, e12) of ab plus <ab>_0 b: the next
                 // vector uses every component of the product and keeps |a| for unit b.
                 let mut g = group(c, &format!("g3/vector_mul/{PRECISION}/chain"));
-                #[cfg(feature = "ga-core-api")]
                 chain(&mut g, "ga-core", ga::Vector::from_array(a[0]), &conv(&b, ga::Vector::from_array), |a, b| {
                     let p = a * b;
                     ga::Vector::new(p.e23, -p.e13, p.e12) + b * p.s
@@ -90,6 +85,7 @@ macro_rules! g3_product_benches {
                 g.finish();
             }
 
+            /// The full multivector product.
             pub fn multivector_mul(c: &mut Criterion) {
                 let a: Vec<[S; 8]> = cast_all(&g3_multivectors(BATCH, 1.0, 23));
                 let b: Vec<[S; 8]> = cast_all(&g3_multivectors(BATCH, 1.0, 24));
@@ -98,14 +94,12 @@ macro_rules! g3_product_benches {
                 let (ta, tb, tq) = (dense(&table, &[0, 1, 2, 3], &a), dense(&table, &[0, 1, 2, 3], &b), dense(&table, &[0, 1, 2, 3], &q));
 
                 let mut g = group(c, &format!("g3/multivector_mul/{PRECISION}/batch"));
-                #[cfg(feature = "ga-core-api")]
                 batch2(&mut g, "ga-core", &conv(&a, ga::Multivector::from_array), &conv(&b, ga::Multivector::from_array), |a, b| a * b);
                 batch2(&mut g, "table", &ta, &tb, |a, b| table.geometric(&a, &b));
                 g.finish();
 
                 // m <- m q + c: the factor q is small, so the chain neither grows nor dies out.
                 let mut g = group(c, &format!("g3/multivector_mul/{PRECISION}/chain"));
-                #[cfg(feature = "ga-core-api")]
                 {
                     let pairs: Vec<_> = q.iter().zip(&b).map(|(&q, &c)| (ga::Multivector::from_array(q), ga::Multivector::from_array(c))).collect();
                     chain(&mut g, "ga-core", ga::Multivector::from_array(a[0]), &pairs, |m, (q, c)| m * q + c);

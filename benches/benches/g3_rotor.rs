@@ -8,7 +8,7 @@ mod common;
 use common::{batch1, batch2, chain, config, conv, group, in_place, BATCH};
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use ga_benches::inputs::{cast_all, g3_bivectors, g3_rotors, g3_vectors};
-use ga_benches::peers::{pack, FromBivector3, FromRotor3, FromVector3, Lanes};
+use ga_benches::peers::{pack, ExpLog, FromBivector3, FromRotor3, FromVector3};
 use ga_benches::table::{add, scale, G3};
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 
@@ -24,14 +24,11 @@ macro_rules! g3_rotor_benches {
     ) => {
         mod $module {
             use super::*;
+            use ga::Sandwich as _;
+            use ga_core::$s::g3 as ga;
 
             type S = $s;
             const PRECISION: &str = stringify!($s);
-
-            // ---- ga-core (compiled with `--features ga-core-api` until ga-core lands) ----
-            #[cfg(feature = "ga-core-api")]
-            use ga_core::$s::g3 as ga;
-            // ---- end ga-core ----
 
             fn rotors(seed: u64) -> Vec<[S; 4]> {
                 cast_all(&g3_rotors(BATCH, seed))
@@ -42,13 +39,13 @@ macro_rules! g3_rotor_benches {
                 xs.iter().map(|x| table.embed(&blades, x)).collect()
             }
 
+            /// Rotor * rotor (the quaternion product).
             pub fn rotor_mul(c: &mut Criterion) {
                 let (p, q) = (rotors(1), rotors(2));
                 let table = black_box(G3::euclidean());
                 let (tp, tq) = (dense(&table, &[0, 2], &p), dense(&table, &[0, 2], &q));
 
                 let mut g = group(c, &format!("g3/rotor_mul/{PRECISION}/batch"));
-                #[cfg(feature = "ga-core-api")]
                 batch2(&mut g, "ga-core", &conv(&p, ga::Even::from_array), &conv(&q, ga::Even::from_array), |a, b| a * b);
                 batch2(&mut g, "glam", &conv(&p, <$quat>::from_rotor3), &conv(&q, <$quat>::from_rotor3), |a, b| a * b);
                 batch2(&mut g, "nalgebra", &conv(&p, UnitQuaternion::<S>::from_rotor3), &conv(&q, UnitQuaternion::<S>::from_rotor3), |a, b| a * b);
@@ -63,7 +60,6 @@ macro_rules! g3_rotor_benches {
 
                 let mut g = group(c, &format!("g3/rotor_mul/{PRECISION}/chain"));
                 let start = p[0];
-                #[cfg(feature = "ga-core-api")]
                 chain(&mut g, "ga-core", ga::Even::from_array(start), &conv(&q, ga::Even::from_array), |x, a| x * a);
                 chain(&mut g, "glam", <$quat>::from_rotor3(start), &conv(&q, <$quat>::from_rotor3), |x, a| x * a);
                 chain(&mut g, "nalgebra", UnitQuaternion::<S>::from_rotor3(start), &conv(&q, UnitQuaternion::<S>::from_rotor3), |x, a| x * a);
@@ -72,6 +68,7 @@ macro_rules! g3_rotor_benches {
                 g.finish();
             }
 
+            /// The sandwich `R v ~R` of one vector by its own rotor.
             pub fn sandwich(c: &mut Criterion) {
                 let r = rotors(3);
                 let v: Vec<[S; 3]> = cast_all(&g3_vectors(BATCH, 4));
@@ -79,7 +76,6 @@ macro_rules! g3_rotor_benches {
                 let (tr, tv) = (dense(&table, &[0, 2], &r), dense(&table, &[1], &v));
 
                 let mut g = group(c, &format!("g3/sandwich/{PRECISION}/batch"));
-                #[cfg(feature = "ga-core-api")]
                 batch2(&mut g, "ga-core", &conv(&r, ga::Even::from_array), &conv(&v, ga::Vector::from_array), |r, v| r.sandwich(v));
                 batch2(&mut g, "glam", &conv(&r, <$quat>::from_rotor3), &conv(&v, <$vec3 as FromVector3<S>>::from_vector3), |r, v| r.mul_vec3(v));
                 batch2(&mut g, "nalgebra", &conv(&r, UnitQuaternion::<S>::from_rotor3), &conv(&v, <Vector3<S> as FromVector3<S>>::from_vector3), |r, v| r * v);
@@ -94,7 +90,6 @@ macro_rules! g3_rotor_benches {
 
                 let mut g = group(c, &format!("g3/sandwich/{PRECISION}/chain"));
                 let start = v[0];
-                #[cfg(feature = "ga-core-api")]
                 chain(&mut g, "ga-core", ga::Vector::from_array(start), &conv(&r, ga::Even::from_array), |v, r| r.sandwich(v));
                 chain(&mut g, "glam", <$vec3 as FromVector3<S>>::from_vector3(start), &conv(&r, <$quat>::from_rotor3), |v, r| r.mul_vec3(v));
                 chain(&mut g, "nalgebra", <Vector3<S> as FromVector3<S>>::from_vector3(start), &conv(&r, UnitQuaternion::<S>::from_rotor3), |v, r| r * v);
@@ -103,13 +98,13 @@ macro_rules! g3_rotor_benches {
                 g.finish();
             }
 
+            /// One rotor applied to a batch of vectors (peers may precompute a matrix).
             pub fn rotate_batch(c: &mut Criterion) {
                 let r = black_box(rotors(5)[0]);
                 let v: Vec<[S; 3]> = cast_all(&g3_vectors(BATCH, 6));
                 let table = black_box(G3::euclidean());
                 let tr = dense(&table, &[0, 2], &[r])[0];
                 let tv = dense(&table, &[1], &v);
-                #[cfg(feature = "ga-core-api")]
                 let ga_r = ga::Even::from_array(r);
                 let quat = <$quat>::from_rotor3(r);
                 let mat3 = <$mat3>::from_quat(quat);
@@ -118,7 +113,6 @@ macro_rules! g3_rotor_benches {
                 let uv_rotor = <$rotor>::from_rotor3(r);
 
                 let mut g = group(c, &format!("g3/rotate_batch/{PRECISION}/batch"));
-                #[cfg(feature = "ga-core-api")]
                 batch1(&mut g, "ga-core", &conv(&v, ga::Vector::from_array), |v| ga_r.sandwich(v));
                 let glam_v = conv(&v, <$vec3 as FromVector3<S>>::from_vector3);
                 batch1(&mut g, "glam", &glam_v, |v| quat.mul_vec3(v));
@@ -139,7 +133,6 @@ macro_rules! g3_rotor_benches {
                 let mut g = group(c, &format!("g3/rotate_batch/{PRECISION}/chain"));
                 let steps = [(); BATCH];
                 let start = v[0];
-                #[cfg(feature = "ga-core-api")]
                 chain(&mut g, "ga-core", ga::Vector::from_array(start), &steps, |v, ()| ga_r.sandwich(v));
                 chain(&mut g, "glam", glam_v[0], &steps, |v, ()| quat.mul_vec3(v));
                 chain(&mut g, "glam mat3", glam_v[0], &steps, |v, ()| mat3 * v);
@@ -150,36 +143,27 @@ macro_rules! g3_rotor_benches {
                 g.finish();
             }
 
+            /// Bivector exp (glam and nalgebra: `from_scaled_axis`).
             pub fn exp(c: &mut Criterion) {
                 let b: Vec<[S; 3]> = cast_all(&g3_bivectors(BATCH, 7));
                 let feed: Vec<[S; 3]> = cast_all(&g3_bivectors(BATCH, 8));
                 let table = black_box(G3::euclidean());
                 let (tb, tfeed) = (dense(&table, &[2], &b), dense(&table, &[2], &feed));
-                // exp(B) = cos|B| + B sin|B| / |B|; ultraviolet's own angle sign is opposite.
-                let uv_exp = |b: $bivec| {
-                    let size = b.mag();
-                    <$rotor>::from_angle_plane(size * -2.0, b / size)
-                };
 
                 let mut g = group(c, &format!("g3/exp/{PRECISION}/batch"));
-                #[cfg(feature = "ga-core-api")]
                 batch1(&mut g, "ga-core", &conv(&b, ga::Bivector::from_array), |b| b.exp());
                 batch1(&mut g, "glam", &conv(&b, <$vec3 as FromBivector3<S>>::from_bivector3), <$quat>::from_scaled_axis);
                 batch1(&mut g, "nalgebra", &conv(&b, <Vector3<S> as FromBivector3<S>>::from_bivector3), UnitQuaternion::<S>::from_scaled_axis);
-                batch1(&mut g, "ultraviolet", &conv(&b, <$bivec>::from_bivector3), uv_exp);
+                batch1(&mut g, "ultraviolet", &conv(&b, <$bivec>::from_bivector3), <$rotor>::exp_of);
                 $(
                     batch1(&mut g, concat!("ultraviolet x", $lanes),
-                        &pack::<S, $w, _, $lanes, 3>(&b, <$wbivec>::from_bivector3), |b| {
-                            let size = b.mag();
-                            <$wrotor>::from_angle_plane(size * <$w>::from_lanes([-2.0; $lanes]), b / size)
-                        });
+                        &pack::<S, $w, _, $lanes, 3>(&b, <$wbivec>::from_bivector3), <$wrotor>::exp_of);
                 )+
                 batch1(&mut g, "table", &tb, |b| table.exp(&b));
                 g.finish();
 
                 // B <- <exp B>_2 + <exp B>_0 C: the next input depends on the whole result.
                 let mut g = group(c, &format!("g3/exp/{PRECISION}/chain"));
-                #[cfg(feature = "ga-core-api")]
                 chain(&mut g, "ga-core", ga::Bivector::from_array(b[0]), &conv(&feed, ga::Bivector::from_array), |b, c| {
                     let r = b.exp();
                     ga::Bivector::new(r.e12, r.e13, r.e23) + c * r.s
@@ -195,7 +179,7 @@ macro_rules! g3_rotor_benches {
                     q.imag() + c * q.scalar()
                 });
                 chain(&mut g, "ultraviolet", <$bivec>::from_bivector3(b[0]), &conv(&feed, <$bivec>::from_bivector3), |b, c| {
-                    let r = uv_exp(b);
+                    let r = <$rotor>::exp_of(b);
                     r.bv + c * r.s
                 });
                 chain(&mut g, "table", tb[0], &tfeed, |b, c| {
@@ -205,27 +189,20 @@ macro_rules! g3_rotor_benches {
                 g.finish();
             }
 
+            /// Rotor log (glam: `to_scaled_axis`, nalgebra: `scaled_axis`).
             pub fn log(c: &mut Criterion) {
                 let r = rotors(9);
                 let table = black_box(G3::euclidean());
                 let tr = dense(&table, &[0, 2], &r);
-                let uv_log = |r: $rotor| {
-                    let (angle, plane) = r.into_angle_plane();
-                    plane * (angle * -0.5)
-                };
 
                 let mut g = group(c, &format!("g3/log/{PRECISION}/batch"));
-                #[cfg(feature = "ga-core-api")]
                 batch1(&mut g, "ga-core", &conv(&r, ga::Even::from_array), |r| r.log());
                 batch1(&mut g, "glam", &conv(&r, <$quat>::from_rotor3), |q| q.to_scaled_axis());
                 batch1(&mut g, "nalgebra", &conv(&r, UnitQuaternion::<S>::from_rotor3), |q| q.scaled_axis());
-                batch1(&mut g, "ultraviolet", &conv(&r, <$rotor>::from_rotor3), uv_log);
+                batch1(&mut g, "ultraviolet", &conv(&r, <$rotor>::from_rotor3), <$rotor>::log_of);
                 $(
                     batch1(&mut g, concat!("ultraviolet x", $lanes),
-                        &pack::<S, $w, _, $lanes, 4>(&r, <$wrotor>::from_rotor3), |r| {
-                            let (angle, plane) = r.into_angle_plane();
-                            plane * (angle * <$w>::from_lanes([-0.5; $lanes]))
-                        });
+                        &pack::<S, $w, _, $lanes, 4>(&r, <$wrotor>::from_rotor3), <$wrotor>::log_of);
                 )+
                 batch1(&mut g, "table", &tr, |r| table.log(&r));
                 g.finish();
@@ -233,7 +210,6 @@ macro_rules! g3_rotor_benches {
                 // The next rotor is the input plus a small multiple of the last log.
                 let eps = LOG_FEEDBACK as S;
                 let mut g = group(c, &format!("g3/log/{PRECISION}/chain"));
-                #[cfg(feature = "ga-core-api")]
                 chain(&mut g, "ga-core", ga::Bivector::ZERO, &conv(&r, ga::Even::from_array), |b, r| (r + b * eps).log());
                 chain(&mut g, "glam", <$vec3>::ZERO, &conv(&r, <$quat>::from_rotor3), |v, q| {
                     (q + <$quat>::from_xyzw(v.x, v.y, v.z, 0.0) * eps).to_scaled_axis()
@@ -242,7 +218,7 @@ macro_rules! g3_rotor_benches {
                     UnitQuaternion::new_unchecked(q.into_inner() + Quaternion::from_imag(v * eps)).scaled_axis()
                 });
                 chain(&mut g, "ultraviolet", <$bivec>::zero(), &conv(&r, <$rotor>::from_rotor3), |b, r| {
-                    uv_log(r + <$rotor>::new(0.0, b * eps))
+                    (r + <$rotor>::new(0.0, b * eps)).log_of()
                 });
                 chain(&mut g, "table", [0.0; 8], &tr, |b, r| table.log(&add(&r, &scale(&b, eps))));
                 g.finish();

@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::{batch1, batch2, chain, config, group, BATCH};
+use common::{batch1, batch2, chain, config, conv, group, BATCH};
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use ga_benches::inputs::{cast_all, g4_bivectors, g4_multivectors, g4_rotors, g4_vectors};
 use ga_benches::table::{add, scale, G4};
@@ -18,22 +18,18 @@ macro_rules! g4_benches {
     ($module:ident, $s:ident) => {
         mod $module {
             use super::*;
+            use ga::Sandwich as _;
+            use ga_core::$s::g4 as ga;
 
             type S = $s;
             const PRECISION: &str = stringify!($s);
-
-            // ---- ga-core (compiled with `--features ga-core-api` until ga-core lands) ----
-            #[cfg(feature = "ga-core-api")]
-            use common::conv;
-            #[cfg(feature = "ga-core-api")]
-            use ga_core::$s::g4 as ga;
-            // ---- end ga-core ----
 
             fn dense<const K: usize>(table: &G4, grades: &[u32], xs: &[[S; K]]) -> Vec<[S; 16]> {
                 let blades = table.blades_of_grades(grades);
                 xs.iter().map(|x| table.embed(&blades, x)).collect()
             }
 
+            /// The full multivector product.
             pub fn multivector_mul(c: &mut Criterion) {
                 let a: Vec<[S; 16]> = cast_all(&g4_multivectors(BATCH, 1.0, 41));
                 let b: Vec<[S; 16]> = cast_all(&g4_multivectors(BATCH, 1.0, 42));
@@ -47,7 +43,6 @@ macro_rules! g4_benches {
                 );
 
                 let mut g = group(c, &format!("g4/multivector_mul/{PRECISION}/batch"));
-                #[cfg(feature = "ga-core-api")]
                 batch2(
                     &mut g,
                     "ga-core",
@@ -60,7 +55,6 @@ macro_rules! g4_benches {
 
                 // m <- m q + c: the factor q is small, so the chain neither grows nor dies out.
                 let mut g = group(c, &format!("g4/multivector_mul/{PRECISION}/chain"));
-                #[cfg(feature = "ga-core-api")]
                 {
                     let pairs: Vec<_> = q
                         .iter()
@@ -87,6 +81,7 @@ macro_rules! g4_benches {
                 g.finish();
             }
 
+            /// Even * even (rotor composition).
             pub fn rotor_mul(c: &mut Criterion) {
                 let p: Vec<[S; 8]> = cast_all(&g4_rotors(BATCH, 44));
                 let q: Vec<[S; 8]> = cast_all(&g4_rotors(BATCH, 45));
@@ -94,7 +89,6 @@ macro_rules! g4_benches {
                 let (tp, tq) = (dense(&table, &[0, 2, 4], &p), dense(&table, &[0, 2, 4], &q));
 
                 let mut g = group(c, &format!("g4/rotor_mul/{PRECISION}/batch"));
-                #[cfg(feature = "ga-core-api")]
                 batch2(
                     &mut g,
                     "ga-core",
@@ -106,7 +100,6 @@ macro_rules! g4_benches {
                 g.finish();
 
                 let mut g = group(c, &format!("g4/rotor_mul/{PRECISION}/chain"));
-                #[cfg(feature = "ga-core-api")]
                 chain(
                     &mut g,
                     "ga-core",
@@ -118,6 +111,7 @@ macro_rules! g4_benches {
                 g.finish();
             }
 
+            /// The sandwich `R v ~R` of one vector by its own rotor.
             pub fn sandwich(c: &mut Criterion) {
                 let r: Vec<[S; 8]> = cast_all(&g4_rotors(BATCH, 46));
                 let v: Vec<[S; 4]> = cast_all(&g4_vectors(BATCH, 47));
@@ -125,7 +119,6 @@ macro_rules! g4_benches {
                 let (tr, tv) = (dense(&table, &[0, 2, 4], &r), dense(&table, &[1], &v));
 
                 let mut g = group(c, &format!("g4/sandwich/{PRECISION}/batch"));
-                #[cfg(feature = "ga-core-api")]
                 batch2(
                     &mut g,
                     "ga-core",
@@ -137,7 +130,6 @@ macro_rules! g4_benches {
                 g.finish();
 
                 let mut g = group(c, &format!("g4/sandwich/{PRECISION}/chain"));
-                #[cfg(feature = "ga-core-api")]
                 chain(
                     &mut g,
                     "ga-core",
@@ -149,6 +141,7 @@ macro_rules! g4_benches {
                 g.finish();
             }
 
+            /// Bivector exp (non-simple bivectors: two invariant planes).
             pub fn exp(c: &mut Criterion) {
                 let b: Vec<[S; 6]> = cast_all(&g4_bivectors(BATCH, 48));
                 let feed: Vec<[S; 6]> = cast_all(&g4_bivectors(BATCH, 49));
@@ -156,7 +149,6 @@ macro_rules! g4_benches {
                 let (tb, tfeed) = (dense(&table, &[2], &b), dense(&table, &[2], &feed));
 
                 let mut g = group(c, &format!("g4/exp/{PRECISION}/batch"));
-                #[cfg(feature = "ga-core-api")]
                 batch1(
                     &mut g,
                     "ga-core",
@@ -168,7 +160,6 @@ macro_rules! g4_benches {
 
                 // B <- <exp B>_2 + (<exp B>_0 + <exp B>_4) C: every component feeds the next.
                 let mut g = group(c, &format!("g4/exp/{PRECISION}/chain"));
-                #[cfg(feature = "ga-core-api")]
                 chain(
                     &mut g,
                     "ga-core",

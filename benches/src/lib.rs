@@ -6,8 +6,10 @@
 //!   to each library's types by the benches.
 //! - [`table`]: what a generic multivector library does: dense `[S; 2^n]` multivectors and a
 //!   geometric product that loops over blade pairs with a sign table built at run time.
-//! - [`peers`]: conversions from canonical arrays to glam, nalgebra and ultraviolet types.
+//! - [`peers`]: conversions from canonical arrays to glam, nalgebra and ultraviolet types,
+//!   and exp and log for ultraviolet's rotors (written with its own API).
 //! - [`summary`]: reads criterion's estimates and writes the markdown table of medians.
+#![deny(missing_docs)]
 
 pub mod inputs;
 pub mod peers;

@@ -150,6 +150,50 @@ impl_ultraviolet!(
     f64x4 => (DRotor3x4, DVec3x4, DBivec3x4)
 );
 
+/// `exp` and `log` for ultraviolet's rotors (it has neither), written with its own API
+/// the way a user would: `from_angle_plane` and `into_angle_plane`, whose angle is
+/// minus twice the rotor's.
+///
+/// The plane is scaled by the reciprocal of the magnitude because ultraviolet 0.9's
+/// `Bivec3 / scalar` divides only the `xy` component.
+pub trait ExpLog: Sized {
+    /// The bivector type of the rotor.
+    type Bivector;
+    /// `exp(b) = cos|b| + b sin|b| / |b|`; `b` must not be zero.
+    fn exp_of(b: Self::Bivector) -> Self;
+    /// `log(r) = atan2(|B|, s) B / |B|` for a unit rotor `r = s + B` with `B` not zero.
+    fn log_of(self) -> Self::Bivector;
+}
+
+macro_rules! impl_exp_log {
+    ($($rotor:ty => ($bivec:ty, $scalar:ty, $splat:expr)),+) => {$(
+        impl ExpLog for $rotor {
+            type Bivector = $bivec;
+            #[inline]
+            fn exp_of(b: $bivec) -> Self {
+                let splat: fn(f64) -> $scalar = $splat;
+                let size = b.mag();
+                <$rotor>::from_angle_plane(size * splat(-2.0), b * (splat(1.0) / size))
+            }
+            #[inline]
+            fn log_of(self) -> $bivec {
+                let splat: fn(f64) -> $scalar = $splat;
+                let (angle, plane) = self.into_angle_plane();
+                plane * (angle * splat(-0.5))
+            }
+        }
+    )+};
+}
+
+impl_exp_log!(
+    Rotor3 => (Bivec3, f32, |x| x as f32),
+    Rotor3x4 => (Bivec3x4, f32x4, |x| f32x4::splat(x as f32)),
+    Rotor3x8 => (Bivec3x8, f32x8, |x| f32x8::splat(x as f32)),
+    DRotor3 => (DBivec3, f64, |x| x),
+    DRotor3x2 => (DBivec3x2, f64x2, f64x2::splat),
+    DRotor3x4 => (DBivec3x4, f64x4, f64x4::splat)
+);
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -258,5 +302,108 @@ mod tests {
                 assert!(close(&got, &[scalar.x, scalar.y, scalar.z]));
             }
         }
+    }
+
+    #[test]
+    fn ga_core_g3_agrees_with_the_table_on_every_benched_operation() {
+        use ga::Sandwich as _;
+        use ga_core::f64::g3 as ga;
+        let b = blades();
+        let t = &b.algebra;
+        let rotors = g3_rotors(100, 7);
+        for ((pair, v), biv) in rotors
+            .windows(2)
+            .zip(g3_vectors(100, 8))
+            .zip(g3_bivectors(100, 9))
+        {
+            let (p, q) = (pair[0], pair[1]);
+            let (tp, tq) = (t.embed(&b.even, &p), t.embed(&b.even, &q));
+            let (gp, gq) = (ga::Even::from_array(p), ga::Even::from_array(q));
+            assert!(close(
+                &(gp * gq).to_array(),
+                &t.extract(&b.even, &t.geometric(&tp, &tq))
+            ));
+            let tv = t.embed(&b.vector, &v);
+            let rotated = gp.sandwich(ga::Vector::from_array(v));
+            assert!(close(
+                &rotated.to_array(),
+                &t.extract(&b.vector, &t.sandwich(&tp, &tv))
+            ));
+            let tb = t.embed(&b.bivector, &biv);
+            let exp = ga::Bivector::from_array(biv).exp();
+            assert!(close(&exp.to_array(), &t.extract(&b.even, &t.exp(&tb))));
+            assert!(close(
+                &gp.log().to_array(),
+                &t.extract(&b.bivector, &t.log(&tp))
+            ));
+            let wv = ga::Vector::from_array(v) * ga::Vector::from_array(g3_vectors(1, 10)[0]);
+            let tw = t.geometric(&tv, &t.embed(&b.vector, &g3_vectors(1, 10)[0]));
+            assert!(close(&wv.to_array(), &t.extract(&b.even, &tw)));
+        }
+    }
+
+    #[test]
+    fn ga_core_g4_agrees_with_the_table_on_every_benched_operation() {
+        use crate::inputs::{g4_bivectors, g4_multivectors, g4_rotors, g4_vectors};
+        use crate::table::G4;
+        use ga::Sandwich as _;
+        use ga_core::f64::g4 as ga;
+        let t = G4::euclidean();
+        let (vector, bivector, even) = (
+            t.blades_of_grades(&[1]),
+            t.blades_of_grades(&[2]),
+            t.blades_of_grades(&[0, 2, 4]),
+        );
+        let all = t.blades_of_grades(&[0, 1, 2, 3, 4]);
+        let rotors = g4_rotors(50, 11);
+        let multivectors = g4_multivectors(50, 1.0, 12);
+        let vectors = g4_vectors(50, 13);
+        let bivectors = g4_bivectors(50, 14);
+        for i in 1..50 {
+            let (p, q) = (rotors[i - 1], rotors[i]);
+            let (tp, tq) = (t.embed(&even, &p), t.embed(&even, &q));
+            let product = ga::Even::from_array(p) * ga::Even::from_array(q);
+            assert!(close(
+                &product.to_array(),
+                &t.extract(&even, &t.geometric(&tp, &tq))
+            ));
+            let (a, c) = (multivectors[i - 1], multivectors[i]);
+            let full = ga::Multivector::from_array(a) * ga::Multivector::from_array(c);
+            let expected = t.geometric(&t.embed(&all, &a), &t.embed(&all, &c));
+            assert!(close(&full.to_array(), &t.extract(&all, &expected)));
+            let rotated = ga::Even::from_array(p).sandwich(ga::Vector::from_array(vectors[i]));
+            let expected = t.sandwich(&tp, &t.embed(&vector, &vectors[i]));
+            assert!(close(&rotated.to_array(), &t.extract(&vector, &expected)));
+            let exp = ga::Bivector::from_array(bivectors[i]).exp();
+            let expected = t.exp(&t.embed(&bivector, &bivectors[i]));
+            assert!(
+                close(&exp.to_array(), &t.extract(&even, &expected)),
+                "{exp:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn ultraviolet_exp_and_log_match_the_table() {
+        let b = blades();
+        for (biv, r) in g3_bivectors(100, 15).into_iter().zip(g3_rotors(100, 16)) {
+            let exp = DRotor3::exp_of(DBivec3::from_bivector3(biv));
+            let expected = b.algebra.exp(&b.algebra.embed(&b.bivector, &biv));
+            let got = [exp.s, exp.bv.xy, exp.bv.xz, exp.bv.yz];
+            assert!(
+                close(&got, &b.algebra.extract(&b.even, &expected)),
+                "{got:?}"
+            );
+            let log = DRotor3::from_rotor3(r).log_of();
+            let expected = b.algebra.log(&b.algebra.embed(&b.even, &r));
+            let got = [log.xy, log.xz, log.yz];
+            assert!(
+                close(&got, &b.algebra.extract(&b.bivector, &expected)),
+                "{got:?}"
+            );
+        }
+        let wide = pack::<f64, f64x4, _, 4, 3>(&g3_bivectors(4, 17), DBivec3x4::from_bivector3)[0];
+        let scalar = DRotor3::exp_of(DBivec3::from_bivector3(g3_bivectors(4, 17)[3]));
+        assert!((DRotor3x4::exp_of(wide).s.to_array()[3] - scalar.s).abs() < TOLERANCE);
     }
 }

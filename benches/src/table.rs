@@ -255,13 +255,10 @@ impl<const N: usize> Algebra<N> {
     #[must_use]
     pub fn geometric<S: Scalar>(&self, a: &[S; N], b: &[S; N]) -> [S; N] {
         let mut out = [S::ZERO; N];
-        for i in 0..N {
-            let ai = a[i];
-            let signs = &self.sign[i];
-            let targets = &self.index[i];
-            for j in 0..N {
+        for ((&ai, signs), targets) in a.iter().zip(&self.sign).zip(&self.index) {
+            for ((&bj, &sign), &target) in b.iter().zip(signs).zip(targets) {
                 // The mask keeps the store in bounds without a check: N is a power of two.
-                out[usize::from(targets[j]) & (N - 1)] += S::from_sign(signs[j]) * ai * b[j];
+                out[usize::from(target) & (N - 1)] += S::from_sign(sign) * ai * bj;
             }
         }
         out
