@@ -4727,6 +4727,31 @@ pub mod g2 {
             }
         }
     }
+    impl Vector {
+        /// The matrix of the vector map `x -> v x ~v` (row = output component, column =
+        /// input component, canonical order): the rotation matrix of a unit rotor.
+        #[inline]
+        #[must_use]
+        pub fn sandwich_matrix(self) -> [[f64; 2]; 2] {
+            let two_e1 = self.e1 + self.e1;
+            let e1_e1 = self.e1 * self.e1;
+            let e1_e2 = two_e1 * self.e2;
+            let e2_e2 = self.e2 * self.e2;
+            [[e2_e2 - e1_e1, -e1_e2], [-e1_e2, e1_e1 - e2_e2]]
+        }
+        /// Applies the sandwich to every vector in place, building its matrix once.
+        #[inline]
+        pub fn sandwich_vectors(self, vectors: &mut [Vector]) {
+            let m = self.sandwich_matrix();
+            for slot in vectors.iter_mut() {
+                let x = *slot;
+                *slot = Vector {
+                    e1: m[0][0] * x.e1 + m[0][1] * x.e2,
+                    e2: m[1][0] * x.e1 + m[1][1] * x.e2,
+                };
+            }
+        }
+    }
     impl Sandwich<Vector> for Even {
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
@@ -4789,6 +4814,31 @@ pub mod g2 {
             }
         }
     }
+    impl Even {
+        /// The matrix of the vector map `x -> v x ~v` (row = output component, column =
+        /// input component, canonical order): the rotation matrix of a unit rotor.
+        #[inline]
+        #[must_use]
+        pub fn sandwich_matrix(self) -> [[f64; 2]; 2] {
+            let two_s = self.s + self.s;
+            let s_s = self.s * self.s;
+            let s_e12 = two_s * self.e12;
+            let e12_e12 = self.e12 * self.e12;
+            [[s_s - e12_e12, s_e12], [-s_e12, s_s - e12_e12]]
+        }
+        /// Applies the sandwich to every vector in place, building its matrix once.
+        #[inline]
+        pub fn sandwich_vectors(self, vectors: &mut [Vector]) {
+            let m = self.sandwich_matrix();
+            for slot in vectors.iter_mut() {
+                let x = *slot;
+                *slot = Vector {
+                    e1: m[0][0] * x.e1 + m[0][1] * x.e2,
+                    e2: m[1][0] * x.e1 + m[1][1] * x.e2,
+                };
+            }
+        }
+    }
     impl Sandwich<Vector> for Odd {
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
@@ -4848,6 +4898,31 @@ pub mod g2 {
                 e1: (e2_e2 - e1_e1) * x.e1 - e1_e2 * x.e2,
                 e2: (e1_e1 - e2_e2) * x.e2 - e1_e2 * x.e1,
                 e12: (-e1_e1 - e2_e2) * x.e12,
+            }
+        }
+    }
+    impl Odd {
+        /// The matrix of the vector map `x -> v x ~v` (row = output component, column =
+        /// input component, canonical order): the rotation matrix of a unit rotor.
+        #[inline]
+        #[must_use]
+        pub fn sandwich_matrix(self) -> [[f64; 2]; 2] {
+            let two_e1 = self.e1 + self.e1;
+            let e1_e1 = self.e1 * self.e1;
+            let e1_e2 = two_e1 * self.e2;
+            let e2_e2 = self.e2 * self.e2;
+            [[e2_e2 - e1_e1, -e1_e2], [-e1_e2, e1_e1 - e2_e2]]
+        }
+        /// Applies the sandwich to every vector in place, building its matrix once.
+        #[inline]
+        pub fn sandwich_vectors(self, vectors: &mut [Vector]) {
+            let m = self.sandwich_matrix();
+            for slot in vectors.iter_mut() {
+                let x = *slot;
+                *slot = Vector {
+                    e1: m[0][0] * x.e1 + m[0][1] * x.e2,
+                    e2: m[1][0] * x.e1 + m[1][1] * x.e2,
+                };
             }
         }
     }
@@ -4953,9 +5028,9 @@ pub mod g2 {
         #[must_use]
         pub fn exp(self) -> Even {
             let x: f64 = -self.e12 * self.e12;
-            let weight = sinhc_sqrt(x);
+            let [even, weight] = cosh_sinhc_sqrt(x);
             Even {
-                s: cosh_sqrt(x),
+                s: even,
                 e12: weight * self.e12,
             }
         }
@@ -4976,6 +5051,22 @@ pub mod g2 {
     #[inline]
     fn cosh_sqrt(x: f64) -> f64 {
         if x >= 0.0 { x.sqrt().cosh() } else { (-x).sqrt().cos() }
+    }
+    /// `[cosh(sqrt x), sinh(sqrt x)/sqrt x]` with one square root and one `sin_cos`
+    /// (x < 0: cos and sin of sqrt -x); the ratio by its series where the root is tiny.
+    #[allow(dead_code)]
+    #[inline]
+    fn cosh_sinhc_sqrt(x: f64) -> [f64; 2] {
+        if x < 0.0 {
+            let r = (-x).sqrt();
+            let (sin, cos) = r.sin_cos();
+            [cos, if r < 1e-4 { 1.0 + x / 6.0 } else { sin / r }]
+        } else if x > 0.0 {
+            let r = x.sqrt();
+            [r.cosh(), if r < 1e-4 { 1.0 + x / 6.0 } else { r.sinh() / r }]
+        } else {
+            [1.0, 1.0]
+        }
     }
     /// sinh(sqrt x)/sqrt x (sin(sqrt -x)/sqrt -x for x < 0), by its series near 0.
     #[allow(dead_code)]

@@ -7511,6 +7511,40 @@ pub mod g3 {
             }
         }
     }
+    impl Vector {
+        /// The matrix of the vector map `x -> v x ~v` (row = output component, column =
+        /// input component, canonical order): the rotation matrix of a unit rotor.
+        #[inline]
+        #[must_use]
+        pub fn sandwich_matrix(self) -> [[f64; 3]; 3] {
+            let two_e1 = self.e1 + self.e1;
+            let two_e2 = self.e2 + self.e2;
+            let e1_e1 = self.e1 * self.e1;
+            let e1_e2 = two_e1 * self.e2;
+            let e1_e3 = two_e1 * self.e3;
+            let e2_e2 = self.e2 * self.e2;
+            let e2_e3 = two_e2 * self.e3;
+            let e3_e3 = self.e3 * self.e3;
+            [
+                [e2_e2 + e3_e3 - e1_e1, -e1_e2, -e1_e3],
+                [-e1_e2, e1_e1 + e3_e3 - e2_e2, -e2_e3],
+                [-e1_e3, -e2_e3, e1_e1 + e2_e2 - e3_e3],
+            ]
+        }
+        /// Applies the sandwich to every vector in place, building its matrix once.
+        #[inline]
+        pub fn sandwich_vectors(self, vectors: &mut [Vector]) {
+            let m = self.sandwich_matrix();
+            for slot in vectors.iter_mut() {
+                let x = *slot;
+                *slot = Vector {
+                    e1: m[0][0] * x.e1 + m[0][1] * x.e2 + m[0][2] * x.e3,
+                    e2: m[1][0] * x.e1 + m[1][1] * x.e2 + m[1][2] * x.e3,
+                    e3: m[2][0] * x.e1 + m[2][1] * x.e2 + m[2][2] * x.e3,
+                };
+            }
+        }
+    }
     impl Sandwich<Vector> for Even {
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
@@ -7669,6 +7703,45 @@ pub mod g3 {
             }
         }
     }
+    impl Even {
+        /// The matrix of the vector map `x -> v x ~v` (row = output component, column =
+        /// input component, canonical order): the rotation matrix of a unit rotor.
+        #[inline]
+        #[must_use]
+        pub fn sandwich_matrix(self) -> [[f64; 3]; 3] {
+            let two_s = self.s + self.s;
+            let two_e12 = self.e12 + self.e12;
+            let two_e13 = self.e13 + self.e13;
+            let s_s = self.s * self.s;
+            let s_e12 = two_s * self.e12;
+            let s_e13 = two_s * self.e13;
+            let s_e23 = two_s * self.e23;
+            let e12_e12 = self.e12 * self.e12;
+            let e12_e13 = two_e12 * self.e13;
+            let e12_e23 = two_e12 * self.e23;
+            let e13_e13 = self.e13 * self.e13;
+            let e13_e23 = two_e13 * self.e23;
+            let e23_e23 = self.e23 * self.e23;
+            [
+                [s_s + e23_e23 - e12_e12 - e13_e13, s_e12 - e13_e23, s_e13 + e12_e23],
+                [-s_e12 - e13_e23, s_s + e13_e13 - e12_e12 - e23_e23, s_e23 - e12_e13],
+                [e12_e23 - s_e13, -s_e23 - e12_e13, s_s + e12_e12 - e13_e13 - e23_e23],
+            ]
+        }
+        /// Applies the sandwich to every vector in place, building its matrix once.
+        #[inline]
+        pub fn sandwich_vectors(self, vectors: &mut [Vector]) {
+            let m = self.sandwich_matrix();
+            for slot in vectors.iter_mut() {
+                let x = *slot;
+                *slot = Vector {
+                    e1: m[0][0] * x.e1 + m[0][1] * x.e2 + m[0][2] * x.e3,
+                    e2: m[1][0] * x.e1 + m[1][1] * x.e2 + m[1][2] * x.e3,
+                    e3: m[2][0] * x.e1 + m[2][1] * x.e2 + m[2][2] * x.e3,
+                };
+            }
+        }
+    }
     impl Sandwich<Vector> for Odd {
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
@@ -7824,6 +7897,45 @@ pub mod g3 {
                 e23: (e1_e3 + e2_e123) * x.e12 + (e3_e123 - e1_e2) * x.e13
                     + (e1_e1 + e123_e123 - e2_e2 - e3_e3) * x.e23,
                 e123: (-e1_e1 - e2_e2 - e3_e3 - e123_e123) * x.e123,
+            }
+        }
+    }
+    impl Odd {
+        /// The matrix of the vector map `x -> v x ~v` (row = output component, column =
+        /// input component, canonical order): the rotation matrix of a unit rotor.
+        #[inline]
+        #[must_use]
+        pub fn sandwich_matrix(self) -> [[f64; 3]; 3] {
+            let two_e1 = self.e1 + self.e1;
+            let two_e2 = self.e2 + self.e2;
+            let two_e3 = self.e3 + self.e3;
+            let e1_e1 = self.e1 * self.e1;
+            let e1_e2 = two_e1 * self.e2;
+            let e1_e3 = two_e1 * self.e3;
+            let e1_e123 = two_e1 * self.e123;
+            let e2_e2 = self.e2 * self.e2;
+            let e2_e3 = two_e2 * self.e3;
+            let e2_e123 = two_e2 * self.e123;
+            let e3_e3 = self.e3 * self.e3;
+            let e3_e123 = two_e3 * self.e123;
+            let e123_e123 = self.e123 * self.e123;
+            [
+                [e2_e2 + e3_e3 - e1_e1 - e123_e123, e3_e123 - e1_e2, -e1_e3 - e2_e123],
+                [-e1_e2 - e3_e123, e1_e1 + e3_e3 - e2_e2 - e123_e123, e1_e123 - e2_e3],
+                [e2_e123 - e1_e3, -e1_e123 - e2_e3, e1_e1 + e2_e2 - e3_e3 - e123_e123],
+            ]
+        }
+        /// Applies the sandwich to every vector in place, building its matrix once.
+        #[inline]
+        pub fn sandwich_vectors(self, vectors: &mut [Vector]) {
+            let m = self.sandwich_matrix();
+            for slot in vectors.iter_mut() {
+                let x = *slot;
+                *slot = Vector {
+                    e1: m[0][0] * x.e1 + m[0][1] * x.e2 + m[0][2] * x.e3,
+                    e2: m[1][0] * x.e1 + m[1][1] * x.e2 + m[1][2] * x.e3,
+                    e3: m[2][0] * x.e1 + m[2][1] * x.e2 + m[2][2] * x.e3,
+                };
             }
         }
     }
@@ -8028,9 +8140,9 @@ pub mod g3 {
         pub fn exp(self) -> Even {
             let x: f64 = -self.e12 * self.e12 - self.e13 * self.e13
                 - self.e23 * self.e23;
-            let weight = sinhc_sqrt(x);
+            let [even, weight] = cosh_sinhc_sqrt(x);
             Even {
-                s: cosh_sqrt(x),
+                s: even,
                 e12: weight * self.e12,
                 e13: weight * self.e13,
                 e23: weight * self.e23,
@@ -8061,6 +8173,22 @@ pub mod g3 {
     #[inline]
     fn cosh_sqrt(x: f64) -> f64 {
         if x >= 0.0 { x.sqrt().cosh() } else { (-x).sqrt().cos() }
+    }
+    /// `[cosh(sqrt x), sinh(sqrt x)/sqrt x]` with one square root and one `sin_cos`
+    /// (x < 0: cos and sin of sqrt -x); the ratio by its series where the root is tiny.
+    #[allow(dead_code)]
+    #[inline]
+    fn cosh_sinhc_sqrt(x: f64) -> [f64; 2] {
+        if x < 0.0 {
+            let r = (-x).sqrt();
+            let (sin, cos) = r.sin_cos();
+            [cos, if r < 1e-4 { 1.0 + x / 6.0 } else { sin / r }]
+        } else if x > 0.0 {
+            let r = x.sqrt();
+            [r.cosh(), if r < 1e-4 { 1.0 + x / 6.0 } else { r.sinh() / r }]
+        } else {
+            [1.0, 1.0]
+        }
     }
     /// sinh(sqrt x)/sqrt x (sin(sqrt -x)/sqrt -x for x < 0), by its series near 0.
     #[allow(dead_code)]

@@ -13358,6 +13358,50 @@ pub mod g4 {
             }
         }
     }
+    impl Vector {
+        /// The matrix of the vector map `x -> v x ~v` (row = output component, column =
+        /// input component, canonical order): the rotation matrix of a unit rotor.
+        #[inline]
+        #[must_use]
+        pub fn sandwich_matrix(self) -> [[f64; 4]; 4] {
+            let two_e1 = self.e1 + self.e1;
+            let two_e2 = self.e2 + self.e2;
+            let two_e3 = self.e3 + self.e3;
+            let e1_e1 = self.e1 * self.e1;
+            let e1_e2 = two_e1 * self.e2;
+            let e1_e3 = two_e1 * self.e3;
+            let e1_e4 = two_e1 * self.e4;
+            let e2_e2 = self.e2 * self.e2;
+            let e2_e3 = two_e2 * self.e3;
+            let e2_e4 = two_e2 * self.e4;
+            let e3_e3 = self.e3 * self.e3;
+            let e3_e4 = two_e3 * self.e4;
+            let e4_e4 = self.e4 * self.e4;
+            [
+                [e2_e2 + e3_e3 + e4_e4 - e1_e1, -e1_e2, -e1_e3, -e1_e4],
+                [-e1_e2, e1_e1 + e3_e3 + e4_e4 - e2_e2, -e2_e3, -e2_e4],
+                [-e1_e3, -e2_e3, e1_e1 + e2_e2 + e4_e4 - e3_e3, -e3_e4],
+                [-e1_e4, -e2_e4, -e3_e4, e1_e1 + e2_e2 + e3_e3 - e4_e4],
+            ]
+        }
+        /// Applies the sandwich to every vector in place, building its matrix once.
+        #[inline]
+        pub fn sandwich_vectors(self, vectors: &mut [Vector]) {
+            let m = self.sandwich_matrix();
+            for slot in vectors.iter_mut() {
+                let x = *slot;
+                *slot = Vector {
+                    e1: m[0][0] * x.e1 + m[0][1] * x.e2 + m[0][2] * x.e3
+                        + m[0][3] * x.e4,
+                    e2: m[1][0] * x.e1 + m[1][1] * x.e2 + m[1][2] * x.e3
+                        + m[1][3] * x.e4,
+                    e3: m[2][0] * x.e1 + m[2][1] * x.e2 + m[2][2] * x.e3
+                        + m[2][3] * x.e4,
+                    e4: m[3][0] * x.e1 + m[3][1] * x.e2 + m[3][2] * x.e3 + m[3][3] * x.e4,
+                };
+            }
+        }
+    }
     impl Sandwich<Vector> for Even {
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
@@ -13915,6 +13959,100 @@ pub mod g4 {
                 e1234: (s_e1234 + e13_e24 - e12_e34 - e14_e23) * x.s
                     + (s_s + e12_e12 + e13_e13 + e14_e14 + e23_e23 + e24_e24 + e34_e34
                         + e1234_e1234) * x.e1234,
+            }
+        }
+    }
+    impl Even {
+        /// The matrix of the vector map `x -> v x ~v` (row = output component, column =
+        /// input component, canonical order): the rotation matrix of a unit rotor.
+        #[inline]
+        #[must_use]
+        pub fn sandwich_matrix(self) -> [[f64; 4]; 4] {
+            let two_s = self.s + self.s;
+            let two_e12 = self.e12 + self.e12;
+            let two_e13 = self.e13 + self.e13;
+            let two_e14 = self.e14 + self.e14;
+            let two_e23 = self.e23 + self.e23;
+            let two_e24 = self.e24 + self.e24;
+            let two_e34 = self.e34 + self.e34;
+            let s_s = self.s * self.s;
+            let s_e12 = two_s * self.e12;
+            let s_e13 = two_s * self.e13;
+            let s_e14 = two_s * self.e14;
+            let s_e23 = two_s * self.e23;
+            let s_e24 = two_s * self.e24;
+            let s_e34 = two_s * self.e34;
+            let e12_e12 = self.e12 * self.e12;
+            let e12_e13 = two_e12 * self.e13;
+            let e12_e14 = two_e12 * self.e14;
+            let e12_e23 = two_e12 * self.e23;
+            let e12_e24 = two_e12 * self.e24;
+            let e12_e1234 = two_e12 * self.e1234;
+            let e13_e13 = self.e13 * self.e13;
+            let e13_e14 = two_e13 * self.e14;
+            let e13_e23 = two_e13 * self.e23;
+            let e13_e34 = two_e13 * self.e34;
+            let e13_e1234 = two_e13 * self.e1234;
+            let e14_e14 = self.e14 * self.e14;
+            let e14_e24 = two_e14 * self.e24;
+            let e14_e34 = two_e14 * self.e34;
+            let e14_e1234 = two_e14 * self.e1234;
+            let e23_e23 = self.e23 * self.e23;
+            let e23_e24 = two_e23 * self.e24;
+            let e23_e34 = two_e23 * self.e34;
+            let e23_e1234 = two_e23 * self.e1234;
+            let e24_e24 = self.e24 * self.e24;
+            let e24_e34 = two_e24 * self.e34;
+            let e24_e1234 = two_e24 * self.e1234;
+            let e34_e34 = self.e34 * self.e34;
+            let e34_e1234 = two_e34 * self.e1234;
+            let e1234_e1234 = self.e1234 * self.e1234;
+            [
+                [
+                    s_s + e23_e23 + e24_e24 + e34_e34 - e12_e12 - e13_e13 - e14_e14
+                        - e1234_e1234,
+                    s_e12 + e34_e1234 - e13_e23 - e14_e24,
+                    s_e13 + e12_e23 - e14_e34 - e24_e1234,
+                    s_e14 + e12_e24 + e13_e34 + e23_e1234,
+                ],
+                [
+                    -s_e12 - e13_e23 - e14_e24 - e34_e1234,
+                    s_s + e13_e13 + e14_e14 + e34_e34 - e12_e12 - e23_e23 - e24_e24
+                        - e1234_e1234,
+                    s_e23 + e14_e1234 - e12_e13 - e24_e34,
+                    s_e24 + e23_e34 - e12_e14 - e13_e1234,
+                ],
+                [
+                    e12_e23 + e24_e1234 - s_e13 - e14_e34,
+                    -s_e23 - e12_e13 - e14_e1234 - e24_e34,
+                    s_s + e12_e12 + e14_e14 + e24_e24 - e13_e13 - e23_e23 - e34_e34
+                        - e1234_e1234,
+                    s_e34 + e12_e1234 - e13_e14 - e23_e24,
+                ],
+                [
+                    e12_e24 + e13_e34 - s_e14 - e23_e1234,
+                    e13_e1234 + e23_e34 - s_e24 - e12_e14,
+                    -s_e34 - e12_e1234 - e13_e14 - e23_e24,
+                    s_s + e12_e12 + e13_e13 + e23_e23 - e14_e14 - e24_e24 - e34_e34
+                        - e1234_e1234,
+                ],
+            ]
+        }
+        /// Applies the sandwich to every vector in place, building its matrix once.
+        #[inline]
+        pub fn sandwich_vectors(self, vectors: &mut [Vector]) {
+            let m = self.sandwich_matrix();
+            for slot in vectors.iter_mut() {
+                let x = *slot;
+                *slot = Vector {
+                    e1: m[0][0] * x.e1 + m[0][1] * x.e2 + m[0][2] * x.e3
+                        + m[0][3] * x.e4,
+                    e2: m[1][0] * x.e1 + m[1][1] * x.e2 + m[1][2] * x.e3
+                        + m[1][3] * x.e4,
+                    e3: m[2][0] * x.e1 + m[2][1] * x.e2 + m[2][2] * x.e3
+                        + m[2][3] * x.e4,
+                    e4: m[3][0] * x.e1 + m[3][1] * x.e2 + m[3][2] * x.e3 + m[3][3] * x.e4,
+                };
             }
         }
     }
@@ -14478,6 +14616,100 @@ pub mod g4 {
             }
         }
     }
+    impl Odd {
+        /// The matrix of the vector map `x -> v x ~v` (row = output component, column =
+        /// input component, canonical order): the rotation matrix of a unit rotor.
+        #[inline]
+        #[must_use]
+        pub fn sandwich_matrix(self) -> [[f64; 4]; 4] {
+            let two_e1 = self.e1 + self.e1;
+            let two_e2 = self.e2 + self.e2;
+            let two_e3 = self.e3 + self.e3;
+            let two_e4 = self.e4 + self.e4;
+            let two_e123 = self.e123 + self.e123;
+            let two_e124 = self.e124 + self.e124;
+            let two_e134 = self.e134 + self.e134;
+            let e1_e1 = self.e1 * self.e1;
+            let e1_e2 = two_e1 * self.e2;
+            let e1_e3 = two_e1 * self.e3;
+            let e1_e4 = two_e1 * self.e4;
+            let e1_e123 = two_e1 * self.e123;
+            let e1_e124 = two_e1 * self.e124;
+            let e1_e134 = two_e1 * self.e134;
+            let e2_e2 = self.e2 * self.e2;
+            let e2_e3 = two_e2 * self.e3;
+            let e2_e4 = two_e2 * self.e4;
+            let e2_e123 = two_e2 * self.e123;
+            let e2_e124 = two_e2 * self.e124;
+            let e2_e234 = two_e2 * self.e234;
+            let e3_e3 = self.e3 * self.e3;
+            let e3_e4 = two_e3 * self.e4;
+            let e3_e123 = two_e3 * self.e123;
+            let e3_e134 = two_e3 * self.e134;
+            let e3_e234 = two_e3 * self.e234;
+            let e4_e4 = self.e4 * self.e4;
+            let e4_e124 = two_e4 * self.e124;
+            let e4_e134 = two_e4 * self.e134;
+            let e4_e234 = two_e4 * self.e234;
+            let e123_e123 = self.e123 * self.e123;
+            let e123_e124 = two_e123 * self.e124;
+            let e123_e134 = two_e123 * self.e134;
+            let e123_e234 = two_e123 * self.e234;
+            let e124_e124 = self.e124 * self.e124;
+            let e124_e134 = two_e124 * self.e134;
+            let e124_e234 = two_e124 * self.e234;
+            let e134_e134 = self.e134 * self.e134;
+            let e134_e234 = two_e134 * self.e234;
+            let e234_e234 = self.e234 * self.e234;
+            [
+                [
+                    e2_e2 + e3_e3 + e4_e4 + e234_e234 - e1_e1 - e123_e123 - e124_e124
+                        - e134_e134,
+                    e3_e123 + e4_e124 - e1_e2 - e134_e234,
+                    e4_e134 + e124_e234 - e1_e3 - e2_e123,
+                    -e1_e4 - e2_e124 - e3_e134 - e123_e234,
+                ],
+                [
+                    -e1_e2 - e3_e123 - e4_e124 - e134_e234,
+                    e1_e1 + e3_e3 + e4_e4 + e134_e134 - e2_e2 - e123_e123 - e124_e124
+                        - e234_e234,
+                    e1_e123 + e4_e234 - e2_e3 - e124_e134,
+                    e1_e124 + e123_e134 - e2_e4 - e3_e234,
+                ],
+                [
+                    e2_e123 + e124_e234 - e1_e3 - e4_e134,
+                    -e1_e123 - e2_e3 - e4_e234 - e124_e134,
+                    e1_e1 + e2_e2 + e4_e4 + e124_e124 - e3_e3 - e123_e123 - e134_e134
+                        - e234_e234,
+                    e1_e134 + e2_e234 - e3_e4 - e123_e124,
+                ],
+                [
+                    e2_e124 + e3_e134 - e1_e4 - e123_e234,
+                    e3_e234 + e123_e134 - e1_e124 - e2_e4,
+                    -e1_e134 - e2_e234 - e3_e4 - e123_e124,
+                    e1_e1 + e2_e2 + e3_e3 + e123_e123 - e4_e4 - e124_e124 - e134_e134
+                        - e234_e234,
+                ],
+            ]
+        }
+        /// Applies the sandwich to every vector in place, building its matrix once.
+        #[inline]
+        pub fn sandwich_vectors(self, vectors: &mut [Vector]) {
+            let m = self.sandwich_matrix();
+            for slot in vectors.iter_mut() {
+                let x = *slot;
+                *slot = Vector {
+                    e1: m[0][0] * x.e1 + m[0][1] * x.e2 + m[0][2] * x.e3
+                        + m[0][3] * x.e4,
+                    e2: m[1][0] * x.e1 + m[1][1] * x.e2 + m[1][2] * x.e3
+                        + m[1][3] * x.e4,
+                    e3: m[2][0] * x.e1 + m[2][1] * x.e2 + m[2][2] * x.e3
+                        + m[2][3] * x.e4,
+                    e4: m[3][0] * x.e1 + m[3][1] * x.e2 + m[3][2] * x.e3 + m[3][3] * x.e4,
+                };
+            }
+        }
+    }
     /// `LEFT[i][j] = (k, sign)`: `e_i e_j = sign e_k` by component index. Used only by
     /// the general inverse, never by a product.
     const LEFT: [[(usize, i8); 16usize]; 16usize] = [
@@ -15026,6 +15258,22 @@ pub mod g4 {
     #[inline]
     fn cosh_sqrt(x: f64) -> f64 {
         if x >= 0.0 { x.sqrt().cosh() } else { (-x).sqrt().cos() }
+    }
+    /// `[cosh(sqrt x), sinh(sqrt x)/sqrt x]` with one square root and one `sin_cos`
+    /// (x < 0: cos and sin of sqrt -x); the ratio by its series where the root is tiny.
+    #[allow(dead_code)]
+    #[inline]
+    fn cosh_sinhc_sqrt(x: f64) -> [f64; 2] {
+        if x < 0.0 {
+            let r = (-x).sqrt();
+            let (sin, cos) = r.sin_cos();
+            [cos, if r < 1e-4 { 1.0 + x / 6.0 } else { sin / r }]
+        } else if x > 0.0 {
+            let r = x.sqrt();
+            [r.cosh(), if r < 1e-4 { 1.0 + x / 6.0 } else { r.sinh() / r }]
+        } else {
+            [1.0, 1.0]
+        }
     }
     /// sinh(sqrt x)/sqrt x (sin(sqrt -x)/sqrt -x for x < 0), by its series near 0.
     #[allow(dead_code)]

@@ -45,13 +45,13 @@ pub fn emit_exp(plan: &Plan) -> TokenStream {
         // B^2 is a scalar x: exp(B) = cosh(sqrt x) + B sinh(sqrt x)/sqrt x.
         let value = construct(plan, even, |blade| {
             if blade == 0 {
-                return Some(quote!(cosh_sqrt(x)));
+                return Some(quote!(even));
             }
             b.blade(plan, blade).map(|c| quote!(weight * #c))
         });
         quote! {
             let x: #s = #square;
-            let weight = sinhc_sqrt(x);
+            let [even, weight] = cosh_sinhc_sqrt(x);
             #value
         }
     } else if n <= 5 {
@@ -207,6 +207,23 @@ pub fn emit_scalar_functions(plan: &Plan) -> TokenStream {
         #[inline]
         fn cosh_sqrt(x: #s) -> #s {
             if x >= 0.0 { x.sqrt().cosh() } else { (-x).sqrt().cos() }
+        }
+
+        /// `[cosh(sqrt x), sinh(sqrt x)/sqrt x]` with one square root and one `sin_cos`
+        /// (x < 0: cos and sin of sqrt -x); the ratio by its series where the root is tiny.
+        #[allow(dead_code)]
+        #[inline]
+        fn cosh_sinhc_sqrt(x: #s) -> [#s; 2] {
+            if x < 0.0 {
+                let r = (-x).sqrt();
+                let (sin, cos) = r.sin_cos();
+                [cos, if r < 1e-4 { 1.0 + x / 6.0 } else { sin / r }]
+            } else if x > 0.0 {
+                let r = x.sqrt();
+                [r.cosh(), if r < 1e-4 { 1.0 + x / 6.0 } else { r.sinh() / r }]
+            } else {
+                [1.0, 1.0]
+            }
         }
 
         /// sinh(sqrt x)/sqrt x (sin(sqrt -x)/sqrt -x for x < 0), by its series near 0.

@@ -30,6 +30,7 @@ pub fn emit_sandwiches(plan: &Plan) -> TokenStream {
         for &x in &plan.emitted {
             out.extend(sandwich_impl(plan, v, x));
         }
+        out.extend(emit_sandwich_matrix(plan, v));
     }
     out
 }
@@ -94,28 +95,31 @@ fn chained_multiplies(plan: &Plan, v: TypeId, x: TypeId) -> usize {
             .sum::<usize>()
 }
 
-/// The quadratic form: products of pairs of the versor's components first, then each
-/// output component as a linear form in `x` with coefficients summed from those pairs.
-/// See docs/derivations/sandwich.md.
-fn fused_body(plan: &Plan, v: TypeId, x: TypeId, q: &Quadratic) -> TokenStream {
+/// The pieces of the expanded sandwich: `let`s for the products of pairs of the versor's
+/// components, and for each output blade and component `k` of `x` the coefficient of
+/// `x_k`: a signed sum of those products. A pair whose coefficients are all even is
+/// computed as `(v_i + v_i) * v_j`: the factor 2 costs an add once per component instead
+/// of a multiply per use. See docs/derivations/sandwich.md.
+struct FusedParts {
+    lets: TokenStream,
+    coefficients: BTreeMap<(u32, usize), Vec<(i32, TokenStream)>>,
+}
+
+fn fused_parts(plan: &Plan, v: TypeId, x: TypeId, q: &Quadratic) -> FusedParts {
     let versor = &plan.types.get(v).blades;
     let operand = &plan.types.get(x).blades;
     let this = Operand::new(quote!(self), v);
-    let arg = Operand::new(quote!(x), x);
-    // Every coefficient of each pair product, to see which pairs always come doubled.
-    let mut coefficients: BTreeMap<(usize, usize), Vec<i32>> = BTreeMap::new();
+    let mut uses: BTreeMap<(usize, usize), Vec<i32>> = BTreeMap::new();
     for (blade, per_k) in q {
         if operand.contains(blade) {
             for pairs in per_k.values() {
                 for (&pair, &c) in pairs {
-                    coefficients.entry(pair).or_default().push(c);
+                    uses.entry(pair).or_default().push(c);
                 }
             }
         }
     }
-    // A pair whose coefficients are all even is computed as `(v_i + v_i) * v_j`: the
-    // factor 2 costs an add once per component instead of a multiply per use.
-    let doubled: BTreeSet<(usize, usize)> = coefficients
+    let doubled: BTreeSet<(usize, usize)> = uses
         .iter()
         .filter(|(_, cs)| cs.iter().all(|c| c % 2 == 0))
         .map(|(&pair, _)| pair)
@@ -130,7 +134,7 @@ fn fused_body(plan: &Plan, v: TypeId, x: TypeId, q: &Quadratic) -> TokenStream {
         let a = this.component(plan, i);
         quote!(let #name = #a + #a;)
     });
-    let pair_lets = coefficients.keys().map(|&(i, j)| {
+    let pair_lets = uses.keys().map(|&(i, j)| {
         let name = pair_name((i, j));
         let b = this.component(plan, j);
         if doubled.contains(&(i, j)) {
@@ -141,36 +145,117 @@ fn fused_body(plan: &Plan, v: TypeId, x: TypeId, q: &Quadratic) -> TokenStream {
             quote!(let #name = #a * #b;)
         }
     });
+    let mut coefficients = BTreeMap::new();
+    for (&blade, per_k) in q {
+        if !operand.contains(&blade) {
+            continue;
+        }
+        for (&k, pairs) in per_k {
+            let terms: Vec<(i32, TokenStream)> = pairs
+                .iter()
+                .map(|(&pair, &c)| {
+                    let name = pair_name(pair);
+                    (
+                        if doubled.contains(&pair) { c / 2 } else { c },
+                        quote!(#name),
+                    )
+                })
+                .collect();
+            coefficients.insert((blade, k), terms);
+        }
+    }
+    FusedParts {
+        lets: quote!(#(#two_lets)* #(#pair_lets)*),
+        coefficients,
+    }
+}
+
+fn fused_body(plan: &Plan, v: TypeId, x: TypeId, q: &Quadratic) -> TokenStream {
+    let parts = fused_parts(plan, v, x, q);
+    let arg = Operand::new(quote!(x), x);
     let value = construct(plan, Output::Type(x), |blade| {
-        let per_k = q.get(&blade)?;
-        let terms: Vec<(i32, TokenStream)> = per_k
-            .iter()
-            .map(|(&k, pairs)| {
-                let coefficient: Vec<(i32, TokenStream)> = pairs
-                    .iter()
-                    .map(|(&pair, &c)| {
-                        let name = pair_name(pair);
-                        let c = if doubled.contains(&pair) { c / 2 } else { c };
-                        (c, quote!(#name))
-                    })
-                    .collect();
+        let terms: Vec<(i32, TokenStream)> = parts
+            .coefficients
+            .range((blade, 0)..=(blade, usize::MAX))
+            .map(|(&(_, k), coefficient)| {
                 let xk = arg.component(plan, k);
                 match coefficient.as_slice() {
-                    [(1, single)] => (1, quote!(#single * #xk)),
-                    [(-1, single)] => (-1, quote!(#single * #xk)),
+                    [(c @ (1 | -1), single)] => (*c, quote!(#single * #xk)),
                     _ => {
-                        let sum = signed_sum(&coefficient);
+                        let sum = signed_sum(coefficient);
                         (1, quote!((#sum) * #xk))
                     }
                 }
             })
             .collect();
-        Some(signed_sum(&terms))
+        (!terms.is_empty()).then(|| signed_sum(&terms))
     });
+    let lets = parts.lets;
     quote! {
-        #(#two_lets)*
-        #(#pair_lets)*
+        #lets
         #value
+    }
+}
+
+/// `sandwich_matrix` and `sandwich_vectors`: the linear map `x -> v x ~v` on vectors,
+/// built once and applied to many (the rotation matrix of a rotor).
+pub fn emit_sandwich_matrix(plan: &Plan, v: TypeId) -> TokenStream {
+    let vector = TypeId::grade(1);
+    let blades = plan.types.get(vector).blades.clone();
+    let n = blades.len();
+    let q = sandwich(
+        &plan.metric,
+        &plan.types.get(v).blades,
+        is_odd(plan, v),
+        &blades,
+    );
+    let parts = fused_parts(plan, v, vector, &q);
+    let s = scalar_type(plan);
+    let zero = super::expr::zero(plan);
+    let rows = blades.iter().map(|&blade| {
+        let entries = (0..n).map(|k| {
+            parts
+                .coefficients
+                .get(&(blade, k))
+                .map_or_else(|| zero.clone(), |terms| signed_sum(terms))
+        });
+        quote!([#(#entries),*])
+    });
+    let fields: Vec<_> = blades.iter().map(|&b| field_ident(b)).collect();
+    let index = proc_macro2::Literal::usize_unsuffixed;
+    let applied = (0..n).map(|o| {
+        let terms = (0..n).map(|k| {
+            let f = &fields[k];
+            let (row, column) = (index(o), index(k));
+            quote!(m[#row][#column] * x.#f)
+        });
+        let field = &fields[o];
+        quote!(#field: #(#terms)+*)
+    });
+    let name = type_tokens(plan, v);
+    let lets = parts.lets;
+    let n = index(n);
+    quote! {
+        impl #name {
+            /// The matrix of the vector map `x -> v x ~v` (row = output component, column =
+            /// input component, canonical order): the rotation matrix of a unit rotor.
+            #[inline]
+            #[must_use]
+            pub fn sandwich_matrix(self) -> [[#s; #n]; #n] {
+                #lets
+                [#(#rows),*]
+            }
+
+            /// Applies the sandwich to every vector in place, building its matrix once.
+            #[inline]
+            pub fn sandwich_vectors(self, vectors: &mut [Vector]) {
+                let m = self.sandwich_matrix();
+                for slot in vectors.iter_mut() {
+                    let x = *slot;
+                    *slot = Vector { #(#applied),* };
+                }
+            }
+        }
     }
 }
 
