@@ -20,7 +20,8 @@ macro_rules! g3_rotor_benches {
         $module:ident, $s:ident,
         glam: ($quat:ty, $vec3:ty, $mat3:ty),
         ultraviolet: ($rotor:ty, $uvec:ty, $bivec:ty),
-        wide: [$(($lanes:literal, $w:ty, $wrotor:ty, $wvec:ty, $wbivec:ty)),+]
+        wide: [$(($lanes:literal, $w:ty, $wrotor:ty, $wvec:ty, $wbivec:ty)),+],
+        batch: [$(($ga_lanes:literal, $ga_batch:ident)),+]
     ) => {
         mod $module {
             use super::*;
@@ -29,6 +30,11 @@ macro_rules! g3_rotor_benches {
 
             type S = $s;
             const PRECISION: &str = stringify!($s);
+
+            /// Items grouped into lanes of a ga-core batch type.
+            fn lanes<T: Copy, W, const L: usize>(items: &[T], build: impl Fn([T; L]) -> W) -> Vec<W> {
+                items.chunks_exact(L).map(|c| build(std::array::from_fn(|i| c[i]))).collect()
+            }
 
             fn rotors(seed: u64) -> Vec<[S; 4]> {
                 cast_all(&g3_rotors(BATCH, seed))
@@ -54,6 +60,11 @@ macro_rules! g3_rotor_benches {
                     batch2(&mut g, concat!("ultraviolet x", $lanes),
                         &pack::<S, $w, _, $lanes, 4>(&p, <$wrotor>::from_rotor3),
                         &pack::<S, $w, _, $lanes, 4>(&q, <$wrotor>::from_rotor3), |a, b| a * b);
+                )+
+                $(
+                    batch2(&mut g, concat!("ga-core x", $ga_lanes),
+                        &lanes(&conv(&p, ga::Even::from_array), ga::$ga_batch::Even::from_items),
+                        &lanes(&conv(&q, ga::Even::from_array), ga::$ga_batch::Even::from_items), |a, b| a * b);
                 )+
                 batch2(&mut g, "table", &tp, &tq, |a, b| table.geometric(&a, &b));
                 g.finish();
@@ -85,6 +96,12 @@ macro_rules! g3_rotor_benches {
                         &pack::<S, $w, _, $lanes, 4>(&r, <$wrotor>::from_rotor3),
                         &pack::<S, $w, _, $lanes, 3>(&v, <$wvec>::from_vector3), |r, v| r * v);
                 )+
+                $(
+                    batch2(&mut g, concat!("ga-core x", $ga_lanes),
+                        &lanes(&conv(&r, ga::Even::from_array), ga::$ga_batch::Even::from_items),
+                        &lanes(&conv(&v, ga::Vector::from_array), ga::$ga_batch::Vector::from_items),
+                        |r, v| ga::$ga_batch::Sandwich::sandwich(r, v));
+                )+
                 batch2(&mut g, "table", &tr, &tv, |r, v| table.sandwich(&r, &v));
                 g.finish();
 
@@ -114,6 +131,13 @@ macro_rules! g3_rotor_benches {
 
                 let mut g = group(c, &format!("g3/rotate_batch/{PRECISION}/batch"));
                 batch1(&mut g, "ga-core", &conv(&v, ga::Vector::from_array), |v| ga_r.sandwich(v));
+                in_place(&mut g, "ga-core sandwich_vectors", &mut conv(&v, ga::Vector::from_array), |vs| ga_r.sandwich_vectors(vs));
+                $(
+                    let ga_wide_r = ga::$ga_batch::Even::splat(ga_r);
+                    batch1(&mut g, concat!("ga-core x", $ga_lanes),
+                        &lanes(&conv(&v, ga::Vector::from_array), ga::$ga_batch::Vector::from_items),
+                        |v| ga::$ga_batch::Sandwich::sandwich(ga_wide_r, v));
+                )+
                 let glam_v = conv(&v, <$vec3 as FromVector3<S>>::from_vector3);
                 batch1(&mut g, "glam", &glam_v, |v| quat.mul_vec3(v));
                 batch1(&mut g, "glam mat3", &glam_v, |v| mat3 * v);
@@ -234,7 +258,8 @@ g3_rotor_benches!(
     wide: [
         (4, ultraviolet::f32x4, ultraviolet::Rotor3x4, ultraviolet::Vec3x4, ultraviolet::Bivec3x4),
         (8, ultraviolet::f32x8, ultraviolet::Rotor3x8, ultraviolet::Vec3x8, ultraviolet::Bivec3x8)
-    ]
+    ],
+    batch: [(4, x4), (8, x8)]
 );
 
 g3_rotor_benches!(
@@ -244,7 +269,8 @@ g3_rotor_benches!(
     wide: [
         (2, ultraviolet::f64x2, ultraviolet::DRotor3x2, ultraviolet::DVec3x2, ultraviolet::DBivec3x2),
         (4, ultraviolet::f64x4, ultraviolet::DRotor3x4, ultraviolet::DVec3x4, ultraviolet::DBivec3x4)
-    ]
+    ],
+    batch: [(4, x4)]
 );
 
 criterion_group! {

@@ -15,7 +15,7 @@ use ga_benches::table::{add, scale, G4};
 const CHAIN_FACTOR_AMPLITUDE: f64 = 0.05;
 
 macro_rules! g4_benches {
-    ($module:ident, $s:ident) => {
+    ($module:ident, $s:ident, batch: [$(($ga_lanes:literal, $ga_batch:ident)),*]) => {
         mod $module {
             use super::*;
             use ga::Sandwich as _;
@@ -50,6 +50,14 @@ macro_rules! g4_benches {
                     &conv(&b, ga::Multivector::from_array),
                     |a, b| a * b,
                 );
+                $(
+                    let lanes = |xs: &[[S; 16]]| -> Vec<ga::$ga_batch::Multivector> {
+                        xs.chunks_exact($ga_lanes)
+                            .map(|c| ga::$ga_batch::Multivector::from_items(std::array::from_fn(|i| ga::Multivector::from_array(c[i]))))
+                            .collect()
+                    };
+                    batch2(&mut g, concat!("ga-core x", $ga_lanes), &lanes(&a), &lanes(&b), |a, b| a * b);
+                )*
                 batch2(&mut g, "table", &ta, &tb, |a, b| table.geometric(&a, &b));
                 g.finish();
 
@@ -181,8 +189,8 @@ macro_rules! g4_benches {
     };
 }
 
-g4_benches!(single, f32);
-g4_benches!(double, f64);
+g4_benches!(single, f32, batch: [(4, x4)]);
+g4_benches!(double, f64, batch: []);
 
 criterion_group! {
     name = benches;
