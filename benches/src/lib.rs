@@ -8,11 +8,14 @@
 //!   geometric product that loops over blade pairs with a sign table built at run time.
 //! - [`peers`]: conversions from canonical arrays to glam, nalgebra and ultraviolet types,
 //!   and exp and log for ultraviolet's rotors (written with its own API).
+//! - [`rigid`]: the rigid-body test models, Euler's equations in matrix form for
+//!   ode_solvers' Dop853, and the searches for each method's cheapest setting.
 //! - [`summary`]: reads criterion's estimates and writes the markdown table of medians.
 #![deny(missing_docs)]
 
 pub mod inputs;
 pub mod peers;
+pub mod rigid;
 pub mod rng;
 pub mod summary;
 pub mod table;

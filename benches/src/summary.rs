@@ -1,14 +1,20 @@
-//! Reads criterion's results and writes a markdown table of per-item medians.
+//! Reads criterion's results and writes markdown tables of per-item medians.
 //!
 //! Criterion keeps, for every benchmark, `<criterion>/<group>/<function>/new/` with
 //! `benchmark.json` (ids and throughput) and `estimates.json` (statistics of the time
 //! per iteration, in ns). One iteration of these benches is a whole batch or chain, so the
 //! time per item is the median divided by the throughput's element count.
+//!
+//! The algebra groups make one wide table, a column per library. The rigid-body groups
+//! (`rigid/...`, from `benches/rigid.rs`) compare methods rather than libraries, so they
+//! make a second table, a row per method, followed by issue 4's two ratios.
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::io;
 use std::path::{Path, PathBuf};
+
+use crate::rigid;
 
 /// Column order of the implementations; others follow in alphabetical order.
 pub const IMPLEMENTATIONS: &[&str] = &[
@@ -96,10 +102,41 @@ pub fn read_records(criterion_dir: &Path) -> io::Result<Vec<Record>> {
     Ok(records)
 }
 
-/// The markdown table: one row per group, ns per item for each implementation, with the
-/// ratio to glam in parentheses when glam is in the group, and ga-core over the table.
+/// The markdown summary: the algebra table ([`library_table`]) and then, when there are
+/// rigid-body results, their table and ratios ([`rigid_table`]).
 #[must_use]
 pub fn markdown(records: &[Record]) -> String {
+    let (rigid, libraries): (Vec<Record>, Vec<Record>) = records
+        .iter()
+        .cloned()
+        .partition(|r| r.group.starts_with("rigid/"));
+    let mut out = String::new();
+    if !libraries.is_empty() {
+        out += &library_table(&libraries);
+    }
+    if !rigid.is_empty() {
+        if !out.is_empty() {
+            out.push('\n');
+        }
+        out += &rigid_table(&rigid);
+    }
+    out
+}
+
+/// `group` split into operation, scalar and mode (`g3/rotor_mul/f32/batch`).
+fn split_group(group: &str) -> (&str, &str, &str) {
+    let mut parts: Vec<&str> = group.rsplitn(3, '/').collect();
+    parts.reverse();
+    match parts.as_slice() {
+        [operation, scalar, mode] => (*operation, *scalar, *mode),
+        _ => (group, "", ""),
+    }
+}
+
+/// The algebra table: one row per group, ns per item for each implementation, with the
+/// ratio to glam in parentheses when glam is in the group, and ga-core over the table.
+#[must_use]
+pub fn library_table(records: &[Record]) -> String {
     let mut rows: BTreeMap<&str, BTreeMap<&str, f64>> = BTreeMap::new();
     for r in records {
         rows.entry(&r.group)
@@ -128,12 +165,7 @@ pub fn markdown(records: &[Record]) -> String {
     );
     let _ = writeln!(out, "|---|---|---|{}---|", "---:|".repeat(columns.len()));
     for (group, times) in &rows {
-        let mut parts: Vec<&str> = group.rsplitn(3, '/').collect();
-        parts.reverse();
-        let (operation, scalar, mode) = match parts.as_slice() {
-            [operation, scalar, mode] => (*operation, *scalar, *mode),
-            _ => (*group, "", ""),
-        };
+        let (operation, scalar, mode) = split_group(group);
         let glam = times.get("glam").copied();
         let cells: Vec<String> = columns
             .iter()
@@ -154,6 +186,89 @@ pub fn markdown(records: &[Record]) -> String {
         );
     }
     out
+}
+
+/// The rigid-body table: one row per method, the median per item with its unit and the
+/// items per second; then closed-form evaluation over one RK4 step (issue 4's target: at
+/// most 3) and the fastest geometric-algebra method of the race over ode_solvers' Dop853.
+#[must_use]
+pub fn rigid_table(records: &[Record]) -> String {
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "| rigid-body operation | scalar | mode | method | median per item | items per second |"
+    );
+    let _ = writeln!(out, "|---|---|---|---|---:|---:|");
+    for r in records {
+        let (operation, scalar, mode) = split_group(&r.group);
+        let _ = writeln!(
+            out,
+            "| {operation} | {scalar} | {mode} | {} | {} | {:.3e} |",
+            r.function,
+            format_time(r.median_ns),
+            1e9 / r.median_ns
+        );
+    }
+    let time = |group: &str, function: &str| {
+        records
+            .iter()
+            .find(|r| r.group == group && r.function == function)
+            .map(|r| r.median_ns)
+    };
+    let _ = writeln!(out);
+    match (
+        time(rigid::TOP_GROUP, rigid::CLOSED_FORM),
+        time(rigid::TOP_GROUP, rigid::RK4_STEP),
+    ) {
+        (Some(closed), Some(step)) => {
+            let _ = writeln!(
+                out,
+                "Closed-form evaluation / RK4 step ({}): {} / {} = {:.2} (target: at most 3).",
+                rigid::TOP_GROUP,
+                format_time(closed),
+                format_time(step),
+                closed / step
+            );
+        }
+        _ => {
+            let _ = writeln!(out, "Closed-form evaluation / RK4 step: not measured.");
+        }
+    }
+    let best = rigid::RACE_GA_METHODS
+        .iter()
+        .filter_map(|&name| Some((name, time(rigid::RACE_GROUP, name)?)))
+        .min_by(|a, b| a.1.total_cmp(&b.1));
+    match (best, time(rigid::RACE_GROUP, rigid::RACE_PEER)) {
+        (Some((name, ga)), Some(peer)) => {
+            let _ = writeln!(
+                out,
+                "Best GA method / {} to an attitude error of {:e} at t = {} ({}): {name} {} / {} \
+                 = {:.2}.",
+                rigid::RACE_PEER,
+                rigid::RACE_TARGET,
+                rigid::RACE_T_END,
+                rigid::RACE_GROUP,
+                format_time(ga),
+                format_time(peer),
+                ga / peer
+            );
+        }
+        _ => {
+            let _ = writeln!(out, "Best GA method / {}: not measured.", rigid::RACE_PEER);
+        }
+    }
+    out
+}
+
+/// A time with three significant digits in ns, us or ms.
+fn format_time(ns: f64) -> String {
+    if ns >= 1e6 {
+        format!("{} ms", format_ns(ns * 1e-6))
+    } else if ns >= 1e3 {
+        format!("{} us", format_ns(ns * 1e-3))
+    } else {
+        format!("{} ns", format_ns(ns))
+    }
 }
 
 /// Nanoseconds with three significant digits.
@@ -221,5 +336,48 @@ mod tests {
             row,
             "| g3/rotor_mul | f32 | batch | 1.00 (0.50) | 2.00 (1.00) | 40.0 (20.00) | 0.025 |"
         );
+    }
+
+    #[test]
+    fn rigid_rows_get_their_own_table_and_the_two_ratios() {
+        let record = |group: &str, function: &str, median_ns| Record {
+            group: group.into(),
+            function: function.into(),
+            median_ns,
+        };
+        let summary = markdown(&[
+            record("g3/rotor_mul/f32/batch", "glam", 2.0),
+            record(rigid::TOP_GROUP, rigid::CLOSED_FORM, 60.0),
+            record(rigid::TOP_GROUP, rigid::RK4_STEP, 40.0),
+            record(rigid::RACE_GROUP, "rk4", 50_000.0),
+            record(rigid::RACE_GROUP, "dopri5", 30_000.0),
+            record(rigid::RACE_GROUP, "exact", 1_000.0),
+            record(rigid::RACE_GROUP, rigid::RACE_PEER, 20_000.0),
+        ]);
+        let lines: Vec<&str> = summary.lines().collect();
+        assert_eq!(lines[2], "| g3/rotor_mul | f32 | batch | 2.00 (1.00) | - |");
+        assert!(
+            lines.contains(&"| rigid/reach_1e-10 | f64 | hlw_t10 | dopri5 | 30.0 us | 3.333e4 |")
+        );
+        assert!(lines
+            .iter()
+            .any(|l| l.starts_with("Closed-form evaluation / RK4 step") && l.contains("= 1.50")));
+        // The exact flow is not a time-stepping method: dopri5 is the best of the race.
+        assert!(lines
+            .iter()
+            .any(|l| l.starts_with("Best GA method")
+                && l.contains("dopri5 30.0 us / 20.0 us = 1.50")));
+    }
+
+    #[test]
+    fn missing_ratios_say_so() {
+        let table = rigid_table(&[Record {
+            group: rigid::STEP_GROUP.into(),
+            function: "rk4".into(),
+            median_ns: 1_500_000.0,
+        }]);
+        assert!(table.contains("| rk4 | 1.50 ms | 6.667e2 |"));
+        assert!(table.contains("Closed-form evaluation / RK4 step: not measured."));
+        assert!(table.contains("Best GA method / ode_solvers dop853: not measured."));
     }
 }
