@@ -8,12 +8,13 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 export CARGO_TARGET_DIR="$work/target"
+# Incremental compilation would reuse the type-checking of the unchanged expansion.
+export CARGO_INCREMENTAL=0
 
-seconds() { local start end; start=$(date +%s.%N); "$@" >/dev/null 2>&1; end=$(date +%s.%N); echo "$end - $start" | bc; }
+seconds() { local start end; start=$(date +%s.%N); "$@" >/dev/null 2>&1; end=$(date +%s.%N); printf '%.1f' "$(echo "$end - $start" | bc)"; }
 
 echo "| what | seconds |"
 echo "|---|---|"
-(cd "$root" && cargo build --release -p ga-macros -p wide -p glam >/dev/null 2>&1)
 CARGO_TARGET_DIR="$work/core" cargo build --release -p ga-core --manifest-path "$root/Cargo.toml" >/dev/null 2>&1
 touch "$root/ga-core/src/lib.rs"
 echo "| ga-core release build, dependencies built | $(CARGO_TARGET_DIR="$work/core" seconds cargo build --release -p ga-core --manifest-path "$root/Cargo.toml") |"
@@ -40,6 +41,9 @@ for c in g4 g6 g6_rotors; do
     touch "$work/$c/src/lib.rs"
     release=$(cd "$work/$c" && seconds cargo build --release)
     size=$(cd "$work/$c" && RUSTC_BOOTSTRAP=1 cargo rustc --quiet -- -Zunpretty=expanded 2>/dev/null | wc -c)
+    touch "$work/$c/src/lib.rs"
+    expand=$(cd "$work/$c" && RUSTC_BOOTSTRAP=1 cargo rustc --quiet -- -Ztime-passes 2>&1 | awk '$1 == "time:" && $NF == "expand_crate" {sub(";", "", $2); print $2}')
+    echo "| $c: macro expansion (rustc's expand_crate pass) | $expand |"
     echo "| $c: cargo check (expand + type-check) | $check |"
     echo "| $c: release build | $release |"
     echo "| $c: expanded source, bytes | $size |"
