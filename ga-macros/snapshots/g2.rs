@@ -404,7 +404,6 @@ pub mod g2 {
         /// in four dimensions is not).
         #[must_use]
         pub fn is_blade(self) -> bool {
-            let _ = Zero;
             true
         }
         /// Factors a blade into orthogonal vectors whose geometric product is the blade,
@@ -4928,6 +4927,7 @@ pub mod g2 {
     }
     /// `LEFT[i][j] = (k, sign)`: `e_i e_j = sign e_k` by component index. Used only by
     /// the general inverse, never by a product.
+    #[allow(dead_code)]
     const LEFT: [[(usize, i8); 4usize]; 4usize] = [
         [(0usize, 1i8), (1usize, 1i8), (2usize, 1i8), (3usize, 1i8)],
         [(1usize, 1i8), (0usize, 1i8), (3usize, 1i8), (2usize, 1i8)],
@@ -4936,6 +4936,7 @@ pub mod g2 {
     ];
     /// Solves `A X = 1` by Gaussian elimination with partial pivoting; `None` when a
     /// pivot vanishes relative to the largest entry.
+    #[allow(dead_code)]
     fn multivector_inverse(a: Multivector) -> Option<Multivector> {
         let a = a.to_array();
         let mut m = [[0.0 as f64; 4usize]; 4usize];

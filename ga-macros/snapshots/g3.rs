@@ -467,7 +467,6 @@ pub mod g3 {
         /// in four dimensions is not).
         #[must_use]
         pub fn is_blade(self) -> bool {
-            let _ = Zero;
             true
         }
         /// Factors a blade into orthogonal vectors whose geometric product is the blade,
@@ -7941,6 +7940,7 @@ pub mod g3 {
     }
     /// `LEFT[i][j] = (k, sign)`: `e_i e_j = sign e_k` by component index. Used only by
     /// the general inverse, never by a product.
+    #[allow(dead_code)]
     const LEFT: [[(usize, i8); 8usize]; 8usize] = [
         [
             (0usize, 1i8),
@@ -8025,6 +8025,7 @@ pub mod g3 {
     ];
     /// Solves `A X = 1` by Gaussian elimination with partial pivoting; `None` when a
     /// pivot vanishes relative to the largest entry.
+    #[allow(dead_code)]
     fn multivector_inverse(a: Multivector) -> Option<Multivector> {
         let a = a.to_array();
         let mut m = [[0.0 as f64; 8usize]; 8usize];

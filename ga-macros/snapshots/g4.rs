@@ -14712,6 +14712,7 @@ pub mod g4 {
     }
     /// `LEFT[i][j] = (k, sign)`: `e_i e_j = sign e_k` by component index. Used only by
     /// the general inverse, never by a product.
+    #[allow(dead_code)]
     const LEFT: [[(usize, i8); 16usize]; 16usize] = [
         [
             (0usize, 1i8),
@@ -15004,6 +15005,7 @@ pub mod g4 {
     ];
     /// Solves `A X = 1` by Gaussian elimination with partial pivoting; `None` when a
     /// pivot vanishes relative to the largest entry.
+    #[allow(dead_code)]
     fn multivector_inverse(a: Multivector) -> Option<Multivector> {
         let a = a.to_array();
         let mut m = [[0.0 as f64; 16usize]; 16usize];

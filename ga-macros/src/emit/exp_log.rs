@@ -1,11 +1,11 @@
 //! `Bivector::exp` and `Even::log` in closed form. See docs/derivations/exp-log.md.
 
 use proc_macro2::TokenStream;
-use quote::{format_ident, quote};
+use quote::quote;
 
 use super::expr::{construct, field_ident, float, scalar_type, signed_sum, Operand};
 use super::products::product_value;
-use crate::algebra::{grade, Blade, Involution, ProductKind};
+use crate::algebra::{Blade, Involution, ProductKind};
 use crate::plan::{quadratic_self, Output, Plan, TypeId};
 
 /// `sum c a_i a_j` over the grade-`blade` part of `A A` (like terms collected).
@@ -129,7 +129,6 @@ pub fn emit_exp(plan: &Plan) -> TokenStream {
             acc
         }
     };
-    let _ = grade;
     let doc = if n <= 5 {
         "`exp(B)` in closed form for every bivector and every metric: cos/sin, cosh/sinh or \
          1 + B per invariant plane (see docs/derivations/exp-log.md)."
@@ -185,7 +184,6 @@ pub fn emit_log(plan: &Plan) -> TokenStream {
             Bivector { #(#p_fields: g0 * p.#p_fields + g4 * p_unit.#p_fields),* }
         }
     };
-    let _ = format_ident!("x");
     quote! {
         impl Even {
             /// The bivector `B` with `B.exp() == self` on the principal range (rotation
@@ -198,7 +196,8 @@ pub fn emit_log(plan: &Plan) -> TokenStream {
     }
 }
 
-/// The scalar functions behind exp and log, emitted once per algebra.
+/// The scalar functions behind exp and log, emitted once per algebra. Each carries
+/// `allow(dead_code)` because which of them a module calls depends on its dimension.
 pub fn emit_scalar_functions(plan: &Plan) -> TokenStream {
     let s = scalar_type(plan);
     quote! {

@@ -76,6 +76,9 @@ pub fn module_items(spec: &Spec, plan: &Plan) -> TokenStream {
 pub fn module(spec: &Spec, plan: &Plan) -> TokenStream {
     let items = module_items(spec, plan);
     let (attrs, vis, name) = (&spec.attrs, &spec.vis, &spec.name);
+    // Generated code follows the sign table term by term (`a.s * b.s - a.e12 * b.e12`,
+    // constructors with one argument per component), which clippy's style lints would
+    // rewrite; the user's own lints should not fire on code they did not write.
     quote! {
         #(#attrs)*
         #[allow(clippy::all, clippy::pedantic, clippy::nursery)]

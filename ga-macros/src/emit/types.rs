@@ -4,7 +4,7 @@ use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 
 use super::expr::{field_ident, scalar_type, type_tokens};
-use crate::algebra::{blade_name, grade};
+use crate::algebra::blade_name;
 use crate::plan::{Plan, TypeId, TypeKind};
 
 fn describe(plan: &Plan, id: TypeId) -> String {
@@ -179,6 +179,5 @@ pub fn emit_support_items(plan: &Plan) -> TokenStream {
             }
         });
     }
-    let _ = grade;
     out
 }

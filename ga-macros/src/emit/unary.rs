@@ -6,7 +6,7 @@ use quote::{format_ident, quote};
 use super::expr::{
     construct, field_ident, float, output_type, scalar_type, signed_sum, type_tokens, Operand,
 };
-use crate::algebra::{grade, Involution};
+use crate::algebra::Involution;
 use crate::plan::{quadratic_self, Output, Plan, TypeId, TypeKind};
 use crate::spec::Op;
 
@@ -270,7 +270,6 @@ fn projections(plan: &Plan, t: TypeId) -> TokenStream {
             });
         }
     }
-    let _ = grade;
     out
 }
 
@@ -291,14 +290,15 @@ pub fn emit_multivector_inverse(plan: &Plan) -> TokenStream {
         });
         quote!([#(#entries),*])
     });
-    let _ = grade;
     quote! {
         /// `LEFT[i][j] = (k, sign)`: `e_i e_j = sign e_k` by component index. Used only by
         /// the general inverse, never by a product.
+        #[allow(dead_code)]
         const LEFT: [[(usize, i8); #len]; #len] = [#(#rows),*];
 
         /// Solves `A X = 1` by Gaussian elimination with partial pivoting; `None` when a
         /// pivot vanishes relative to the largest entry.
+        #[allow(dead_code)]
         fn multivector_inverse(a: Multivector) -> Option<Multivector> {
             let a = a.to_array();
             let mut m = [[0.0 as #s; #len]; #len];

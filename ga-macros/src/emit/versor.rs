@@ -30,7 +30,9 @@ pub fn emit_sandwiches(plan: &Plan) -> TokenStream {
         for &x in &plan.emitted {
             out.extend(sandwich_impl(plan, v, x));
         }
-        out.extend(emit_sandwich_matrix(plan, v));
+        if plan.emitted.contains(&TypeId::grade(1)) {
+            out.extend(emit_sandwich_matrix(plan, v));
+        }
     }
     out
 }
@@ -332,7 +334,8 @@ pub fn emit_blades(plan: &Plan, t: TypeId) -> TokenStream {
         let this = Operand::new(quote!(self), t);
         let (wedge, output) = product_value(plan, ProductKind::Outer, &this, &this);
         let check = match output {
-            Output::Zero => quote!(let _ = #wedge; true),
+            // B ^ B has no components below four dimensions: every bivector is a blade.
+            Output::Zero => quote!(true),
             _ => quote! {
                 let wedge = #wedge;
                 let size = self.to_array().iter().map(|c| c * c).sum::<#s>();
@@ -349,8 +352,6 @@ pub fn emit_blades(plan: &Plan, t: TypeId) -> TokenStream {
             }
         });
     }
-    let n = plan.metric.dimension();
-    let mv = TypeId::multivector(n);
     let k_lit = k;
     let fields = plan
         .types
@@ -420,7 +421,6 @@ pub fn emit_blades(plan: &Plan, t: TypeId) -> TokenStream {
             }
         }
     });
-    let _ = mv;
     quote! {
         impl #name {
             #methods
@@ -428,7 +428,8 @@ pub fn emit_blades(plan: &Plan, t: TypeId) -> TokenStream {
     }
 }
 
-/// Private full-algebra products used by runtime algorithms (never by a product impl).
+/// Private full-algebra products used by runtime algorithms (never by a product impl);
+/// `allow(dead_code)` because an `ops:` list may leave out the algorithms that call them.
 pub fn emit_multivector_helpers(plan: &Plan) -> TokenStream {
     let n = plan.metric.dimension();
     let mv = TypeId::multivector(n);

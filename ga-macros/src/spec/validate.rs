@@ -162,8 +162,7 @@ pub fn validate(
     let mut lanes: Option<RawLanes> = None;
     for entry in entries {
         let key = entry.key.to_string();
-        if let Some(first) = seen.iter().find(|k| **k == entry.key) {
-            let _ = first;
+        if seen.contains(&entry.key) {
             cx.error_spanned_by(
                 &entry.key,
                 format!("duplicate key `{key}`: give each key once"),
