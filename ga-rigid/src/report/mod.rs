@@ -30,9 +30,10 @@ pub fn report(size: Size) -> Result<String, Error> {
     let _ = writeln!(
         out,
         "# ga-rigid report ({})\n\nAttitude error: the angle of ~R_ref R (rad) at the end \
-         time; |m| error relative; time: wall clock for the whole run, {}; reference: the \
-         exact flow (Jacobi elliptic functions) for free bodies, Dormand-Prince at 1e-13 \
-         under a torque.\n",
+         time. m error: the body angular momentum's error relative to its size. Energy \
+         drift: relative, kinetic plus the torque's potential. Time: wall clock for the \
+         whole run, {}. Reference: the exact flow (Jacobi elliptic functions) for free \
+         bodies, Dormand-Prince at 1e-13 under a torque.\n",
         match size {
             Size::Quick => "quick",
             Size::Full => "full",
