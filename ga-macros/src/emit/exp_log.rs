@@ -3,31 +3,14 @@
 use proc_macro2::TokenStream;
 use quote::quote;
 
-use super::expr::{construct, field_ident, float, scalar_type, signed_sum, Operand};
+use super::expr::{construct, field_ident, float, scalar_type, Operand};
 use super::products::product_value;
 use crate::algebra::{Blade, Involution, ProductKind};
-use crate::plan::{quadratic_self, Output, Plan, TypeId};
+use crate::plan::{Output, Plan, TypeId};
 
-/// `sum c a_i a_j` over the grade-`blade` part of `A A` (like terms collected).
+/// The grade-`blade` part of `A A`.
 fn self_square_component(plan: &Plan, operand: &Operand, blade: Blade) -> TokenStream {
-    let q = quadratic_self(
-        &plan.metric,
-        &plan.types.get(operand.ty).blades,
-        Involution::Identity,
-    );
-    let terms: Vec<(i32, TokenStream)> = q
-        .get(&blade)
-        .map(|per_k| {
-            per_k[&0]
-                .iter()
-                .map(|(&(i, j), &c)| {
-                    let (a, b) = (operand.component(plan, i), operand.component(plan, j));
-                    (c, quote!(#a * #b))
-                })
-                .collect()
-        })
-        .unwrap_or_default();
-    signed_sum(&terms)
+    super::expr::quadratic_component(plan, operand, Involution::Identity, blade)
 }
 
 fn grade_blades(plan: &Plan, k: usize) -> Vec<Blade> {

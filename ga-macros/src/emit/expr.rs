@@ -202,3 +202,29 @@ pub fn construct(
         }
     }
 }
+
+/// The component on `blade` of `A f(A)`, `f` an involution, as a signed sum of products of
+/// pairs of `A`'s components with like terms collected (`A A` for exp, `A ~A` for the
+/// inverse's denominator).
+pub fn quadratic_component(
+    plan: &Plan,
+    operand: &Operand,
+    involution: crate::algebra::Involution,
+    blade: Blade,
+) -> TokenStream {
+    let q =
+        crate::plan::quadratic_self(&plan.metric, &plan.types.get(operand.ty).blades, involution);
+    let terms: Vec<(i32, TokenStream)> = q
+        .get(&blade)
+        .map(|per_k| {
+            per_k[&0]
+                .iter()
+                .map(|(&(i, j), &c)| {
+                    let (a, b) = (operand.component(plan, i), operand.component(plan, j));
+                    (c, quote!(#a * #b))
+                })
+                .collect()
+        })
+        .unwrap_or_default();
+    signed_sum(&terms)
+}

@@ -7,7 +7,7 @@ use super::expr::{
     construct, field_ident, float, output_type, scalar_type, signed_sum, type_tokens, Operand,
 };
 use crate::algebra::Involution;
-use crate::plan::{quadratic_self, Output, Plan, TypeId, TypeKind};
+use crate::plan::{Output, Plan, TypeId, TypeKind};
 use crate::spec::Op;
 
 /// The unary methods of one type, as one inherent impl.
@@ -180,21 +180,8 @@ fn inverse(plan: &Plan, t: TypeId) -> TokenStream {
     let out_ty = output_type(plan, output);
     let zero = float(0.0);
     if plan.has_scalar_self_product(t) {
-        let q = quadratic_self(&plan.metric, &plan.types.get(t).blades, Involution::Reverse);
         let this = Operand::new(quote!(self), t);
-        let scalar_terms: Vec<(i32, TokenStream)> = q
-            .get(&0)
-            .map(|per_k| {
-                per_k[&0]
-                    .iter()
-                    .map(|(&(i, j), &c)| {
-                        let (a, b) = (this.component(plan, i), this.component(plan, j));
-                        (c, quote!(#a * #b))
-                    })
-                    .collect()
-            })
-            .unwrap_or_default();
-        let denominator = signed_sum(&scalar_terms);
+        let denominator = super::expr::quadratic_component(plan, &this, Involution::Reverse, 0);
         return quote! {
             /// The inverse `~A / (A ~A)` (here `A ~A` is a scalar for every `A`), or `None`
             /// when `A ~A` is zero or the result is not finite.
