@@ -888,7 +888,8 @@ pub mod g2 {
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f64 {
-            self.s * self.s + self.e1 * self.e1 + self.e2 * self.e2 + self.e12 * self.e12
+            (self.s * self.s + self.e1 * self.e1)
+                + (self.e2 * self.e2 + self.e12 * self.e12)
         }
         /// `sqrt(|<A ~A>_0|)`.
         #[inline]
@@ -1349,14 +1350,14 @@ pub mod g2 {
         #[inline]
         fn mul(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.s * rhs.s + self.e1 * rhs.e1 + self.e2 * rhs.e2
-                    - self.e12 * rhs.e12,
-                e1: self.s * rhs.e1 + self.e1 * rhs.s + self.e12 * rhs.e2
-                    - self.e2 * rhs.e12,
-                e2: self.s * rhs.e2 + self.e1 * rhs.e12 + self.e2 * rhs.s
-                    - self.e12 * rhs.e1,
-                e12: self.s * rhs.e12 + self.e1 * rhs.e2 + self.e12 * rhs.s
-                    - self.e2 * rhs.e1,
+                s: (self.s * rhs.s + self.e1 * rhs.e1)
+                    + (self.e2 * rhs.e2 - self.e12 * rhs.e12),
+                e1: (self.s * rhs.e1 + self.e1 * rhs.s)
+                    + (self.e12 * rhs.e2 - self.e2 * rhs.e12),
+                e2: (self.s * rhs.e2 + self.e1 * rhs.e12)
+                    + (self.e2 * rhs.s - self.e12 * rhs.e1),
+                e12: (self.s * rhs.e12 + self.e1 * rhs.e2)
+                    + (self.e12 * rhs.s - self.e2 * rhs.e1),
             }
         }
     }
@@ -1692,8 +1693,8 @@ pub mod g2 {
                 s: self.s * rhs.s,
                 e1: self.s * rhs.e1 + self.e1 * rhs.s,
                 e2: self.s * rhs.e2 + self.e2 * rhs.s,
-                e12: self.s * rhs.e12 + self.e1 * rhs.e2 + self.e12 * rhs.s
-                    - self.e2 * rhs.e1,
+                e12: (self.s * rhs.e12 + self.e1 * rhs.e2)
+                    + (self.e12 * rhs.s - self.e2 * rhs.e1),
             }
         }
     }
@@ -2041,12 +2042,12 @@ pub mod g2 {
         #[inline]
         fn bitor(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.s * rhs.s + self.e1 * rhs.e1 + self.e2 * rhs.e2
-                    - self.e12 * rhs.e12,
-                e1: self.s * rhs.e1 + self.e1 * rhs.s + self.e12 * rhs.e2
-                    - self.e2 * rhs.e12,
-                e2: self.s * rhs.e2 + self.e1 * rhs.e12 + self.e2 * rhs.s
-                    - self.e12 * rhs.e1,
+                s: (self.s * rhs.s + self.e1 * rhs.e1)
+                    + (self.e2 * rhs.e2 - self.e12 * rhs.e12),
+                e1: (self.s * rhs.e1 + self.e1 * rhs.s)
+                    + (self.e12 * rhs.e2 - self.e2 * rhs.e12),
+                e2: (self.s * rhs.e2 + self.e1 * rhs.e12)
+                    + (self.e2 * rhs.s - self.e12 * rhs.e1),
                 e12: self.s * rhs.e12 + self.e12 * rhs.s,
             }
         }
@@ -2372,8 +2373,8 @@ pub mod g2 {
         #[inline]
         fn left_contraction(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.s * rhs.s + self.e1 * rhs.e1 + self.e2 * rhs.e2
-                    - self.e12 * rhs.e12,
+                s: (self.s * rhs.s + self.e1 * rhs.e1)
+                    + (self.e2 * rhs.e2 - self.e12 * rhs.e12),
                 e1: self.s * rhs.e1 - self.e2 * rhs.e12,
                 e2: self.s * rhs.e2 + self.e1 * rhs.e12,
                 e12: self.s * rhs.e12,
@@ -2701,8 +2702,8 @@ pub mod g2 {
         #[inline]
         fn right_contraction(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.s * rhs.s + self.e1 * rhs.e1 + self.e2 * rhs.e2
-                    - self.e12 * rhs.e12,
+                s: (self.s * rhs.s + self.e1 * rhs.e1)
+                    + (self.e2 * rhs.e2 - self.e12 * rhs.e12),
                 e1: self.e1 * rhs.s + self.e12 * rhs.e2,
                 e2: self.e2 * rhs.s - self.e12 * rhs.e1,
                 e12: self.e12 * rhs.s,
@@ -2965,7 +2966,7 @@ pub mod g2 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Multivector) -> f64 {
-            self.s * rhs.s + self.e1 * rhs.e1 + self.e2 * rhs.e2 - self.e12 * rhs.e12
+            (self.s * rhs.s + self.e1 * rhs.e1) + (self.e2 * rhs.e2 - self.e12 * rhs.e12)
         }
     }
     impl Commutator<Vector> for f64 {
@@ -4993,7 +4994,8 @@ pub mod g2 {
     /// where a general linear solve would lose digits; `None` for a null blade.
     #[allow(dead_code)]
     fn mv_blade_inverse(a: Multivector) -> Option<Multivector> {
-        let norm_squared: f64 = a.s * a.s + a.e1 * a.e1 + a.e2 * a.e2 + a.e12 * a.e12;
+        let norm_squared: f64 = (a.s * a.s + a.e1 * a.e1)
+            + (a.e2 * a.e2 + a.e12 * a.e12);
         if norm_squared == 0.0 || !norm_squared.is_finite() {
             return None;
         }
@@ -5009,16 +5011,16 @@ pub mod g2 {
     #[allow(dead_code)]
     fn mv_geometric(a: Multivector, b: Multivector) -> Multivector {
         Multivector {
-            s: a.s * b.s + a.e1 * b.e1 + a.e2 * b.e2 - a.e12 * b.e12,
-            e1: a.s * b.e1 + a.e1 * b.s + a.e12 * b.e2 - a.e2 * b.e12,
-            e2: a.s * b.e2 + a.e1 * b.e12 + a.e2 * b.s - a.e12 * b.e1,
-            e12: a.s * b.e12 + a.e1 * b.e2 + a.e12 * b.s - a.e2 * b.e1,
+            s: (a.s * b.s + a.e1 * b.e1) + (a.e2 * b.e2 - a.e12 * b.e12),
+            e1: (a.s * b.e1 + a.e1 * b.s) + (a.e12 * b.e2 - a.e2 * b.e12),
+            e2: (a.s * b.e2 + a.e1 * b.e12) + (a.e2 * b.s - a.e12 * b.e1),
+            e12: (a.s * b.e12 + a.e1 * b.e2) + (a.e12 * b.s - a.e2 * b.e1),
         }
     }
     #[allow(dead_code)]
     fn mv_left_contraction(a: Multivector, b: Multivector) -> Multivector {
         Multivector {
-            s: a.s * b.s + a.e1 * b.e1 + a.e2 * b.e2 - a.e12 * b.e12,
+            s: (a.s * b.s + a.e1 * b.e1) + (a.e2 * b.e2 - a.e12 * b.e12),
             e1: a.s * b.e1 - a.e2 * b.e12,
             e2: a.s * b.e2 + a.e1 * b.e12,
             e12: a.s * b.e12,
@@ -5026,6 +5028,7 @@ pub mod g2 {
     }
     impl Bivector {
         ///`exp(B)` in closed form for every bivector and every metric: cos/sin, cosh/sinh or 1 + B per invariant plane (see docs/derivations/exp-log.md).
+        #[inline]
         #[must_use]
         pub fn exp(self) -> Even {
             let x: f64 = -self.e12 * self.e12;
@@ -5039,6 +5042,7 @@ pub mod g2 {
     impl Even {
         /// The bivector `B` with `B.exp() == self` on the principal range (rotation
         /// angles below pi per plane); `self` must be a unit rotor.
+        #[inline]
         #[must_use]
         pub fn log(self) -> Bivector {
             let p = Bivector { e12: self.e12 };

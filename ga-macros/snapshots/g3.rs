@@ -161,7 +161,7 @@ pub mod g3 {
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f64 {
-            self.e1 * self.e1 + self.e2 * self.e2 + self.e3 * self.e3
+            (self.e1 * self.e1 + self.e2 * self.e2) + self.e3 * self.e3
         }
         /// `sqrt(|<A ~A>_0|)`.
         #[inline]
@@ -187,7 +187,8 @@ pub mod g3 {
         #[inline]
         #[must_use]
         pub fn inverse(self) -> Option<Vector> {
-            let denominator = self.e1 * self.e1 + self.e2 * self.e2 + self.e3 * self.e3;
+            let denominator = (self.e1 * self.e1 + self.e2 * self.e2)
+                + self.e3 * self.e3;
             if denominator == 0.0 {
                 return None;
             }
@@ -249,8 +250,8 @@ pub mod g3 {
                         e2: projected.e2,
                         e3: projected.e3,
                     };
-                    let candidate_size = (candidate.e1 * candidate.e1
-                        + candidate.e2 * candidate.e2 + candidate.e3 * candidate.e3)
+                    let candidate_size = ((candidate.e1 * candidate.e1
+                        + candidate.e2 * candidate.e2) + candidate.e3 * candidate.e3)
                         .abs();
                     if candidate_size > best_size {
                         best = candidate;
@@ -404,7 +405,7 @@ pub mod g3 {
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f64 {
-            self.e12 * self.e12 + self.e13 * self.e13 + self.e23 * self.e23
+            (self.e12 * self.e12 + self.e13 * self.e13) + self.e23 * self.e23
         }
         /// `sqrt(|<A ~A>_0|)`.
         #[inline]
@@ -430,7 +431,7 @@ pub mod g3 {
         #[inline]
         #[must_use]
         pub fn inverse(self) -> Option<Bivector> {
-            let denominator = self.e12 * self.e12 + self.e13 * self.e13
+            let denominator = (self.e12 * self.e12 + self.e13 * self.e13)
                 + self.e23 * self.e23;
             if denominator == 0.0 {
                 return None;
@@ -499,8 +500,8 @@ pub mod g3 {
                         e2: projected.e2,
                         e3: projected.e3,
                     };
-                    let candidate_size = (candidate.e1 * candidate.e1
-                        + candidate.e2 * candidate.e2 + candidate.e3 * candidate.e3)
+                    let candidate_size = ((candidate.e1 * candidate.e1
+                        + candidate.e2 * candidate.e2) + candidate.e3 * candidate.e3)
                         .abs();
                     if candidate_size > best_size {
                         best = candidate;
@@ -704,8 +705,8 @@ pub mod g3 {
                         e2: projected.e2,
                         e3: projected.e3,
                     };
-                    let candidate_size = (candidate.e1 * candidate.e1
-                        + candidate.e2 * candidate.e2 + candidate.e3 * candidate.e3)
+                    let candidate_size = ((candidate.e1 * candidate.e1
+                        + candidate.e2 * candidate.e2) + candidate.e3 * candidate.e3)
                         .abs();
                     if candidate_size > best_size {
                         best = candidate;
@@ -870,8 +871,8 @@ pub mod g3 {
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f64 {
-            self.s * self.s + self.e12 * self.e12 + self.e13 * self.e13
-                + self.e23 * self.e23
+            (self.s * self.s + self.e12 * self.e12)
+                + (self.e13 * self.e13 + self.e23 * self.e23)
         }
         /// `sqrt(|<A ~A>_0|)`.
         #[inline]
@@ -897,8 +898,8 @@ pub mod g3 {
         #[inline]
         #[must_use]
         pub fn inverse(self) -> Option<Even> {
-            let denominator = self.s * self.s + self.e12 * self.e12 + self.e13 * self.e13
-                + self.e23 * self.e23;
+            let denominator = (self.s * self.s + self.e12 * self.e12)
+                + (self.e13 * self.e13 + self.e23 * self.e23);
             if denominator == 0.0 {
                 return None;
             }
@@ -1065,8 +1066,8 @@ pub mod g3 {
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f64 {
-            self.e1 * self.e1 + self.e2 * self.e2 + self.e3 * self.e3
-                + self.e123 * self.e123
+            (self.e1 * self.e1 + self.e2 * self.e2)
+                + (self.e3 * self.e3 + self.e123 * self.e123)
         }
         /// `sqrt(|<A ~A>_0|)`.
         #[inline]
@@ -1092,8 +1093,8 @@ pub mod g3 {
         #[inline]
         #[must_use]
         pub fn inverse(self) -> Option<Odd> {
-            let denominator = self.e1 * self.e1 + self.e2 * self.e2 + self.e3 * self.e3
-                + self.e123 * self.e123;
+            let denominator = (self.e1 * self.e1 + self.e2 * self.e2)
+                + (self.e3 * self.e3 + self.e123 * self.e123);
             if denominator == 0.0 {
                 return None;
             }
@@ -1306,9 +1307,10 @@ pub mod g3 {
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f64 {
-            self.s * self.s + self.e1 * self.e1 + self.e2 * self.e2 + self.e3 * self.e3
-                + self.e12 * self.e12 + self.e13 * self.e13 + self.e23 * self.e23
-                + self.e123 * self.e123
+            ((self.s * self.s + self.e1 * self.e1)
+                + (self.e2 * self.e2 + self.e3 * self.e3))
+                + ((self.e12 * self.e12 + self.e13 * self.e13)
+                    + (self.e23 * self.e23 + self.e123 * self.e123))
         }
         /// `sqrt(|<A ~A>_0|)`.
         #[inline]
@@ -1526,7 +1528,7 @@ pub mod g3 {
         #[inline]
         fn mul(self, rhs: Vector) -> Even {
             Even {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3,
                 e12: self.e1 * rhs.e2 - self.e2 * rhs.e1,
                 e13: self.e1 * rhs.e3 - self.e3 * rhs.e1,
                 e23: self.e2 * rhs.e3 - self.e3 * rhs.e2,
@@ -1538,10 +1540,10 @@ pub mod g3 {
         #[inline]
         fn mul(self, rhs: Bivector) -> Odd {
             Odd {
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13,
+                e1: -(self.e2 * rhs.e12 + self.e3 * rhs.e13),
                 e2: self.e1 * rhs.e12 - self.e3 * rhs.e23,
                 e3: self.e1 * rhs.e13 + self.e2 * rhs.e23,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 - self.e2 * rhs.e13,
+                e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12) - self.e2 * rhs.e13,
             }
         }
     }
@@ -1561,10 +1563,10 @@ pub mod g3 {
         #[inline]
         fn mul(self, rhs: Even) -> Odd {
             Odd {
-                e1: self.e1 * rhs.s - self.e2 * rhs.e12 - self.e3 * rhs.e13,
-                e2: self.e1 * rhs.e12 + self.e2 * rhs.s - self.e3 * rhs.e23,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e3 * rhs.s,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 - self.e2 * rhs.e13,
+                e1: (self.e1 * rhs.s - self.e2 * rhs.e12) - self.e3 * rhs.e13,
+                e2: (self.e1 * rhs.e12 + self.e2 * rhs.s) - self.e3 * rhs.e23,
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23) + self.e3 * rhs.s,
+                e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12) - self.e2 * rhs.e13,
             }
         }
     }
@@ -1573,10 +1575,10 @@ pub mod g3 {
         #[inline]
         fn mul(self, rhs: Odd) -> Even {
             Even {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3,
-                e12: self.e1 * rhs.e2 + self.e3 * rhs.e123 - self.e2 * rhs.e1,
-                e13: self.e1 * rhs.e3 - self.e2 * rhs.e123 - self.e3 * rhs.e1,
-                e23: self.e1 * rhs.e123 + self.e2 * rhs.e3 - self.e3 * rhs.e2,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3,
+                e12: (self.e1 * rhs.e2 + self.e3 * rhs.e123) - self.e2 * rhs.e1,
+                e13: (self.e1 * rhs.e3 - self.e2 * rhs.e123) - self.e3 * rhs.e1,
+                e23: (self.e1 * rhs.e123 + self.e2 * rhs.e3) - self.e3 * rhs.e2,
             }
         }
     }
@@ -1585,14 +1587,14 @@ pub mod g3 {
         #[inline]
         fn mul(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3,
-                e1: self.e1 * rhs.s - self.e2 * rhs.e12 - self.e3 * rhs.e13,
-                e2: self.e1 * rhs.e12 + self.e2 * rhs.s - self.e3 * rhs.e23,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e3 * rhs.s,
-                e12: self.e1 * rhs.e2 + self.e3 * rhs.e123 - self.e2 * rhs.e1,
-                e13: self.e1 * rhs.e3 - self.e2 * rhs.e123 - self.e3 * rhs.e1,
-                e23: self.e1 * rhs.e123 + self.e2 * rhs.e3 - self.e3 * rhs.e2,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 - self.e2 * rhs.e13,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3,
+                e1: (self.e1 * rhs.s - self.e2 * rhs.e12) - self.e3 * rhs.e13,
+                e2: (self.e1 * rhs.e12 + self.e2 * rhs.s) - self.e3 * rhs.e23,
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23) + self.e3 * rhs.s,
+                e12: (self.e1 * rhs.e2 + self.e3 * rhs.e123) - self.e2 * rhs.e1,
+                e13: (self.e1 * rhs.e3 - self.e2 * rhs.e123) - self.e3 * rhs.e1,
+                e23: (self.e1 * rhs.e123 + self.e2 * rhs.e3) - self.e3 * rhs.e2,
+                e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12) - self.e2 * rhs.e13,
             }
         }
     }
@@ -1614,8 +1616,8 @@ pub mod g3 {
             Odd {
                 e1: self.e12 * rhs.e2 + self.e13 * rhs.e3,
                 e2: self.e23 * rhs.e3 - self.e12 * rhs.e1,
-                e3: -self.e13 * rhs.e1 - self.e23 * rhs.e2,
-                e123: self.e12 * rhs.e3 + self.e23 * rhs.e1 - self.e13 * rhs.e2,
+                e3: -(self.e13 * rhs.e1 + self.e23 * rhs.e2),
+                e123: (self.e12 * rhs.e3 + self.e23 * rhs.e1) - self.e13 * rhs.e2,
             }
         }
     }
@@ -1624,7 +1626,7 @@ pub mod g3 {
         #[inline]
         fn mul(self, rhs: Bivector) -> Even {
             Even {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23,
+                s: -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23),
                 e12: self.e23 * rhs.e13 - self.e13 * rhs.e23,
                 e13: self.e12 * rhs.e23 - self.e23 * rhs.e12,
                 e23: self.e13 * rhs.e12 - self.e12 * rhs.e13,
@@ -1647,10 +1649,10 @@ pub mod g3 {
         #[inline]
         fn mul(self, rhs: Even) -> Even {
             Even {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23,
-                e12: self.e12 * rhs.s + self.e23 * rhs.e13 - self.e13 * rhs.e23,
-                e13: self.e12 * rhs.e23 + self.e13 * rhs.s - self.e23 * rhs.e12,
-                e23: self.e13 * rhs.e12 + self.e23 * rhs.s - self.e12 * rhs.e13,
+                s: -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23),
+                e12: (self.e12 * rhs.s + self.e23 * rhs.e13) - self.e13 * rhs.e23,
+                e13: (self.e12 * rhs.e23 + self.e13 * rhs.s) - self.e23 * rhs.e12,
+                e23: (self.e13 * rhs.e12 + self.e23 * rhs.s) - self.e12 * rhs.e13,
             }
         }
     }
@@ -1659,10 +1661,10 @@ pub mod g3 {
         #[inline]
         fn mul(self, rhs: Odd) -> Odd {
             Odd {
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 - self.e23 * rhs.e123,
-                e2: self.e13 * rhs.e123 + self.e23 * rhs.e3 - self.e12 * rhs.e1,
-                e3: -self.e12 * rhs.e123 - self.e13 * rhs.e1 - self.e23 * rhs.e2,
-                e123: self.e12 * rhs.e3 + self.e23 * rhs.e1 - self.e13 * rhs.e2,
+                e1: (self.e12 * rhs.e2 + self.e13 * rhs.e3) - self.e23 * rhs.e123,
+                e2: (self.e13 * rhs.e123 + self.e23 * rhs.e3) - self.e12 * rhs.e1,
+                e3: -((self.e12 * rhs.e123 + self.e13 * rhs.e1) + self.e23 * rhs.e2),
+                e123: (self.e12 * rhs.e3 + self.e23 * rhs.e1) - self.e13 * rhs.e2,
             }
         }
     }
@@ -1671,14 +1673,14 @@ pub mod g3 {
         #[inline]
         fn mul(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23,
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 - self.e23 * rhs.e123,
-                e2: self.e13 * rhs.e123 + self.e23 * rhs.e3 - self.e12 * rhs.e1,
-                e3: -self.e12 * rhs.e123 - self.e13 * rhs.e1 - self.e23 * rhs.e2,
-                e12: self.e12 * rhs.s + self.e23 * rhs.e13 - self.e13 * rhs.e23,
-                e13: self.e12 * rhs.e23 + self.e13 * rhs.s - self.e23 * rhs.e12,
-                e23: self.e13 * rhs.e12 + self.e23 * rhs.s - self.e12 * rhs.e13,
-                e123: self.e12 * rhs.e3 + self.e23 * rhs.e1 - self.e13 * rhs.e2,
+                s: -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23),
+                e1: (self.e12 * rhs.e2 + self.e13 * rhs.e3) - self.e23 * rhs.e123,
+                e2: (self.e13 * rhs.e123 + self.e23 * rhs.e3) - self.e12 * rhs.e1,
+                e3: -((self.e12 * rhs.e123 + self.e13 * rhs.e1) + self.e23 * rhs.e2),
+                e12: (self.e12 * rhs.s + self.e23 * rhs.e13) - self.e13 * rhs.e23,
+                e13: (self.e12 * rhs.e23 + self.e13 * rhs.s) - self.e23 * rhs.e12,
+                e23: (self.e13 * rhs.e12 + self.e23 * rhs.s) - self.e12 * rhs.e13,
+                e123: (self.e12 * rhs.e3 + self.e23 * rhs.e1) - self.e13 * rhs.e2,
             }
         }
     }
@@ -1775,10 +1777,10 @@ pub mod g3 {
         #[inline]
         fn mul(self, rhs: Vector) -> Odd {
             Odd {
-                e1: self.s * rhs.e1 + self.e12 * rhs.e2 + self.e13 * rhs.e3,
-                e2: self.s * rhs.e2 + self.e23 * rhs.e3 - self.e12 * rhs.e1,
-                e3: self.s * rhs.e3 - self.e13 * rhs.e1 - self.e23 * rhs.e2,
-                e123: self.e12 * rhs.e3 + self.e23 * rhs.e1 - self.e13 * rhs.e2,
+                e1: (self.s * rhs.e1 + self.e12 * rhs.e2) + self.e13 * rhs.e3,
+                e2: (self.s * rhs.e2 + self.e23 * rhs.e3) - self.e12 * rhs.e1,
+                e3: (self.s * rhs.e3 - self.e13 * rhs.e1) - self.e23 * rhs.e2,
+                e123: (self.e12 * rhs.e3 + self.e23 * rhs.e1) - self.e13 * rhs.e2,
             }
         }
     }
@@ -1787,10 +1789,10 @@ pub mod g3 {
         #[inline]
         fn mul(self, rhs: Bivector) -> Even {
             Even {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23,
-                e12: self.s * rhs.e12 + self.e23 * rhs.e13 - self.e13 * rhs.e23,
-                e13: self.s * rhs.e13 + self.e12 * rhs.e23 - self.e23 * rhs.e12,
-                e23: self.s * rhs.e23 + self.e13 * rhs.e12 - self.e12 * rhs.e13,
+                s: -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23),
+                e12: (self.s * rhs.e12 + self.e23 * rhs.e13) - self.e13 * rhs.e23,
+                e13: (self.s * rhs.e13 + self.e12 * rhs.e23) - self.e23 * rhs.e12,
+                e23: (self.s * rhs.e23 + self.e13 * rhs.e12) - self.e12 * rhs.e13,
             }
         }
     }
@@ -1811,14 +1813,14 @@ pub mod g3 {
         #[inline]
         fn mul(self, rhs: Even) -> Even {
             Even {
-                s: self.s * rhs.s - self.e12 * rhs.e12 - self.e13 * rhs.e13
-                    - self.e23 * rhs.e23,
-                e12: self.s * rhs.e12 + self.e12 * rhs.s + self.e23 * rhs.e13
-                    - self.e13 * rhs.e23,
-                e13: self.s * rhs.e13 + self.e12 * rhs.e23 + self.e13 * rhs.s
-                    - self.e23 * rhs.e12,
-                e23: self.s * rhs.e23 + self.e13 * rhs.e12 + self.e23 * rhs.s
-                    - self.e12 * rhs.e13,
+                s: (self.s * rhs.s - self.e12 * rhs.e12)
+                    - (self.e13 * rhs.e13 + self.e23 * rhs.e23),
+                e12: (self.s * rhs.e12 + self.e12 * rhs.s)
+                    + (self.e23 * rhs.e13 - self.e13 * rhs.e23),
+                e13: (self.s * rhs.e13 + self.e12 * rhs.e23)
+                    + (self.e13 * rhs.s - self.e23 * rhs.e12),
+                e23: (self.s * rhs.e23 + self.e13 * rhs.e12)
+                    + (self.e23 * rhs.s - self.e12 * rhs.e13),
             }
         }
     }
@@ -1827,14 +1829,14 @@ pub mod g3 {
         #[inline]
         fn mul(self, rhs: Odd) -> Odd {
             Odd {
-                e1: self.s * rhs.e1 + self.e12 * rhs.e2 + self.e13 * rhs.e3
-                    - self.e23 * rhs.e123,
-                e2: self.s * rhs.e2 + self.e13 * rhs.e123 + self.e23 * rhs.e3
-                    - self.e12 * rhs.e1,
-                e3: self.s * rhs.e3 - self.e12 * rhs.e123 - self.e13 * rhs.e1
-                    - self.e23 * rhs.e2,
-                e123: self.s * rhs.e123 + self.e12 * rhs.e3 + self.e23 * rhs.e1
-                    - self.e13 * rhs.e2,
+                e1: (self.s * rhs.e1 + self.e12 * rhs.e2)
+                    + (self.e13 * rhs.e3 - self.e23 * rhs.e123),
+                e2: (self.s * rhs.e2 + self.e13 * rhs.e123)
+                    + (self.e23 * rhs.e3 - self.e12 * rhs.e1),
+                e3: (self.s * rhs.e3 - self.e12 * rhs.e123)
+                    - (self.e13 * rhs.e1 + self.e23 * rhs.e2),
+                e123: (self.s * rhs.e123 + self.e12 * rhs.e3)
+                    + (self.e23 * rhs.e1 - self.e13 * rhs.e2),
             }
         }
     }
@@ -1843,22 +1845,22 @@ pub mod g3 {
         #[inline]
         fn mul(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.s * rhs.s - self.e12 * rhs.e12 - self.e13 * rhs.e13
-                    - self.e23 * rhs.e23,
-                e1: self.s * rhs.e1 + self.e12 * rhs.e2 + self.e13 * rhs.e3
-                    - self.e23 * rhs.e123,
-                e2: self.s * rhs.e2 + self.e13 * rhs.e123 + self.e23 * rhs.e3
-                    - self.e12 * rhs.e1,
-                e3: self.s * rhs.e3 - self.e12 * rhs.e123 - self.e13 * rhs.e1
-                    - self.e23 * rhs.e2,
-                e12: self.s * rhs.e12 + self.e12 * rhs.s + self.e23 * rhs.e13
-                    - self.e13 * rhs.e23,
-                e13: self.s * rhs.e13 + self.e12 * rhs.e23 + self.e13 * rhs.s
-                    - self.e23 * rhs.e12,
-                e23: self.s * rhs.e23 + self.e13 * rhs.e12 + self.e23 * rhs.s
-                    - self.e12 * rhs.e13,
-                e123: self.s * rhs.e123 + self.e12 * rhs.e3 + self.e23 * rhs.e1
-                    - self.e13 * rhs.e2,
+                s: (self.s * rhs.s - self.e12 * rhs.e12)
+                    - (self.e13 * rhs.e13 + self.e23 * rhs.e23),
+                e1: (self.s * rhs.e1 + self.e12 * rhs.e2)
+                    + (self.e13 * rhs.e3 - self.e23 * rhs.e123),
+                e2: (self.s * rhs.e2 + self.e13 * rhs.e123)
+                    + (self.e23 * rhs.e3 - self.e12 * rhs.e1),
+                e3: (self.s * rhs.e3 - self.e12 * rhs.e123)
+                    - (self.e13 * rhs.e1 + self.e23 * rhs.e2),
+                e12: (self.s * rhs.e12 + self.e12 * rhs.s)
+                    + (self.e23 * rhs.e13 - self.e13 * rhs.e23),
+                e13: (self.s * rhs.e13 + self.e12 * rhs.e23)
+                    + (self.e13 * rhs.s - self.e23 * rhs.e12),
+                e23: (self.s * rhs.e23 + self.e13 * rhs.e12)
+                    + (self.e23 * rhs.s - self.e12 * rhs.e13),
+                e123: (self.s * rhs.e123 + self.e12 * rhs.e3)
+                    + (self.e23 * rhs.e1 - self.e13 * rhs.e2),
             }
         }
     }
@@ -1879,10 +1881,10 @@ pub mod g3 {
         #[inline]
         fn mul(self, rhs: Vector) -> Even {
             Even {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3,
-                e12: self.e1 * rhs.e2 + self.e123 * rhs.e3 - self.e2 * rhs.e1,
-                e13: self.e1 * rhs.e3 - self.e3 * rhs.e1 - self.e123 * rhs.e2,
-                e23: self.e2 * rhs.e3 + self.e123 * rhs.e1 - self.e3 * rhs.e2,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3,
+                e12: (self.e1 * rhs.e2 + self.e123 * rhs.e3) - self.e2 * rhs.e1,
+                e13: (self.e1 * rhs.e3 - self.e3 * rhs.e1) - self.e123 * rhs.e2,
+                e23: (self.e2 * rhs.e3 + self.e123 * rhs.e1) - self.e3 * rhs.e2,
             }
         }
     }
@@ -1891,10 +1893,10 @@ pub mod g3 {
         #[inline]
         fn mul(self, rhs: Bivector) -> Odd {
             Odd {
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13 - self.e123 * rhs.e23,
-                e2: self.e1 * rhs.e12 + self.e123 * rhs.e13 - self.e3 * rhs.e23,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 - self.e123 * rhs.e12,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 - self.e2 * rhs.e13,
+                e1: -((self.e2 * rhs.e12 + self.e3 * rhs.e13) + self.e123 * rhs.e23),
+                e2: (self.e1 * rhs.e12 + self.e123 * rhs.e13) - self.e3 * rhs.e23,
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23) - self.e123 * rhs.e12,
+                e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12) - self.e2 * rhs.e13,
             }
         }
     }
@@ -1915,14 +1917,14 @@ pub mod g3 {
         #[inline]
         fn mul(self, rhs: Even) -> Odd {
             Odd {
-                e1: self.e1 * rhs.s - self.e2 * rhs.e12 - self.e3 * rhs.e13
-                    - self.e123 * rhs.e23,
-                e2: self.e1 * rhs.e12 + self.e2 * rhs.s + self.e123 * rhs.e13
-                    - self.e3 * rhs.e23,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e3 * rhs.s
-                    - self.e123 * rhs.e12,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 + self.e123 * rhs.s
-                    - self.e2 * rhs.e13,
+                e1: (self.e1 * rhs.s - self.e2 * rhs.e12)
+                    - (self.e3 * rhs.e13 + self.e123 * rhs.e23),
+                e2: (self.e1 * rhs.e12 + self.e2 * rhs.s)
+                    + (self.e123 * rhs.e13 - self.e3 * rhs.e23),
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23)
+                    + (self.e3 * rhs.s - self.e123 * rhs.e12),
+                e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12)
+                    + (self.e123 * rhs.s - self.e2 * rhs.e13),
             }
         }
     }
@@ -1931,14 +1933,14 @@ pub mod g3 {
         #[inline]
         fn mul(self, rhs: Odd) -> Even {
             Even {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    - self.e123 * rhs.e123,
-                e12: self.e1 * rhs.e2 + self.e3 * rhs.e123 + self.e123 * rhs.e3
-                    - self.e2 * rhs.e1,
-                e13: self.e1 * rhs.e3 - self.e2 * rhs.e123 - self.e3 * rhs.e1
-                    - self.e123 * rhs.e2,
-                e23: self.e1 * rhs.e123 + self.e2 * rhs.e3 + self.e123 * rhs.e1
-                    - self.e3 * rhs.e2,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 - self.e123 * rhs.e123),
+                e12: (self.e1 * rhs.e2 + self.e3 * rhs.e123)
+                    + (self.e123 * rhs.e3 - self.e2 * rhs.e1),
+                e13: (self.e1 * rhs.e3 - self.e2 * rhs.e123)
+                    - (self.e3 * rhs.e1 + self.e123 * rhs.e2),
+                e23: (self.e1 * rhs.e123 + self.e2 * rhs.e3)
+                    + (self.e123 * rhs.e1 - self.e3 * rhs.e2),
             }
         }
     }
@@ -1947,22 +1949,22 @@ pub mod g3 {
         #[inline]
         fn mul(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    - self.e123 * rhs.e123,
-                e1: self.e1 * rhs.s - self.e2 * rhs.e12 - self.e3 * rhs.e13
-                    - self.e123 * rhs.e23,
-                e2: self.e1 * rhs.e12 + self.e2 * rhs.s + self.e123 * rhs.e13
-                    - self.e3 * rhs.e23,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e3 * rhs.s
-                    - self.e123 * rhs.e12,
-                e12: self.e1 * rhs.e2 + self.e3 * rhs.e123 + self.e123 * rhs.e3
-                    - self.e2 * rhs.e1,
-                e13: self.e1 * rhs.e3 - self.e2 * rhs.e123 - self.e3 * rhs.e1
-                    - self.e123 * rhs.e2,
-                e23: self.e1 * rhs.e123 + self.e2 * rhs.e3 + self.e123 * rhs.e1
-                    - self.e3 * rhs.e2,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 + self.e123 * rhs.s
-                    - self.e2 * rhs.e13,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 - self.e123 * rhs.e123),
+                e1: (self.e1 * rhs.s - self.e2 * rhs.e12)
+                    - (self.e3 * rhs.e13 + self.e123 * rhs.e23),
+                e2: (self.e1 * rhs.e12 + self.e2 * rhs.s)
+                    + (self.e123 * rhs.e13 - self.e3 * rhs.e23),
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23)
+                    + (self.e3 * rhs.s - self.e123 * rhs.e12),
+                e12: (self.e1 * rhs.e2 + self.e3 * rhs.e123)
+                    + (self.e123 * rhs.e3 - self.e2 * rhs.e1),
+                e13: (self.e1 * rhs.e3 - self.e2 * rhs.e123)
+                    - (self.e3 * rhs.e1 + self.e123 * rhs.e2),
+                e23: (self.e1 * rhs.e123 + self.e2 * rhs.e3)
+                    + (self.e123 * rhs.e1 - self.e3 * rhs.e2),
+                e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12)
+                    + (self.e123 * rhs.s - self.e2 * rhs.e13),
             }
         }
     }
@@ -1987,14 +1989,14 @@ pub mod g3 {
         #[inline]
         fn mul(self, rhs: Vector) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3,
-                e1: self.s * rhs.e1 + self.e12 * rhs.e2 + self.e13 * rhs.e3,
-                e2: self.s * rhs.e2 + self.e23 * rhs.e3 - self.e12 * rhs.e1,
-                e3: self.s * rhs.e3 - self.e13 * rhs.e1 - self.e23 * rhs.e2,
-                e12: self.e1 * rhs.e2 + self.e123 * rhs.e3 - self.e2 * rhs.e1,
-                e13: self.e1 * rhs.e3 - self.e3 * rhs.e1 - self.e123 * rhs.e2,
-                e23: self.e2 * rhs.e3 + self.e123 * rhs.e1 - self.e3 * rhs.e2,
-                e123: self.e12 * rhs.e3 + self.e23 * rhs.e1 - self.e13 * rhs.e2,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3,
+                e1: (self.s * rhs.e1 + self.e12 * rhs.e2) + self.e13 * rhs.e3,
+                e2: (self.s * rhs.e2 + self.e23 * rhs.e3) - self.e12 * rhs.e1,
+                e3: (self.s * rhs.e3 - self.e13 * rhs.e1) - self.e23 * rhs.e2,
+                e12: (self.e1 * rhs.e2 + self.e123 * rhs.e3) - self.e2 * rhs.e1,
+                e13: (self.e1 * rhs.e3 - self.e3 * rhs.e1) - self.e123 * rhs.e2,
+                e23: (self.e2 * rhs.e3 + self.e123 * rhs.e1) - self.e3 * rhs.e2,
+                e123: (self.e12 * rhs.e3 + self.e23 * rhs.e1) - self.e13 * rhs.e2,
             }
         }
     }
@@ -2003,14 +2005,14 @@ pub mod g3 {
         #[inline]
         fn mul(self, rhs: Bivector) -> Multivector {
             Multivector {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23,
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13 - self.e123 * rhs.e23,
-                e2: self.e1 * rhs.e12 + self.e123 * rhs.e13 - self.e3 * rhs.e23,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 - self.e123 * rhs.e12,
-                e12: self.s * rhs.e12 + self.e23 * rhs.e13 - self.e13 * rhs.e23,
-                e13: self.s * rhs.e13 + self.e12 * rhs.e23 - self.e23 * rhs.e12,
-                e23: self.s * rhs.e23 + self.e13 * rhs.e12 - self.e12 * rhs.e13,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 - self.e2 * rhs.e13,
+                s: -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23),
+                e1: -((self.e2 * rhs.e12 + self.e3 * rhs.e13) + self.e123 * rhs.e23),
+                e2: (self.e1 * rhs.e12 + self.e123 * rhs.e13) - self.e3 * rhs.e23,
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23) - self.e123 * rhs.e12,
+                e12: (self.s * rhs.e12 + self.e23 * rhs.e13) - self.e13 * rhs.e23,
+                e13: (self.s * rhs.e13 + self.e12 * rhs.e23) - self.e23 * rhs.e12,
+                e23: (self.s * rhs.e23 + self.e13 * rhs.e12) - self.e12 * rhs.e13,
+                e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12) - self.e2 * rhs.e13,
             }
         }
     }
@@ -2035,22 +2037,22 @@ pub mod g3 {
         #[inline]
         fn mul(self, rhs: Even) -> Multivector {
             Multivector {
-                s: self.s * rhs.s - self.e12 * rhs.e12 - self.e13 * rhs.e13
-                    - self.e23 * rhs.e23,
-                e1: self.e1 * rhs.s - self.e2 * rhs.e12 - self.e3 * rhs.e13
-                    - self.e123 * rhs.e23,
-                e2: self.e1 * rhs.e12 + self.e2 * rhs.s + self.e123 * rhs.e13
-                    - self.e3 * rhs.e23,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e3 * rhs.s
-                    - self.e123 * rhs.e12,
-                e12: self.s * rhs.e12 + self.e12 * rhs.s + self.e23 * rhs.e13
-                    - self.e13 * rhs.e23,
-                e13: self.s * rhs.e13 + self.e12 * rhs.e23 + self.e13 * rhs.s
-                    - self.e23 * rhs.e12,
-                e23: self.s * rhs.e23 + self.e13 * rhs.e12 + self.e23 * rhs.s
-                    - self.e12 * rhs.e13,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 + self.e123 * rhs.s
-                    - self.e2 * rhs.e13,
+                s: (self.s * rhs.s - self.e12 * rhs.e12)
+                    - (self.e13 * rhs.e13 + self.e23 * rhs.e23),
+                e1: (self.e1 * rhs.s - self.e2 * rhs.e12)
+                    - (self.e3 * rhs.e13 + self.e123 * rhs.e23),
+                e2: (self.e1 * rhs.e12 + self.e2 * rhs.s)
+                    + (self.e123 * rhs.e13 - self.e3 * rhs.e23),
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23)
+                    + (self.e3 * rhs.s - self.e123 * rhs.e12),
+                e12: (self.s * rhs.e12 + self.e12 * rhs.s)
+                    + (self.e23 * rhs.e13 - self.e13 * rhs.e23),
+                e13: (self.s * rhs.e13 + self.e12 * rhs.e23)
+                    + (self.e13 * rhs.s - self.e23 * rhs.e12),
+                e23: (self.s * rhs.e23 + self.e13 * rhs.e12)
+                    + (self.e23 * rhs.s - self.e12 * rhs.e13),
+                e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12)
+                    + (self.e123 * rhs.s - self.e2 * rhs.e13),
             }
         }
     }
@@ -2059,22 +2061,22 @@ pub mod g3 {
         #[inline]
         fn mul(self, rhs: Odd) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    - self.e123 * rhs.e123,
-                e1: self.s * rhs.e1 + self.e12 * rhs.e2 + self.e13 * rhs.e3
-                    - self.e23 * rhs.e123,
-                e2: self.s * rhs.e2 + self.e13 * rhs.e123 + self.e23 * rhs.e3
-                    - self.e12 * rhs.e1,
-                e3: self.s * rhs.e3 - self.e12 * rhs.e123 - self.e13 * rhs.e1
-                    - self.e23 * rhs.e2,
-                e12: self.e1 * rhs.e2 + self.e3 * rhs.e123 + self.e123 * rhs.e3
-                    - self.e2 * rhs.e1,
-                e13: self.e1 * rhs.e3 - self.e2 * rhs.e123 - self.e3 * rhs.e1
-                    - self.e123 * rhs.e2,
-                e23: self.e1 * rhs.e123 + self.e2 * rhs.e3 + self.e123 * rhs.e1
-                    - self.e3 * rhs.e2,
-                e123: self.s * rhs.e123 + self.e12 * rhs.e3 + self.e23 * rhs.e1
-                    - self.e13 * rhs.e2,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 - self.e123 * rhs.e123),
+                e1: (self.s * rhs.e1 + self.e12 * rhs.e2)
+                    + (self.e13 * rhs.e3 - self.e23 * rhs.e123),
+                e2: (self.s * rhs.e2 + self.e13 * rhs.e123)
+                    + (self.e23 * rhs.e3 - self.e12 * rhs.e1),
+                e3: (self.s * rhs.e3 - self.e12 * rhs.e123)
+                    - (self.e13 * rhs.e1 + self.e23 * rhs.e2),
+                e12: (self.e1 * rhs.e2 + self.e3 * rhs.e123)
+                    + (self.e123 * rhs.e3 - self.e2 * rhs.e1),
+                e13: (self.e1 * rhs.e3 - self.e2 * rhs.e123)
+                    - (self.e3 * rhs.e1 + self.e123 * rhs.e2),
+                e23: (self.e1 * rhs.e123 + self.e2 * rhs.e3)
+                    + (self.e123 * rhs.e1 - self.e3 * rhs.e2),
+                e123: (self.s * rhs.e123 + self.e12 * rhs.e3)
+                    + (self.e23 * rhs.e1 - self.e13 * rhs.e2),
             }
         }
     }
@@ -2083,30 +2085,38 @@ pub mod g3 {
         #[inline]
         fn mul(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.s * rhs.s + self.e1 * rhs.e1 + self.e2 * rhs.e2
-                    + self.e3 * rhs.e3 - self.e12 * rhs.e12 - self.e13 * rhs.e13
-                    - self.e23 * rhs.e23 - self.e123 * rhs.e123,
-                e1: self.s * rhs.e1 + self.e1 * rhs.s + self.e12 * rhs.e2
-                    + self.e13 * rhs.e3 - self.e2 * rhs.e12 - self.e3 * rhs.e13
-                    - self.e23 * rhs.e123 - self.e123 * rhs.e23,
-                e2: self.s * rhs.e2 + self.e1 * rhs.e12 + self.e2 * rhs.s
-                    + self.e13 * rhs.e123 + self.e23 * rhs.e3 + self.e123 * rhs.e13
-                    - self.e3 * rhs.e23 - self.e12 * rhs.e1,
-                e3: self.s * rhs.e3 + self.e1 * rhs.e13 + self.e2 * rhs.e23
-                    + self.e3 * rhs.s - self.e12 * rhs.e123 - self.e13 * rhs.e1
-                    - self.e23 * rhs.e2 - self.e123 * rhs.e12,
-                e12: self.s * rhs.e12 + self.e1 * rhs.e2 + self.e3 * rhs.e123
-                    + self.e12 * rhs.s + self.e23 * rhs.e13 + self.e123 * rhs.e3
-                    - self.e2 * rhs.e1 - self.e13 * rhs.e23,
-                e13: self.s * rhs.e13 + self.e1 * rhs.e3 + self.e12 * rhs.e23
-                    + self.e13 * rhs.s - self.e2 * rhs.e123 - self.e3 * rhs.e1
-                    - self.e23 * rhs.e12 - self.e123 * rhs.e2,
-                e23: self.s * rhs.e23 + self.e1 * rhs.e123 + self.e2 * rhs.e3
-                    + self.e13 * rhs.e12 + self.e23 * rhs.s + self.e123 * rhs.e1
-                    - self.e3 * rhs.e2 - self.e12 * rhs.e13,
-                e123: self.s * rhs.e123 + self.e1 * rhs.e23 + self.e3 * rhs.e12
-                    + self.e12 * rhs.e3 + self.e23 * rhs.e1 + self.e123 * rhs.s
-                    - self.e2 * rhs.e13 - self.e13 * rhs.e2,
+                s: ((self.s * rhs.s + self.e1 * rhs.e1)
+                    + (self.e2 * rhs.e2 + self.e3 * rhs.e3))
+                    - ((self.e12 * rhs.e12 + self.e13 * rhs.e13)
+                        + (self.e23 * rhs.e23 + self.e123 * rhs.e123)),
+                e1: ((self.s * rhs.e1 + self.e1 * rhs.s)
+                    + (self.e12 * rhs.e2 + self.e13 * rhs.e3))
+                    - ((self.e2 * rhs.e12 + self.e3 * rhs.e13)
+                        + (self.e23 * rhs.e123 + self.e123 * rhs.e23)),
+                e2: ((self.s * rhs.e2 + self.e1 * rhs.e12)
+                    + (self.e2 * rhs.s + self.e13 * rhs.e123))
+                    + ((self.e23 * rhs.e3 + self.e123 * rhs.e13)
+                        - (self.e3 * rhs.e23 + self.e12 * rhs.e1)),
+                e3: ((self.s * rhs.e3 + self.e1 * rhs.e13)
+                    + (self.e2 * rhs.e23 + self.e3 * rhs.s))
+                    - ((self.e12 * rhs.e123 + self.e13 * rhs.e1)
+                        + (self.e23 * rhs.e2 + self.e123 * rhs.e12)),
+                e12: ((self.s * rhs.e12 + self.e1 * rhs.e2)
+                    + (self.e3 * rhs.e123 + self.e12 * rhs.s))
+                    + ((self.e23 * rhs.e13 + self.e123 * rhs.e3)
+                        - (self.e2 * rhs.e1 + self.e13 * rhs.e23)),
+                e13: ((self.s * rhs.e13 + self.e1 * rhs.e3)
+                    + (self.e12 * rhs.e23 + self.e13 * rhs.s))
+                    - ((self.e2 * rhs.e123 + self.e3 * rhs.e1)
+                        + (self.e23 * rhs.e12 + self.e123 * rhs.e2)),
+                e23: ((self.s * rhs.e23 + self.e1 * rhs.e123)
+                    + (self.e2 * rhs.e3 + self.e13 * rhs.e12))
+                    + ((self.e23 * rhs.s + self.e123 * rhs.e1)
+                        - (self.e3 * rhs.e2 + self.e12 * rhs.e13)),
+                e123: ((self.s * rhs.e123 + self.e1 * rhs.e23)
+                    + (self.e3 * rhs.e12 + self.e12 * rhs.e3))
+                    + ((self.e23 * rhs.e1 + self.e123 * rhs.s)
+                        - (self.e2 * rhs.e13 + self.e13 * rhs.e2)),
             }
         }
     }
@@ -2206,7 +2216,7 @@ pub mod g3 {
         #[inline]
         fn bitxor(self, rhs: Bivector) -> Trivector {
             Trivector {
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 - self.e2 * rhs.e13,
+                e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12) - self.e2 * rhs.e13,
             }
         }
     }
@@ -2226,7 +2236,7 @@ pub mod g3 {
                 e1: self.e1 * rhs.s,
                 e2: self.e2 * rhs.s,
                 e3: self.e3 * rhs.s,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 - self.e2 * rhs.e13,
+                e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12) - self.e2 * rhs.e13,
             }
         }
     }
@@ -2253,7 +2263,7 @@ pub mod g3 {
                 e12: self.e1 * rhs.e2 - self.e2 * rhs.e1,
                 e13: self.e1 * rhs.e3 - self.e3 * rhs.e1,
                 e23: self.e2 * rhs.e3 - self.e3 * rhs.e2,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 - self.e2 * rhs.e13,
+                e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12) - self.e2 * rhs.e13,
             }
         }
     }
@@ -2273,7 +2283,7 @@ pub mod g3 {
         #[inline]
         fn bitxor(self, rhs: Vector) -> Trivector {
             Trivector {
-                e123: self.e12 * rhs.e3 + self.e23 * rhs.e1 - self.e13 * rhs.e2,
+                e123: (self.e12 * rhs.e3 + self.e23 * rhs.e1) - self.e13 * rhs.e2,
             }
         }
     }
@@ -2309,7 +2319,7 @@ pub mod g3 {
         #[inline]
         fn bitxor(self, rhs: Odd) -> Trivector {
             Trivector {
-                e123: self.e12 * rhs.e3 + self.e23 * rhs.e1 - self.e13 * rhs.e2,
+                e123: (self.e12 * rhs.e3 + self.e23 * rhs.e1) - self.e13 * rhs.e2,
             }
         }
     }
@@ -2325,7 +2335,7 @@ pub mod g3 {
                 e12: self.e12 * rhs.s,
                 e13: self.e13 * rhs.s,
                 e23: self.e23 * rhs.s,
-                e123: self.e12 * rhs.e3 + self.e23 * rhs.e1 - self.e13 * rhs.e2,
+                e123: (self.e12 * rhs.e3 + self.e23 * rhs.e1) - self.e13 * rhs.e2,
             }
         }
     }
@@ -2406,7 +2416,7 @@ pub mod g3 {
                 e1: self.s * rhs.e1,
                 e2: self.s * rhs.e2,
                 e3: self.s * rhs.e3,
-                e123: self.e12 * rhs.e3 + self.e23 * rhs.e1 - self.e13 * rhs.e2,
+                e123: (self.e12 * rhs.e3 + self.e23 * rhs.e1) - self.e13 * rhs.e2,
             }
         }
     }
@@ -2450,8 +2460,8 @@ pub mod g3 {
                 e1: self.s * rhs.e1,
                 e2: self.s * rhs.e2,
                 e3: self.s * rhs.e3,
-                e123: self.s * rhs.e123 + self.e12 * rhs.e3 + self.e23 * rhs.e1
-                    - self.e13 * rhs.e2,
+                e123: (self.s * rhs.e123 + self.e12 * rhs.e3)
+                    + (self.e23 * rhs.e1 - self.e13 * rhs.e2),
             }
         }
     }
@@ -2467,8 +2477,8 @@ pub mod g3 {
                 e12: self.s * rhs.e12 + self.e12 * rhs.s,
                 e13: self.s * rhs.e13 + self.e13 * rhs.s,
                 e23: self.s * rhs.e23 + self.e23 * rhs.s,
-                e123: self.s * rhs.e123 + self.e12 * rhs.e3 + self.e23 * rhs.e1
-                    - self.e13 * rhs.e2,
+                e123: (self.s * rhs.e123 + self.e12 * rhs.e3)
+                    + (self.e23 * rhs.e1 - self.e13 * rhs.e2),
             }
         }
     }
@@ -2500,7 +2510,7 @@ pub mod g3 {
         #[inline]
         fn bitxor(self, rhs: Bivector) -> Trivector {
             Trivector {
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 - self.e2 * rhs.e13,
+                e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12) - self.e2 * rhs.e13,
             }
         }
     }
@@ -2520,8 +2530,8 @@ pub mod g3 {
                 e1: self.e1 * rhs.s,
                 e2: self.e2 * rhs.s,
                 e3: self.e3 * rhs.s,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 + self.e123 * rhs.s
-                    - self.e2 * rhs.e13,
+                e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12)
+                    + (self.e123 * rhs.s - self.e2 * rhs.e13),
             }
         }
     }
@@ -2548,8 +2558,8 @@ pub mod g3 {
                 e12: self.e1 * rhs.e2 - self.e2 * rhs.e1,
                 e13: self.e1 * rhs.e3 - self.e3 * rhs.e1,
                 e23: self.e2 * rhs.e3 - self.e3 * rhs.e2,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 + self.e123 * rhs.s
-                    - self.e2 * rhs.e13,
+                e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12)
+                    + (self.e123 * rhs.s - self.e2 * rhs.e13),
             }
         }
     }
@@ -2581,7 +2591,7 @@ pub mod g3 {
                 e12: self.e1 * rhs.e2 - self.e2 * rhs.e1,
                 e13: self.e1 * rhs.e3 - self.e3 * rhs.e1,
                 e23: self.e2 * rhs.e3 - self.e3 * rhs.e2,
-                e123: self.e12 * rhs.e3 + self.e23 * rhs.e1 - self.e13 * rhs.e2,
+                e123: (self.e12 * rhs.e3 + self.e23 * rhs.e1) - self.e13 * rhs.e2,
             }
         }
     }
@@ -2597,7 +2607,7 @@ pub mod g3 {
                 e12: self.s * rhs.e12,
                 e13: self.s * rhs.e13,
                 e23: self.s * rhs.e23,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 - self.e2 * rhs.e13,
+                e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12) - self.e2 * rhs.e13,
             }
         }
     }
@@ -2622,8 +2632,8 @@ pub mod g3 {
                 e12: self.s * rhs.e12 + self.e12 * rhs.s,
                 e13: self.s * rhs.e13 + self.e13 * rhs.s,
                 e23: self.s * rhs.e23 + self.e23 * rhs.s,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 + self.e123 * rhs.s
-                    - self.e2 * rhs.e13,
+                e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12)
+                    + (self.e123 * rhs.s - self.e2 * rhs.e13),
             }
         }
     }
@@ -2639,8 +2649,8 @@ pub mod g3 {
                 e12: self.e1 * rhs.e2 - self.e2 * rhs.e1,
                 e13: self.e1 * rhs.e3 - self.e3 * rhs.e1,
                 e23: self.e2 * rhs.e3 - self.e3 * rhs.e2,
-                e123: self.s * rhs.e123 + self.e12 * rhs.e3 + self.e23 * rhs.e1
-                    - self.e13 * rhs.e2,
+                e123: (self.s * rhs.e123 + self.e12 * rhs.e3)
+                    + (self.e23 * rhs.e1 - self.e13 * rhs.e2),
             }
         }
     }
@@ -2653,15 +2663,16 @@ pub mod g3 {
                 e1: self.s * rhs.e1 + self.e1 * rhs.s,
                 e2: self.s * rhs.e2 + self.e2 * rhs.s,
                 e3: self.s * rhs.e3 + self.e3 * rhs.s,
-                e12: self.s * rhs.e12 + self.e1 * rhs.e2 + self.e12 * rhs.s
-                    - self.e2 * rhs.e1,
-                e13: self.s * rhs.e13 + self.e1 * rhs.e3 + self.e13 * rhs.s
-                    - self.e3 * rhs.e1,
-                e23: self.s * rhs.e23 + self.e2 * rhs.e3 + self.e23 * rhs.s
-                    - self.e3 * rhs.e2,
-                e123: self.s * rhs.e123 + self.e1 * rhs.e23 + self.e3 * rhs.e12
-                    + self.e12 * rhs.e3 + self.e23 * rhs.e1 + self.e123 * rhs.s
-                    - self.e2 * rhs.e13 - self.e13 * rhs.e2,
+                e12: (self.s * rhs.e12 + self.e1 * rhs.e2)
+                    + (self.e12 * rhs.s - self.e2 * rhs.e1),
+                e13: (self.s * rhs.e13 + self.e1 * rhs.e3)
+                    + (self.e13 * rhs.s - self.e3 * rhs.e1),
+                e23: (self.s * rhs.e23 + self.e2 * rhs.e3)
+                    + (self.e23 * rhs.s - self.e3 * rhs.e2),
+                e123: ((self.s * rhs.e123 + self.e1 * rhs.e23)
+                    + (self.e3 * rhs.e12 + self.e12 * rhs.e3))
+                    + ((self.e23 * rhs.e1 + self.e123 * rhs.s)
+                        - (self.e2 * rhs.e13 + self.e13 * rhs.e2)),
             }
         }
     }
@@ -2749,7 +2760,7 @@ pub mod g3 {
         type Output = f64;
         #[inline]
         fn bitor(self, rhs: Vector) -> f64 {
-            self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
+            (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3
         }
     }
     impl ::core::ops::BitOr<Bivector> for Vector {
@@ -2757,7 +2768,7 @@ pub mod g3 {
         #[inline]
         fn bitor(self, rhs: Bivector) -> Vector {
             Vector {
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13,
+                e1: -(self.e2 * rhs.e12 + self.e3 * rhs.e13),
                 e2: self.e1 * rhs.e12 - self.e3 * rhs.e23,
                 e3: self.e1 * rhs.e13 + self.e2 * rhs.e23,
             }
@@ -2779,9 +2790,9 @@ pub mod g3 {
         #[inline]
         fn bitor(self, rhs: Even) -> Vector {
             Vector {
-                e1: self.e1 * rhs.s - self.e2 * rhs.e12 - self.e3 * rhs.e13,
-                e2: self.e1 * rhs.e12 + self.e2 * rhs.s - self.e3 * rhs.e23,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e3 * rhs.s,
+                e1: (self.e1 * rhs.s - self.e2 * rhs.e12) - self.e3 * rhs.e13,
+                e2: (self.e1 * rhs.e12 + self.e2 * rhs.s) - self.e3 * rhs.e23,
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23) + self.e3 * rhs.s,
             }
         }
     }
@@ -2790,7 +2801,7 @@ pub mod g3 {
         #[inline]
         fn bitor(self, rhs: Odd) -> Even {
             Even {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3,
                 e12: self.e3 * rhs.e123,
                 e13: -self.e2 * rhs.e123,
                 e23: self.e1 * rhs.e123,
@@ -2802,10 +2813,10 @@ pub mod g3 {
         #[inline]
         fn bitor(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3,
-                e1: self.e1 * rhs.s - self.e2 * rhs.e12 - self.e3 * rhs.e13,
-                e2: self.e1 * rhs.e12 + self.e2 * rhs.s - self.e3 * rhs.e23,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e3 * rhs.s,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3,
+                e1: (self.e1 * rhs.s - self.e2 * rhs.e12) - self.e3 * rhs.e13,
+                e2: (self.e1 * rhs.e12 + self.e2 * rhs.s) - self.e3 * rhs.e23,
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23) + self.e3 * rhs.s,
                 e12: self.e3 * rhs.e123,
                 e13: -self.e2 * rhs.e123,
                 e23: self.e1 * rhs.e123,
@@ -2831,7 +2842,7 @@ pub mod g3 {
             Vector {
                 e1: self.e12 * rhs.e2 + self.e13 * rhs.e3,
                 e2: self.e23 * rhs.e3 - self.e12 * rhs.e1,
-                e3: -self.e13 * rhs.e1 - self.e23 * rhs.e2,
+                e3: -(self.e13 * rhs.e1 + self.e23 * rhs.e2),
             }
         }
     }
@@ -2839,7 +2850,7 @@ pub mod g3 {
         type Output = f64;
         #[inline]
         fn bitor(self, rhs: Bivector) -> f64 {
-            -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23
+            -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23)
         }
     }
     impl ::core::ops::BitOr<Trivector> for Bivector {
@@ -2858,7 +2869,7 @@ pub mod g3 {
         #[inline]
         fn bitor(self, rhs: Even) -> Even {
             Even {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23,
+                s: -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23),
                 e12: self.e12 * rhs.s,
                 e13: self.e13 * rhs.s,
                 e23: self.e23 * rhs.s,
@@ -2870,9 +2881,9 @@ pub mod g3 {
         #[inline]
         fn bitor(self, rhs: Odd) -> Vector {
             Vector {
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 - self.e23 * rhs.e123,
-                e2: self.e13 * rhs.e123 + self.e23 * rhs.e3 - self.e12 * rhs.e1,
-                e3: -self.e12 * rhs.e123 - self.e13 * rhs.e1 - self.e23 * rhs.e2,
+                e1: (self.e12 * rhs.e2 + self.e13 * rhs.e3) - self.e23 * rhs.e123,
+                e2: (self.e13 * rhs.e123 + self.e23 * rhs.e3) - self.e12 * rhs.e1,
+                e3: -((self.e12 * rhs.e123 + self.e13 * rhs.e1) + self.e23 * rhs.e2),
             }
         }
     }
@@ -2881,10 +2892,10 @@ pub mod g3 {
         #[inline]
         fn bitor(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23,
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 - self.e23 * rhs.e123,
-                e2: self.e13 * rhs.e123 + self.e23 * rhs.e3 - self.e12 * rhs.e1,
-                e3: -self.e12 * rhs.e123 - self.e13 * rhs.e1 - self.e23 * rhs.e2,
+                s: -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23),
+                e1: (self.e12 * rhs.e2 + self.e13 * rhs.e3) - self.e23 * rhs.e123,
+                e2: (self.e13 * rhs.e123 + self.e23 * rhs.e3) - self.e12 * rhs.e1,
+                e3: -((self.e12 * rhs.e123 + self.e13 * rhs.e1) + self.e23 * rhs.e2),
                 e12: self.e12 * rhs.s,
                 e13: self.e13 * rhs.s,
                 e23: self.e23 * rhs.s,
@@ -2985,9 +2996,9 @@ pub mod g3 {
         #[inline]
         fn bitor(self, rhs: Vector) -> Vector {
             Vector {
-                e1: self.s * rhs.e1 + self.e12 * rhs.e2 + self.e13 * rhs.e3,
-                e2: self.s * rhs.e2 + self.e23 * rhs.e3 - self.e12 * rhs.e1,
-                e3: self.s * rhs.e3 - self.e13 * rhs.e1 - self.e23 * rhs.e2,
+                e1: (self.s * rhs.e1 + self.e12 * rhs.e2) + self.e13 * rhs.e3,
+                e2: (self.s * rhs.e2 + self.e23 * rhs.e3) - self.e12 * rhs.e1,
+                e3: (self.s * rhs.e3 - self.e13 * rhs.e1) - self.e23 * rhs.e2,
             }
         }
     }
@@ -2996,7 +3007,7 @@ pub mod g3 {
         #[inline]
         fn bitor(self, rhs: Bivector) -> Even {
             Even {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23,
+                s: -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23),
                 e12: self.s * rhs.e12,
                 e13: self.s * rhs.e13,
                 e23: self.s * rhs.e23,
@@ -3020,8 +3031,8 @@ pub mod g3 {
         #[inline]
         fn bitor(self, rhs: Even) -> Even {
             Even {
-                s: self.s * rhs.s - self.e12 * rhs.e12 - self.e13 * rhs.e13
-                    - self.e23 * rhs.e23,
+                s: (self.s * rhs.s - self.e12 * rhs.e12)
+                    - (self.e13 * rhs.e13 + self.e23 * rhs.e23),
                 e12: self.s * rhs.e12 + self.e12 * rhs.s,
                 e13: self.s * rhs.e13 + self.e13 * rhs.s,
                 e23: self.s * rhs.e23 + self.e23 * rhs.s,
@@ -3033,12 +3044,12 @@ pub mod g3 {
         #[inline]
         fn bitor(self, rhs: Odd) -> Odd {
             Odd {
-                e1: self.s * rhs.e1 + self.e12 * rhs.e2 + self.e13 * rhs.e3
-                    - self.e23 * rhs.e123,
-                e2: self.s * rhs.e2 + self.e13 * rhs.e123 + self.e23 * rhs.e3
-                    - self.e12 * rhs.e1,
-                e3: self.s * rhs.e3 - self.e12 * rhs.e123 - self.e13 * rhs.e1
-                    - self.e23 * rhs.e2,
+                e1: (self.s * rhs.e1 + self.e12 * rhs.e2)
+                    + (self.e13 * rhs.e3 - self.e23 * rhs.e123),
+                e2: (self.s * rhs.e2 + self.e13 * rhs.e123)
+                    + (self.e23 * rhs.e3 - self.e12 * rhs.e1),
+                e3: (self.s * rhs.e3 - self.e12 * rhs.e123)
+                    - (self.e13 * rhs.e1 + self.e23 * rhs.e2),
                 e123: self.s * rhs.e123,
             }
         }
@@ -3048,14 +3059,14 @@ pub mod g3 {
         #[inline]
         fn bitor(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.s * rhs.s - self.e12 * rhs.e12 - self.e13 * rhs.e13
-                    - self.e23 * rhs.e23,
-                e1: self.s * rhs.e1 + self.e12 * rhs.e2 + self.e13 * rhs.e3
-                    - self.e23 * rhs.e123,
-                e2: self.s * rhs.e2 + self.e13 * rhs.e123 + self.e23 * rhs.e3
-                    - self.e12 * rhs.e1,
-                e3: self.s * rhs.e3 - self.e12 * rhs.e123 - self.e13 * rhs.e1
-                    - self.e23 * rhs.e2,
+                s: (self.s * rhs.s - self.e12 * rhs.e12)
+                    - (self.e13 * rhs.e13 + self.e23 * rhs.e23),
+                e1: (self.s * rhs.e1 + self.e12 * rhs.e2)
+                    + (self.e13 * rhs.e3 - self.e23 * rhs.e123),
+                e2: (self.s * rhs.e2 + self.e13 * rhs.e123)
+                    + (self.e23 * rhs.e3 - self.e12 * rhs.e1),
+                e3: (self.s * rhs.e3 - self.e12 * rhs.e123)
+                    - (self.e13 * rhs.e1 + self.e23 * rhs.e2),
                 e12: self.s * rhs.e12 + self.e12 * rhs.s,
                 e13: self.s * rhs.e13 + self.e13 * rhs.s,
                 e23: self.s * rhs.e23 + self.e23 * rhs.s,
@@ -3080,7 +3091,7 @@ pub mod g3 {
         #[inline]
         fn bitor(self, rhs: Vector) -> Even {
             Even {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3,
                 e12: self.e123 * rhs.e3,
                 e13: -self.e123 * rhs.e2,
                 e23: self.e123 * rhs.e1,
@@ -3092,9 +3103,9 @@ pub mod g3 {
         #[inline]
         fn bitor(self, rhs: Bivector) -> Vector {
             Vector {
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13 - self.e123 * rhs.e23,
-                e2: self.e1 * rhs.e12 + self.e123 * rhs.e13 - self.e3 * rhs.e23,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 - self.e123 * rhs.e12,
+                e1: -((self.e2 * rhs.e12 + self.e3 * rhs.e13) + self.e123 * rhs.e23),
+                e2: (self.e1 * rhs.e12 + self.e123 * rhs.e13) - self.e3 * rhs.e23,
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23) - self.e123 * rhs.e12,
             }
         }
     }
@@ -3115,12 +3126,12 @@ pub mod g3 {
         #[inline]
         fn bitor(self, rhs: Even) -> Odd {
             Odd {
-                e1: self.e1 * rhs.s - self.e2 * rhs.e12 - self.e3 * rhs.e13
-                    - self.e123 * rhs.e23,
-                e2: self.e1 * rhs.e12 + self.e2 * rhs.s + self.e123 * rhs.e13
-                    - self.e3 * rhs.e23,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e3 * rhs.s
-                    - self.e123 * rhs.e12,
+                e1: (self.e1 * rhs.s - self.e2 * rhs.e12)
+                    - (self.e3 * rhs.e13 + self.e123 * rhs.e23),
+                e2: (self.e1 * rhs.e12 + self.e2 * rhs.s)
+                    + (self.e123 * rhs.e13 - self.e3 * rhs.e23),
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23)
+                    + (self.e3 * rhs.s - self.e123 * rhs.e12),
                 e123: self.e123 * rhs.s,
             }
         }
@@ -3130,10 +3141,10 @@ pub mod g3 {
         #[inline]
         fn bitor(self, rhs: Odd) -> Even {
             Even {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    - self.e123 * rhs.e123,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 - self.e123 * rhs.e123),
                 e12: self.e3 * rhs.e123 + self.e123 * rhs.e3,
-                e13: -self.e2 * rhs.e123 - self.e123 * rhs.e2,
+                e13: -(self.e2 * rhs.e123 + self.e123 * rhs.e2),
                 e23: self.e1 * rhs.e123 + self.e123 * rhs.e1,
             }
         }
@@ -3143,16 +3154,16 @@ pub mod g3 {
         #[inline]
         fn bitor(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    - self.e123 * rhs.e123,
-                e1: self.e1 * rhs.s - self.e2 * rhs.e12 - self.e3 * rhs.e13
-                    - self.e123 * rhs.e23,
-                e2: self.e1 * rhs.e12 + self.e2 * rhs.s + self.e123 * rhs.e13
-                    - self.e3 * rhs.e23,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e3 * rhs.s
-                    - self.e123 * rhs.e12,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 - self.e123 * rhs.e123),
+                e1: (self.e1 * rhs.s - self.e2 * rhs.e12)
+                    - (self.e3 * rhs.e13 + self.e123 * rhs.e23),
+                e2: (self.e1 * rhs.e12 + self.e2 * rhs.s)
+                    + (self.e123 * rhs.e13 - self.e3 * rhs.e23),
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23)
+                    + (self.e3 * rhs.s - self.e123 * rhs.e12),
                 e12: self.e3 * rhs.e123 + self.e123 * rhs.e3,
-                e13: -self.e2 * rhs.e123 - self.e123 * rhs.e2,
+                e13: -(self.e2 * rhs.e123 + self.e123 * rhs.e2),
                 e23: self.e1 * rhs.e123 + self.e123 * rhs.e1,
                 e123: self.e123 * rhs.s,
             }
@@ -3179,10 +3190,10 @@ pub mod g3 {
         #[inline]
         fn bitor(self, rhs: Vector) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3,
-                e1: self.s * rhs.e1 + self.e12 * rhs.e2 + self.e13 * rhs.e3,
-                e2: self.s * rhs.e2 + self.e23 * rhs.e3 - self.e12 * rhs.e1,
-                e3: self.s * rhs.e3 - self.e13 * rhs.e1 - self.e23 * rhs.e2,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3,
+                e1: (self.s * rhs.e1 + self.e12 * rhs.e2) + self.e13 * rhs.e3,
+                e2: (self.s * rhs.e2 + self.e23 * rhs.e3) - self.e12 * rhs.e1,
+                e3: (self.s * rhs.e3 - self.e13 * rhs.e1) - self.e23 * rhs.e2,
                 e12: self.e123 * rhs.e3,
                 e13: -self.e123 * rhs.e2,
                 e23: self.e123 * rhs.e1,
@@ -3195,10 +3206,10 @@ pub mod g3 {
         #[inline]
         fn bitor(self, rhs: Bivector) -> Multivector {
             Multivector {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23,
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13 - self.e123 * rhs.e23,
-                e2: self.e1 * rhs.e12 + self.e123 * rhs.e13 - self.e3 * rhs.e23,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 - self.e123 * rhs.e12,
+                s: -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23),
+                e1: -((self.e2 * rhs.e12 + self.e3 * rhs.e13) + self.e123 * rhs.e23),
+                e2: (self.e1 * rhs.e12 + self.e123 * rhs.e13) - self.e3 * rhs.e23,
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23) - self.e123 * rhs.e12,
                 e12: self.s * rhs.e12,
                 e13: self.s * rhs.e13,
                 e23: self.s * rhs.e23,
@@ -3227,14 +3238,14 @@ pub mod g3 {
         #[inline]
         fn bitor(self, rhs: Even) -> Multivector {
             Multivector {
-                s: self.s * rhs.s - self.e12 * rhs.e12 - self.e13 * rhs.e13
-                    - self.e23 * rhs.e23,
-                e1: self.e1 * rhs.s - self.e2 * rhs.e12 - self.e3 * rhs.e13
-                    - self.e123 * rhs.e23,
-                e2: self.e1 * rhs.e12 + self.e2 * rhs.s + self.e123 * rhs.e13
-                    - self.e3 * rhs.e23,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e3 * rhs.s
-                    - self.e123 * rhs.e12,
+                s: (self.s * rhs.s - self.e12 * rhs.e12)
+                    - (self.e13 * rhs.e13 + self.e23 * rhs.e23),
+                e1: (self.e1 * rhs.s - self.e2 * rhs.e12)
+                    - (self.e3 * rhs.e13 + self.e123 * rhs.e23),
+                e2: (self.e1 * rhs.e12 + self.e2 * rhs.s)
+                    + (self.e123 * rhs.e13 - self.e3 * rhs.e23),
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23)
+                    + (self.e3 * rhs.s - self.e123 * rhs.e12),
                 e12: self.s * rhs.e12 + self.e12 * rhs.s,
                 e13: self.s * rhs.e13 + self.e13 * rhs.s,
                 e23: self.s * rhs.e23 + self.e23 * rhs.s,
@@ -3247,16 +3258,16 @@ pub mod g3 {
         #[inline]
         fn bitor(self, rhs: Odd) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    - self.e123 * rhs.e123,
-                e1: self.s * rhs.e1 + self.e12 * rhs.e2 + self.e13 * rhs.e3
-                    - self.e23 * rhs.e123,
-                e2: self.s * rhs.e2 + self.e13 * rhs.e123 + self.e23 * rhs.e3
-                    - self.e12 * rhs.e1,
-                e3: self.s * rhs.e3 - self.e12 * rhs.e123 - self.e13 * rhs.e1
-                    - self.e23 * rhs.e2,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 - self.e123 * rhs.e123),
+                e1: (self.s * rhs.e1 + self.e12 * rhs.e2)
+                    + (self.e13 * rhs.e3 - self.e23 * rhs.e123),
+                e2: (self.s * rhs.e2 + self.e13 * rhs.e123)
+                    + (self.e23 * rhs.e3 - self.e12 * rhs.e1),
+                e3: (self.s * rhs.e3 - self.e12 * rhs.e123)
+                    - (self.e13 * rhs.e1 + self.e23 * rhs.e2),
                 e12: self.e3 * rhs.e123 + self.e123 * rhs.e3,
-                e13: -self.e2 * rhs.e123 - self.e123 * rhs.e2,
+                e13: -(self.e2 * rhs.e123 + self.e123 * rhs.e2),
                 e23: self.e1 * rhs.e123 + self.e123 * rhs.e1,
                 e123: self.s * rhs.e123,
             }
@@ -3267,24 +3278,28 @@ pub mod g3 {
         #[inline]
         fn bitor(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.s * rhs.s + self.e1 * rhs.e1 + self.e2 * rhs.e2
-                    + self.e3 * rhs.e3 - self.e12 * rhs.e12 - self.e13 * rhs.e13
-                    - self.e23 * rhs.e23 - self.e123 * rhs.e123,
-                e1: self.s * rhs.e1 + self.e1 * rhs.s + self.e12 * rhs.e2
-                    + self.e13 * rhs.e3 - self.e2 * rhs.e12 - self.e3 * rhs.e13
-                    - self.e23 * rhs.e123 - self.e123 * rhs.e23,
-                e2: self.s * rhs.e2 + self.e1 * rhs.e12 + self.e2 * rhs.s
-                    + self.e13 * rhs.e123 + self.e23 * rhs.e3 + self.e123 * rhs.e13
-                    - self.e3 * rhs.e23 - self.e12 * rhs.e1,
-                e3: self.s * rhs.e3 + self.e1 * rhs.e13 + self.e2 * rhs.e23
-                    + self.e3 * rhs.s - self.e12 * rhs.e123 - self.e13 * rhs.e1
-                    - self.e23 * rhs.e2 - self.e123 * rhs.e12,
-                e12: self.s * rhs.e12 + self.e3 * rhs.e123 + self.e12 * rhs.s
-                    + self.e123 * rhs.e3,
-                e13: self.s * rhs.e13 + self.e13 * rhs.s - self.e2 * rhs.e123
-                    - self.e123 * rhs.e2,
-                e23: self.s * rhs.e23 + self.e1 * rhs.e123 + self.e23 * rhs.s
-                    + self.e123 * rhs.e1,
+                s: ((self.s * rhs.s + self.e1 * rhs.e1)
+                    + (self.e2 * rhs.e2 + self.e3 * rhs.e3))
+                    - ((self.e12 * rhs.e12 + self.e13 * rhs.e13)
+                        + (self.e23 * rhs.e23 + self.e123 * rhs.e123)),
+                e1: ((self.s * rhs.e1 + self.e1 * rhs.s)
+                    + (self.e12 * rhs.e2 + self.e13 * rhs.e3))
+                    - ((self.e2 * rhs.e12 + self.e3 * rhs.e13)
+                        + (self.e23 * rhs.e123 + self.e123 * rhs.e23)),
+                e2: ((self.s * rhs.e2 + self.e1 * rhs.e12)
+                    + (self.e2 * rhs.s + self.e13 * rhs.e123))
+                    + ((self.e23 * rhs.e3 + self.e123 * rhs.e13)
+                        - (self.e3 * rhs.e23 + self.e12 * rhs.e1)),
+                e3: ((self.s * rhs.e3 + self.e1 * rhs.e13)
+                    + (self.e2 * rhs.e23 + self.e3 * rhs.s))
+                    - ((self.e12 * rhs.e123 + self.e13 * rhs.e1)
+                        + (self.e23 * rhs.e2 + self.e123 * rhs.e12)),
+                e12: (self.s * rhs.e12 + self.e3 * rhs.e123)
+                    + (self.e12 * rhs.s + self.e123 * rhs.e3),
+                e13: (self.s * rhs.e13 + self.e13 * rhs.s)
+                    - (self.e2 * rhs.e123 + self.e123 * rhs.e2),
+                e23: (self.s * rhs.e23 + self.e1 * rhs.e123)
+                    + (self.e23 * rhs.s + self.e123 * rhs.e1),
                 e123: self.s * rhs.e123 + self.e123 * rhs.s,
             }
         }
@@ -3370,7 +3385,7 @@ pub mod g3 {
         type Output = f64;
         #[inline]
         fn left_contraction(self, rhs: Vector) -> f64 {
-            self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
+            (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3
         }
     }
     impl LeftContraction<Bivector> for Vector {
@@ -3378,7 +3393,7 @@ pub mod g3 {
         #[inline]
         fn left_contraction(self, rhs: Bivector) -> Vector {
             Vector {
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13,
+                e1: -(self.e2 * rhs.e12 + self.e3 * rhs.e13),
                 e2: self.e1 * rhs.e12 - self.e3 * rhs.e23,
                 e3: self.e1 * rhs.e13 + self.e2 * rhs.e23,
             }
@@ -3400,7 +3415,7 @@ pub mod g3 {
         #[inline]
         fn left_contraction(self, rhs: Even) -> Vector {
             Vector {
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13,
+                e1: -(self.e2 * rhs.e12 + self.e3 * rhs.e13),
                 e2: self.e1 * rhs.e12 - self.e3 * rhs.e23,
                 e3: self.e1 * rhs.e13 + self.e2 * rhs.e23,
             }
@@ -3411,7 +3426,7 @@ pub mod g3 {
         #[inline]
         fn left_contraction(self, rhs: Odd) -> Even {
             Even {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3,
                 e12: self.e3 * rhs.e123,
                 e13: -self.e2 * rhs.e123,
                 e23: self.e1 * rhs.e123,
@@ -3423,8 +3438,8 @@ pub mod g3 {
         #[inline]
         fn left_contraction(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3,
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3,
+                e1: -(self.e2 * rhs.e12 + self.e3 * rhs.e13),
                 e2: self.e1 * rhs.e12 - self.e3 * rhs.e23,
                 e3: self.e1 * rhs.e13 + self.e2 * rhs.e23,
                 e12: self.e3 * rhs.e123,
@@ -3454,7 +3469,7 @@ pub mod g3 {
         type Output = f64;
         #[inline]
         fn left_contraction(self, rhs: Bivector) -> f64 {
-            -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23
+            -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23)
         }
     }
     impl LeftContraction<Trivector> for Bivector {
@@ -3472,7 +3487,7 @@ pub mod g3 {
         type Output = f64;
         #[inline]
         fn left_contraction(self, rhs: Even) -> f64 {
-            -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23
+            -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23)
         }
     }
     impl LeftContraction<Odd> for Bivector {
@@ -3491,7 +3506,7 @@ pub mod g3 {
         #[inline]
         fn left_contraction(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23,
+                s: -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23),
                 e1: -self.e23 * rhs.e123,
                 e2: self.e13 * rhs.e123,
                 e3: -self.e12 * rhs.e123,
@@ -3578,7 +3593,7 @@ pub mod g3 {
         #[inline]
         fn left_contraction(self, rhs: Bivector) -> Even {
             Even {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23,
+                s: -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23),
                 e12: self.s * rhs.e12,
                 e13: self.s * rhs.e13,
                 e23: self.s * rhs.e23,
@@ -3602,8 +3617,8 @@ pub mod g3 {
         #[inline]
         fn left_contraction(self, rhs: Even) -> Even {
             Even {
-                s: self.s * rhs.s - self.e12 * rhs.e12 - self.e13 * rhs.e13
-                    - self.e23 * rhs.e23,
+                s: (self.s * rhs.s - self.e12 * rhs.e12)
+                    - (self.e13 * rhs.e13 + self.e23 * rhs.e23),
                 e12: self.s * rhs.e12,
                 e13: self.s * rhs.e13,
                 e23: self.s * rhs.e23,
@@ -3627,8 +3642,8 @@ pub mod g3 {
         #[inline]
         fn left_contraction(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.s * rhs.s - self.e12 * rhs.e12 - self.e13 * rhs.e13
-                    - self.e23 * rhs.e23,
+                s: (self.s * rhs.s - self.e12 * rhs.e12)
+                    - (self.e13 * rhs.e13 + self.e23 * rhs.e23),
                 e1: self.s * rhs.e1 - self.e23 * rhs.e123,
                 e2: self.s * rhs.e2 + self.e13 * rhs.e123,
                 e3: self.s * rhs.e3 - self.e12 * rhs.e123,
@@ -3651,7 +3666,7 @@ pub mod g3 {
         type Output = f64;
         #[inline]
         fn left_contraction(self, rhs: Vector) -> f64 {
-            self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
+            (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3
         }
     }
     impl LeftContraction<Bivector> for Odd {
@@ -3659,7 +3674,7 @@ pub mod g3 {
         #[inline]
         fn left_contraction(self, rhs: Bivector) -> Vector {
             Vector {
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13,
+                e1: -(self.e2 * rhs.e12 + self.e3 * rhs.e13),
                 e2: self.e1 * rhs.e12 - self.e3 * rhs.e23,
                 e3: self.e1 * rhs.e13 + self.e2 * rhs.e23,
             }
@@ -3682,7 +3697,7 @@ pub mod g3 {
         #[inline]
         fn left_contraction(self, rhs: Even) -> Vector {
             Vector {
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13,
+                e1: -(self.e2 * rhs.e12 + self.e3 * rhs.e13),
                 e2: self.e1 * rhs.e12 - self.e3 * rhs.e23,
                 e3: self.e1 * rhs.e13 + self.e2 * rhs.e23,
             }
@@ -3693,8 +3708,8 @@ pub mod g3 {
         #[inline]
         fn left_contraction(self, rhs: Odd) -> Even {
             Even {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    - self.e123 * rhs.e123,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 - self.e123 * rhs.e123),
                 e12: self.e3 * rhs.e123,
                 e13: -self.e2 * rhs.e123,
                 e23: self.e1 * rhs.e123,
@@ -3706,9 +3721,9 @@ pub mod g3 {
         #[inline]
         fn left_contraction(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    - self.e123 * rhs.e123,
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 - self.e123 * rhs.e123),
+                e1: -(self.e2 * rhs.e12 + self.e3 * rhs.e13),
                 e2: self.e1 * rhs.e12 - self.e3 * rhs.e23,
                 e3: self.e1 * rhs.e13 + self.e2 * rhs.e23,
                 e12: self.e3 * rhs.e123,
@@ -3730,7 +3745,7 @@ pub mod g3 {
         #[inline]
         fn left_contraction(self, rhs: Vector) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3,
                 e1: self.s * rhs.e1,
                 e2: self.s * rhs.e2,
                 e3: self.s * rhs.e3,
@@ -3746,8 +3761,8 @@ pub mod g3 {
         #[inline]
         fn left_contraction(self, rhs: Bivector) -> Multivector {
             Multivector {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23,
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13,
+                s: -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23),
+                e1: -(self.e2 * rhs.e12 + self.e3 * rhs.e13),
                 e2: self.e1 * rhs.e12 - self.e3 * rhs.e23,
                 e3: self.e1 * rhs.e13 + self.e2 * rhs.e23,
                 e12: self.s * rhs.e12,
@@ -3778,9 +3793,9 @@ pub mod g3 {
         #[inline]
         fn left_contraction(self, rhs: Even) -> Multivector {
             Multivector {
-                s: self.s * rhs.s - self.e12 * rhs.e12 - self.e13 * rhs.e13
-                    - self.e23 * rhs.e23,
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13,
+                s: (self.s * rhs.s - self.e12 * rhs.e12)
+                    - (self.e13 * rhs.e13 + self.e23 * rhs.e23),
+                e1: -(self.e2 * rhs.e12 + self.e3 * rhs.e13),
                 e2: self.e1 * rhs.e12 - self.e3 * rhs.e23,
                 e3: self.e1 * rhs.e13 + self.e2 * rhs.e23,
                 e12: self.s * rhs.e12,
@@ -3795,8 +3810,8 @@ pub mod g3 {
         #[inline]
         fn left_contraction(self, rhs: Odd) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    - self.e123 * rhs.e123,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 - self.e123 * rhs.e123),
                 e1: self.s * rhs.e1 - self.e23 * rhs.e123,
                 e2: self.s * rhs.e2 + self.e13 * rhs.e123,
                 e3: self.s * rhs.e3 - self.e12 * rhs.e123,
@@ -3812,15 +3827,16 @@ pub mod g3 {
         #[inline]
         fn left_contraction(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.s * rhs.s + self.e1 * rhs.e1 + self.e2 * rhs.e2
-                    + self.e3 * rhs.e3 - self.e12 * rhs.e12 - self.e13 * rhs.e13
-                    - self.e23 * rhs.e23 - self.e123 * rhs.e123,
-                e1: self.s * rhs.e1 - self.e2 * rhs.e12 - self.e3 * rhs.e13
-                    - self.e23 * rhs.e123,
-                e2: self.s * rhs.e2 + self.e1 * rhs.e12 + self.e13 * rhs.e123
-                    - self.e3 * rhs.e23,
-                e3: self.s * rhs.e3 + self.e1 * rhs.e13 + self.e2 * rhs.e23
-                    - self.e12 * rhs.e123,
+                s: ((self.s * rhs.s + self.e1 * rhs.e1)
+                    + (self.e2 * rhs.e2 + self.e3 * rhs.e3))
+                    - ((self.e12 * rhs.e12 + self.e13 * rhs.e13)
+                        + (self.e23 * rhs.e23 + self.e123 * rhs.e123)),
+                e1: (self.s * rhs.e1 - self.e2 * rhs.e12)
+                    - (self.e3 * rhs.e13 + self.e23 * rhs.e123),
+                e2: (self.s * rhs.e2 + self.e1 * rhs.e12)
+                    + (self.e13 * rhs.e123 - self.e3 * rhs.e23),
+                e3: (self.s * rhs.e3 + self.e1 * rhs.e13)
+                    + (self.e2 * rhs.e23 - self.e12 * rhs.e123),
                 e12: self.s * rhs.e12 + self.e3 * rhs.e123,
                 e13: self.s * rhs.e13 - self.e2 * rhs.e123,
                 e23: self.s * rhs.e23 + self.e1 * rhs.e123,
@@ -3889,7 +3905,7 @@ pub mod g3 {
         type Output = f64;
         #[inline]
         fn right_contraction(self, rhs: Vector) -> f64 {
-            self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
+            (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3
         }
     }
     impl RightContraction<Bivector> for Vector {
@@ -3923,7 +3939,7 @@ pub mod g3 {
         type Output = f64;
         #[inline]
         fn right_contraction(self, rhs: Odd) -> f64 {
-            self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
+            (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3
         }
     }
     impl RightContraction<Multivector> for Vector {
@@ -3931,7 +3947,7 @@ pub mod g3 {
         #[inline]
         fn right_contraction(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3,
                 e1: self.e1 * rhs.s,
                 e2: self.e2 * rhs.s,
                 e3: self.e3 * rhs.s,
@@ -3960,7 +3976,7 @@ pub mod g3 {
             Vector {
                 e1: self.e12 * rhs.e2 + self.e13 * rhs.e3,
                 e2: self.e23 * rhs.e3 - self.e12 * rhs.e1,
-                e3: -self.e13 * rhs.e1 - self.e23 * rhs.e2,
+                e3: -(self.e13 * rhs.e1 + self.e23 * rhs.e2),
             }
         }
     }
@@ -3968,7 +3984,7 @@ pub mod g3 {
         type Output = f64;
         #[inline]
         fn right_contraction(self, rhs: Bivector) -> f64 {
-            -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23
+            -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23)
         }
     }
     impl RightContraction<Trivector> for Bivector {
@@ -3984,7 +4000,7 @@ pub mod g3 {
         #[inline]
         fn right_contraction(self, rhs: Even) -> Even {
             Even {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23,
+                s: -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23),
                 e12: self.e12 * rhs.s,
                 e13: self.e13 * rhs.s,
                 e23: self.e23 * rhs.s,
@@ -3998,7 +4014,7 @@ pub mod g3 {
             Vector {
                 e1: self.e12 * rhs.e2 + self.e13 * rhs.e3,
                 e2: self.e23 * rhs.e3 - self.e12 * rhs.e1,
-                e3: -self.e13 * rhs.e1 - self.e23 * rhs.e2,
+                e3: -(self.e13 * rhs.e1 + self.e23 * rhs.e2),
             }
         }
     }
@@ -4007,10 +4023,10 @@ pub mod g3 {
         #[inline]
         fn right_contraction(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23,
+                s: -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23),
                 e1: self.e12 * rhs.e2 + self.e13 * rhs.e3,
                 e2: self.e23 * rhs.e3 - self.e12 * rhs.e1,
-                e3: -self.e13 * rhs.e1 - self.e23 * rhs.e2,
+                e3: -(self.e13 * rhs.e1 + self.e23 * rhs.e2),
                 e12: self.e12 * rhs.s,
                 e13: self.e13 * rhs.s,
                 e23: self.e23 * rhs.s,
@@ -4113,7 +4129,7 @@ pub mod g3 {
             Vector {
                 e1: self.e12 * rhs.e2 + self.e13 * rhs.e3,
                 e2: self.e23 * rhs.e3 - self.e12 * rhs.e1,
-                e3: -self.e13 * rhs.e1 - self.e23 * rhs.e2,
+                e3: -(self.e13 * rhs.e1 + self.e23 * rhs.e2),
             }
         }
     }
@@ -4121,7 +4137,7 @@ pub mod g3 {
         type Output = f64;
         #[inline]
         fn right_contraction(self, rhs: Bivector) -> f64 {
-            -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23
+            -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23)
         }
     }
     impl RightContraction<Trivector> for Even {
@@ -4137,8 +4153,8 @@ pub mod g3 {
         #[inline]
         fn right_contraction(self, rhs: Even) -> Even {
             Even {
-                s: self.s * rhs.s - self.e12 * rhs.e12 - self.e13 * rhs.e13
-                    - self.e23 * rhs.e23,
+                s: (self.s * rhs.s - self.e12 * rhs.e12)
+                    - (self.e13 * rhs.e13 + self.e23 * rhs.e23),
                 e12: self.e12 * rhs.s,
                 e13: self.e13 * rhs.s,
                 e23: self.e23 * rhs.s,
@@ -4152,7 +4168,7 @@ pub mod g3 {
             Vector {
                 e1: self.e12 * rhs.e2 + self.e13 * rhs.e3,
                 e2: self.e23 * rhs.e3 - self.e12 * rhs.e1,
-                e3: -self.e13 * rhs.e1 - self.e23 * rhs.e2,
+                e3: -(self.e13 * rhs.e1 + self.e23 * rhs.e2),
             }
         }
     }
@@ -4161,11 +4177,11 @@ pub mod g3 {
         #[inline]
         fn right_contraction(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.s * rhs.s - self.e12 * rhs.e12 - self.e13 * rhs.e13
-                    - self.e23 * rhs.e23,
+                s: (self.s * rhs.s - self.e12 * rhs.e12)
+                    - (self.e13 * rhs.e13 + self.e23 * rhs.e23),
                 e1: self.e12 * rhs.e2 + self.e13 * rhs.e3,
                 e2: self.e23 * rhs.e3 - self.e12 * rhs.e1,
-                e3: -self.e13 * rhs.e1 - self.e23 * rhs.e2,
+                e3: -(self.e13 * rhs.e1 + self.e23 * rhs.e2),
                 e12: self.e12 * rhs.s,
                 e13: self.e13 * rhs.s,
                 e23: self.e23 * rhs.s,
@@ -4190,7 +4206,7 @@ pub mod g3 {
         #[inline]
         fn right_contraction(self, rhs: Vector) -> Even {
             Even {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3,
                 e12: self.e123 * rhs.e3,
                 e13: -self.e123 * rhs.e2,
                 e23: self.e123 * rhs.e1,
@@ -4232,8 +4248,8 @@ pub mod g3 {
         #[inline]
         fn right_contraction(self, rhs: Odd) -> Even {
             Even {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    - self.e123 * rhs.e123,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 - self.e123 * rhs.e123),
                 e12: self.e123 * rhs.e3,
                 e13: -self.e123 * rhs.e2,
                 e23: self.e123 * rhs.e1,
@@ -4245,8 +4261,8 @@ pub mod g3 {
         #[inline]
         fn right_contraction(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    - self.e123 * rhs.e123,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 - self.e123 * rhs.e123),
                 e1: self.e1 * rhs.s - self.e123 * rhs.e23,
                 e2: self.e2 * rhs.s + self.e123 * rhs.e13,
                 e3: self.e3 * rhs.s - self.e123 * rhs.e12,
@@ -4278,10 +4294,10 @@ pub mod g3 {
         #[inline]
         fn right_contraction(self, rhs: Vector) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3,
                 e1: self.e12 * rhs.e2 + self.e13 * rhs.e3,
                 e2: self.e23 * rhs.e3 - self.e12 * rhs.e1,
-                e3: -self.e13 * rhs.e1 - self.e23 * rhs.e2,
+                e3: -(self.e13 * rhs.e1 + self.e23 * rhs.e2),
                 e12: self.e123 * rhs.e3,
                 e13: -self.e123 * rhs.e2,
                 e23: self.e123 * rhs.e1,
@@ -4294,7 +4310,7 @@ pub mod g3 {
         #[inline]
         fn right_contraction(self, rhs: Bivector) -> Multivector {
             Multivector {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23,
+                s: -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23),
                 e1: -self.e123 * rhs.e23,
                 e2: self.e123 * rhs.e13,
                 e3: -self.e123 * rhs.e12,
@@ -4317,8 +4333,8 @@ pub mod g3 {
         #[inline]
         fn right_contraction(self, rhs: Even) -> Multivector {
             Multivector {
-                s: self.s * rhs.s - self.e12 * rhs.e12 - self.e13 * rhs.e13
-                    - self.e23 * rhs.e23,
+                s: (self.s * rhs.s - self.e12 * rhs.e12)
+                    - (self.e13 * rhs.e13 + self.e23 * rhs.e23),
                 e1: self.e1 * rhs.s - self.e123 * rhs.e23,
                 e2: self.e2 * rhs.s + self.e123 * rhs.e13,
                 e3: self.e3 * rhs.s - self.e123 * rhs.e12,
@@ -4334,11 +4350,11 @@ pub mod g3 {
         #[inline]
         fn right_contraction(self, rhs: Odd) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    - self.e123 * rhs.e123,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 - self.e123 * rhs.e123),
                 e1: self.e12 * rhs.e2 + self.e13 * rhs.e3,
                 e2: self.e23 * rhs.e3 - self.e12 * rhs.e1,
-                e3: -self.e13 * rhs.e1 - self.e23 * rhs.e2,
+                e3: -(self.e13 * rhs.e1 + self.e23 * rhs.e2),
                 e12: self.e123 * rhs.e3,
                 e13: -self.e123 * rhs.e2,
                 e23: self.e123 * rhs.e1,
@@ -4351,15 +4367,16 @@ pub mod g3 {
         #[inline]
         fn right_contraction(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.s * rhs.s + self.e1 * rhs.e1 + self.e2 * rhs.e2
-                    + self.e3 * rhs.e3 - self.e12 * rhs.e12 - self.e13 * rhs.e13
-                    - self.e23 * rhs.e23 - self.e123 * rhs.e123,
-                e1: self.e1 * rhs.s + self.e12 * rhs.e2 + self.e13 * rhs.e3
-                    - self.e123 * rhs.e23,
-                e2: self.e2 * rhs.s + self.e23 * rhs.e3 + self.e123 * rhs.e13
-                    - self.e12 * rhs.e1,
-                e3: self.e3 * rhs.s - self.e13 * rhs.e1 - self.e23 * rhs.e2
-                    - self.e123 * rhs.e12,
+                s: ((self.s * rhs.s + self.e1 * rhs.e1)
+                    + (self.e2 * rhs.e2 + self.e3 * rhs.e3))
+                    - ((self.e12 * rhs.e12 + self.e13 * rhs.e13)
+                        + (self.e23 * rhs.e23 + self.e123 * rhs.e123)),
+                e1: (self.e1 * rhs.s + self.e12 * rhs.e2)
+                    + (self.e13 * rhs.e3 - self.e123 * rhs.e23),
+                e2: (self.e2 * rhs.s + self.e23 * rhs.e3)
+                    + (self.e123 * rhs.e13 - self.e12 * rhs.e1),
+                e3: (self.e3 * rhs.s - self.e13 * rhs.e1)
+                    - (self.e23 * rhs.e2 + self.e123 * rhs.e12),
                 e12: self.e12 * rhs.s + self.e123 * rhs.e3,
                 e13: self.e13 * rhs.s - self.e123 * rhs.e2,
                 e23: self.e23 * rhs.s + self.e123 * rhs.e1,
@@ -4425,7 +4442,7 @@ pub mod g3 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Vector) -> f64 {
-            self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
+            (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3
         }
     }
     impl ScalarProduct<Bivector> for Vector {
@@ -4456,14 +4473,14 @@ pub mod g3 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Odd) -> f64 {
-            self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
+            (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3
         }
     }
     impl ScalarProduct<Multivector> for Vector {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Multivector) -> f64 {
-            self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
+            (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3
         }
     }
     impl ScalarProduct<f64> for Bivector {
@@ -4486,7 +4503,7 @@ pub mod g3 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Bivector) -> f64 {
-            -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23
+            -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23)
         }
     }
     impl ScalarProduct<Trivector> for Bivector {
@@ -4501,7 +4518,7 @@ pub mod g3 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Even) -> f64 {
-            -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23
+            -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23)
         }
     }
     impl ScalarProduct<Odd> for Bivector {
@@ -4516,7 +4533,7 @@ pub mod g3 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Multivector) -> f64 {
-            -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23
+            -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23)
         }
     }
     impl ScalarProduct<f64> for Trivector {
@@ -4591,7 +4608,7 @@ pub mod g3 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Bivector) -> f64 {
-            -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23
+            -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23)
         }
     }
     impl ScalarProduct<Trivector> for Even {
@@ -4606,7 +4623,8 @@ pub mod g3 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Even) -> f64 {
-            self.s * rhs.s - self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23
+            (self.s * rhs.s - self.e12 * rhs.e12)
+                - (self.e13 * rhs.e13 + self.e23 * rhs.e23)
         }
     }
     impl ScalarProduct<Odd> for Even {
@@ -4621,7 +4639,8 @@ pub mod g3 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Multivector) -> f64 {
-            self.s * rhs.s - self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23
+            (self.s * rhs.s - self.e12 * rhs.e12)
+                - (self.e13 * rhs.e13 + self.e23 * rhs.e23)
         }
     }
     impl ScalarProduct<f64> for Odd {
@@ -4636,7 +4655,7 @@ pub mod g3 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Vector) -> f64 {
-            self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
+            (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3
         }
     }
     impl ScalarProduct<Bivector> for Odd {
@@ -4666,14 +4685,16 @@ pub mod g3 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Odd) -> f64 {
-            self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3 - self.e123 * rhs.e123
+            (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                + (self.e3 * rhs.e3 - self.e123 * rhs.e123)
         }
     }
     impl ScalarProduct<Multivector> for Odd {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Multivector) -> f64 {
-            self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3 - self.e123 * rhs.e123
+            (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                + (self.e3 * rhs.e3 - self.e123 * rhs.e123)
         }
     }
     impl ScalarProduct<f64> for Multivector {
@@ -4687,14 +4708,14 @@ pub mod g3 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Vector) -> f64 {
-            self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
+            (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3
         }
     }
     impl ScalarProduct<Bivector> for Multivector {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Bivector) -> f64 {
-            -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23
+            -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23)
         }
     }
     impl ScalarProduct<Trivector> for Multivector {
@@ -4708,23 +4729,25 @@ pub mod g3 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Even) -> f64 {
-            self.s * rhs.s - self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23
+            (self.s * rhs.s - self.e12 * rhs.e12)
+                - (self.e13 * rhs.e13 + self.e23 * rhs.e23)
         }
     }
     impl ScalarProduct<Odd> for Multivector {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Odd) -> f64 {
-            self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3 - self.e123 * rhs.e123
+            (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                + (self.e3 * rhs.e3 - self.e123 * rhs.e123)
         }
     }
     impl ScalarProduct<Multivector> for Multivector {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Multivector) -> f64 {
-            self.s * rhs.s + self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                - self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e23 * rhs.e23
-                - self.e123 * rhs.e123
+            ((self.s * rhs.s + self.e1 * rhs.e1) + (self.e2 * rhs.e2 + self.e3 * rhs.e3))
+                - ((self.e12 * rhs.e12 + self.e13 * rhs.e13)
+                    + (self.e23 * rhs.e23 + self.e123 * rhs.e123))
         }
     }
     impl Commutator<Vector> for f64 {
@@ -4799,7 +4822,7 @@ pub mod g3 {
         #[inline]
         fn commutator(self, rhs: Bivector) -> Vector {
             Vector {
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13,
+                e1: -(self.e2 * rhs.e12 + self.e3 * rhs.e13),
                 e2: self.e1 * rhs.e12 - self.e3 * rhs.e23,
                 e3: self.e1 * rhs.e13 + self.e2 * rhs.e23,
             }
@@ -4818,7 +4841,7 @@ pub mod g3 {
         #[inline]
         fn commutator(self, rhs: Even) -> Vector {
             Vector {
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13,
+                e1: -(self.e2 * rhs.e12 + self.e3 * rhs.e13),
                 e2: self.e1 * rhs.e12 - self.e3 * rhs.e23,
                 e3: self.e1 * rhs.e13 + self.e2 * rhs.e23,
             }
@@ -4841,7 +4864,7 @@ pub mod g3 {
         fn commutator(self, rhs: Multivector) -> Multivector {
             Multivector {
                 s: 0.0,
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13,
+                e1: -(self.e2 * rhs.e12 + self.e3 * rhs.e13),
                 e2: self.e1 * rhs.e12 - self.e3 * rhs.e23,
                 e3: self.e1 * rhs.e13 + self.e2 * rhs.e23,
                 e12: self.e1 * rhs.e2 - self.e2 * rhs.e1,
@@ -4866,7 +4889,7 @@ pub mod g3 {
             Vector {
                 e1: self.e12 * rhs.e2 + self.e13 * rhs.e3,
                 e2: self.e23 * rhs.e3 - self.e12 * rhs.e1,
-                e3: -self.e13 * rhs.e1 - self.e23 * rhs.e2,
+                e3: -(self.e13 * rhs.e1 + self.e23 * rhs.e2),
             }
         }
     }
@@ -4907,7 +4930,7 @@ pub mod g3 {
             Vector {
                 e1: self.e12 * rhs.e2 + self.e13 * rhs.e3,
                 e2: self.e23 * rhs.e3 - self.e12 * rhs.e1,
-                e3: -self.e13 * rhs.e1 - self.e23 * rhs.e2,
+                e3: -(self.e13 * rhs.e1 + self.e23 * rhs.e2),
             }
         }
     }
@@ -4919,7 +4942,7 @@ pub mod g3 {
                 s: 0.0,
                 e1: self.e12 * rhs.e2 + self.e13 * rhs.e3,
                 e2: self.e23 * rhs.e3 - self.e12 * rhs.e1,
-                e3: -self.e13 * rhs.e1 - self.e23 * rhs.e2,
+                e3: -(self.e13 * rhs.e1 + self.e23 * rhs.e2),
                 e12: self.e23 * rhs.e13 - self.e13 * rhs.e23,
                 e13: self.e12 * rhs.e23 - self.e23 * rhs.e12,
                 e23: self.e13 * rhs.e12 - self.e12 * rhs.e13,
@@ -4998,7 +5021,7 @@ pub mod g3 {
             Vector {
                 e1: self.e12 * rhs.e2 + self.e13 * rhs.e3,
                 e2: self.e23 * rhs.e3 - self.e12 * rhs.e1,
-                e3: -self.e13 * rhs.e1 - self.e23 * rhs.e2,
+                e3: -(self.e13 * rhs.e1 + self.e23 * rhs.e2),
             }
         }
     }
@@ -5039,7 +5062,7 @@ pub mod g3 {
             Vector {
                 e1: self.e12 * rhs.e2 + self.e13 * rhs.e3,
                 e2: self.e23 * rhs.e3 - self.e12 * rhs.e1,
-                e3: -self.e13 * rhs.e1 - self.e23 * rhs.e2,
+                e3: -(self.e13 * rhs.e1 + self.e23 * rhs.e2),
             }
         }
     }
@@ -5051,7 +5074,7 @@ pub mod g3 {
                 s: 0.0,
                 e1: self.e12 * rhs.e2 + self.e13 * rhs.e3,
                 e2: self.e23 * rhs.e3 - self.e12 * rhs.e1,
-                e3: -self.e13 * rhs.e1 - self.e23 * rhs.e2,
+                e3: -(self.e13 * rhs.e1 + self.e23 * rhs.e2),
                 e12: self.e23 * rhs.e13 - self.e13 * rhs.e23,
                 e13: self.e12 * rhs.e23 - self.e23 * rhs.e12,
                 e23: self.e13 * rhs.e12 - self.e12 * rhs.e13,
@@ -5083,7 +5106,7 @@ pub mod g3 {
         #[inline]
         fn commutator(self, rhs: Bivector) -> Vector {
             Vector {
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13,
+                e1: -(self.e2 * rhs.e12 + self.e3 * rhs.e13),
                 e2: self.e1 * rhs.e12 - self.e3 * rhs.e23,
                 e3: self.e1 * rhs.e13 + self.e2 * rhs.e23,
             }
@@ -5102,7 +5125,7 @@ pub mod g3 {
         #[inline]
         fn commutator(self, rhs: Even) -> Vector {
             Vector {
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13,
+                e1: -(self.e2 * rhs.e12 + self.e3 * rhs.e13),
                 e2: self.e1 * rhs.e12 - self.e3 * rhs.e23,
                 e3: self.e1 * rhs.e13 + self.e2 * rhs.e23,
             }
@@ -5125,7 +5148,7 @@ pub mod g3 {
         fn commutator(self, rhs: Multivector) -> Multivector {
             Multivector {
                 s: 0.0,
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13,
+                e1: -(self.e2 * rhs.e12 + self.e3 * rhs.e13),
                 e2: self.e1 * rhs.e12 - self.e3 * rhs.e23,
                 e3: self.e1 * rhs.e13 + self.e2 * rhs.e23,
                 e12: self.e1 * rhs.e2 - self.e2 * rhs.e1,
@@ -5151,7 +5174,7 @@ pub mod g3 {
                 s: 0.0,
                 e1: self.e12 * rhs.e2 + self.e13 * rhs.e3,
                 e2: self.e23 * rhs.e3 - self.e12 * rhs.e1,
-                e3: -self.e13 * rhs.e1 - self.e23 * rhs.e2,
+                e3: -(self.e13 * rhs.e1 + self.e23 * rhs.e2),
                 e12: self.e1 * rhs.e2 - self.e2 * rhs.e1,
                 e13: self.e1 * rhs.e3 - self.e3 * rhs.e1,
                 e23: self.e2 * rhs.e3 - self.e3 * rhs.e2,
@@ -5165,7 +5188,7 @@ pub mod g3 {
         fn commutator(self, rhs: Bivector) -> Multivector {
             Multivector {
                 s: 0.0,
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13,
+                e1: -(self.e2 * rhs.e12 + self.e3 * rhs.e13),
                 e2: self.e1 * rhs.e12 - self.e3 * rhs.e23,
                 e3: self.e1 * rhs.e13 + self.e2 * rhs.e23,
                 e12: self.e23 * rhs.e13 - self.e13 * rhs.e23,
@@ -5189,7 +5212,7 @@ pub mod g3 {
         fn commutator(self, rhs: Even) -> Multivector {
             Multivector {
                 s: 0.0,
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13,
+                e1: -(self.e2 * rhs.e12 + self.e3 * rhs.e13),
                 e2: self.e1 * rhs.e12 - self.e3 * rhs.e23,
                 e3: self.e1 * rhs.e13 + self.e2 * rhs.e23,
                 e12: self.e23 * rhs.e13 - self.e13 * rhs.e23,
@@ -5207,7 +5230,7 @@ pub mod g3 {
                 s: 0.0,
                 e1: self.e12 * rhs.e2 + self.e13 * rhs.e3,
                 e2: self.e23 * rhs.e3 - self.e12 * rhs.e1,
-                e3: -self.e13 * rhs.e1 - self.e23 * rhs.e2,
+                e3: -(self.e13 * rhs.e1 + self.e23 * rhs.e2),
                 e12: self.e1 * rhs.e2 - self.e2 * rhs.e1,
                 e13: self.e1 * rhs.e3 - self.e3 * rhs.e1,
                 e23: self.e2 * rhs.e3 - self.e3 * rhs.e2,
@@ -5221,18 +5244,18 @@ pub mod g3 {
         fn commutator(self, rhs: Multivector) -> Multivector {
             Multivector {
                 s: 0.0,
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 - self.e2 * rhs.e12
-                    - self.e3 * rhs.e13,
-                e2: self.e1 * rhs.e12 + self.e23 * rhs.e3 - self.e3 * rhs.e23
-                    - self.e12 * rhs.e1,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 - self.e13 * rhs.e1
-                    - self.e23 * rhs.e2,
-                e12: self.e1 * rhs.e2 + self.e23 * rhs.e13 - self.e2 * rhs.e1
-                    - self.e13 * rhs.e23,
-                e13: self.e1 * rhs.e3 + self.e12 * rhs.e23 - self.e3 * rhs.e1
-                    - self.e23 * rhs.e12,
-                e23: self.e2 * rhs.e3 + self.e13 * rhs.e12 - self.e3 * rhs.e2
-                    - self.e12 * rhs.e13,
+                e1: (self.e12 * rhs.e2 + self.e13 * rhs.e3)
+                    - (self.e2 * rhs.e12 + self.e3 * rhs.e13),
+                e2: (self.e1 * rhs.e12 + self.e23 * rhs.e3)
+                    - (self.e3 * rhs.e23 + self.e12 * rhs.e1),
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23)
+                    - (self.e13 * rhs.e1 + self.e23 * rhs.e2),
+                e12: (self.e1 * rhs.e2 + self.e23 * rhs.e13)
+                    - (self.e2 * rhs.e1 + self.e13 * rhs.e23),
+                e13: (self.e1 * rhs.e3 + self.e12 * rhs.e23)
+                    - (self.e3 * rhs.e1 + self.e23 * rhs.e12),
+                e23: (self.e2 * rhs.e3 + self.e13 * rhs.e12)
+                    - (self.e3 * rhs.e2 + self.e12 * rhs.e13),
                 e123: 0.0,
             }
         }
@@ -8082,8 +8105,8 @@ pub mod g3 {
     /// where a general linear solve would lose digits; `None` for a null blade.
     #[allow(dead_code)]
     fn mv_blade_inverse(a: Multivector) -> Option<Multivector> {
-        let norm_squared: f64 = a.s * a.s + a.e1 * a.e1 + a.e2 * a.e2 + a.e3 * a.e3
-            + a.e12 * a.e12 + a.e13 * a.e13 + a.e23 * a.e23 + a.e123 * a.e123;
+        let norm_squared: f64 = ((a.s * a.s + a.e1 * a.e1) + (a.e2 * a.e2 + a.e3 * a.e3))
+            + ((a.e12 * a.e12 + a.e13 * a.e13) + (a.e23 * a.e23 + a.e123 * a.e123));
         if norm_squared == 0.0 || !norm_squared.is_finite() {
             return None;
         }
@@ -8103,32 +8126,32 @@ pub mod g3 {
     #[allow(dead_code)]
     fn mv_geometric(a: Multivector, b: Multivector) -> Multivector {
         Multivector {
-            s: a.s * b.s + a.e1 * b.e1 + a.e2 * b.e2 + a.e3 * b.e3 - a.e12 * b.e12
-                - a.e13 * b.e13 - a.e23 * b.e23 - a.e123 * b.e123,
-            e1: a.s * b.e1 + a.e1 * b.s + a.e12 * b.e2 + a.e13 * b.e3 - a.e2 * b.e12
-                - a.e3 * b.e13 - a.e23 * b.e123 - a.e123 * b.e23,
-            e2: a.s * b.e2 + a.e1 * b.e12 + a.e2 * b.s + a.e13 * b.e123 + a.e23 * b.e3
-                + a.e123 * b.e13 - a.e3 * b.e23 - a.e12 * b.e1,
-            e3: a.s * b.e3 + a.e1 * b.e13 + a.e2 * b.e23 + a.e3 * b.s - a.e12 * b.e123
-                - a.e13 * b.e1 - a.e23 * b.e2 - a.e123 * b.e12,
-            e12: a.s * b.e12 + a.e1 * b.e2 + a.e3 * b.e123 + a.e12 * b.s + a.e23 * b.e13
-                + a.e123 * b.e3 - a.e2 * b.e1 - a.e13 * b.e23,
-            e13: a.s * b.e13 + a.e1 * b.e3 + a.e12 * b.e23 + a.e13 * b.s - a.e2 * b.e123
-                - a.e3 * b.e1 - a.e23 * b.e12 - a.e123 * b.e2,
-            e23: a.s * b.e23 + a.e1 * b.e123 + a.e2 * b.e3 + a.e13 * b.e12 + a.e23 * b.s
-                + a.e123 * b.e1 - a.e3 * b.e2 - a.e12 * b.e13,
-            e123: a.s * b.e123 + a.e1 * b.e23 + a.e3 * b.e12 + a.e12 * b.e3
-                + a.e23 * b.e1 + a.e123 * b.s - a.e2 * b.e13 - a.e13 * b.e2,
+            s: ((a.s * b.s + a.e1 * b.e1) + (a.e2 * b.e2 + a.e3 * b.e3))
+                - ((a.e12 * b.e12 + a.e13 * b.e13) + (a.e23 * b.e23 + a.e123 * b.e123)),
+            e1: ((a.s * b.e1 + a.e1 * b.s) + (a.e12 * b.e2 + a.e13 * b.e3))
+                - ((a.e2 * b.e12 + a.e3 * b.e13) + (a.e23 * b.e123 + a.e123 * b.e23)),
+            e2: ((a.s * b.e2 + a.e1 * b.e12) + (a.e2 * b.s + a.e13 * b.e123))
+                + ((a.e23 * b.e3 + a.e123 * b.e13) - (a.e3 * b.e23 + a.e12 * b.e1)),
+            e3: ((a.s * b.e3 + a.e1 * b.e13) + (a.e2 * b.e23 + a.e3 * b.s))
+                - ((a.e12 * b.e123 + a.e13 * b.e1) + (a.e23 * b.e2 + a.e123 * b.e12)),
+            e12: ((a.s * b.e12 + a.e1 * b.e2) + (a.e3 * b.e123 + a.e12 * b.s))
+                + ((a.e23 * b.e13 + a.e123 * b.e3) - (a.e2 * b.e1 + a.e13 * b.e23)),
+            e13: ((a.s * b.e13 + a.e1 * b.e3) + (a.e12 * b.e23 + a.e13 * b.s))
+                - ((a.e2 * b.e123 + a.e3 * b.e1) + (a.e23 * b.e12 + a.e123 * b.e2)),
+            e23: ((a.s * b.e23 + a.e1 * b.e123) + (a.e2 * b.e3 + a.e13 * b.e12))
+                + ((a.e23 * b.s + a.e123 * b.e1) - (a.e3 * b.e2 + a.e12 * b.e13)),
+            e123: ((a.s * b.e123 + a.e1 * b.e23) + (a.e3 * b.e12 + a.e12 * b.e3))
+                + ((a.e23 * b.e1 + a.e123 * b.s) - (a.e2 * b.e13 + a.e13 * b.e2)),
         }
     }
     #[allow(dead_code)]
     fn mv_left_contraction(a: Multivector, b: Multivector) -> Multivector {
         Multivector {
-            s: a.s * b.s + a.e1 * b.e1 + a.e2 * b.e2 + a.e3 * b.e3 - a.e12 * b.e12
-                - a.e13 * b.e13 - a.e23 * b.e23 - a.e123 * b.e123,
-            e1: a.s * b.e1 - a.e2 * b.e12 - a.e3 * b.e13 - a.e23 * b.e123,
-            e2: a.s * b.e2 + a.e1 * b.e12 + a.e13 * b.e123 - a.e3 * b.e23,
-            e3: a.s * b.e3 + a.e1 * b.e13 + a.e2 * b.e23 - a.e12 * b.e123,
+            s: ((a.s * b.s + a.e1 * b.e1) + (a.e2 * b.e2 + a.e3 * b.e3))
+                - ((a.e12 * b.e12 + a.e13 * b.e13) + (a.e23 * b.e23 + a.e123 * b.e123)),
+            e1: (a.s * b.e1 - a.e2 * b.e12) - (a.e3 * b.e13 + a.e23 * b.e123),
+            e2: (a.s * b.e2 + a.e1 * b.e12) + (a.e13 * b.e123 - a.e3 * b.e23),
+            e3: (a.s * b.e3 + a.e1 * b.e13) + (a.e2 * b.e23 - a.e12 * b.e123),
             e12: a.s * b.e12 + a.e3 * b.e123,
             e13: a.s * b.e13 - a.e2 * b.e123,
             e23: a.s * b.e23 + a.e1 * b.e123,
@@ -8137,10 +8160,11 @@ pub mod g3 {
     }
     impl Bivector {
         ///`exp(B)` in closed form for every bivector and every metric: cos/sin, cosh/sinh or 1 + B per invariant plane (see docs/derivations/exp-log.md).
+        #[inline]
         #[must_use]
         pub fn exp(self) -> Even {
-            let x: f64 = -self.e12 * self.e12 - self.e13 * self.e13
-                - self.e23 * self.e23;
+            let x: f64 = -((self.e12 * self.e12 + self.e13 * self.e13)
+                + self.e23 * self.e23);
             let [even, weight] = cosh_sinhc_sqrt(x);
             Even {
                 s: even,
@@ -8153,6 +8177,7 @@ pub mod g3 {
     impl Even {
         /// The bivector `B` with `B.exp() == self` on the principal range (rotation
         /// angles below pi per plane); `self` must be a unit rotor.
+        #[inline]
         #[must_use]
         pub fn log(self) -> Bivector {
             let p = Bivector {
@@ -8160,7 +8185,7 @@ pub mod g3 {
                 e13: self.e13,
                 e23: self.e23,
             };
-            let p2: f64 = -p.e12 * p.e12 - p.e13 * p.e13 - p.e23 * p.e23;
+            let p2: f64 = -((p.e12 * p.e12 + p.e13 * p.e13) + p.e23 * p.e23);
             let weight = log_weight(self.s, p2);
             Bivector {
                 e12: weight * p.e12,

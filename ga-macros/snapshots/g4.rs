@@ -172,7 +172,8 @@ pub mod g4 {
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f64 {
-            self.e1 * self.e1 + self.e2 * self.e2 + self.e3 * self.e3 + self.e4 * self.e4
+            (self.e1 * self.e1 + self.e2 * self.e2)
+                + (self.e3 * self.e3 + self.e4 * self.e4)
         }
         /// `sqrt(|<A ~A>_0|)`.
         #[inline]
@@ -198,8 +199,8 @@ pub mod g4 {
         #[inline]
         #[must_use]
         pub fn inverse(self) -> Option<Vector> {
-            let denominator = self.e1 * self.e1 + self.e2 * self.e2 + self.e3 * self.e3
-                + self.e4 * self.e4;
+            let denominator = (self.e1 * self.e1 + self.e2 * self.e2)
+                + (self.e3 * self.e3 + self.e4 * self.e4);
             if denominator == 0.0 {
                 return None;
             }
@@ -264,9 +265,9 @@ pub mod g4 {
                         e3: projected.e3,
                         e4: projected.e4,
                     };
-                    let candidate_size = (candidate.e1 * candidate.e1
-                        + candidate.e2 * candidate.e2 + candidate.e3 * candidate.e3
-                        + candidate.e4 * candidate.e4)
+                    let candidate_size = ((candidate.e1 * candidate.e1
+                        + candidate.e2 * candidate.e2)
+                        + (candidate.e3 * candidate.e3 + candidate.e4 * candidate.e4))
                         .abs();
                     if candidate_size > best_size {
                         best = candidate;
@@ -468,8 +469,8 @@ pub mod g4 {
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f64 {
-            self.e12 * self.e12 + self.e13 * self.e13 + self.e14 * self.e14
-                + self.e23 * self.e23 + self.e24 * self.e24 + self.e34 * self.e34
+            ((self.e12 * self.e12 + self.e13 * self.e13) + self.e14 * self.e14)
+                + ((self.e23 * self.e23 + self.e24 * self.e24) + self.e34 * self.e34)
         }
         /// `sqrt(|<A ~A>_0|)`.
         #[inline]
@@ -533,8 +534,9 @@ pub mod g4 {
         #[must_use]
         pub fn is_blade(self) -> bool {
             let wedge = Quadvector {
-                e1234: self.e12 * self.e34 + self.e14 * self.e23 + self.e23 * self.e14
-                    + self.e34 * self.e12 - self.e13 * self.e24 - self.e24 * self.e13,
+                e1234: ((self.e12 * self.e34 + self.e14 * self.e23)
+                    + self.e23 * self.e14)
+                    + ((self.e34 * self.e12 - self.e13 * self.e24) - self.e24 * self.e13),
             };
             let size = self.to_array().iter().map(|c| c * c).sum::<f64>();
             let excess = wedge.to_array().iter().map(|c| c * c).sum::<f64>().sqrt();
@@ -572,9 +574,9 @@ pub mod g4 {
                         e3: projected.e3,
                         e4: projected.e4,
                     };
-                    let candidate_size = (candidate.e1 * candidate.e1
-                        + candidate.e2 * candidate.e2 + candidate.e3 * candidate.e3
-                        + candidate.e4 * candidate.e4)
+                    let candidate_size = ((candidate.e1 * candidate.e1
+                        + candidate.e2 * candidate.e2)
+                        + (candidate.e3 * candidate.e3 + candidate.e4 * candidate.e4))
                         .abs();
                     if candidate_size > best_size {
                         best = candidate;
@@ -740,8 +742,8 @@ pub mod g4 {
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f64 {
-            self.e123 * self.e123 + self.e124 * self.e124 + self.e134 * self.e134
-                + self.e234 * self.e234
+            (self.e123 * self.e123 + self.e124 * self.e124)
+                + (self.e134 * self.e134 + self.e234 * self.e234)
         }
         /// `sqrt(|<A ~A>_0|)`.
         #[inline]
@@ -767,8 +769,8 @@ pub mod g4 {
         #[inline]
         #[must_use]
         pub fn inverse(self) -> Option<Trivector> {
-            let denominator = self.e123 * self.e123 + self.e124 * self.e124
-                + self.e134 * self.e134 + self.e234 * self.e234;
+            let denominator = (self.e123 * self.e123 + self.e124 * self.e124)
+                + (self.e134 * self.e134 + self.e234 * self.e234);
             if denominator == 0.0 {
                 return None;
             }
@@ -833,9 +835,9 @@ pub mod g4 {
                         e3: projected.e3,
                         e4: projected.e4,
                     };
-                    let candidate_size = (candidate.e1 * candidate.e1
-                        + candidate.e2 * candidate.e2 + candidate.e3 * candidate.e3
-                        + candidate.e4 * candidate.e4)
+                    let candidate_size = ((candidate.e1 * candidate.e1
+                        + candidate.e2 * candidate.e2)
+                        + (candidate.e3 * candidate.e3 + candidate.e4 * candidate.e4))
                         .abs();
                     if candidate_size > best_size {
                         best = candidate;
@@ -1042,9 +1044,9 @@ pub mod g4 {
                         e3: projected.e3,
                         e4: projected.e4,
                     };
-                    let candidate_size = (candidate.e1 * candidate.e1
-                        + candidate.e2 * candidate.e2 + candidate.e3 * candidate.e3
-                        + candidate.e4 * candidate.e4)
+                    let candidate_size = ((candidate.e1 * candidate.e1
+                        + candidate.e2 * candidate.e2)
+                        + (candidate.e3 * candidate.e3 + candidate.e4 * candidate.e4))
                         .abs();
                     if candidate_size > best_size {
                         best = candidate;
@@ -1281,9 +1283,10 @@ pub mod g4 {
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f64 {
-            self.s * self.s + self.e12 * self.e12 + self.e13 * self.e13
-                + self.e14 * self.e14 + self.e23 * self.e23 + self.e24 * self.e24
-                + self.e34 * self.e34 + self.e1234 * self.e1234
+            ((self.s * self.s + self.e12 * self.e12)
+                + (self.e13 * self.e13 + self.e14 * self.e14))
+                + ((self.e23 * self.e23 + self.e24 * self.e24)
+                    + (self.e34 * self.e34 + self.e1234 * self.e1234))
         }
         /// `sqrt(|<A ~A>_0|)`.
         #[inline]
@@ -1556,9 +1559,10 @@ pub mod g4 {
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f64 {
-            self.e1 * self.e1 + self.e2 * self.e2 + self.e3 * self.e3 + self.e4 * self.e4
-                + self.e123 * self.e123 + self.e124 * self.e124 + self.e134 * self.e134
-                + self.e234 * self.e234
+            ((self.e1 * self.e1 + self.e2 * self.e2)
+                + (self.e3 * self.e3 + self.e4 * self.e4))
+                + ((self.e123 * self.e123 + self.e124 * self.e124)
+                    + (self.e134 * self.e134 + self.e234 * self.e234))
         }
         /// `sqrt(|<A ~A>_0|)`.
         #[inline]
@@ -2205,11 +2209,14 @@ pub mod g4 {
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f64 {
-            self.s * self.s + self.e1 * self.e1 + self.e2 * self.e2 + self.e3 * self.e3
-                + self.e4 * self.e4 + self.e12 * self.e12 + self.e13 * self.e13
-                + self.e14 * self.e14 + self.e23 * self.e23 + self.e24 * self.e24
-                + self.e34 * self.e34 + self.e123 * self.e123 + self.e124 * self.e124
-                + self.e134 * self.e134 + self.e234 * self.e234 + self.e1234 * self.e1234
+            (((self.s * self.s + self.e1 * self.e1)
+                + (self.e2 * self.e2 + self.e3 * self.e3))
+                + ((self.e4 * self.e4 + self.e12 * self.e12)
+                    + (self.e13 * self.e13 + self.e14 * self.e14)))
+                + (((self.e23 * self.e23 + self.e24 * self.e24)
+                    + (self.e34 * self.e34 + self.e123 * self.e123))
+                    + ((self.e124 * self.e124 + self.e134 * self.e134)
+                        + (self.e234 * self.e234 + self.e1234 * self.e1234)))
         }
         /// `sqrt(|<A ~A>_0|)`.
         #[inline]
@@ -2493,8 +2500,8 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Vector) -> Even {
             Even {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    + self.e4 * rhs.e4,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 + self.e4 * rhs.e4),
                 e12: self.e1 * rhs.e2 - self.e2 * rhs.e1,
                 e13: self.e1 * rhs.e3 - self.e3 * rhs.e1,
                 e14: self.e1 * rhs.e4 - self.e4 * rhs.e1,
@@ -2510,14 +2517,14 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Bivector) -> Odd {
             Odd {
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13 - self.e4 * rhs.e14,
-                e2: self.e1 * rhs.e12 - self.e3 * rhs.e23 - self.e4 * rhs.e24,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 - self.e4 * rhs.e34,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 - self.e2 * rhs.e13,
-                e124: self.e1 * rhs.e24 + self.e4 * rhs.e12 - self.e2 * rhs.e14,
-                e134: self.e1 * rhs.e34 + self.e4 * rhs.e13 - self.e3 * rhs.e14,
-                e234: self.e2 * rhs.e34 + self.e4 * rhs.e23 - self.e3 * rhs.e24,
+                e1: -((self.e2 * rhs.e12 + self.e3 * rhs.e13) + self.e4 * rhs.e14),
+                e2: (self.e1 * rhs.e12 - self.e3 * rhs.e23) - self.e4 * rhs.e24,
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23) - self.e4 * rhs.e34,
+                e4: (self.e1 * rhs.e14 + self.e2 * rhs.e24) + self.e3 * rhs.e34,
+                e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12) - self.e2 * rhs.e13,
+                e124: (self.e1 * rhs.e24 + self.e4 * rhs.e12) - self.e2 * rhs.e14,
+                e134: (self.e1 * rhs.e34 + self.e4 * rhs.e13) - self.e3 * rhs.e14,
+                e234: (self.e2 * rhs.e34 + self.e4 * rhs.e23) - self.e3 * rhs.e24,
             }
         }
     }
@@ -2529,12 +2536,12 @@ pub mod g4 {
                 s: 0.0,
                 e12: self.e3 * rhs.e123 + self.e4 * rhs.e124,
                 e13: self.e4 * rhs.e134 - self.e2 * rhs.e123,
-                e14: -self.e2 * rhs.e124 - self.e3 * rhs.e134,
+                e14: -(self.e2 * rhs.e124 + self.e3 * rhs.e134),
                 e23: self.e1 * rhs.e123 + self.e4 * rhs.e234,
                 e24: self.e1 * rhs.e124 - self.e3 * rhs.e234,
                 e34: self.e1 * rhs.e134 + self.e2 * rhs.e234,
-                e1234: self.e1 * rhs.e234 + self.e3 * rhs.e124 - self.e2 * rhs.e134
-                    - self.e4 * rhs.e123,
+                e1234: (self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    - (self.e2 * rhs.e134 + self.e4 * rhs.e123),
             }
         }
     }
@@ -2555,22 +2562,22 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Even) -> Odd {
             Odd {
-                e1: self.e1 * rhs.s - self.e2 * rhs.e12 - self.e3 * rhs.e13
-                    - self.e4 * rhs.e14,
-                e2: self.e1 * rhs.e12 + self.e2 * rhs.s - self.e3 * rhs.e23
-                    - self.e4 * rhs.e24,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e3 * rhs.s
-                    - self.e4 * rhs.e34,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34
-                    + self.e4 * rhs.s,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 - self.e2 * rhs.e13
-                    - self.e4 * rhs.e1234,
-                e124: self.e1 * rhs.e24 + self.e3 * rhs.e1234 + self.e4 * rhs.e12
-                    - self.e2 * rhs.e14,
-                e134: self.e1 * rhs.e34 + self.e4 * rhs.e13 - self.e2 * rhs.e1234
-                    - self.e3 * rhs.e14,
-                e234: self.e1 * rhs.e1234 + self.e2 * rhs.e34 + self.e4 * rhs.e23
-                    - self.e3 * rhs.e24,
+                e1: (self.e1 * rhs.s - self.e2 * rhs.e12)
+                    - (self.e3 * rhs.e13 + self.e4 * rhs.e14),
+                e2: (self.e1 * rhs.e12 + self.e2 * rhs.s)
+                    - (self.e3 * rhs.e23 + self.e4 * rhs.e24),
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23)
+                    + (self.e3 * rhs.s - self.e4 * rhs.e34),
+                e4: (self.e1 * rhs.e14 + self.e2 * rhs.e24)
+                    + (self.e3 * rhs.e34 + self.e4 * rhs.s),
+                e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12)
+                    - (self.e2 * rhs.e13 + self.e4 * rhs.e1234),
+                e124: (self.e1 * rhs.e24 + self.e3 * rhs.e1234)
+                    + (self.e4 * rhs.e12 - self.e2 * rhs.e14),
+                e134: (self.e1 * rhs.e34 + self.e4 * rhs.e13)
+                    - (self.e2 * rhs.e1234 + self.e3 * rhs.e14),
+                e234: (self.e1 * rhs.e1234 + self.e2 * rhs.e34)
+                    + (self.e4 * rhs.e23 - self.e3 * rhs.e24),
             }
         }
     }
@@ -2579,22 +2586,22 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Odd) -> Even {
             Even {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    + self.e4 * rhs.e4,
-                e12: self.e1 * rhs.e2 + self.e3 * rhs.e123 + self.e4 * rhs.e124
-                    - self.e2 * rhs.e1,
-                e13: self.e1 * rhs.e3 + self.e4 * rhs.e134 - self.e2 * rhs.e123
-                    - self.e3 * rhs.e1,
-                e14: self.e1 * rhs.e4 - self.e2 * rhs.e124 - self.e3 * rhs.e134
-                    - self.e4 * rhs.e1,
-                e23: self.e1 * rhs.e123 + self.e2 * rhs.e3 + self.e4 * rhs.e234
-                    - self.e3 * rhs.e2,
-                e24: self.e1 * rhs.e124 + self.e2 * rhs.e4 - self.e3 * rhs.e234
-                    - self.e4 * rhs.e2,
-                e34: self.e1 * rhs.e134 + self.e2 * rhs.e234 + self.e3 * rhs.e4
-                    - self.e4 * rhs.e3,
-                e1234: self.e1 * rhs.e234 + self.e3 * rhs.e124 - self.e2 * rhs.e134
-                    - self.e4 * rhs.e123,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 + self.e4 * rhs.e4),
+                e12: (self.e1 * rhs.e2 + self.e3 * rhs.e123)
+                    + (self.e4 * rhs.e124 - self.e2 * rhs.e1),
+                e13: (self.e1 * rhs.e3 + self.e4 * rhs.e134)
+                    - (self.e2 * rhs.e123 + self.e3 * rhs.e1),
+                e14: (self.e1 * rhs.e4 - self.e2 * rhs.e124)
+                    - (self.e3 * rhs.e134 + self.e4 * rhs.e1),
+                e23: (self.e1 * rhs.e123 + self.e2 * rhs.e3)
+                    + (self.e4 * rhs.e234 - self.e3 * rhs.e2),
+                e24: (self.e1 * rhs.e124 + self.e2 * rhs.e4)
+                    - (self.e3 * rhs.e234 + self.e4 * rhs.e2),
+                e34: (self.e1 * rhs.e134 + self.e2 * rhs.e234)
+                    + (self.e3 * rhs.e4 - self.e4 * rhs.e3),
+                e1234: (self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    - (self.e2 * rhs.e134 + self.e4 * rhs.e123),
             }
         }
     }
@@ -2603,38 +2610,38 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    + self.e4 * rhs.e4,
-                e1: self.e1 * rhs.s - self.e2 * rhs.e12 - self.e3 * rhs.e13
-                    - self.e4 * rhs.e14,
-                e2: self.e1 * rhs.e12 + self.e2 * rhs.s - self.e3 * rhs.e23
-                    - self.e4 * rhs.e24,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e3 * rhs.s
-                    - self.e4 * rhs.e34,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34
-                    + self.e4 * rhs.s,
-                e12: self.e1 * rhs.e2 + self.e3 * rhs.e123 + self.e4 * rhs.e124
-                    - self.e2 * rhs.e1,
-                e13: self.e1 * rhs.e3 + self.e4 * rhs.e134 - self.e2 * rhs.e123
-                    - self.e3 * rhs.e1,
-                e14: self.e1 * rhs.e4 - self.e2 * rhs.e124 - self.e3 * rhs.e134
-                    - self.e4 * rhs.e1,
-                e23: self.e1 * rhs.e123 + self.e2 * rhs.e3 + self.e4 * rhs.e234
-                    - self.e3 * rhs.e2,
-                e24: self.e1 * rhs.e124 + self.e2 * rhs.e4 - self.e3 * rhs.e234
-                    - self.e4 * rhs.e2,
-                e34: self.e1 * rhs.e134 + self.e2 * rhs.e234 + self.e3 * rhs.e4
-                    - self.e4 * rhs.e3,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 - self.e2 * rhs.e13
-                    - self.e4 * rhs.e1234,
-                e124: self.e1 * rhs.e24 + self.e3 * rhs.e1234 + self.e4 * rhs.e12
-                    - self.e2 * rhs.e14,
-                e134: self.e1 * rhs.e34 + self.e4 * rhs.e13 - self.e2 * rhs.e1234
-                    - self.e3 * rhs.e14,
-                e234: self.e1 * rhs.e1234 + self.e2 * rhs.e34 + self.e4 * rhs.e23
-                    - self.e3 * rhs.e24,
-                e1234: self.e1 * rhs.e234 + self.e3 * rhs.e124 - self.e2 * rhs.e134
-                    - self.e4 * rhs.e123,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 + self.e4 * rhs.e4),
+                e1: (self.e1 * rhs.s - self.e2 * rhs.e12)
+                    - (self.e3 * rhs.e13 + self.e4 * rhs.e14),
+                e2: (self.e1 * rhs.e12 + self.e2 * rhs.s)
+                    - (self.e3 * rhs.e23 + self.e4 * rhs.e24),
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23)
+                    + (self.e3 * rhs.s - self.e4 * rhs.e34),
+                e4: (self.e1 * rhs.e14 + self.e2 * rhs.e24)
+                    + (self.e3 * rhs.e34 + self.e4 * rhs.s),
+                e12: (self.e1 * rhs.e2 + self.e3 * rhs.e123)
+                    + (self.e4 * rhs.e124 - self.e2 * rhs.e1),
+                e13: (self.e1 * rhs.e3 + self.e4 * rhs.e134)
+                    - (self.e2 * rhs.e123 + self.e3 * rhs.e1),
+                e14: (self.e1 * rhs.e4 - self.e2 * rhs.e124)
+                    - (self.e3 * rhs.e134 + self.e4 * rhs.e1),
+                e23: (self.e1 * rhs.e123 + self.e2 * rhs.e3)
+                    + (self.e4 * rhs.e234 - self.e3 * rhs.e2),
+                e24: (self.e1 * rhs.e124 + self.e2 * rhs.e4)
+                    - (self.e3 * rhs.e234 + self.e4 * rhs.e2),
+                e34: (self.e1 * rhs.e134 + self.e2 * rhs.e234)
+                    + (self.e3 * rhs.e4 - self.e4 * rhs.e3),
+                e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12)
+                    - (self.e2 * rhs.e13 + self.e4 * rhs.e1234),
+                e124: (self.e1 * rhs.e24 + self.e3 * rhs.e1234)
+                    + (self.e4 * rhs.e12 - self.e2 * rhs.e14),
+                e134: (self.e1 * rhs.e34 + self.e4 * rhs.e13)
+                    - (self.e2 * rhs.e1234 + self.e3 * rhs.e14),
+                e234: (self.e1 * rhs.e1234 + self.e2 * rhs.e34)
+                    + (self.e4 * rhs.e23 - self.e3 * rhs.e24),
+                e1234: (self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    - (self.e2 * rhs.e134 + self.e4 * rhs.e123),
             }
         }
     }
@@ -2657,14 +2664,14 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Vector) -> Odd {
             Odd {
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 + self.e14 * rhs.e4,
-                e2: self.e23 * rhs.e3 + self.e24 * rhs.e4 - self.e12 * rhs.e1,
-                e3: self.e34 * rhs.e4 - self.e13 * rhs.e1 - self.e23 * rhs.e2,
-                e4: -self.e14 * rhs.e1 - self.e24 * rhs.e2 - self.e34 * rhs.e3,
-                e123: self.e12 * rhs.e3 + self.e23 * rhs.e1 - self.e13 * rhs.e2,
-                e124: self.e12 * rhs.e4 + self.e24 * rhs.e1 - self.e14 * rhs.e2,
-                e134: self.e13 * rhs.e4 + self.e34 * rhs.e1 - self.e14 * rhs.e3,
-                e234: self.e23 * rhs.e4 + self.e34 * rhs.e2 - self.e24 * rhs.e3,
+                e1: (self.e12 * rhs.e2 + self.e13 * rhs.e3) + self.e14 * rhs.e4,
+                e2: (self.e23 * rhs.e3 + self.e24 * rhs.e4) - self.e12 * rhs.e1,
+                e3: (self.e34 * rhs.e4 - self.e13 * rhs.e1) - self.e23 * rhs.e2,
+                e4: -((self.e14 * rhs.e1 + self.e24 * rhs.e2) + self.e34 * rhs.e3),
+                e123: (self.e12 * rhs.e3 + self.e23 * rhs.e1) - self.e13 * rhs.e2,
+                e124: (self.e12 * rhs.e4 + self.e24 * rhs.e1) - self.e14 * rhs.e2,
+                e134: (self.e13 * rhs.e4 + self.e34 * rhs.e1) - self.e14 * rhs.e3,
+                e234: (self.e23 * rhs.e4 + self.e34 * rhs.e2) - self.e24 * rhs.e3,
             }
         }
     }
@@ -2673,22 +2680,22 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Bivector) -> Even {
             Even {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                    - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34,
-                e12: self.e23 * rhs.e13 + self.e24 * rhs.e14 - self.e13 * rhs.e23
-                    - self.e14 * rhs.e24,
-                e13: self.e12 * rhs.e23 + self.e34 * rhs.e14 - self.e14 * rhs.e34
-                    - self.e23 * rhs.e12,
-                e14: self.e12 * rhs.e24 + self.e13 * rhs.e34 - self.e24 * rhs.e12
-                    - self.e34 * rhs.e13,
-                e23: self.e13 * rhs.e12 + self.e34 * rhs.e24 - self.e12 * rhs.e13
-                    - self.e24 * rhs.e34,
-                e24: self.e14 * rhs.e12 + self.e23 * rhs.e34 - self.e12 * rhs.e14
-                    - self.e34 * rhs.e23,
-                e34: self.e14 * rhs.e13 + self.e24 * rhs.e23 - self.e13 * rhs.e14
-                    - self.e23 * rhs.e24,
-                e1234: self.e12 * rhs.e34 + self.e14 * rhs.e23 + self.e23 * rhs.e14
-                    + self.e34 * rhs.e12 - self.e13 * rhs.e24 - self.e24 * rhs.e13,
+                s: -(((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e14 * rhs.e14)
+                    + ((self.e23 * rhs.e23 + self.e24 * rhs.e24) + self.e34 * rhs.e34)),
+                e12: (self.e23 * rhs.e13 + self.e24 * rhs.e14)
+                    - (self.e13 * rhs.e23 + self.e14 * rhs.e24),
+                e13: (self.e12 * rhs.e23 + self.e34 * rhs.e14)
+                    - (self.e14 * rhs.e34 + self.e23 * rhs.e12),
+                e14: (self.e12 * rhs.e24 + self.e13 * rhs.e34)
+                    - (self.e24 * rhs.e12 + self.e34 * rhs.e13),
+                e23: (self.e13 * rhs.e12 + self.e34 * rhs.e24)
+                    - (self.e12 * rhs.e13 + self.e24 * rhs.e34),
+                e24: (self.e14 * rhs.e12 + self.e23 * rhs.e34)
+                    - (self.e12 * rhs.e14 + self.e34 * rhs.e23),
+                e34: (self.e14 * rhs.e13 + self.e24 * rhs.e23)
+                    - (self.e13 * rhs.e14 + self.e23 * rhs.e24),
+                e1234: ((self.e12 * rhs.e34 + self.e14 * rhs.e23) + self.e23 * rhs.e14)
+                    + ((self.e34 * rhs.e12 - self.e13 * rhs.e24) - self.e24 * rhs.e13),
             }
         }
     }
@@ -2697,14 +2704,14 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Trivector) -> Odd {
             Odd {
-                e1: -self.e23 * rhs.e123 - self.e24 * rhs.e124 - self.e34 * rhs.e134,
-                e2: self.e13 * rhs.e123 + self.e14 * rhs.e124 - self.e34 * rhs.e234,
-                e3: self.e14 * rhs.e134 + self.e24 * rhs.e234 - self.e12 * rhs.e123,
-                e4: -self.e12 * rhs.e124 - self.e13 * rhs.e134 - self.e23 * rhs.e234,
-                e123: self.e14 * rhs.e234 + self.e34 * rhs.e124 - self.e24 * rhs.e134,
-                e124: self.e23 * rhs.e134 - self.e13 * rhs.e234 - self.e34 * rhs.e123,
-                e134: self.e12 * rhs.e234 + self.e24 * rhs.e123 - self.e23 * rhs.e124,
-                e234: self.e13 * rhs.e124 - self.e12 * rhs.e134 - self.e14 * rhs.e123,
+                e1: -((self.e23 * rhs.e123 + self.e24 * rhs.e124) + self.e34 * rhs.e134),
+                e2: (self.e13 * rhs.e123 + self.e14 * rhs.e124) - self.e34 * rhs.e234,
+                e3: (self.e14 * rhs.e134 + self.e24 * rhs.e234) - self.e12 * rhs.e123,
+                e4: -((self.e12 * rhs.e124 + self.e13 * rhs.e134) + self.e23 * rhs.e234),
+                e123: (self.e14 * rhs.e234 + self.e34 * rhs.e124) - self.e24 * rhs.e134,
+                e124: (self.e23 * rhs.e134 - self.e13 * rhs.e234) - self.e34 * rhs.e123,
+                e134: (self.e12 * rhs.e234 + self.e24 * rhs.e123) - self.e23 * rhs.e124,
+                e234: (self.e13 * rhs.e124 - self.e12 * rhs.e134) - self.e14 * rhs.e123,
             }
         }
     }
@@ -2727,22 +2734,22 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Even) -> Even {
             Even {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                    - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34,
-                e12: self.e12 * rhs.s + self.e23 * rhs.e13 + self.e24 * rhs.e14
-                    - self.e13 * rhs.e23 - self.e14 * rhs.e24 - self.e34 * rhs.e1234,
-                e13: self.e12 * rhs.e23 + self.e13 * rhs.s + self.e24 * rhs.e1234
-                    + self.e34 * rhs.e14 - self.e14 * rhs.e34 - self.e23 * rhs.e12,
-                e14: self.e12 * rhs.e24 + self.e13 * rhs.e34 + self.e14 * rhs.s
-                    - self.e23 * rhs.e1234 - self.e24 * rhs.e12 - self.e34 * rhs.e13,
-                e23: self.e13 * rhs.e12 + self.e23 * rhs.s + self.e34 * rhs.e24
-                    - self.e12 * rhs.e13 - self.e14 * rhs.e1234 - self.e24 * rhs.e34,
-                e24: self.e13 * rhs.e1234 + self.e14 * rhs.e12 + self.e23 * rhs.e34
-                    + self.e24 * rhs.s - self.e12 * rhs.e14 - self.e34 * rhs.e23,
-                e34: self.e14 * rhs.e13 + self.e24 * rhs.e23 + self.e34 * rhs.s
-                    - self.e12 * rhs.e1234 - self.e13 * rhs.e14 - self.e23 * rhs.e24,
-                e1234: self.e12 * rhs.e34 + self.e14 * rhs.e23 + self.e23 * rhs.e14
-                    + self.e34 * rhs.e12 - self.e13 * rhs.e24 - self.e24 * rhs.e13,
+                s: -(((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e14 * rhs.e14)
+                    + ((self.e23 * rhs.e23 + self.e24 * rhs.e24) + self.e34 * rhs.e34)),
+                e12: ((self.e12 * rhs.s + self.e23 * rhs.e13) + self.e24 * rhs.e14)
+                    - ((self.e13 * rhs.e23 + self.e14 * rhs.e24) + self.e34 * rhs.e1234),
+                e13: ((self.e12 * rhs.e23 + self.e13 * rhs.s) + self.e24 * rhs.e1234)
+                    + ((self.e34 * rhs.e14 - self.e14 * rhs.e34) - self.e23 * rhs.e12),
+                e14: ((self.e12 * rhs.e24 + self.e13 * rhs.e34) + self.e14 * rhs.s)
+                    - ((self.e23 * rhs.e1234 + self.e24 * rhs.e12) + self.e34 * rhs.e13),
+                e23: ((self.e13 * rhs.e12 + self.e23 * rhs.s) + self.e34 * rhs.e24)
+                    - ((self.e12 * rhs.e13 + self.e14 * rhs.e1234) + self.e24 * rhs.e34),
+                e24: ((self.e13 * rhs.e1234 + self.e14 * rhs.e12) + self.e23 * rhs.e34)
+                    + ((self.e24 * rhs.s - self.e12 * rhs.e14) - self.e34 * rhs.e23),
+                e34: ((self.e14 * rhs.e13 + self.e24 * rhs.e23) + self.e34 * rhs.s)
+                    - ((self.e12 * rhs.e1234 + self.e13 * rhs.e14) + self.e23 * rhs.e24),
+                e1234: ((self.e12 * rhs.e34 + self.e14 * rhs.e23) + self.e23 * rhs.e14)
+                    + ((self.e34 * rhs.e12 - self.e13 * rhs.e24) - self.e24 * rhs.e13),
             }
         }
     }
@@ -2751,22 +2758,23 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Odd) -> Odd {
             Odd {
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 + self.e14 * rhs.e4
-                    - self.e23 * rhs.e123 - self.e24 * rhs.e124 - self.e34 * rhs.e134,
-                e2: self.e13 * rhs.e123 + self.e14 * rhs.e124 + self.e23 * rhs.e3
-                    + self.e24 * rhs.e4 - self.e12 * rhs.e1 - self.e34 * rhs.e234,
-                e3: self.e14 * rhs.e134 + self.e24 * rhs.e234 + self.e34 * rhs.e4
-                    - self.e12 * rhs.e123 - self.e13 * rhs.e1 - self.e23 * rhs.e2,
-                e4: -self.e12 * rhs.e124 - self.e13 * rhs.e134 - self.e14 * rhs.e1
-                    - self.e23 * rhs.e234 - self.e24 * rhs.e2 - self.e34 * rhs.e3,
-                e123: self.e12 * rhs.e3 + self.e14 * rhs.e234 + self.e23 * rhs.e1
-                    + self.e34 * rhs.e124 - self.e13 * rhs.e2 - self.e24 * rhs.e134,
-                e124: self.e12 * rhs.e4 + self.e23 * rhs.e134 + self.e24 * rhs.e1
-                    - self.e13 * rhs.e234 - self.e14 * rhs.e2 - self.e34 * rhs.e123,
-                e134: self.e12 * rhs.e234 + self.e13 * rhs.e4 + self.e24 * rhs.e123
-                    + self.e34 * rhs.e1 - self.e14 * rhs.e3 - self.e23 * rhs.e124,
-                e234: self.e13 * rhs.e124 + self.e23 * rhs.e4 + self.e34 * rhs.e2
-                    - self.e12 * rhs.e134 - self.e14 * rhs.e123 - self.e24 * rhs.e3,
+                e1: ((self.e12 * rhs.e2 + self.e13 * rhs.e3) + self.e14 * rhs.e4)
+                    - ((self.e23 * rhs.e123 + self.e24 * rhs.e124)
+                        + self.e34 * rhs.e134),
+                e2: ((self.e13 * rhs.e123 + self.e14 * rhs.e124) + self.e23 * rhs.e3)
+                    + ((self.e24 * rhs.e4 - self.e12 * rhs.e1) - self.e34 * rhs.e234),
+                e3: ((self.e14 * rhs.e134 + self.e24 * rhs.e234) + self.e34 * rhs.e4)
+                    - ((self.e12 * rhs.e123 + self.e13 * rhs.e1) + self.e23 * rhs.e2),
+                e4: -(((self.e12 * rhs.e124 + self.e13 * rhs.e134) + self.e14 * rhs.e1)
+                    + ((self.e23 * rhs.e234 + self.e24 * rhs.e2) + self.e34 * rhs.e3)),
+                e123: ((self.e12 * rhs.e3 + self.e14 * rhs.e234) + self.e23 * rhs.e1)
+                    + ((self.e34 * rhs.e124 - self.e13 * rhs.e2) - self.e24 * rhs.e134),
+                e124: ((self.e12 * rhs.e4 + self.e23 * rhs.e134) + self.e24 * rhs.e1)
+                    - ((self.e13 * rhs.e234 + self.e14 * rhs.e2) + self.e34 * rhs.e123),
+                e134: ((self.e12 * rhs.e234 + self.e13 * rhs.e4) + self.e24 * rhs.e123)
+                    + ((self.e34 * rhs.e1 - self.e14 * rhs.e3) - self.e23 * rhs.e124),
+                e234: ((self.e13 * rhs.e124 + self.e23 * rhs.e4) + self.e34 * rhs.e2)
+                    - ((self.e12 * rhs.e134 + self.e14 * rhs.e123) + self.e24 * rhs.e3),
             }
         }
     }
@@ -2775,38 +2783,39 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                    - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34,
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 + self.e14 * rhs.e4
-                    - self.e23 * rhs.e123 - self.e24 * rhs.e124 - self.e34 * rhs.e134,
-                e2: self.e13 * rhs.e123 + self.e14 * rhs.e124 + self.e23 * rhs.e3
-                    + self.e24 * rhs.e4 - self.e12 * rhs.e1 - self.e34 * rhs.e234,
-                e3: self.e14 * rhs.e134 + self.e24 * rhs.e234 + self.e34 * rhs.e4
-                    - self.e12 * rhs.e123 - self.e13 * rhs.e1 - self.e23 * rhs.e2,
-                e4: -self.e12 * rhs.e124 - self.e13 * rhs.e134 - self.e14 * rhs.e1
-                    - self.e23 * rhs.e234 - self.e24 * rhs.e2 - self.e34 * rhs.e3,
-                e12: self.e12 * rhs.s + self.e23 * rhs.e13 + self.e24 * rhs.e14
-                    - self.e13 * rhs.e23 - self.e14 * rhs.e24 - self.e34 * rhs.e1234,
-                e13: self.e12 * rhs.e23 + self.e13 * rhs.s + self.e24 * rhs.e1234
-                    + self.e34 * rhs.e14 - self.e14 * rhs.e34 - self.e23 * rhs.e12,
-                e14: self.e12 * rhs.e24 + self.e13 * rhs.e34 + self.e14 * rhs.s
-                    - self.e23 * rhs.e1234 - self.e24 * rhs.e12 - self.e34 * rhs.e13,
-                e23: self.e13 * rhs.e12 + self.e23 * rhs.s + self.e34 * rhs.e24
-                    - self.e12 * rhs.e13 - self.e14 * rhs.e1234 - self.e24 * rhs.e34,
-                e24: self.e13 * rhs.e1234 + self.e14 * rhs.e12 + self.e23 * rhs.e34
-                    + self.e24 * rhs.s - self.e12 * rhs.e14 - self.e34 * rhs.e23,
-                e34: self.e14 * rhs.e13 + self.e24 * rhs.e23 + self.e34 * rhs.s
-                    - self.e12 * rhs.e1234 - self.e13 * rhs.e14 - self.e23 * rhs.e24,
-                e123: self.e12 * rhs.e3 + self.e14 * rhs.e234 + self.e23 * rhs.e1
-                    + self.e34 * rhs.e124 - self.e13 * rhs.e2 - self.e24 * rhs.e134,
-                e124: self.e12 * rhs.e4 + self.e23 * rhs.e134 + self.e24 * rhs.e1
-                    - self.e13 * rhs.e234 - self.e14 * rhs.e2 - self.e34 * rhs.e123,
-                e134: self.e12 * rhs.e234 + self.e13 * rhs.e4 + self.e24 * rhs.e123
-                    + self.e34 * rhs.e1 - self.e14 * rhs.e3 - self.e23 * rhs.e124,
-                e234: self.e13 * rhs.e124 + self.e23 * rhs.e4 + self.e34 * rhs.e2
-                    - self.e12 * rhs.e134 - self.e14 * rhs.e123 - self.e24 * rhs.e3,
-                e1234: self.e12 * rhs.e34 + self.e14 * rhs.e23 + self.e23 * rhs.e14
-                    + self.e34 * rhs.e12 - self.e13 * rhs.e24 - self.e24 * rhs.e13,
+                s: -(((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e14 * rhs.e14)
+                    + ((self.e23 * rhs.e23 + self.e24 * rhs.e24) + self.e34 * rhs.e34)),
+                e1: ((self.e12 * rhs.e2 + self.e13 * rhs.e3) + self.e14 * rhs.e4)
+                    - ((self.e23 * rhs.e123 + self.e24 * rhs.e124)
+                        + self.e34 * rhs.e134),
+                e2: ((self.e13 * rhs.e123 + self.e14 * rhs.e124) + self.e23 * rhs.e3)
+                    + ((self.e24 * rhs.e4 - self.e12 * rhs.e1) - self.e34 * rhs.e234),
+                e3: ((self.e14 * rhs.e134 + self.e24 * rhs.e234) + self.e34 * rhs.e4)
+                    - ((self.e12 * rhs.e123 + self.e13 * rhs.e1) + self.e23 * rhs.e2),
+                e4: -(((self.e12 * rhs.e124 + self.e13 * rhs.e134) + self.e14 * rhs.e1)
+                    + ((self.e23 * rhs.e234 + self.e24 * rhs.e2) + self.e34 * rhs.e3)),
+                e12: ((self.e12 * rhs.s + self.e23 * rhs.e13) + self.e24 * rhs.e14)
+                    - ((self.e13 * rhs.e23 + self.e14 * rhs.e24) + self.e34 * rhs.e1234),
+                e13: ((self.e12 * rhs.e23 + self.e13 * rhs.s) + self.e24 * rhs.e1234)
+                    + ((self.e34 * rhs.e14 - self.e14 * rhs.e34) - self.e23 * rhs.e12),
+                e14: ((self.e12 * rhs.e24 + self.e13 * rhs.e34) + self.e14 * rhs.s)
+                    - ((self.e23 * rhs.e1234 + self.e24 * rhs.e12) + self.e34 * rhs.e13),
+                e23: ((self.e13 * rhs.e12 + self.e23 * rhs.s) + self.e34 * rhs.e24)
+                    - ((self.e12 * rhs.e13 + self.e14 * rhs.e1234) + self.e24 * rhs.e34),
+                e24: ((self.e13 * rhs.e1234 + self.e14 * rhs.e12) + self.e23 * rhs.e34)
+                    + ((self.e24 * rhs.s - self.e12 * rhs.e14) - self.e34 * rhs.e23),
+                e34: ((self.e14 * rhs.e13 + self.e24 * rhs.e23) + self.e34 * rhs.s)
+                    - ((self.e12 * rhs.e1234 + self.e13 * rhs.e14) + self.e23 * rhs.e24),
+                e123: ((self.e12 * rhs.e3 + self.e14 * rhs.e234) + self.e23 * rhs.e1)
+                    + ((self.e34 * rhs.e124 - self.e13 * rhs.e2) - self.e24 * rhs.e134),
+                e124: ((self.e12 * rhs.e4 + self.e23 * rhs.e134) + self.e24 * rhs.e1)
+                    - ((self.e13 * rhs.e234 + self.e14 * rhs.e2) + self.e34 * rhs.e123),
+                e134: ((self.e12 * rhs.e234 + self.e13 * rhs.e4) + self.e24 * rhs.e123)
+                    + ((self.e34 * rhs.e1 - self.e14 * rhs.e3) - self.e23 * rhs.e124),
+                e234: ((self.e13 * rhs.e124 + self.e23 * rhs.e4) + self.e34 * rhs.e2)
+                    - ((self.e12 * rhs.e134 + self.e14 * rhs.e123) + self.e24 * rhs.e3),
+                e1234: ((self.e12 * rhs.e34 + self.e14 * rhs.e23) + self.e23 * rhs.e14)
+                    + ((self.e34 * rhs.e12 - self.e13 * rhs.e24) - self.e24 * rhs.e13),
             }
         }
     }
@@ -2830,12 +2839,12 @@ pub mod g4 {
                 s: 0.0,
                 e12: self.e123 * rhs.e3 + self.e124 * rhs.e4,
                 e13: self.e134 * rhs.e4 - self.e123 * rhs.e2,
-                e14: -self.e124 * rhs.e2 - self.e134 * rhs.e3,
+                e14: -(self.e124 * rhs.e2 + self.e134 * rhs.e3),
                 e23: self.e123 * rhs.e1 + self.e234 * rhs.e4,
                 e24: self.e124 * rhs.e1 - self.e234 * rhs.e3,
                 e34: self.e134 * rhs.e1 + self.e234 * rhs.e2,
-                e1234: self.e123 * rhs.e4 + self.e134 * rhs.e2 - self.e124 * rhs.e3
-                    - self.e234 * rhs.e1,
+                e1234: (self.e123 * rhs.e4 + self.e134 * rhs.e2)
+                    - (self.e124 * rhs.e3 + self.e234 * rhs.e1),
             }
         }
     }
@@ -2844,14 +2853,14 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Bivector) -> Odd {
             Odd {
-                e1: -self.e123 * rhs.e23 - self.e124 * rhs.e24 - self.e134 * rhs.e34,
-                e2: self.e123 * rhs.e13 + self.e124 * rhs.e14 - self.e234 * rhs.e34,
-                e3: self.e134 * rhs.e14 + self.e234 * rhs.e24 - self.e123 * rhs.e12,
-                e4: -self.e124 * rhs.e12 - self.e134 * rhs.e13 - self.e234 * rhs.e23,
-                e123: self.e134 * rhs.e24 - self.e124 * rhs.e34 - self.e234 * rhs.e14,
-                e124: self.e123 * rhs.e34 + self.e234 * rhs.e13 - self.e134 * rhs.e23,
-                e134: self.e124 * rhs.e23 - self.e123 * rhs.e24 - self.e234 * rhs.e12,
-                e234: self.e123 * rhs.e14 + self.e134 * rhs.e12 - self.e124 * rhs.e13,
+                e1: -((self.e123 * rhs.e23 + self.e124 * rhs.e24) + self.e134 * rhs.e34),
+                e2: (self.e123 * rhs.e13 + self.e124 * rhs.e14) - self.e234 * rhs.e34,
+                e3: (self.e134 * rhs.e14 + self.e234 * rhs.e24) - self.e123 * rhs.e12,
+                e4: -((self.e124 * rhs.e12 + self.e134 * rhs.e13) + self.e234 * rhs.e23),
+                e123: (self.e134 * rhs.e24 - self.e124 * rhs.e34) - self.e234 * rhs.e14,
+                e124: (self.e123 * rhs.e34 + self.e234 * rhs.e13) - self.e134 * rhs.e23,
+                e134: (self.e124 * rhs.e23 - self.e123 * rhs.e24) - self.e234 * rhs.e12,
+                e234: (self.e123 * rhs.e14 + self.e134 * rhs.e12) - self.e124 * rhs.e13,
             }
         }
     }
@@ -2860,8 +2869,8 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Trivector) -> Even {
             Even {
-                s: -self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                    - self.e234 * rhs.e234,
+                s: -((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                    + (self.e134 * rhs.e134 + self.e234 * rhs.e234)),
                 e12: self.e234 * rhs.e134 - self.e134 * rhs.e234,
                 e13: self.e124 * rhs.e234 - self.e234 * rhs.e124,
                 e14: self.e234 * rhs.e123 - self.e123 * rhs.e234,
@@ -2889,22 +2898,22 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Even) -> Odd {
             Odd {
-                e1: self.e234 * rhs.e1234 - self.e123 * rhs.e23 - self.e124 * rhs.e24
-                    - self.e134 * rhs.e34,
-                e2: self.e123 * rhs.e13 + self.e124 * rhs.e14 - self.e134 * rhs.e1234
-                    - self.e234 * rhs.e34,
-                e3: self.e124 * rhs.e1234 + self.e134 * rhs.e14 + self.e234 * rhs.e24
-                    - self.e123 * rhs.e12,
-                e4: -self.e123 * rhs.e1234 - self.e124 * rhs.e12 - self.e134 * rhs.e13
-                    - self.e234 * rhs.e23,
-                e123: self.e123 * rhs.s + self.e134 * rhs.e24 - self.e124 * rhs.e34
-                    - self.e234 * rhs.e14,
-                e124: self.e123 * rhs.e34 + self.e124 * rhs.s + self.e234 * rhs.e13
-                    - self.e134 * rhs.e23,
-                e134: self.e124 * rhs.e23 + self.e134 * rhs.s - self.e123 * rhs.e24
-                    - self.e234 * rhs.e12,
-                e234: self.e123 * rhs.e14 + self.e134 * rhs.e12 + self.e234 * rhs.s
-                    - self.e124 * rhs.e13,
+                e1: (self.e234 * rhs.e1234 - self.e123 * rhs.e23)
+                    - (self.e124 * rhs.e24 + self.e134 * rhs.e34),
+                e2: (self.e123 * rhs.e13 + self.e124 * rhs.e14)
+                    - (self.e134 * rhs.e1234 + self.e234 * rhs.e34),
+                e3: (self.e124 * rhs.e1234 + self.e134 * rhs.e14)
+                    + (self.e234 * rhs.e24 - self.e123 * rhs.e12),
+                e4: -((self.e123 * rhs.e1234 + self.e124 * rhs.e12)
+                    + (self.e134 * rhs.e13 + self.e234 * rhs.e23)),
+                e123: (self.e123 * rhs.s + self.e134 * rhs.e24)
+                    - (self.e124 * rhs.e34 + self.e234 * rhs.e14),
+                e124: (self.e123 * rhs.e34 + self.e124 * rhs.s)
+                    + (self.e234 * rhs.e13 - self.e134 * rhs.e23),
+                e134: (self.e124 * rhs.e23 + self.e134 * rhs.s)
+                    - (self.e123 * rhs.e24 + self.e234 * rhs.e12),
+                e234: (self.e123 * rhs.e14 + self.e134 * rhs.e12)
+                    + (self.e234 * rhs.s - self.e124 * rhs.e13),
             }
         }
     }
@@ -2913,22 +2922,22 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Odd) -> Even {
             Even {
-                s: -self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                    - self.e234 * rhs.e234,
-                e12: self.e123 * rhs.e3 + self.e124 * rhs.e4 + self.e234 * rhs.e134
-                    - self.e134 * rhs.e234,
-                e13: self.e124 * rhs.e234 + self.e134 * rhs.e4 - self.e123 * rhs.e2
-                    - self.e234 * rhs.e124,
-                e14: self.e234 * rhs.e123 - self.e123 * rhs.e234 - self.e124 * rhs.e2
-                    - self.e134 * rhs.e3,
-                e23: self.e123 * rhs.e1 + self.e134 * rhs.e124 + self.e234 * rhs.e4
-                    - self.e124 * rhs.e134,
-                e24: self.e123 * rhs.e134 + self.e124 * rhs.e1 - self.e134 * rhs.e123
-                    - self.e234 * rhs.e3,
-                e34: self.e124 * rhs.e123 + self.e134 * rhs.e1 + self.e234 * rhs.e2
-                    - self.e123 * rhs.e124,
-                e1234: self.e123 * rhs.e4 + self.e134 * rhs.e2 - self.e124 * rhs.e3
-                    - self.e234 * rhs.e1,
+                s: -((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                    + (self.e134 * rhs.e134 + self.e234 * rhs.e234)),
+                e12: (self.e123 * rhs.e3 + self.e124 * rhs.e4)
+                    + (self.e234 * rhs.e134 - self.e134 * rhs.e234),
+                e13: (self.e124 * rhs.e234 + self.e134 * rhs.e4)
+                    - (self.e123 * rhs.e2 + self.e234 * rhs.e124),
+                e14: (self.e234 * rhs.e123 - self.e123 * rhs.e234)
+                    - (self.e124 * rhs.e2 + self.e134 * rhs.e3),
+                e23: (self.e123 * rhs.e1 + self.e134 * rhs.e124)
+                    + (self.e234 * rhs.e4 - self.e124 * rhs.e134),
+                e24: (self.e123 * rhs.e134 + self.e124 * rhs.e1)
+                    - (self.e134 * rhs.e123 + self.e234 * rhs.e3),
+                e34: (self.e124 * rhs.e123 + self.e134 * rhs.e1)
+                    + (self.e234 * rhs.e2 - self.e123 * rhs.e124),
+                e1234: (self.e123 * rhs.e4 + self.e134 * rhs.e2)
+                    - (self.e124 * rhs.e3 + self.e234 * rhs.e1),
             }
         }
     }
@@ -2937,38 +2946,38 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: -self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                    - self.e234 * rhs.e234,
-                e1: self.e234 * rhs.e1234 - self.e123 * rhs.e23 - self.e124 * rhs.e24
-                    - self.e134 * rhs.e34,
-                e2: self.e123 * rhs.e13 + self.e124 * rhs.e14 - self.e134 * rhs.e1234
-                    - self.e234 * rhs.e34,
-                e3: self.e124 * rhs.e1234 + self.e134 * rhs.e14 + self.e234 * rhs.e24
-                    - self.e123 * rhs.e12,
-                e4: -self.e123 * rhs.e1234 - self.e124 * rhs.e12 - self.e134 * rhs.e13
-                    - self.e234 * rhs.e23,
-                e12: self.e123 * rhs.e3 + self.e124 * rhs.e4 + self.e234 * rhs.e134
-                    - self.e134 * rhs.e234,
-                e13: self.e124 * rhs.e234 + self.e134 * rhs.e4 - self.e123 * rhs.e2
-                    - self.e234 * rhs.e124,
-                e14: self.e234 * rhs.e123 - self.e123 * rhs.e234 - self.e124 * rhs.e2
-                    - self.e134 * rhs.e3,
-                e23: self.e123 * rhs.e1 + self.e134 * rhs.e124 + self.e234 * rhs.e4
-                    - self.e124 * rhs.e134,
-                e24: self.e123 * rhs.e134 + self.e124 * rhs.e1 - self.e134 * rhs.e123
-                    - self.e234 * rhs.e3,
-                e34: self.e124 * rhs.e123 + self.e134 * rhs.e1 + self.e234 * rhs.e2
-                    - self.e123 * rhs.e124,
-                e123: self.e123 * rhs.s + self.e134 * rhs.e24 - self.e124 * rhs.e34
-                    - self.e234 * rhs.e14,
-                e124: self.e123 * rhs.e34 + self.e124 * rhs.s + self.e234 * rhs.e13
-                    - self.e134 * rhs.e23,
-                e134: self.e124 * rhs.e23 + self.e134 * rhs.s - self.e123 * rhs.e24
-                    - self.e234 * rhs.e12,
-                e234: self.e123 * rhs.e14 + self.e134 * rhs.e12 + self.e234 * rhs.s
-                    - self.e124 * rhs.e13,
-                e1234: self.e123 * rhs.e4 + self.e134 * rhs.e2 - self.e124 * rhs.e3
-                    - self.e234 * rhs.e1,
+                s: -((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                    + (self.e134 * rhs.e134 + self.e234 * rhs.e234)),
+                e1: (self.e234 * rhs.e1234 - self.e123 * rhs.e23)
+                    - (self.e124 * rhs.e24 + self.e134 * rhs.e34),
+                e2: (self.e123 * rhs.e13 + self.e124 * rhs.e14)
+                    - (self.e134 * rhs.e1234 + self.e234 * rhs.e34),
+                e3: (self.e124 * rhs.e1234 + self.e134 * rhs.e14)
+                    + (self.e234 * rhs.e24 - self.e123 * rhs.e12),
+                e4: -((self.e123 * rhs.e1234 + self.e124 * rhs.e12)
+                    + (self.e134 * rhs.e13 + self.e234 * rhs.e23)),
+                e12: (self.e123 * rhs.e3 + self.e124 * rhs.e4)
+                    + (self.e234 * rhs.e134 - self.e134 * rhs.e234),
+                e13: (self.e124 * rhs.e234 + self.e134 * rhs.e4)
+                    - (self.e123 * rhs.e2 + self.e234 * rhs.e124),
+                e14: (self.e234 * rhs.e123 - self.e123 * rhs.e234)
+                    - (self.e124 * rhs.e2 + self.e134 * rhs.e3),
+                e23: (self.e123 * rhs.e1 + self.e134 * rhs.e124)
+                    + (self.e234 * rhs.e4 - self.e124 * rhs.e134),
+                e24: (self.e123 * rhs.e134 + self.e124 * rhs.e1)
+                    - (self.e134 * rhs.e123 + self.e234 * rhs.e3),
+                e34: (self.e124 * rhs.e123 + self.e134 * rhs.e1)
+                    + (self.e234 * rhs.e2 - self.e123 * rhs.e124),
+                e123: (self.e123 * rhs.s + self.e134 * rhs.e24)
+                    - (self.e124 * rhs.e34 + self.e234 * rhs.e14),
+                e124: (self.e123 * rhs.e34 + self.e124 * rhs.s)
+                    + (self.e234 * rhs.e13 - self.e134 * rhs.e23),
+                e134: (self.e124 * rhs.e23 + self.e134 * rhs.s)
+                    - (self.e123 * rhs.e24 + self.e234 * rhs.e12),
+                e234: (self.e123 * rhs.e14 + self.e134 * rhs.e12)
+                    + (self.e234 * rhs.s - self.e124 * rhs.e13),
+                e1234: (self.e123 * rhs.e4 + self.e134 * rhs.e2)
+                    - (self.e124 * rhs.e3 + self.e234 * rhs.e1),
             }
         }
     }
@@ -3103,22 +3112,22 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Vector) -> Odd {
             Odd {
-                e1: self.s * rhs.e1 + self.e12 * rhs.e2 + self.e13 * rhs.e3
-                    + self.e14 * rhs.e4,
-                e2: self.s * rhs.e2 + self.e23 * rhs.e3 + self.e24 * rhs.e4
-                    - self.e12 * rhs.e1,
-                e3: self.s * rhs.e3 + self.e34 * rhs.e4 - self.e13 * rhs.e1
-                    - self.e23 * rhs.e2,
-                e4: self.s * rhs.e4 - self.e14 * rhs.e1 - self.e24 * rhs.e2
-                    - self.e34 * rhs.e3,
-                e123: self.e12 * rhs.e3 + self.e23 * rhs.e1 + self.e1234 * rhs.e4
-                    - self.e13 * rhs.e2,
-                e124: self.e12 * rhs.e4 + self.e24 * rhs.e1 - self.e14 * rhs.e2
-                    - self.e1234 * rhs.e3,
-                e134: self.e13 * rhs.e4 + self.e34 * rhs.e1 + self.e1234 * rhs.e2
-                    - self.e14 * rhs.e3,
-                e234: self.e23 * rhs.e4 + self.e34 * rhs.e2 - self.e24 * rhs.e3
-                    - self.e1234 * rhs.e1,
+                e1: (self.s * rhs.e1 + self.e12 * rhs.e2)
+                    + (self.e13 * rhs.e3 + self.e14 * rhs.e4),
+                e2: (self.s * rhs.e2 + self.e23 * rhs.e3)
+                    + (self.e24 * rhs.e4 - self.e12 * rhs.e1),
+                e3: (self.s * rhs.e3 + self.e34 * rhs.e4)
+                    - (self.e13 * rhs.e1 + self.e23 * rhs.e2),
+                e4: (self.s * rhs.e4 - self.e14 * rhs.e1)
+                    - (self.e24 * rhs.e2 + self.e34 * rhs.e3),
+                e123: (self.e12 * rhs.e3 + self.e23 * rhs.e1)
+                    + (self.e1234 * rhs.e4 - self.e13 * rhs.e2),
+                e124: (self.e12 * rhs.e4 + self.e24 * rhs.e1)
+                    - (self.e14 * rhs.e2 + self.e1234 * rhs.e3),
+                e134: (self.e13 * rhs.e4 + self.e34 * rhs.e1)
+                    + (self.e1234 * rhs.e2 - self.e14 * rhs.e3),
+                e234: (self.e23 * rhs.e4 + self.e34 * rhs.e2)
+                    - (self.e24 * rhs.e3 + self.e1234 * rhs.e1),
             }
         }
     }
@@ -3127,22 +3136,22 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Bivector) -> Even {
             Even {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                    - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34,
-                e12: self.s * rhs.e12 + self.e23 * rhs.e13 + self.e24 * rhs.e14
-                    - self.e13 * rhs.e23 - self.e14 * rhs.e24 - self.e1234 * rhs.e34,
-                e13: self.s * rhs.e13 + self.e12 * rhs.e23 + self.e34 * rhs.e14
-                    + self.e1234 * rhs.e24 - self.e14 * rhs.e34 - self.e23 * rhs.e12,
-                e14: self.s * rhs.e14 + self.e12 * rhs.e24 + self.e13 * rhs.e34
-                    - self.e24 * rhs.e12 - self.e34 * rhs.e13 - self.e1234 * rhs.e23,
-                e23: self.s * rhs.e23 + self.e13 * rhs.e12 + self.e34 * rhs.e24
-                    - self.e12 * rhs.e13 - self.e24 * rhs.e34 - self.e1234 * rhs.e14,
-                e24: self.s * rhs.e24 + self.e14 * rhs.e12 + self.e23 * rhs.e34
-                    + self.e1234 * rhs.e13 - self.e12 * rhs.e14 - self.e34 * rhs.e23,
-                e34: self.s * rhs.e34 + self.e14 * rhs.e13 + self.e24 * rhs.e23
-                    - self.e13 * rhs.e14 - self.e23 * rhs.e24 - self.e1234 * rhs.e12,
-                e1234: self.e12 * rhs.e34 + self.e14 * rhs.e23 + self.e23 * rhs.e14
-                    + self.e34 * rhs.e12 - self.e13 * rhs.e24 - self.e24 * rhs.e13,
+                s: -(((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e14 * rhs.e14)
+                    + ((self.e23 * rhs.e23 + self.e24 * rhs.e24) + self.e34 * rhs.e34)),
+                e12: ((self.s * rhs.e12 + self.e23 * rhs.e13) + self.e24 * rhs.e14)
+                    - ((self.e13 * rhs.e23 + self.e14 * rhs.e24) + self.e1234 * rhs.e34),
+                e13: ((self.s * rhs.e13 + self.e12 * rhs.e23) + self.e34 * rhs.e14)
+                    + ((self.e1234 * rhs.e24 - self.e14 * rhs.e34) - self.e23 * rhs.e12),
+                e14: ((self.s * rhs.e14 + self.e12 * rhs.e24) + self.e13 * rhs.e34)
+                    - ((self.e24 * rhs.e12 + self.e34 * rhs.e13) + self.e1234 * rhs.e23),
+                e23: ((self.s * rhs.e23 + self.e13 * rhs.e12) + self.e34 * rhs.e24)
+                    - ((self.e12 * rhs.e13 + self.e24 * rhs.e34) + self.e1234 * rhs.e14),
+                e24: ((self.s * rhs.e24 + self.e14 * rhs.e12) + self.e23 * rhs.e34)
+                    + ((self.e1234 * rhs.e13 - self.e12 * rhs.e14) - self.e34 * rhs.e23),
+                e34: ((self.s * rhs.e34 + self.e14 * rhs.e13) + self.e24 * rhs.e23)
+                    - ((self.e13 * rhs.e14 + self.e23 * rhs.e24) + self.e1234 * rhs.e12),
+                e1234: ((self.e12 * rhs.e34 + self.e14 * rhs.e23) + self.e23 * rhs.e14)
+                    + ((self.e34 * rhs.e12 - self.e13 * rhs.e24) - self.e24 * rhs.e13),
             }
         }
     }
@@ -3151,22 +3160,22 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Trivector) -> Odd {
             Odd {
-                e1: -self.e23 * rhs.e123 - self.e24 * rhs.e124 - self.e34 * rhs.e134
-                    - self.e1234 * rhs.e234,
-                e2: self.e13 * rhs.e123 + self.e14 * rhs.e124 + self.e1234 * rhs.e134
-                    - self.e34 * rhs.e234,
-                e3: self.e14 * rhs.e134 + self.e24 * rhs.e234 - self.e12 * rhs.e123
-                    - self.e1234 * rhs.e124,
-                e4: self.e1234 * rhs.e123 - self.e12 * rhs.e124 - self.e13 * rhs.e134
-                    - self.e23 * rhs.e234,
-                e123: self.s * rhs.e123 + self.e14 * rhs.e234 + self.e34 * rhs.e124
-                    - self.e24 * rhs.e134,
-                e124: self.s * rhs.e124 + self.e23 * rhs.e134 - self.e13 * rhs.e234
-                    - self.e34 * rhs.e123,
-                e134: self.s * rhs.e134 + self.e12 * rhs.e234 + self.e24 * rhs.e123
-                    - self.e23 * rhs.e124,
-                e234: self.s * rhs.e234 + self.e13 * rhs.e124 - self.e12 * rhs.e134
-                    - self.e14 * rhs.e123,
+                e1: -((self.e23 * rhs.e123 + self.e24 * rhs.e124)
+                    + (self.e34 * rhs.e134 + self.e1234 * rhs.e234)),
+                e2: (self.e13 * rhs.e123 + self.e14 * rhs.e124)
+                    + (self.e1234 * rhs.e134 - self.e34 * rhs.e234),
+                e3: (self.e14 * rhs.e134 + self.e24 * rhs.e234)
+                    - (self.e12 * rhs.e123 + self.e1234 * rhs.e124),
+                e4: (self.e1234 * rhs.e123 - self.e12 * rhs.e124)
+                    - (self.e13 * rhs.e134 + self.e23 * rhs.e234),
+                e123: (self.s * rhs.e123 + self.e14 * rhs.e234)
+                    + (self.e34 * rhs.e124 - self.e24 * rhs.e134),
+                e124: (self.s * rhs.e124 + self.e23 * rhs.e134)
+                    - (self.e13 * rhs.e234 + self.e34 * rhs.e123),
+                e134: (self.s * rhs.e134 + self.e12 * rhs.e234)
+                    + (self.e24 * rhs.e123 - self.e23 * rhs.e124),
+                e234: (self.s * rhs.e234 + self.e13 * rhs.e124)
+                    - (self.e12 * rhs.e134 + self.e14 * rhs.e123),
             }
         }
     }
@@ -3191,30 +3200,38 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Even) -> Even {
             Even {
-                s: self.s * rhs.s + self.e1234 * rhs.e1234 - self.e12 * rhs.e12
-                    - self.e13 * rhs.e13 - self.e14 * rhs.e14 - self.e23 * rhs.e23
-                    - self.e24 * rhs.e24 - self.e34 * rhs.e34,
-                e12: self.s * rhs.e12 + self.e12 * rhs.s + self.e23 * rhs.e13
-                    + self.e24 * rhs.e14 - self.e13 * rhs.e23 - self.e14 * rhs.e24
-                    - self.e34 * rhs.e1234 - self.e1234 * rhs.e34,
-                e13: self.s * rhs.e13 + self.e12 * rhs.e23 + self.e13 * rhs.s
-                    + self.e24 * rhs.e1234 + self.e34 * rhs.e14 + self.e1234 * rhs.e24
-                    - self.e14 * rhs.e34 - self.e23 * rhs.e12,
-                e14: self.s * rhs.e14 + self.e12 * rhs.e24 + self.e13 * rhs.e34
-                    + self.e14 * rhs.s - self.e23 * rhs.e1234 - self.e24 * rhs.e12
-                    - self.e34 * rhs.e13 - self.e1234 * rhs.e23,
-                e23: self.s * rhs.e23 + self.e13 * rhs.e12 + self.e23 * rhs.s
-                    + self.e34 * rhs.e24 - self.e12 * rhs.e13 - self.e14 * rhs.e1234
-                    - self.e24 * rhs.e34 - self.e1234 * rhs.e14,
-                e24: self.s * rhs.e24 + self.e13 * rhs.e1234 + self.e14 * rhs.e12
-                    + self.e23 * rhs.e34 + self.e24 * rhs.s + self.e1234 * rhs.e13
-                    - self.e12 * rhs.e14 - self.e34 * rhs.e23,
-                e34: self.s * rhs.e34 + self.e14 * rhs.e13 + self.e24 * rhs.e23
-                    + self.e34 * rhs.s - self.e12 * rhs.e1234 - self.e13 * rhs.e14
-                    - self.e23 * rhs.e24 - self.e1234 * rhs.e12,
-                e1234: self.s * rhs.e1234 + self.e12 * rhs.e34 + self.e14 * rhs.e23
-                    + self.e23 * rhs.e14 + self.e34 * rhs.e12 + self.e1234 * rhs.s
-                    - self.e13 * rhs.e24 - self.e24 * rhs.e13,
+                s: ((self.s * rhs.s + self.e1234 * rhs.e1234)
+                    - (self.e12 * rhs.e12 + self.e13 * rhs.e13))
+                    - ((self.e14 * rhs.e14 + self.e23 * rhs.e23)
+                        + (self.e24 * rhs.e24 + self.e34 * rhs.e34)),
+                e12: ((self.s * rhs.e12 + self.e12 * rhs.s)
+                    + (self.e23 * rhs.e13 + self.e24 * rhs.e14))
+                    - ((self.e13 * rhs.e23 + self.e14 * rhs.e24)
+                        + (self.e34 * rhs.e1234 + self.e1234 * rhs.e34)),
+                e13: ((self.s * rhs.e13 + self.e12 * rhs.e23)
+                    + (self.e13 * rhs.s + self.e24 * rhs.e1234))
+                    + ((self.e34 * rhs.e14 + self.e1234 * rhs.e24)
+                        - (self.e14 * rhs.e34 + self.e23 * rhs.e12)),
+                e14: ((self.s * rhs.e14 + self.e12 * rhs.e24)
+                    + (self.e13 * rhs.e34 + self.e14 * rhs.s))
+                    - ((self.e23 * rhs.e1234 + self.e24 * rhs.e12)
+                        + (self.e34 * rhs.e13 + self.e1234 * rhs.e23)),
+                e23: ((self.s * rhs.e23 + self.e13 * rhs.e12)
+                    + (self.e23 * rhs.s + self.e34 * rhs.e24))
+                    - ((self.e12 * rhs.e13 + self.e14 * rhs.e1234)
+                        + (self.e24 * rhs.e34 + self.e1234 * rhs.e14)),
+                e24: ((self.s * rhs.e24 + self.e13 * rhs.e1234)
+                    + (self.e14 * rhs.e12 + self.e23 * rhs.e34))
+                    + ((self.e24 * rhs.s + self.e1234 * rhs.e13)
+                        - (self.e12 * rhs.e14 + self.e34 * rhs.e23)),
+                e34: ((self.s * rhs.e34 + self.e14 * rhs.e13)
+                    + (self.e24 * rhs.e23 + self.e34 * rhs.s))
+                    - ((self.e12 * rhs.e1234 + self.e13 * rhs.e14)
+                        + (self.e23 * rhs.e24 + self.e1234 * rhs.e12)),
+                e1234: ((self.s * rhs.e1234 + self.e12 * rhs.e34)
+                    + (self.e14 * rhs.e23 + self.e23 * rhs.e14))
+                    + ((self.e34 * rhs.e12 + self.e1234 * rhs.s)
+                        - (self.e13 * rhs.e24 + self.e24 * rhs.e13)),
             }
         }
     }
@@ -3223,30 +3240,38 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Odd) -> Odd {
             Odd {
-                e1: self.s * rhs.e1 + self.e12 * rhs.e2 + self.e13 * rhs.e3
-                    + self.e14 * rhs.e4 - self.e23 * rhs.e123 - self.e24 * rhs.e124
-                    - self.e34 * rhs.e134 - self.e1234 * rhs.e234,
-                e2: self.s * rhs.e2 + self.e13 * rhs.e123 + self.e14 * rhs.e124
-                    + self.e23 * rhs.e3 + self.e24 * rhs.e4 + self.e1234 * rhs.e134
-                    - self.e12 * rhs.e1 - self.e34 * rhs.e234,
-                e3: self.s * rhs.e3 + self.e14 * rhs.e134 + self.e24 * rhs.e234
-                    + self.e34 * rhs.e4 - self.e12 * rhs.e123 - self.e13 * rhs.e1
-                    - self.e23 * rhs.e2 - self.e1234 * rhs.e124,
-                e4: self.s * rhs.e4 + self.e1234 * rhs.e123 - self.e12 * rhs.e124
-                    - self.e13 * rhs.e134 - self.e14 * rhs.e1 - self.e23 * rhs.e234
-                    - self.e24 * rhs.e2 - self.e34 * rhs.e3,
-                e123: self.s * rhs.e123 + self.e12 * rhs.e3 + self.e14 * rhs.e234
-                    + self.e23 * rhs.e1 + self.e34 * rhs.e124 + self.e1234 * rhs.e4
-                    - self.e13 * rhs.e2 - self.e24 * rhs.e134,
-                e124: self.s * rhs.e124 + self.e12 * rhs.e4 + self.e23 * rhs.e134
-                    + self.e24 * rhs.e1 - self.e13 * rhs.e234 - self.e14 * rhs.e2
-                    - self.e34 * rhs.e123 - self.e1234 * rhs.e3,
-                e134: self.s * rhs.e134 + self.e12 * rhs.e234 + self.e13 * rhs.e4
-                    + self.e24 * rhs.e123 + self.e34 * rhs.e1 + self.e1234 * rhs.e2
-                    - self.e14 * rhs.e3 - self.e23 * rhs.e124,
-                e234: self.s * rhs.e234 + self.e13 * rhs.e124 + self.e23 * rhs.e4
-                    + self.e34 * rhs.e2 - self.e12 * rhs.e134 - self.e14 * rhs.e123
-                    - self.e24 * rhs.e3 - self.e1234 * rhs.e1,
+                e1: ((self.s * rhs.e1 + self.e12 * rhs.e2)
+                    + (self.e13 * rhs.e3 + self.e14 * rhs.e4))
+                    - ((self.e23 * rhs.e123 + self.e24 * rhs.e124)
+                        + (self.e34 * rhs.e134 + self.e1234 * rhs.e234)),
+                e2: ((self.s * rhs.e2 + self.e13 * rhs.e123)
+                    + (self.e14 * rhs.e124 + self.e23 * rhs.e3))
+                    + ((self.e24 * rhs.e4 + self.e1234 * rhs.e134)
+                        - (self.e12 * rhs.e1 + self.e34 * rhs.e234)),
+                e3: ((self.s * rhs.e3 + self.e14 * rhs.e134)
+                    + (self.e24 * rhs.e234 + self.e34 * rhs.e4))
+                    - ((self.e12 * rhs.e123 + self.e13 * rhs.e1)
+                        + (self.e23 * rhs.e2 + self.e1234 * rhs.e124)),
+                e4: ((self.s * rhs.e4 + self.e1234 * rhs.e123)
+                    - (self.e12 * rhs.e124 + self.e13 * rhs.e134))
+                    - ((self.e14 * rhs.e1 + self.e23 * rhs.e234)
+                        + (self.e24 * rhs.e2 + self.e34 * rhs.e3)),
+                e123: ((self.s * rhs.e123 + self.e12 * rhs.e3)
+                    + (self.e14 * rhs.e234 + self.e23 * rhs.e1))
+                    + ((self.e34 * rhs.e124 + self.e1234 * rhs.e4)
+                        - (self.e13 * rhs.e2 + self.e24 * rhs.e134)),
+                e124: ((self.s * rhs.e124 + self.e12 * rhs.e4)
+                    + (self.e23 * rhs.e134 + self.e24 * rhs.e1))
+                    - ((self.e13 * rhs.e234 + self.e14 * rhs.e2)
+                        + (self.e34 * rhs.e123 + self.e1234 * rhs.e3)),
+                e134: ((self.s * rhs.e134 + self.e12 * rhs.e234)
+                    + (self.e13 * rhs.e4 + self.e24 * rhs.e123))
+                    + ((self.e34 * rhs.e1 + self.e1234 * rhs.e2)
+                        - (self.e14 * rhs.e3 + self.e23 * rhs.e124)),
+                e234: ((self.s * rhs.e234 + self.e13 * rhs.e124)
+                    + (self.e23 * rhs.e4 + self.e34 * rhs.e2))
+                    - ((self.e12 * rhs.e134 + self.e14 * rhs.e123)
+                        + (self.e24 * rhs.e3 + self.e1234 * rhs.e1)),
             }
         }
     }
@@ -3255,54 +3280,70 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.s * rhs.s + self.e1234 * rhs.e1234 - self.e12 * rhs.e12
-                    - self.e13 * rhs.e13 - self.e14 * rhs.e14 - self.e23 * rhs.e23
-                    - self.e24 * rhs.e24 - self.e34 * rhs.e34,
-                e1: self.s * rhs.e1 + self.e12 * rhs.e2 + self.e13 * rhs.e3
-                    + self.e14 * rhs.e4 - self.e23 * rhs.e123 - self.e24 * rhs.e124
-                    - self.e34 * rhs.e134 - self.e1234 * rhs.e234,
-                e2: self.s * rhs.e2 + self.e13 * rhs.e123 + self.e14 * rhs.e124
-                    + self.e23 * rhs.e3 + self.e24 * rhs.e4 + self.e1234 * rhs.e134
-                    - self.e12 * rhs.e1 - self.e34 * rhs.e234,
-                e3: self.s * rhs.e3 + self.e14 * rhs.e134 + self.e24 * rhs.e234
-                    + self.e34 * rhs.e4 - self.e12 * rhs.e123 - self.e13 * rhs.e1
-                    - self.e23 * rhs.e2 - self.e1234 * rhs.e124,
-                e4: self.s * rhs.e4 + self.e1234 * rhs.e123 - self.e12 * rhs.e124
-                    - self.e13 * rhs.e134 - self.e14 * rhs.e1 - self.e23 * rhs.e234
-                    - self.e24 * rhs.e2 - self.e34 * rhs.e3,
-                e12: self.s * rhs.e12 + self.e12 * rhs.s + self.e23 * rhs.e13
-                    + self.e24 * rhs.e14 - self.e13 * rhs.e23 - self.e14 * rhs.e24
-                    - self.e34 * rhs.e1234 - self.e1234 * rhs.e34,
-                e13: self.s * rhs.e13 + self.e12 * rhs.e23 + self.e13 * rhs.s
-                    + self.e24 * rhs.e1234 + self.e34 * rhs.e14 + self.e1234 * rhs.e24
-                    - self.e14 * rhs.e34 - self.e23 * rhs.e12,
-                e14: self.s * rhs.e14 + self.e12 * rhs.e24 + self.e13 * rhs.e34
-                    + self.e14 * rhs.s - self.e23 * rhs.e1234 - self.e24 * rhs.e12
-                    - self.e34 * rhs.e13 - self.e1234 * rhs.e23,
-                e23: self.s * rhs.e23 + self.e13 * rhs.e12 + self.e23 * rhs.s
-                    + self.e34 * rhs.e24 - self.e12 * rhs.e13 - self.e14 * rhs.e1234
-                    - self.e24 * rhs.e34 - self.e1234 * rhs.e14,
-                e24: self.s * rhs.e24 + self.e13 * rhs.e1234 + self.e14 * rhs.e12
-                    + self.e23 * rhs.e34 + self.e24 * rhs.s + self.e1234 * rhs.e13
-                    - self.e12 * rhs.e14 - self.e34 * rhs.e23,
-                e34: self.s * rhs.e34 + self.e14 * rhs.e13 + self.e24 * rhs.e23
-                    + self.e34 * rhs.s - self.e12 * rhs.e1234 - self.e13 * rhs.e14
-                    - self.e23 * rhs.e24 - self.e1234 * rhs.e12,
-                e123: self.s * rhs.e123 + self.e12 * rhs.e3 + self.e14 * rhs.e234
-                    + self.e23 * rhs.e1 + self.e34 * rhs.e124 + self.e1234 * rhs.e4
-                    - self.e13 * rhs.e2 - self.e24 * rhs.e134,
-                e124: self.s * rhs.e124 + self.e12 * rhs.e4 + self.e23 * rhs.e134
-                    + self.e24 * rhs.e1 - self.e13 * rhs.e234 - self.e14 * rhs.e2
-                    - self.e34 * rhs.e123 - self.e1234 * rhs.e3,
-                e134: self.s * rhs.e134 + self.e12 * rhs.e234 + self.e13 * rhs.e4
-                    + self.e24 * rhs.e123 + self.e34 * rhs.e1 + self.e1234 * rhs.e2
-                    - self.e14 * rhs.e3 - self.e23 * rhs.e124,
-                e234: self.s * rhs.e234 + self.e13 * rhs.e124 + self.e23 * rhs.e4
-                    + self.e34 * rhs.e2 - self.e12 * rhs.e134 - self.e14 * rhs.e123
-                    - self.e24 * rhs.e3 - self.e1234 * rhs.e1,
-                e1234: self.s * rhs.e1234 + self.e12 * rhs.e34 + self.e14 * rhs.e23
-                    + self.e23 * rhs.e14 + self.e34 * rhs.e12 + self.e1234 * rhs.s
-                    - self.e13 * rhs.e24 - self.e24 * rhs.e13,
+                s: ((self.s * rhs.s + self.e1234 * rhs.e1234)
+                    - (self.e12 * rhs.e12 + self.e13 * rhs.e13))
+                    - ((self.e14 * rhs.e14 + self.e23 * rhs.e23)
+                        + (self.e24 * rhs.e24 + self.e34 * rhs.e34)),
+                e1: ((self.s * rhs.e1 + self.e12 * rhs.e2)
+                    + (self.e13 * rhs.e3 + self.e14 * rhs.e4))
+                    - ((self.e23 * rhs.e123 + self.e24 * rhs.e124)
+                        + (self.e34 * rhs.e134 + self.e1234 * rhs.e234)),
+                e2: ((self.s * rhs.e2 + self.e13 * rhs.e123)
+                    + (self.e14 * rhs.e124 + self.e23 * rhs.e3))
+                    + ((self.e24 * rhs.e4 + self.e1234 * rhs.e134)
+                        - (self.e12 * rhs.e1 + self.e34 * rhs.e234)),
+                e3: ((self.s * rhs.e3 + self.e14 * rhs.e134)
+                    + (self.e24 * rhs.e234 + self.e34 * rhs.e4))
+                    - ((self.e12 * rhs.e123 + self.e13 * rhs.e1)
+                        + (self.e23 * rhs.e2 + self.e1234 * rhs.e124)),
+                e4: ((self.s * rhs.e4 + self.e1234 * rhs.e123)
+                    - (self.e12 * rhs.e124 + self.e13 * rhs.e134))
+                    - ((self.e14 * rhs.e1 + self.e23 * rhs.e234)
+                        + (self.e24 * rhs.e2 + self.e34 * rhs.e3)),
+                e12: ((self.s * rhs.e12 + self.e12 * rhs.s)
+                    + (self.e23 * rhs.e13 + self.e24 * rhs.e14))
+                    - ((self.e13 * rhs.e23 + self.e14 * rhs.e24)
+                        + (self.e34 * rhs.e1234 + self.e1234 * rhs.e34)),
+                e13: ((self.s * rhs.e13 + self.e12 * rhs.e23)
+                    + (self.e13 * rhs.s + self.e24 * rhs.e1234))
+                    + ((self.e34 * rhs.e14 + self.e1234 * rhs.e24)
+                        - (self.e14 * rhs.e34 + self.e23 * rhs.e12)),
+                e14: ((self.s * rhs.e14 + self.e12 * rhs.e24)
+                    + (self.e13 * rhs.e34 + self.e14 * rhs.s))
+                    - ((self.e23 * rhs.e1234 + self.e24 * rhs.e12)
+                        + (self.e34 * rhs.e13 + self.e1234 * rhs.e23)),
+                e23: ((self.s * rhs.e23 + self.e13 * rhs.e12)
+                    + (self.e23 * rhs.s + self.e34 * rhs.e24))
+                    - ((self.e12 * rhs.e13 + self.e14 * rhs.e1234)
+                        + (self.e24 * rhs.e34 + self.e1234 * rhs.e14)),
+                e24: ((self.s * rhs.e24 + self.e13 * rhs.e1234)
+                    + (self.e14 * rhs.e12 + self.e23 * rhs.e34))
+                    + ((self.e24 * rhs.s + self.e1234 * rhs.e13)
+                        - (self.e12 * rhs.e14 + self.e34 * rhs.e23)),
+                e34: ((self.s * rhs.e34 + self.e14 * rhs.e13)
+                    + (self.e24 * rhs.e23 + self.e34 * rhs.s))
+                    - ((self.e12 * rhs.e1234 + self.e13 * rhs.e14)
+                        + (self.e23 * rhs.e24 + self.e1234 * rhs.e12)),
+                e123: ((self.s * rhs.e123 + self.e12 * rhs.e3)
+                    + (self.e14 * rhs.e234 + self.e23 * rhs.e1))
+                    + ((self.e34 * rhs.e124 + self.e1234 * rhs.e4)
+                        - (self.e13 * rhs.e2 + self.e24 * rhs.e134)),
+                e124: ((self.s * rhs.e124 + self.e12 * rhs.e4)
+                    + (self.e23 * rhs.e134 + self.e24 * rhs.e1))
+                    - ((self.e13 * rhs.e234 + self.e14 * rhs.e2)
+                        + (self.e34 * rhs.e123 + self.e1234 * rhs.e3)),
+                e134: ((self.s * rhs.e134 + self.e12 * rhs.e234)
+                    + (self.e13 * rhs.e4 + self.e24 * rhs.e123))
+                    + ((self.e34 * rhs.e1 + self.e1234 * rhs.e2)
+                        - (self.e14 * rhs.e3 + self.e23 * rhs.e124)),
+                e234: ((self.s * rhs.e234 + self.e13 * rhs.e124)
+                    + (self.e23 * rhs.e4 + self.e34 * rhs.e2))
+                    - ((self.e12 * rhs.e134 + self.e14 * rhs.e123)
+                        + (self.e24 * rhs.e3 + self.e1234 * rhs.e1)),
+                e1234: ((self.s * rhs.e1234 + self.e12 * rhs.e34)
+                    + (self.e14 * rhs.e23 + self.e23 * rhs.e14))
+                    + ((self.e34 * rhs.e12 + self.e1234 * rhs.s)
+                        - (self.e13 * rhs.e24 + self.e24 * rhs.e13)),
             }
         }
     }
@@ -3327,22 +3368,22 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Vector) -> Even {
             Even {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    + self.e4 * rhs.e4,
-                e12: self.e1 * rhs.e2 + self.e123 * rhs.e3 + self.e124 * rhs.e4
-                    - self.e2 * rhs.e1,
-                e13: self.e1 * rhs.e3 + self.e134 * rhs.e4 - self.e3 * rhs.e1
-                    - self.e123 * rhs.e2,
-                e14: self.e1 * rhs.e4 - self.e4 * rhs.e1 - self.e124 * rhs.e2
-                    - self.e134 * rhs.e3,
-                e23: self.e2 * rhs.e3 + self.e123 * rhs.e1 + self.e234 * rhs.e4
-                    - self.e3 * rhs.e2,
-                e24: self.e2 * rhs.e4 + self.e124 * rhs.e1 - self.e4 * rhs.e2
-                    - self.e234 * rhs.e3,
-                e34: self.e3 * rhs.e4 + self.e134 * rhs.e1 + self.e234 * rhs.e2
-                    - self.e4 * rhs.e3,
-                e1234: self.e123 * rhs.e4 + self.e134 * rhs.e2 - self.e124 * rhs.e3
-                    - self.e234 * rhs.e1,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 + self.e4 * rhs.e4),
+                e12: (self.e1 * rhs.e2 + self.e123 * rhs.e3)
+                    + (self.e124 * rhs.e4 - self.e2 * rhs.e1),
+                e13: (self.e1 * rhs.e3 + self.e134 * rhs.e4)
+                    - (self.e3 * rhs.e1 + self.e123 * rhs.e2),
+                e14: (self.e1 * rhs.e4 - self.e4 * rhs.e1)
+                    - (self.e124 * rhs.e2 + self.e134 * rhs.e3),
+                e23: (self.e2 * rhs.e3 + self.e123 * rhs.e1)
+                    + (self.e234 * rhs.e4 - self.e3 * rhs.e2),
+                e24: (self.e2 * rhs.e4 + self.e124 * rhs.e1)
+                    - (self.e4 * rhs.e2 + self.e234 * rhs.e3),
+                e34: (self.e3 * rhs.e4 + self.e134 * rhs.e1)
+                    + (self.e234 * rhs.e2 - self.e4 * rhs.e3),
+                e1234: (self.e123 * rhs.e4 + self.e134 * rhs.e2)
+                    - (self.e124 * rhs.e3 + self.e234 * rhs.e1),
             }
         }
     }
@@ -3351,22 +3392,24 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Bivector) -> Odd {
             Odd {
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13 - self.e4 * rhs.e14
-                    - self.e123 * rhs.e23 - self.e124 * rhs.e24 - self.e134 * rhs.e34,
-                e2: self.e1 * rhs.e12 + self.e123 * rhs.e13 + self.e124 * rhs.e14
-                    - self.e3 * rhs.e23 - self.e4 * rhs.e24 - self.e234 * rhs.e34,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e134 * rhs.e14
-                    + self.e234 * rhs.e24 - self.e4 * rhs.e34 - self.e123 * rhs.e12,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34
-                    - self.e124 * rhs.e12 - self.e134 * rhs.e13 - self.e234 * rhs.e23,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 + self.e134 * rhs.e24
-                    - self.e2 * rhs.e13 - self.e124 * rhs.e34 - self.e234 * rhs.e14,
-                e124: self.e1 * rhs.e24 + self.e4 * rhs.e12 + self.e123 * rhs.e34
-                    + self.e234 * rhs.e13 - self.e2 * rhs.e14 - self.e134 * rhs.e23,
-                e134: self.e1 * rhs.e34 + self.e4 * rhs.e13 + self.e124 * rhs.e23
-                    - self.e3 * rhs.e14 - self.e123 * rhs.e24 - self.e234 * rhs.e12,
-                e234: self.e2 * rhs.e34 + self.e4 * rhs.e23 + self.e123 * rhs.e14
-                    + self.e134 * rhs.e12 - self.e3 * rhs.e24 - self.e124 * rhs.e13,
+                e1: -(((self.e2 * rhs.e12 + self.e3 * rhs.e13) + self.e4 * rhs.e14)
+                    + ((self.e123 * rhs.e23 + self.e124 * rhs.e24)
+                        + self.e134 * rhs.e34)),
+                e2: ((self.e1 * rhs.e12 + self.e123 * rhs.e13) + self.e124 * rhs.e14)
+                    - ((self.e3 * rhs.e23 + self.e4 * rhs.e24) + self.e234 * rhs.e34),
+                e3: ((self.e1 * rhs.e13 + self.e2 * rhs.e23) + self.e134 * rhs.e14)
+                    + ((self.e234 * rhs.e24 - self.e4 * rhs.e34) - self.e123 * rhs.e12),
+                e4: ((self.e1 * rhs.e14 + self.e2 * rhs.e24) + self.e3 * rhs.e34)
+                    - ((self.e124 * rhs.e12 + self.e134 * rhs.e13)
+                        + self.e234 * rhs.e23),
+                e123: ((self.e1 * rhs.e23 + self.e3 * rhs.e12) + self.e134 * rhs.e24)
+                    - ((self.e2 * rhs.e13 + self.e124 * rhs.e34) + self.e234 * rhs.e14),
+                e124: ((self.e1 * rhs.e24 + self.e4 * rhs.e12) + self.e123 * rhs.e34)
+                    + ((self.e234 * rhs.e13 - self.e2 * rhs.e14) - self.e134 * rhs.e23),
+                e134: ((self.e1 * rhs.e34 + self.e4 * rhs.e13) + self.e124 * rhs.e23)
+                    - ((self.e3 * rhs.e14 + self.e123 * rhs.e24) + self.e234 * rhs.e12),
+                e234: ((self.e2 * rhs.e34 + self.e4 * rhs.e23) + self.e123 * rhs.e14)
+                    + ((self.e134 * rhs.e12 - self.e3 * rhs.e24) - self.e124 * rhs.e13),
             }
         }
     }
@@ -3375,22 +3418,22 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Trivector) -> Even {
             Even {
-                s: -self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                    - self.e234 * rhs.e234,
-                e12: self.e3 * rhs.e123 + self.e4 * rhs.e124 + self.e234 * rhs.e134
-                    - self.e134 * rhs.e234,
-                e13: self.e4 * rhs.e134 + self.e124 * rhs.e234 - self.e2 * rhs.e123
-                    - self.e234 * rhs.e124,
-                e14: self.e234 * rhs.e123 - self.e2 * rhs.e124 - self.e3 * rhs.e134
-                    - self.e123 * rhs.e234,
-                e23: self.e1 * rhs.e123 + self.e4 * rhs.e234 + self.e134 * rhs.e124
-                    - self.e124 * rhs.e134,
-                e24: self.e1 * rhs.e124 + self.e123 * rhs.e134 - self.e3 * rhs.e234
-                    - self.e134 * rhs.e123,
-                e34: self.e1 * rhs.e134 + self.e2 * rhs.e234 + self.e124 * rhs.e123
-                    - self.e123 * rhs.e124,
-                e1234: self.e1 * rhs.e234 + self.e3 * rhs.e124 - self.e2 * rhs.e134
-                    - self.e4 * rhs.e123,
+                s: -((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                    + (self.e134 * rhs.e134 + self.e234 * rhs.e234)),
+                e12: (self.e3 * rhs.e123 + self.e4 * rhs.e124)
+                    + (self.e234 * rhs.e134 - self.e134 * rhs.e234),
+                e13: (self.e4 * rhs.e134 + self.e124 * rhs.e234)
+                    - (self.e2 * rhs.e123 + self.e234 * rhs.e124),
+                e14: (self.e234 * rhs.e123 - self.e2 * rhs.e124)
+                    - (self.e3 * rhs.e134 + self.e123 * rhs.e234),
+                e23: (self.e1 * rhs.e123 + self.e4 * rhs.e234)
+                    + (self.e134 * rhs.e124 - self.e124 * rhs.e134),
+                e24: (self.e1 * rhs.e124 + self.e123 * rhs.e134)
+                    - (self.e3 * rhs.e234 + self.e134 * rhs.e123),
+                e34: (self.e1 * rhs.e134 + self.e2 * rhs.e234)
+                    + (self.e124 * rhs.e123 - self.e123 * rhs.e124),
+                e1234: (self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    - (self.e2 * rhs.e134 + self.e4 * rhs.e123),
             }
         }
     }
@@ -3415,30 +3458,38 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Even) -> Odd {
             Odd {
-                e1: self.e1 * rhs.s + self.e234 * rhs.e1234 - self.e2 * rhs.e12
-                    - self.e3 * rhs.e13 - self.e4 * rhs.e14 - self.e123 * rhs.e23
-                    - self.e124 * rhs.e24 - self.e134 * rhs.e34,
-                e2: self.e1 * rhs.e12 + self.e2 * rhs.s + self.e123 * rhs.e13
-                    + self.e124 * rhs.e14 - self.e3 * rhs.e23 - self.e4 * rhs.e24
-                    - self.e134 * rhs.e1234 - self.e234 * rhs.e34,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e3 * rhs.s
-                    + self.e124 * rhs.e1234 + self.e134 * rhs.e14 + self.e234 * rhs.e24
-                    - self.e4 * rhs.e34 - self.e123 * rhs.e12,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34
-                    + self.e4 * rhs.s - self.e123 * rhs.e1234 - self.e124 * rhs.e12
-                    - self.e134 * rhs.e13 - self.e234 * rhs.e23,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 + self.e123 * rhs.s
-                    + self.e134 * rhs.e24 - self.e2 * rhs.e13 - self.e4 * rhs.e1234
-                    - self.e124 * rhs.e34 - self.e234 * rhs.e14,
-                e124: self.e1 * rhs.e24 + self.e3 * rhs.e1234 + self.e4 * rhs.e12
-                    + self.e123 * rhs.e34 + self.e124 * rhs.s + self.e234 * rhs.e13
-                    - self.e2 * rhs.e14 - self.e134 * rhs.e23,
-                e134: self.e1 * rhs.e34 + self.e4 * rhs.e13 + self.e124 * rhs.e23
-                    + self.e134 * rhs.s - self.e2 * rhs.e1234 - self.e3 * rhs.e14
-                    - self.e123 * rhs.e24 - self.e234 * rhs.e12,
-                e234: self.e1 * rhs.e1234 + self.e2 * rhs.e34 + self.e4 * rhs.e23
-                    + self.e123 * rhs.e14 + self.e134 * rhs.e12 + self.e234 * rhs.s
-                    - self.e3 * rhs.e24 - self.e124 * rhs.e13,
+                e1: ((self.e1 * rhs.s + self.e234 * rhs.e1234)
+                    - (self.e2 * rhs.e12 + self.e3 * rhs.e13))
+                    - ((self.e4 * rhs.e14 + self.e123 * rhs.e23)
+                        + (self.e124 * rhs.e24 + self.e134 * rhs.e34)),
+                e2: ((self.e1 * rhs.e12 + self.e2 * rhs.s)
+                    + (self.e123 * rhs.e13 + self.e124 * rhs.e14))
+                    - ((self.e3 * rhs.e23 + self.e4 * rhs.e24)
+                        + (self.e134 * rhs.e1234 + self.e234 * rhs.e34)),
+                e3: ((self.e1 * rhs.e13 + self.e2 * rhs.e23)
+                    + (self.e3 * rhs.s + self.e124 * rhs.e1234))
+                    + ((self.e134 * rhs.e14 + self.e234 * rhs.e24)
+                        - (self.e4 * rhs.e34 + self.e123 * rhs.e12)),
+                e4: ((self.e1 * rhs.e14 + self.e2 * rhs.e24)
+                    + (self.e3 * rhs.e34 + self.e4 * rhs.s))
+                    - ((self.e123 * rhs.e1234 + self.e124 * rhs.e12)
+                        + (self.e134 * rhs.e13 + self.e234 * rhs.e23)),
+                e123: ((self.e1 * rhs.e23 + self.e3 * rhs.e12)
+                    + (self.e123 * rhs.s + self.e134 * rhs.e24))
+                    - ((self.e2 * rhs.e13 + self.e4 * rhs.e1234)
+                        + (self.e124 * rhs.e34 + self.e234 * rhs.e14)),
+                e124: ((self.e1 * rhs.e24 + self.e3 * rhs.e1234)
+                    + (self.e4 * rhs.e12 + self.e123 * rhs.e34))
+                    + ((self.e124 * rhs.s + self.e234 * rhs.e13)
+                        - (self.e2 * rhs.e14 + self.e134 * rhs.e23)),
+                e134: ((self.e1 * rhs.e34 + self.e4 * rhs.e13)
+                    + (self.e124 * rhs.e23 + self.e134 * rhs.s))
+                    - ((self.e2 * rhs.e1234 + self.e3 * rhs.e14)
+                        + (self.e123 * rhs.e24 + self.e234 * rhs.e12)),
+                e234: ((self.e1 * rhs.e1234 + self.e2 * rhs.e34)
+                    + (self.e4 * rhs.e23 + self.e123 * rhs.e14))
+                    + ((self.e134 * rhs.e12 + self.e234 * rhs.s)
+                        - (self.e3 * rhs.e24 + self.e124 * rhs.e13)),
             }
         }
     }
@@ -3447,30 +3498,38 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Odd) -> Even {
             Even {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    + self.e4 * rhs.e4 - self.e123 * rhs.e123 - self.e124 * rhs.e124
-                    - self.e134 * rhs.e134 - self.e234 * rhs.e234,
-                e12: self.e1 * rhs.e2 + self.e3 * rhs.e123 + self.e4 * rhs.e124
-                    + self.e123 * rhs.e3 + self.e124 * rhs.e4 + self.e234 * rhs.e134
-                    - self.e2 * rhs.e1 - self.e134 * rhs.e234,
-                e13: self.e1 * rhs.e3 + self.e4 * rhs.e134 + self.e124 * rhs.e234
-                    + self.e134 * rhs.e4 - self.e2 * rhs.e123 - self.e3 * rhs.e1
-                    - self.e123 * rhs.e2 - self.e234 * rhs.e124,
-                e14: self.e1 * rhs.e4 + self.e234 * rhs.e123 - self.e2 * rhs.e124
-                    - self.e3 * rhs.e134 - self.e4 * rhs.e1 - self.e123 * rhs.e234
-                    - self.e124 * rhs.e2 - self.e134 * rhs.e3,
-                e23: self.e1 * rhs.e123 + self.e2 * rhs.e3 + self.e4 * rhs.e234
-                    + self.e123 * rhs.e1 + self.e134 * rhs.e124 + self.e234 * rhs.e4
-                    - self.e3 * rhs.e2 - self.e124 * rhs.e134,
-                e24: self.e1 * rhs.e124 + self.e2 * rhs.e4 + self.e123 * rhs.e134
-                    + self.e124 * rhs.e1 - self.e3 * rhs.e234 - self.e4 * rhs.e2
-                    - self.e134 * rhs.e123 - self.e234 * rhs.e3,
-                e34: self.e1 * rhs.e134 + self.e2 * rhs.e234 + self.e3 * rhs.e4
-                    + self.e124 * rhs.e123 + self.e134 * rhs.e1 + self.e234 * rhs.e2
-                    - self.e4 * rhs.e3 - self.e123 * rhs.e124,
-                e1234: self.e1 * rhs.e234 + self.e3 * rhs.e124 + self.e123 * rhs.e4
-                    + self.e134 * rhs.e2 - self.e2 * rhs.e134 - self.e4 * rhs.e123
-                    - self.e124 * rhs.e3 - self.e234 * rhs.e1,
+                s: ((self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 + self.e4 * rhs.e4))
+                    - ((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                        + (self.e134 * rhs.e134 + self.e234 * rhs.e234)),
+                e12: ((self.e1 * rhs.e2 + self.e3 * rhs.e123)
+                    + (self.e4 * rhs.e124 + self.e123 * rhs.e3))
+                    + ((self.e124 * rhs.e4 + self.e234 * rhs.e134)
+                        - (self.e2 * rhs.e1 + self.e134 * rhs.e234)),
+                e13: ((self.e1 * rhs.e3 + self.e4 * rhs.e134)
+                    + (self.e124 * rhs.e234 + self.e134 * rhs.e4))
+                    - ((self.e2 * rhs.e123 + self.e3 * rhs.e1)
+                        + (self.e123 * rhs.e2 + self.e234 * rhs.e124)),
+                e14: ((self.e1 * rhs.e4 + self.e234 * rhs.e123)
+                    - (self.e2 * rhs.e124 + self.e3 * rhs.e134))
+                    - ((self.e4 * rhs.e1 + self.e123 * rhs.e234)
+                        + (self.e124 * rhs.e2 + self.e134 * rhs.e3)),
+                e23: ((self.e1 * rhs.e123 + self.e2 * rhs.e3)
+                    + (self.e4 * rhs.e234 + self.e123 * rhs.e1))
+                    + ((self.e134 * rhs.e124 + self.e234 * rhs.e4)
+                        - (self.e3 * rhs.e2 + self.e124 * rhs.e134)),
+                e24: ((self.e1 * rhs.e124 + self.e2 * rhs.e4)
+                    + (self.e123 * rhs.e134 + self.e124 * rhs.e1))
+                    - ((self.e3 * rhs.e234 + self.e4 * rhs.e2)
+                        + (self.e134 * rhs.e123 + self.e234 * rhs.e3)),
+                e34: ((self.e1 * rhs.e134 + self.e2 * rhs.e234)
+                    + (self.e3 * rhs.e4 + self.e124 * rhs.e123))
+                    + ((self.e134 * rhs.e1 + self.e234 * rhs.e2)
+                        - (self.e4 * rhs.e3 + self.e123 * rhs.e124)),
+                e1234: ((self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    + (self.e123 * rhs.e4 + self.e134 * rhs.e2))
+                    - ((self.e2 * rhs.e134 + self.e4 * rhs.e123)
+                        + (self.e124 * rhs.e3 + self.e234 * rhs.e1)),
             }
         }
     }
@@ -3479,54 +3538,70 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    + self.e4 * rhs.e4 - self.e123 * rhs.e123 - self.e124 * rhs.e124
-                    - self.e134 * rhs.e134 - self.e234 * rhs.e234,
-                e1: self.e1 * rhs.s + self.e234 * rhs.e1234 - self.e2 * rhs.e12
-                    - self.e3 * rhs.e13 - self.e4 * rhs.e14 - self.e123 * rhs.e23
-                    - self.e124 * rhs.e24 - self.e134 * rhs.e34,
-                e2: self.e1 * rhs.e12 + self.e2 * rhs.s + self.e123 * rhs.e13
-                    + self.e124 * rhs.e14 - self.e3 * rhs.e23 - self.e4 * rhs.e24
-                    - self.e134 * rhs.e1234 - self.e234 * rhs.e34,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e3 * rhs.s
-                    + self.e124 * rhs.e1234 + self.e134 * rhs.e14 + self.e234 * rhs.e24
-                    - self.e4 * rhs.e34 - self.e123 * rhs.e12,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34
-                    + self.e4 * rhs.s - self.e123 * rhs.e1234 - self.e124 * rhs.e12
-                    - self.e134 * rhs.e13 - self.e234 * rhs.e23,
-                e12: self.e1 * rhs.e2 + self.e3 * rhs.e123 + self.e4 * rhs.e124
-                    + self.e123 * rhs.e3 + self.e124 * rhs.e4 + self.e234 * rhs.e134
-                    - self.e2 * rhs.e1 - self.e134 * rhs.e234,
-                e13: self.e1 * rhs.e3 + self.e4 * rhs.e134 + self.e124 * rhs.e234
-                    + self.e134 * rhs.e4 - self.e2 * rhs.e123 - self.e3 * rhs.e1
-                    - self.e123 * rhs.e2 - self.e234 * rhs.e124,
-                e14: self.e1 * rhs.e4 + self.e234 * rhs.e123 - self.e2 * rhs.e124
-                    - self.e3 * rhs.e134 - self.e4 * rhs.e1 - self.e123 * rhs.e234
-                    - self.e124 * rhs.e2 - self.e134 * rhs.e3,
-                e23: self.e1 * rhs.e123 + self.e2 * rhs.e3 + self.e4 * rhs.e234
-                    + self.e123 * rhs.e1 + self.e134 * rhs.e124 + self.e234 * rhs.e4
-                    - self.e3 * rhs.e2 - self.e124 * rhs.e134,
-                e24: self.e1 * rhs.e124 + self.e2 * rhs.e4 + self.e123 * rhs.e134
-                    + self.e124 * rhs.e1 - self.e3 * rhs.e234 - self.e4 * rhs.e2
-                    - self.e134 * rhs.e123 - self.e234 * rhs.e3,
-                e34: self.e1 * rhs.e134 + self.e2 * rhs.e234 + self.e3 * rhs.e4
-                    + self.e124 * rhs.e123 + self.e134 * rhs.e1 + self.e234 * rhs.e2
-                    - self.e4 * rhs.e3 - self.e123 * rhs.e124,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 + self.e123 * rhs.s
-                    + self.e134 * rhs.e24 - self.e2 * rhs.e13 - self.e4 * rhs.e1234
-                    - self.e124 * rhs.e34 - self.e234 * rhs.e14,
-                e124: self.e1 * rhs.e24 + self.e3 * rhs.e1234 + self.e4 * rhs.e12
-                    + self.e123 * rhs.e34 + self.e124 * rhs.s + self.e234 * rhs.e13
-                    - self.e2 * rhs.e14 - self.e134 * rhs.e23,
-                e134: self.e1 * rhs.e34 + self.e4 * rhs.e13 + self.e124 * rhs.e23
-                    + self.e134 * rhs.s - self.e2 * rhs.e1234 - self.e3 * rhs.e14
-                    - self.e123 * rhs.e24 - self.e234 * rhs.e12,
-                e234: self.e1 * rhs.e1234 + self.e2 * rhs.e34 + self.e4 * rhs.e23
-                    + self.e123 * rhs.e14 + self.e134 * rhs.e12 + self.e234 * rhs.s
-                    - self.e3 * rhs.e24 - self.e124 * rhs.e13,
-                e1234: self.e1 * rhs.e234 + self.e3 * rhs.e124 + self.e123 * rhs.e4
-                    + self.e134 * rhs.e2 - self.e2 * rhs.e134 - self.e4 * rhs.e123
-                    - self.e124 * rhs.e3 - self.e234 * rhs.e1,
+                s: ((self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 + self.e4 * rhs.e4))
+                    - ((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                        + (self.e134 * rhs.e134 + self.e234 * rhs.e234)),
+                e1: ((self.e1 * rhs.s + self.e234 * rhs.e1234)
+                    - (self.e2 * rhs.e12 + self.e3 * rhs.e13))
+                    - ((self.e4 * rhs.e14 + self.e123 * rhs.e23)
+                        + (self.e124 * rhs.e24 + self.e134 * rhs.e34)),
+                e2: ((self.e1 * rhs.e12 + self.e2 * rhs.s)
+                    + (self.e123 * rhs.e13 + self.e124 * rhs.e14))
+                    - ((self.e3 * rhs.e23 + self.e4 * rhs.e24)
+                        + (self.e134 * rhs.e1234 + self.e234 * rhs.e34)),
+                e3: ((self.e1 * rhs.e13 + self.e2 * rhs.e23)
+                    + (self.e3 * rhs.s + self.e124 * rhs.e1234))
+                    + ((self.e134 * rhs.e14 + self.e234 * rhs.e24)
+                        - (self.e4 * rhs.e34 + self.e123 * rhs.e12)),
+                e4: ((self.e1 * rhs.e14 + self.e2 * rhs.e24)
+                    + (self.e3 * rhs.e34 + self.e4 * rhs.s))
+                    - ((self.e123 * rhs.e1234 + self.e124 * rhs.e12)
+                        + (self.e134 * rhs.e13 + self.e234 * rhs.e23)),
+                e12: ((self.e1 * rhs.e2 + self.e3 * rhs.e123)
+                    + (self.e4 * rhs.e124 + self.e123 * rhs.e3))
+                    + ((self.e124 * rhs.e4 + self.e234 * rhs.e134)
+                        - (self.e2 * rhs.e1 + self.e134 * rhs.e234)),
+                e13: ((self.e1 * rhs.e3 + self.e4 * rhs.e134)
+                    + (self.e124 * rhs.e234 + self.e134 * rhs.e4))
+                    - ((self.e2 * rhs.e123 + self.e3 * rhs.e1)
+                        + (self.e123 * rhs.e2 + self.e234 * rhs.e124)),
+                e14: ((self.e1 * rhs.e4 + self.e234 * rhs.e123)
+                    - (self.e2 * rhs.e124 + self.e3 * rhs.e134))
+                    - ((self.e4 * rhs.e1 + self.e123 * rhs.e234)
+                        + (self.e124 * rhs.e2 + self.e134 * rhs.e3)),
+                e23: ((self.e1 * rhs.e123 + self.e2 * rhs.e3)
+                    + (self.e4 * rhs.e234 + self.e123 * rhs.e1))
+                    + ((self.e134 * rhs.e124 + self.e234 * rhs.e4)
+                        - (self.e3 * rhs.e2 + self.e124 * rhs.e134)),
+                e24: ((self.e1 * rhs.e124 + self.e2 * rhs.e4)
+                    + (self.e123 * rhs.e134 + self.e124 * rhs.e1))
+                    - ((self.e3 * rhs.e234 + self.e4 * rhs.e2)
+                        + (self.e134 * rhs.e123 + self.e234 * rhs.e3)),
+                e34: ((self.e1 * rhs.e134 + self.e2 * rhs.e234)
+                    + (self.e3 * rhs.e4 + self.e124 * rhs.e123))
+                    + ((self.e134 * rhs.e1 + self.e234 * rhs.e2)
+                        - (self.e4 * rhs.e3 + self.e123 * rhs.e124)),
+                e123: ((self.e1 * rhs.e23 + self.e3 * rhs.e12)
+                    + (self.e123 * rhs.s + self.e134 * rhs.e24))
+                    - ((self.e2 * rhs.e13 + self.e4 * rhs.e1234)
+                        + (self.e124 * rhs.e34 + self.e234 * rhs.e14)),
+                e124: ((self.e1 * rhs.e24 + self.e3 * rhs.e1234)
+                    + (self.e4 * rhs.e12 + self.e123 * rhs.e34))
+                    + ((self.e124 * rhs.s + self.e234 * rhs.e13)
+                        - (self.e2 * rhs.e14 + self.e134 * rhs.e23)),
+                e134: ((self.e1 * rhs.e34 + self.e4 * rhs.e13)
+                    + (self.e124 * rhs.e23 + self.e134 * rhs.s))
+                    - ((self.e2 * rhs.e1234 + self.e3 * rhs.e14)
+                        + (self.e123 * rhs.e24 + self.e234 * rhs.e12)),
+                e234: ((self.e1 * rhs.e1234 + self.e2 * rhs.e34)
+                    + (self.e4 * rhs.e23 + self.e123 * rhs.e14))
+                    + ((self.e134 * rhs.e12 + self.e234 * rhs.s)
+                        - (self.e3 * rhs.e24 + self.e124 * rhs.e13)),
+                e1234: ((self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    + (self.e123 * rhs.e4 + self.e134 * rhs.e2))
+                    - ((self.e2 * rhs.e134 + self.e4 * rhs.e123)
+                        + (self.e124 * rhs.e3 + self.e234 * rhs.e1)),
             }
         }
     }
@@ -3559,38 +3634,38 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Vector) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    + self.e4 * rhs.e4,
-                e1: self.s * rhs.e1 + self.e12 * rhs.e2 + self.e13 * rhs.e3
-                    + self.e14 * rhs.e4,
-                e2: self.s * rhs.e2 + self.e23 * rhs.e3 + self.e24 * rhs.e4
-                    - self.e12 * rhs.e1,
-                e3: self.s * rhs.e3 + self.e34 * rhs.e4 - self.e13 * rhs.e1
-                    - self.e23 * rhs.e2,
-                e4: self.s * rhs.e4 - self.e14 * rhs.e1 - self.e24 * rhs.e2
-                    - self.e34 * rhs.e3,
-                e12: self.e1 * rhs.e2 + self.e123 * rhs.e3 + self.e124 * rhs.e4
-                    - self.e2 * rhs.e1,
-                e13: self.e1 * rhs.e3 + self.e134 * rhs.e4 - self.e3 * rhs.e1
-                    - self.e123 * rhs.e2,
-                e14: self.e1 * rhs.e4 - self.e4 * rhs.e1 - self.e124 * rhs.e2
-                    - self.e134 * rhs.e3,
-                e23: self.e2 * rhs.e3 + self.e123 * rhs.e1 + self.e234 * rhs.e4
-                    - self.e3 * rhs.e2,
-                e24: self.e2 * rhs.e4 + self.e124 * rhs.e1 - self.e4 * rhs.e2
-                    - self.e234 * rhs.e3,
-                e34: self.e3 * rhs.e4 + self.e134 * rhs.e1 + self.e234 * rhs.e2
-                    - self.e4 * rhs.e3,
-                e123: self.e12 * rhs.e3 + self.e23 * rhs.e1 + self.e1234 * rhs.e4
-                    - self.e13 * rhs.e2,
-                e124: self.e12 * rhs.e4 + self.e24 * rhs.e1 - self.e14 * rhs.e2
-                    - self.e1234 * rhs.e3,
-                e134: self.e13 * rhs.e4 + self.e34 * rhs.e1 + self.e1234 * rhs.e2
-                    - self.e14 * rhs.e3,
-                e234: self.e23 * rhs.e4 + self.e34 * rhs.e2 - self.e24 * rhs.e3
-                    - self.e1234 * rhs.e1,
-                e1234: self.e123 * rhs.e4 + self.e134 * rhs.e2 - self.e124 * rhs.e3
-                    - self.e234 * rhs.e1,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 + self.e4 * rhs.e4),
+                e1: (self.s * rhs.e1 + self.e12 * rhs.e2)
+                    + (self.e13 * rhs.e3 + self.e14 * rhs.e4),
+                e2: (self.s * rhs.e2 + self.e23 * rhs.e3)
+                    + (self.e24 * rhs.e4 - self.e12 * rhs.e1),
+                e3: (self.s * rhs.e3 + self.e34 * rhs.e4)
+                    - (self.e13 * rhs.e1 + self.e23 * rhs.e2),
+                e4: (self.s * rhs.e4 - self.e14 * rhs.e1)
+                    - (self.e24 * rhs.e2 + self.e34 * rhs.e3),
+                e12: (self.e1 * rhs.e2 + self.e123 * rhs.e3)
+                    + (self.e124 * rhs.e4 - self.e2 * rhs.e1),
+                e13: (self.e1 * rhs.e3 + self.e134 * rhs.e4)
+                    - (self.e3 * rhs.e1 + self.e123 * rhs.e2),
+                e14: (self.e1 * rhs.e4 - self.e4 * rhs.e1)
+                    - (self.e124 * rhs.e2 + self.e134 * rhs.e3),
+                e23: (self.e2 * rhs.e3 + self.e123 * rhs.e1)
+                    + (self.e234 * rhs.e4 - self.e3 * rhs.e2),
+                e24: (self.e2 * rhs.e4 + self.e124 * rhs.e1)
+                    - (self.e4 * rhs.e2 + self.e234 * rhs.e3),
+                e34: (self.e3 * rhs.e4 + self.e134 * rhs.e1)
+                    + (self.e234 * rhs.e2 - self.e4 * rhs.e3),
+                e123: (self.e12 * rhs.e3 + self.e23 * rhs.e1)
+                    + (self.e1234 * rhs.e4 - self.e13 * rhs.e2),
+                e124: (self.e12 * rhs.e4 + self.e24 * rhs.e1)
+                    - (self.e14 * rhs.e2 + self.e1234 * rhs.e3),
+                e134: (self.e13 * rhs.e4 + self.e34 * rhs.e1)
+                    + (self.e1234 * rhs.e2 - self.e14 * rhs.e3),
+                e234: (self.e23 * rhs.e4 + self.e34 * rhs.e2)
+                    - (self.e24 * rhs.e3 + self.e1234 * rhs.e1),
+                e1234: (self.e123 * rhs.e4 + self.e134 * rhs.e2)
+                    - (self.e124 * rhs.e3 + self.e234 * rhs.e1),
             }
         }
     }
@@ -3599,38 +3674,40 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Bivector) -> Multivector {
             Multivector {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                    - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34,
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13 - self.e4 * rhs.e14
-                    - self.e123 * rhs.e23 - self.e124 * rhs.e24 - self.e134 * rhs.e34,
-                e2: self.e1 * rhs.e12 + self.e123 * rhs.e13 + self.e124 * rhs.e14
-                    - self.e3 * rhs.e23 - self.e4 * rhs.e24 - self.e234 * rhs.e34,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e134 * rhs.e14
-                    + self.e234 * rhs.e24 - self.e4 * rhs.e34 - self.e123 * rhs.e12,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34
-                    - self.e124 * rhs.e12 - self.e134 * rhs.e13 - self.e234 * rhs.e23,
-                e12: self.s * rhs.e12 + self.e23 * rhs.e13 + self.e24 * rhs.e14
-                    - self.e13 * rhs.e23 - self.e14 * rhs.e24 - self.e1234 * rhs.e34,
-                e13: self.s * rhs.e13 + self.e12 * rhs.e23 + self.e34 * rhs.e14
-                    + self.e1234 * rhs.e24 - self.e14 * rhs.e34 - self.e23 * rhs.e12,
-                e14: self.s * rhs.e14 + self.e12 * rhs.e24 + self.e13 * rhs.e34
-                    - self.e24 * rhs.e12 - self.e34 * rhs.e13 - self.e1234 * rhs.e23,
-                e23: self.s * rhs.e23 + self.e13 * rhs.e12 + self.e34 * rhs.e24
-                    - self.e12 * rhs.e13 - self.e24 * rhs.e34 - self.e1234 * rhs.e14,
-                e24: self.s * rhs.e24 + self.e14 * rhs.e12 + self.e23 * rhs.e34
-                    + self.e1234 * rhs.e13 - self.e12 * rhs.e14 - self.e34 * rhs.e23,
-                e34: self.s * rhs.e34 + self.e14 * rhs.e13 + self.e24 * rhs.e23
-                    - self.e13 * rhs.e14 - self.e23 * rhs.e24 - self.e1234 * rhs.e12,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 + self.e134 * rhs.e24
-                    - self.e2 * rhs.e13 - self.e124 * rhs.e34 - self.e234 * rhs.e14,
-                e124: self.e1 * rhs.e24 + self.e4 * rhs.e12 + self.e123 * rhs.e34
-                    + self.e234 * rhs.e13 - self.e2 * rhs.e14 - self.e134 * rhs.e23,
-                e134: self.e1 * rhs.e34 + self.e4 * rhs.e13 + self.e124 * rhs.e23
-                    - self.e3 * rhs.e14 - self.e123 * rhs.e24 - self.e234 * rhs.e12,
-                e234: self.e2 * rhs.e34 + self.e4 * rhs.e23 + self.e123 * rhs.e14
-                    + self.e134 * rhs.e12 - self.e3 * rhs.e24 - self.e124 * rhs.e13,
-                e1234: self.e12 * rhs.e34 + self.e14 * rhs.e23 + self.e23 * rhs.e14
-                    + self.e34 * rhs.e12 - self.e13 * rhs.e24 - self.e24 * rhs.e13,
+                s: -(((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e14 * rhs.e14)
+                    + ((self.e23 * rhs.e23 + self.e24 * rhs.e24) + self.e34 * rhs.e34)),
+                e1: -(((self.e2 * rhs.e12 + self.e3 * rhs.e13) + self.e4 * rhs.e14)
+                    + ((self.e123 * rhs.e23 + self.e124 * rhs.e24)
+                        + self.e134 * rhs.e34)),
+                e2: ((self.e1 * rhs.e12 + self.e123 * rhs.e13) + self.e124 * rhs.e14)
+                    - ((self.e3 * rhs.e23 + self.e4 * rhs.e24) + self.e234 * rhs.e34),
+                e3: ((self.e1 * rhs.e13 + self.e2 * rhs.e23) + self.e134 * rhs.e14)
+                    + ((self.e234 * rhs.e24 - self.e4 * rhs.e34) - self.e123 * rhs.e12),
+                e4: ((self.e1 * rhs.e14 + self.e2 * rhs.e24) + self.e3 * rhs.e34)
+                    - ((self.e124 * rhs.e12 + self.e134 * rhs.e13)
+                        + self.e234 * rhs.e23),
+                e12: ((self.s * rhs.e12 + self.e23 * rhs.e13) + self.e24 * rhs.e14)
+                    - ((self.e13 * rhs.e23 + self.e14 * rhs.e24) + self.e1234 * rhs.e34),
+                e13: ((self.s * rhs.e13 + self.e12 * rhs.e23) + self.e34 * rhs.e14)
+                    + ((self.e1234 * rhs.e24 - self.e14 * rhs.e34) - self.e23 * rhs.e12),
+                e14: ((self.s * rhs.e14 + self.e12 * rhs.e24) + self.e13 * rhs.e34)
+                    - ((self.e24 * rhs.e12 + self.e34 * rhs.e13) + self.e1234 * rhs.e23),
+                e23: ((self.s * rhs.e23 + self.e13 * rhs.e12) + self.e34 * rhs.e24)
+                    - ((self.e12 * rhs.e13 + self.e24 * rhs.e34) + self.e1234 * rhs.e14),
+                e24: ((self.s * rhs.e24 + self.e14 * rhs.e12) + self.e23 * rhs.e34)
+                    + ((self.e1234 * rhs.e13 - self.e12 * rhs.e14) - self.e34 * rhs.e23),
+                e34: ((self.s * rhs.e34 + self.e14 * rhs.e13) + self.e24 * rhs.e23)
+                    - ((self.e13 * rhs.e14 + self.e23 * rhs.e24) + self.e1234 * rhs.e12),
+                e123: ((self.e1 * rhs.e23 + self.e3 * rhs.e12) + self.e134 * rhs.e24)
+                    - ((self.e2 * rhs.e13 + self.e124 * rhs.e34) + self.e234 * rhs.e14),
+                e124: ((self.e1 * rhs.e24 + self.e4 * rhs.e12) + self.e123 * rhs.e34)
+                    + ((self.e234 * rhs.e13 - self.e2 * rhs.e14) - self.e134 * rhs.e23),
+                e134: ((self.e1 * rhs.e34 + self.e4 * rhs.e13) + self.e124 * rhs.e23)
+                    - ((self.e3 * rhs.e14 + self.e123 * rhs.e24) + self.e234 * rhs.e12),
+                e234: ((self.e2 * rhs.e34 + self.e4 * rhs.e23) + self.e123 * rhs.e14)
+                    + ((self.e134 * rhs.e12 - self.e3 * rhs.e24) - self.e124 * rhs.e13),
+                e1234: ((self.e12 * rhs.e34 + self.e14 * rhs.e23) + self.e23 * rhs.e14)
+                    + ((self.e34 * rhs.e12 - self.e13 * rhs.e24) - self.e24 * rhs.e13),
             }
         }
     }
@@ -3639,38 +3716,38 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Trivector) -> Multivector {
             Multivector {
-                s: -self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                    - self.e234 * rhs.e234,
-                e1: -self.e23 * rhs.e123 - self.e24 * rhs.e124 - self.e34 * rhs.e134
-                    - self.e1234 * rhs.e234,
-                e2: self.e13 * rhs.e123 + self.e14 * rhs.e124 + self.e1234 * rhs.e134
-                    - self.e34 * rhs.e234,
-                e3: self.e14 * rhs.e134 + self.e24 * rhs.e234 - self.e12 * rhs.e123
-                    - self.e1234 * rhs.e124,
-                e4: self.e1234 * rhs.e123 - self.e12 * rhs.e124 - self.e13 * rhs.e134
-                    - self.e23 * rhs.e234,
-                e12: self.e3 * rhs.e123 + self.e4 * rhs.e124 + self.e234 * rhs.e134
-                    - self.e134 * rhs.e234,
-                e13: self.e4 * rhs.e134 + self.e124 * rhs.e234 - self.e2 * rhs.e123
-                    - self.e234 * rhs.e124,
-                e14: self.e234 * rhs.e123 - self.e2 * rhs.e124 - self.e3 * rhs.e134
-                    - self.e123 * rhs.e234,
-                e23: self.e1 * rhs.e123 + self.e4 * rhs.e234 + self.e134 * rhs.e124
-                    - self.e124 * rhs.e134,
-                e24: self.e1 * rhs.e124 + self.e123 * rhs.e134 - self.e3 * rhs.e234
-                    - self.e134 * rhs.e123,
-                e34: self.e1 * rhs.e134 + self.e2 * rhs.e234 + self.e124 * rhs.e123
-                    - self.e123 * rhs.e124,
-                e123: self.s * rhs.e123 + self.e14 * rhs.e234 + self.e34 * rhs.e124
-                    - self.e24 * rhs.e134,
-                e124: self.s * rhs.e124 + self.e23 * rhs.e134 - self.e13 * rhs.e234
-                    - self.e34 * rhs.e123,
-                e134: self.s * rhs.e134 + self.e12 * rhs.e234 + self.e24 * rhs.e123
-                    - self.e23 * rhs.e124,
-                e234: self.s * rhs.e234 + self.e13 * rhs.e124 - self.e12 * rhs.e134
-                    - self.e14 * rhs.e123,
-                e1234: self.e1 * rhs.e234 + self.e3 * rhs.e124 - self.e2 * rhs.e134
-                    - self.e4 * rhs.e123,
+                s: -((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                    + (self.e134 * rhs.e134 + self.e234 * rhs.e234)),
+                e1: -((self.e23 * rhs.e123 + self.e24 * rhs.e124)
+                    + (self.e34 * rhs.e134 + self.e1234 * rhs.e234)),
+                e2: (self.e13 * rhs.e123 + self.e14 * rhs.e124)
+                    + (self.e1234 * rhs.e134 - self.e34 * rhs.e234),
+                e3: (self.e14 * rhs.e134 + self.e24 * rhs.e234)
+                    - (self.e12 * rhs.e123 + self.e1234 * rhs.e124),
+                e4: (self.e1234 * rhs.e123 - self.e12 * rhs.e124)
+                    - (self.e13 * rhs.e134 + self.e23 * rhs.e234),
+                e12: (self.e3 * rhs.e123 + self.e4 * rhs.e124)
+                    + (self.e234 * rhs.e134 - self.e134 * rhs.e234),
+                e13: (self.e4 * rhs.e134 + self.e124 * rhs.e234)
+                    - (self.e2 * rhs.e123 + self.e234 * rhs.e124),
+                e14: (self.e234 * rhs.e123 - self.e2 * rhs.e124)
+                    - (self.e3 * rhs.e134 + self.e123 * rhs.e234),
+                e23: (self.e1 * rhs.e123 + self.e4 * rhs.e234)
+                    + (self.e134 * rhs.e124 - self.e124 * rhs.e134),
+                e24: (self.e1 * rhs.e124 + self.e123 * rhs.e134)
+                    - (self.e3 * rhs.e234 + self.e134 * rhs.e123),
+                e34: (self.e1 * rhs.e134 + self.e2 * rhs.e234)
+                    + (self.e124 * rhs.e123 - self.e123 * rhs.e124),
+                e123: (self.s * rhs.e123 + self.e14 * rhs.e234)
+                    + (self.e34 * rhs.e124 - self.e24 * rhs.e134),
+                e124: (self.s * rhs.e124 + self.e23 * rhs.e134)
+                    - (self.e13 * rhs.e234 + self.e34 * rhs.e123),
+                e134: (self.s * rhs.e134 + self.e12 * rhs.e234)
+                    + (self.e24 * rhs.e123 - self.e23 * rhs.e124),
+                e234: (self.s * rhs.e234 + self.e13 * rhs.e124)
+                    - (self.e12 * rhs.e134 + self.e14 * rhs.e123),
+                e1234: (self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    - (self.e2 * rhs.e134 + self.e4 * rhs.e123),
             }
         }
     }
@@ -3703,54 +3780,70 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Even) -> Multivector {
             Multivector {
-                s: self.s * rhs.s + self.e1234 * rhs.e1234 - self.e12 * rhs.e12
-                    - self.e13 * rhs.e13 - self.e14 * rhs.e14 - self.e23 * rhs.e23
-                    - self.e24 * rhs.e24 - self.e34 * rhs.e34,
-                e1: self.e1 * rhs.s + self.e234 * rhs.e1234 - self.e2 * rhs.e12
-                    - self.e3 * rhs.e13 - self.e4 * rhs.e14 - self.e123 * rhs.e23
-                    - self.e124 * rhs.e24 - self.e134 * rhs.e34,
-                e2: self.e1 * rhs.e12 + self.e2 * rhs.s + self.e123 * rhs.e13
-                    + self.e124 * rhs.e14 - self.e3 * rhs.e23 - self.e4 * rhs.e24
-                    - self.e134 * rhs.e1234 - self.e234 * rhs.e34,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e3 * rhs.s
-                    + self.e124 * rhs.e1234 + self.e134 * rhs.e14 + self.e234 * rhs.e24
-                    - self.e4 * rhs.e34 - self.e123 * rhs.e12,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34
-                    + self.e4 * rhs.s - self.e123 * rhs.e1234 - self.e124 * rhs.e12
-                    - self.e134 * rhs.e13 - self.e234 * rhs.e23,
-                e12: self.s * rhs.e12 + self.e12 * rhs.s + self.e23 * rhs.e13
-                    + self.e24 * rhs.e14 - self.e13 * rhs.e23 - self.e14 * rhs.e24
-                    - self.e34 * rhs.e1234 - self.e1234 * rhs.e34,
-                e13: self.s * rhs.e13 + self.e12 * rhs.e23 + self.e13 * rhs.s
-                    + self.e24 * rhs.e1234 + self.e34 * rhs.e14 + self.e1234 * rhs.e24
-                    - self.e14 * rhs.e34 - self.e23 * rhs.e12,
-                e14: self.s * rhs.e14 + self.e12 * rhs.e24 + self.e13 * rhs.e34
-                    + self.e14 * rhs.s - self.e23 * rhs.e1234 - self.e24 * rhs.e12
-                    - self.e34 * rhs.e13 - self.e1234 * rhs.e23,
-                e23: self.s * rhs.e23 + self.e13 * rhs.e12 + self.e23 * rhs.s
-                    + self.e34 * rhs.e24 - self.e12 * rhs.e13 - self.e14 * rhs.e1234
-                    - self.e24 * rhs.e34 - self.e1234 * rhs.e14,
-                e24: self.s * rhs.e24 + self.e13 * rhs.e1234 + self.e14 * rhs.e12
-                    + self.e23 * rhs.e34 + self.e24 * rhs.s + self.e1234 * rhs.e13
-                    - self.e12 * rhs.e14 - self.e34 * rhs.e23,
-                e34: self.s * rhs.e34 + self.e14 * rhs.e13 + self.e24 * rhs.e23
-                    + self.e34 * rhs.s - self.e12 * rhs.e1234 - self.e13 * rhs.e14
-                    - self.e23 * rhs.e24 - self.e1234 * rhs.e12,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 + self.e123 * rhs.s
-                    + self.e134 * rhs.e24 - self.e2 * rhs.e13 - self.e4 * rhs.e1234
-                    - self.e124 * rhs.e34 - self.e234 * rhs.e14,
-                e124: self.e1 * rhs.e24 + self.e3 * rhs.e1234 + self.e4 * rhs.e12
-                    + self.e123 * rhs.e34 + self.e124 * rhs.s + self.e234 * rhs.e13
-                    - self.e2 * rhs.e14 - self.e134 * rhs.e23,
-                e134: self.e1 * rhs.e34 + self.e4 * rhs.e13 + self.e124 * rhs.e23
-                    + self.e134 * rhs.s - self.e2 * rhs.e1234 - self.e3 * rhs.e14
-                    - self.e123 * rhs.e24 - self.e234 * rhs.e12,
-                e234: self.e1 * rhs.e1234 + self.e2 * rhs.e34 + self.e4 * rhs.e23
-                    + self.e123 * rhs.e14 + self.e134 * rhs.e12 + self.e234 * rhs.s
-                    - self.e3 * rhs.e24 - self.e124 * rhs.e13,
-                e1234: self.s * rhs.e1234 + self.e12 * rhs.e34 + self.e14 * rhs.e23
-                    + self.e23 * rhs.e14 + self.e34 * rhs.e12 + self.e1234 * rhs.s
-                    - self.e13 * rhs.e24 - self.e24 * rhs.e13,
+                s: ((self.s * rhs.s + self.e1234 * rhs.e1234)
+                    - (self.e12 * rhs.e12 + self.e13 * rhs.e13))
+                    - ((self.e14 * rhs.e14 + self.e23 * rhs.e23)
+                        + (self.e24 * rhs.e24 + self.e34 * rhs.e34)),
+                e1: ((self.e1 * rhs.s + self.e234 * rhs.e1234)
+                    - (self.e2 * rhs.e12 + self.e3 * rhs.e13))
+                    - ((self.e4 * rhs.e14 + self.e123 * rhs.e23)
+                        + (self.e124 * rhs.e24 + self.e134 * rhs.e34)),
+                e2: ((self.e1 * rhs.e12 + self.e2 * rhs.s)
+                    + (self.e123 * rhs.e13 + self.e124 * rhs.e14))
+                    - ((self.e3 * rhs.e23 + self.e4 * rhs.e24)
+                        + (self.e134 * rhs.e1234 + self.e234 * rhs.e34)),
+                e3: ((self.e1 * rhs.e13 + self.e2 * rhs.e23)
+                    + (self.e3 * rhs.s + self.e124 * rhs.e1234))
+                    + ((self.e134 * rhs.e14 + self.e234 * rhs.e24)
+                        - (self.e4 * rhs.e34 + self.e123 * rhs.e12)),
+                e4: ((self.e1 * rhs.e14 + self.e2 * rhs.e24)
+                    + (self.e3 * rhs.e34 + self.e4 * rhs.s))
+                    - ((self.e123 * rhs.e1234 + self.e124 * rhs.e12)
+                        + (self.e134 * rhs.e13 + self.e234 * rhs.e23)),
+                e12: ((self.s * rhs.e12 + self.e12 * rhs.s)
+                    + (self.e23 * rhs.e13 + self.e24 * rhs.e14))
+                    - ((self.e13 * rhs.e23 + self.e14 * rhs.e24)
+                        + (self.e34 * rhs.e1234 + self.e1234 * rhs.e34)),
+                e13: ((self.s * rhs.e13 + self.e12 * rhs.e23)
+                    + (self.e13 * rhs.s + self.e24 * rhs.e1234))
+                    + ((self.e34 * rhs.e14 + self.e1234 * rhs.e24)
+                        - (self.e14 * rhs.e34 + self.e23 * rhs.e12)),
+                e14: ((self.s * rhs.e14 + self.e12 * rhs.e24)
+                    + (self.e13 * rhs.e34 + self.e14 * rhs.s))
+                    - ((self.e23 * rhs.e1234 + self.e24 * rhs.e12)
+                        + (self.e34 * rhs.e13 + self.e1234 * rhs.e23)),
+                e23: ((self.s * rhs.e23 + self.e13 * rhs.e12)
+                    + (self.e23 * rhs.s + self.e34 * rhs.e24))
+                    - ((self.e12 * rhs.e13 + self.e14 * rhs.e1234)
+                        + (self.e24 * rhs.e34 + self.e1234 * rhs.e14)),
+                e24: ((self.s * rhs.e24 + self.e13 * rhs.e1234)
+                    + (self.e14 * rhs.e12 + self.e23 * rhs.e34))
+                    + ((self.e24 * rhs.s + self.e1234 * rhs.e13)
+                        - (self.e12 * rhs.e14 + self.e34 * rhs.e23)),
+                e34: ((self.s * rhs.e34 + self.e14 * rhs.e13)
+                    + (self.e24 * rhs.e23 + self.e34 * rhs.s))
+                    - ((self.e12 * rhs.e1234 + self.e13 * rhs.e14)
+                        + (self.e23 * rhs.e24 + self.e1234 * rhs.e12)),
+                e123: ((self.e1 * rhs.e23 + self.e3 * rhs.e12)
+                    + (self.e123 * rhs.s + self.e134 * rhs.e24))
+                    - ((self.e2 * rhs.e13 + self.e4 * rhs.e1234)
+                        + (self.e124 * rhs.e34 + self.e234 * rhs.e14)),
+                e124: ((self.e1 * rhs.e24 + self.e3 * rhs.e1234)
+                    + (self.e4 * rhs.e12 + self.e123 * rhs.e34))
+                    + ((self.e124 * rhs.s + self.e234 * rhs.e13)
+                        - (self.e2 * rhs.e14 + self.e134 * rhs.e23)),
+                e134: ((self.e1 * rhs.e34 + self.e4 * rhs.e13)
+                    + (self.e124 * rhs.e23 + self.e134 * rhs.s))
+                    - ((self.e2 * rhs.e1234 + self.e3 * rhs.e14)
+                        + (self.e123 * rhs.e24 + self.e234 * rhs.e12)),
+                e234: ((self.e1 * rhs.e1234 + self.e2 * rhs.e34)
+                    + (self.e4 * rhs.e23 + self.e123 * rhs.e14))
+                    + ((self.e134 * rhs.e12 + self.e234 * rhs.s)
+                        - (self.e3 * rhs.e24 + self.e124 * rhs.e13)),
+                e1234: ((self.s * rhs.e1234 + self.e12 * rhs.e34)
+                    + (self.e14 * rhs.e23 + self.e23 * rhs.e14))
+                    + ((self.e34 * rhs.e12 + self.e1234 * rhs.s)
+                        - (self.e13 * rhs.e24 + self.e24 * rhs.e13)),
             }
         }
     }
@@ -3759,54 +3852,70 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Odd) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    + self.e4 * rhs.e4 - self.e123 * rhs.e123 - self.e124 * rhs.e124
-                    - self.e134 * rhs.e134 - self.e234 * rhs.e234,
-                e1: self.s * rhs.e1 + self.e12 * rhs.e2 + self.e13 * rhs.e3
-                    + self.e14 * rhs.e4 - self.e23 * rhs.e123 - self.e24 * rhs.e124
-                    - self.e34 * rhs.e134 - self.e1234 * rhs.e234,
-                e2: self.s * rhs.e2 + self.e13 * rhs.e123 + self.e14 * rhs.e124
-                    + self.e23 * rhs.e3 + self.e24 * rhs.e4 + self.e1234 * rhs.e134
-                    - self.e12 * rhs.e1 - self.e34 * rhs.e234,
-                e3: self.s * rhs.e3 + self.e14 * rhs.e134 + self.e24 * rhs.e234
-                    + self.e34 * rhs.e4 - self.e12 * rhs.e123 - self.e13 * rhs.e1
-                    - self.e23 * rhs.e2 - self.e1234 * rhs.e124,
-                e4: self.s * rhs.e4 + self.e1234 * rhs.e123 - self.e12 * rhs.e124
-                    - self.e13 * rhs.e134 - self.e14 * rhs.e1 - self.e23 * rhs.e234
-                    - self.e24 * rhs.e2 - self.e34 * rhs.e3,
-                e12: self.e1 * rhs.e2 + self.e3 * rhs.e123 + self.e4 * rhs.e124
-                    + self.e123 * rhs.e3 + self.e124 * rhs.e4 + self.e234 * rhs.e134
-                    - self.e2 * rhs.e1 - self.e134 * rhs.e234,
-                e13: self.e1 * rhs.e3 + self.e4 * rhs.e134 + self.e124 * rhs.e234
-                    + self.e134 * rhs.e4 - self.e2 * rhs.e123 - self.e3 * rhs.e1
-                    - self.e123 * rhs.e2 - self.e234 * rhs.e124,
-                e14: self.e1 * rhs.e4 + self.e234 * rhs.e123 - self.e2 * rhs.e124
-                    - self.e3 * rhs.e134 - self.e4 * rhs.e1 - self.e123 * rhs.e234
-                    - self.e124 * rhs.e2 - self.e134 * rhs.e3,
-                e23: self.e1 * rhs.e123 + self.e2 * rhs.e3 + self.e4 * rhs.e234
-                    + self.e123 * rhs.e1 + self.e134 * rhs.e124 + self.e234 * rhs.e4
-                    - self.e3 * rhs.e2 - self.e124 * rhs.e134,
-                e24: self.e1 * rhs.e124 + self.e2 * rhs.e4 + self.e123 * rhs.e134
-                    + self.e124 * rhs.e1 - self.e3 * rhs.e234 - self.e4 * rhs.e2
-                    - self.e134 * rhs.e123 - self.e234 * rhs.e3,
-                e34: self.e1 * rhs.e134 + self.e2 * rhs.e234 + self.e3 * rhs.e4
-                    + self.e124 * rhs.e123 + self.e134 * rhs.e1 + self.e234 * rhs.e2
-                    - self.e4 * rhs.e3 - self.e123 * rhs.e124,
-                e123: self.s * rhs.e123 + self.e12 * rhs.e3 + self.e14 * rhs.e234
-                    + self.e23 * rhs.e1 + self.e34 * rhs.e124 + self.e1234 * rhs.e4
-                    - self.e13 * rhs.e2 - self.e24 * rhs.e134,
-                e124: self.s * rhs.e124 + self.e12 * rhs.e4 + self.e23 * rhs.e134
-                    + self.e24 * rhs.e1 - self.e13 * rhs.e234 - self.e14 * rhs.e2
-                    - self.e34 * rhs.e123 - self.e1234 * rhs.e3,
-                e134: self.s * rhs.e134 + self.e12 * rhs.e234 + self.e13 * rhs.e4
-                    + self.e24 * rhs.e123 + self.e34 * rhs.e1 + self.e1234 * rhs.e2
-                    - self.e14 * rhs.e3 - self.e23 * rhs.e124,
-                e234: self.s * rhs.e234 + self.e13 * rhs.e124 + self.e23 * rhs.e4
-                    + self.e34 * rhs.e2 - self.e12 * rhs.e134 - self.e14 * rhs.e123
-                    - self.e24 * rhs.e3 - self.e1234 * rhs.e1,
-                e1234: self.e1 * rhs.e234 + self.e3 * rhs.e124 + self.e123 * rhs.e4
-                    + self.e134 * rhs.e2 - self.e2 * rhs.e134 - self.e4 * rhs.e123
-                    - self.e124 * rhs.e3 - self.e234 * rhs.e1,
+                s: ((self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 + self.e4 * rhs.e4))
+                    - ((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                        + (self.e134 * rhs.e134 + self.e234 * rhs.e234)),
+                e1: ((self.s * rhs.e1 + self.e12 * rhs.e2)
+                    + (self.e13 * rhs.e3 + self.e14 * rhs.e4))
+                    - ((self.e23 * rhs.e123 + self.e24 * rhs.e124)
+                        + (self.e34 * rhs.e134 + self.e1234 * rhs.e234)),
+                e2: ((self.s * rhs.e2 + self.e13 * rhs.e123)
+                    + (self.e14 * rhs.e124 + self.e23 * rhs.e3))
+                    + ((self.e24 * rhs.e4 + self.e1234 * rhs.e134)
+                        - (self.e12 * rhs.e1 + self.e34 * rhs.e234)),
+                e3: ((self.s * rhs.e3 + self.e14 * rhs.e134)
+                    + (self.e24 * rhs.e234 + self.e34 * rhs.e4))
+                    - ((self.e12 * rhs.e123 + self.e13 * rhs.e1)
+                        + (self.e23 * rhs.e2 + self.e1234 * rhs.e124)),
+                e4: ((self.s * rhs.e4 + self.e1234 * rhs.e123)
+                    - (self.e12 * rhs.e124 + self.e13 * rhs.e134))
+                    - ((self.e14 * rhs.e1 + self.e23 * rhs.e234)
+                        + (self.e24 * rhs.e2 + self.e34 * rhs.e3)),
+                e12: ((self.e1 * rhs.e2 + self.e3 * rhs.e123)
+                    + (self.e4 * rhs.e124 + self.e123 * rhs.e3))
+                    + ((self.e124 * rhs.e4 + self.e234 * rhs.e134)
+                        - (self.e2 * rhs.e1 + self.e134 * rhs.e234)),
+                e13: ((self.e1 * rhs.e3 + self.e4 * rhs.e134)
+                    + (self.e124 * rhs.e234 + self.e134 * rhs.e4))
+                    - ((self.e2 * rhs.e123 + self.e3 * rhs.e1)
+                        + (self.e123 * rhs.e2 + self.e234 * rhs.e124)),
+                e14: ((self.e1 * rhs.e4 + self.e234 * rhs.e123)
+                    - (self.e2 * rhs.e124 + self.e3 * rhs.e134))
+                    - ((self.e4 * rhs.e1 + self.e123 * rhs.e234)
+                        + (self.e124 * rhs.e2 + self.e134 * rhs.e3)),
+                e23: ((self.e1 * rhs.e123 + self.e2 * rhs.e3)
+                    + (self.e4 * rhs.e234 + self.e123 * rhs.e1))
+                    + ((self.e134 * rhs.e124 + self.e234 * rhs.e4)
+                        - (self.e3 * rhs.e2 + self.e124 * rhs.e134)),
+                e24: ((self.e1 * rhs.e124 + self.e2 * rhs.e4)
+                    + (self.e123 * rhs.e134 + self.e124 * rhs.e1))
+                    - ((self.e3 * rhs.e234 + self.e4 * rhs.e2)
+                        + (self.e134 * rhs.e123 + self.e234 * rhs.e3)),
+                e34: ((self.e1 * rhs.e134 + self.e2 * rhs.e234)
+                    + (self.e3 * rhs.e4 + self.e124 * rhs.e123))
+                    + ((self.e134 * rhs.e1 + self.e234 * rhs.e2)
+                        - (self.e4 * rhs.e3 + self.e123 * rhs.e124)),
+                e123: ((self.s * rhs.e123 + self.e12 * rhs.e3)
+                    + (self.e14 * rhs.e234 + self.e23 * rhs.e1))
+                    + ((self.e34 * rhs.e124 + self.e1234 * rhs.e4)
+                        - (self.e13 * rhs.e2 + self.e24 * rhs.e134)),
+                e124: ((self.s * rhs.e124 + self.e12 * rhs.e4)
+                    + (self.e23 * rhs.e134 + self.e24 * rhs.e1))
+                    - ((self.e13 * rhs.e234 + self.e14 * rhs.e2)
+                        + (self.e34 * rhs.e123 + self.e1234 * rhs.e3)),
+                e134: ((self.s * rhs.e134 + self.e12 * rhs.e234)
+                    + (self.e13 * rhs.e4 + self.e24 * rhs.e123))
+                    + ((self.e34 * rhs.e1 + self.e1234 * rhs.e2)
+                        - (self.e14 * rhs.e3 + self.e23 * rhs.e124)),
+                e234: ((self.s * rhs.e234 + self.e13 * rhs.e124)
+                    + (self.e23 * rhs.e4 + self.e34 * rhs.e2))
+                    - ((self.e12 * rhs.e134 + self.e14 * rhs.e123)
+                        + (self.e24 * rhs.e3 + self.e1234 * rhs.e1)),
+                e1234: ((self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    + (self.e123 * rhs.e4 + self.e134 * rhs.e2))
+                    - ((self.e2 * rhs.e134 + self.e4 * rhs.e123)
+                        + (self.e124 * rhs.e3 + self.e234 * rhs.e1)),
             }
         }
     }
@@ -3815,102 +3924,134 @@ pub mod g4 {
         #[inline]
         fn mul(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.s * rhs.s + self.e1 * rhs.e1 + self.e2 * rhs.e2
-                    + self.e3 * rhs.e3 + self.e4 * rhs.e4 + self.e1234 * rhs.e1234
-                    - self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                    - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34
-                    - self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                    - self.e234 * rhs.e234,
-                e1: self.s * rhs.e1 + self.e1 * rhs.s + self.e12 * rhs.e2
-                    + self.e13 * rhs.e3 + self.e14 * rhs.e4 + self.e234 * rhs.e1234
-                    - self.e2 * rhs.e12 - self.e3 * rhs.e13 - self.e4 * rhs.e14
-                    - self.e23 * rhs.e123 - self.e24 * rhs.e124 - self.e34 * rhs.e134
-                    - self.e123 * rhs.e23 - self.e124 * rhs.e24 - self.e134 * rhs.e34
-                    - self.e1234 * rhs.e234,
-                e2: self.s * rhs.e2 + self.e1 * rhs.e12 + self.e2 * rhs.s
-                    + self.e13 * rhs.e123 + self.e14 * rhs.e124 + self.e23 * rhs.e3
-                    + self.e24 * rhs.e4 + self.e123 * rhs.e13 + self.e124 * rhs.e14
-                    + self.e1234 * rhs.e134 - self.e3 * rhs.e23 - self.e4 * rhs.e24
-                    - self.e12 * rhs.e1 - self.e34 * rhs.e234 - self.e134 * rhs.e1234
-                    - self.e234 * rhs.e34,
-                e3: self.s * rhs.e3 + self.e1 * rhs.e13 + self.e2 * rhs.e23
-                    + self.e3 * rhs.s + self.e14 * rhs.e134 + self.e24 * rhs.e234
-                    + self.e34 * rhs.e4 + self.e124 * rhs.e1234 + self.e134 * rhs.e14
-                    + self.e234 * rhs.e24 - self.e4 * rhs.e34 - self.e12 * rhs.e123
-                    - self.e13 * rhs.e1 - self.e23 * rhs.e2 - self.e123 * rhs.e12
-                    - self.e1234 * rhs.e124,
-                e4: self.s * rhs.e4 + self.e1 * rhs.e14 + self.e2 * rhs.e24
-                    + self.e3 * rhs.e34 + self.e4 * rhs.s + self.e1234 * rhs.e123
-                    - self.e12 * rhs.e124 - self.e13 * rhs.e134 - self.e14 * rhs.e1
-                    - self.e23 * rhs.e234 - self.e24 * rhs.e2 - self.e34 * rhs.e3
-                    - self.e123 * rhs.e1234 - self.e124 * rhs.e12 - self.e134 * rhs.e13
-                    - self.e234 * rhs.e23,
-                e12: self.s * rhs.e12 + self.e1 * rhs.e2 + self.e3 * rhs.e123
-                    + self.e4 * rhs.e124 + self.e12 * rhs.s + self.e23 * rhs.e13
-                    + self.e24 * rhs.e14 + self.e123 * rhs.e3 + self.e124 * rhs.e4
-                    + self.e234 * rhs.e134 - self.e2 * rhs.e1 - self.e13 * rhs.e23
-                    - self.e14 * rhs.e24 - self.e34 * rhs.e1234 - self.e134 * rhs.e234
-                    - self.e1234 * rhs.e34,
-                e13: self.s * rhs.e13 + self.e1 * rhs.e3 + self.e4 * rhs.e134
-                    + self.e12 * rhs.e23 + self.e13 * rhs.s + self.e24 * rhs.e1234
-                    + self.e34 * rhs.e14 + self.e124 * rhs.e234 + self.e134 * rhs.e4
-                    + self.e1234 * rhs.e24 - self.e2 * rhs.e123 - self.e3 * rhs.e1
-                    - self.e14 * rhs.e34 - self.e23 * rhs.e12 - self.e123 * rhs.e2
-                    - self.e234 * rhs.e124,
-                e14: self.s * rhs.e14 + self.e1 * rhs.e4 + self.e12 * rhs.e24
-                    + self.e13 * rhs.e34 + self.e14 * rhs.s + self.e234 * rhs.e123
-                    - self.e2 * rhs.e124 - self.e3 * rhs.e134 - self.e4 * rhs.e1
-                    - self.e23 * rhs.e1234 - self.e24 * rhs.e12 - self.e34 * rhs.e13
-                    - self.e123 * rhs.e234 - self.e124 * rhs.e2 - self.e134 * rhs.e3
-                    - self.e1234 * rhs.e23,
-                e23: self.s * rhs.e23 + self.e1 * rhs.e123 + self.e2 * rhs.e3
-                    + self.e4 * rhs.e234 + self.e13 * rhs.e12 + self.e23 * rhs.s
-                    + self.e34 * rhs.e24 + self.e123 * rhs.e1 + self.e134 * rhs.e124
-                    + self.e234 * rhs.e4 - self.e3 * rhs.e2 - self.e12 * rhs.e13
-                    - self.e14 * rhs.e1234 - self.e24 * rhs.e34 - self.e124 * rhs.e134
-                    - self.e1234 * rhs.e14,
-                e24: self.s * rhs.e24 + self.e1 * rhs.e124 + self.e2 * rhs.e4
-                    + self.e13 * rhs.e1234 + self.e14 * rhs.e12 + self.e23 * rhs.e34
-                    + self.e24 * rhs.s + self.e123 * rhs.e134 + self.e124 * rhs.e1
-                    + self.e1234 * rhs.e13 - self.e3 * rhs.e234 - self.e4 * rhs.e2
-                    - self.e12 * rhs.e14 - self.e34 * rhs.e23 - self.e134 * rhs.e123
-                    - self.e234 * rhs.e3,
-                e34: self.s * rhs.e34 + self.e1 * rhs.e134 + self.e2 * rhs.e234
-                    + self.e3 * rhs.e4 + self.e14 * rhs.e13 + self.e24 * rhs.e23
-                    + self.e34 * rhs.s + self.e124 * rhs.e123 + self.e134 * rhs.e1
-                    + self.e234 * rhs.e2 - self.e4 * rhs.e3 - self.e12 * rhs.e1234
-                    - self.e13 * rhs.e14 - self.e23 * rhs.e24 - self.e123 * rhs.e124
-                    - self.e1234 * rhs.e12,
-                e123: self.s * rhs.e123 + self.e1 * rhs.e23 + self.e3 * rhs.e12
-                    + self.e12 * rhs.e3 + self.e14 * rhs.e234 + self.e23 * rhs.e1
-                    + self.e34 * rhs.e124 + self.e123 * rhs.s + self.e134 * rhs.e24
-                    + self.e1234 * rhs.e4 - self.e2 * rhs.e13 - self.e4 * rhs.e1234
-                    - self.e13 * rhs.e2 - self.e24 * rhs.e134 - self.e124 * rhs.e34
-                    - self.e234 * rhs.e14,
-                e124: self.s * rhs.e124 + self.e1 * rhs.e24 + self.e3 * rhs.e1234
-                    + self.e4 * rhs.e12 + self.e12 * rhs.e4 + self.e23 * rhs.e134
-                    + self.e24 * rhs.e1 + self.e123 * rhs.e34 + self.e124 * rhs.s
-                    + self.e234 * rhs.e13 - self.e2 * rhs.e14 - self.e13 * rhs.e234
-                    - self.e14 * rhs.e2 - self.e34 * rhs.e123 - self.e134 * rhs.e23
-                    - self.e1234 * rhs.e3,
-                e134: self.s * rhs.e134 + self.e1 * rhs.e34 + self.e4 * rhs.e13
-                    + self.e12 * rhs.e234 + self.e13 * rhs.e4 + self.e24 * rhs.e123
-                    + self.e34 * rhs.e1 + self.e124 * rhs.e23 + self.e134 * rhs.s
-                    + self.e1234 * rhs.e2 - self.e2 * rhs.e1234 - self.e3 * rhs.e14
-                    - self.e14 * rhs.e3 - self.e23 * rhs.e124 - self.e123 * rhs.e24
-                    - self.e234 * rhs.e12,
-                e234: self.s * rhs.e234 + self.e1 * rhs.e1234 + self.e2 * rhs.e34
-                    + self.e4 * rhs.e23 + self.e13 * rhs.e124 + self.e23 * rhs.e4
-                    + self.e34 * rhs.e2 + self.e123 * rhs.e14 + self.e134 * rhs.e12
-                    + self.e234 * rhs.s - self.e3 * rhs.e24 - self.e12 * rhs.e134
-                    - self.e14 * rhs.e123 - self.e24 * rhs.e3 - self.e124 * rhs.e13
-                    - self.e1234 * rhs.e1,
-                e1234: self.s * rhs.e1234 + self.e1 * rhs.e234 + self.e3 * rhs.e124
-                    + self.e12 * rhs.e34 + self.e14 * rhs.e23 + self.e23 * rhs.e14
-                    + self.e34 * rhs.e12 + self.e123 * rhs.e4 + self.e134 * rhs.e2
-                    + self.e1234 * rhs.s - self.e2 * rhs.e134 - self.e4 * rhs.e123
-                    - self.e13 * rhs.e24 - self.e24 * rhs.e13 - self.e124 * rhs.e3
-                    - self.e234 * rhs.e1,
+                s: (((self.s * rhs.s + self.e1 * rhs.e1)
+                    + (self.e2 * rhs.e2 + self.e3 * rhs.e3))
+                    + ((self.e4 * rhs.e4 + self.e1234 * rhs.e1234)
+                        - (self.e12 * rhs.e12 + self.e13 * rhs.e13)))
+                    - (((self.e14 * rhs.e14 + self.e23 * rhs.e23)
+                        + (self.e24 * rhs.e24 + self.e34 * rhs.e34))
+                        + ((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                            + (self.e134 * rhs.e134 + self.e234 * rhs.e234))),
+                e1: (((self.s * rhs.e1 + self.e1 * rhs.s)
+                    + (self.e12 * rhs.e2 + self.e13 * rhs.e3))
+                    + ((self.e14 * rhs.e4 + self.e234 * rhs.e1234)
+                        - (self.e2 * rhs.e12 + self.e3 * rhs.e13)))
+                    - (((self.e4 * rhs.e14 + self.e23 * rhs.e123)
+                        + (self.e24 * rhs.e124 + self.e34 * rhs.e134))
+                        + ((self.e123 * rhs.e23 + self.e124 * rhs.e24)
+                            + (self.e134 * rhs.e34 + self.e1234 * rhs.e234))),
+                e2: (((self.s * rhs.e2 + self.e1 * rhs.e12)
+                    + (self.e2 * rhs.s + self.e13 * rhs.e123))
+                    + ((self.e14 * rhs.e124 + self.e23 * rhs.e3)
+                        + (self.e24 * rhs.e4 + self.e123 * rhs.e13)))
+                    + (((self.e124 * rhs.e14 + self.e1234 * rhs.e134)
+                        - (self.e3 * rhs.e23 + self.e4 * rhs.e24))
+                        - ((self.e12 * rhs.e1 + self.e34 * rhs.e234)
+                            + (self.e134 * rhs.e1234 + self.e234 * rhs.e34))),
+                e3: (((self.s * rhs.e3 + self.e1 * rhs.e13)
+                    + (self.e2 * rhs.e23 + self.e3 * rhs.s))
+                    + ((self.e14 * rhs.e134 + self.e24 * rhs.e234)
+                        + (self.e34 * rhs.e4 + self.e124 * rhs.e1234)))
+                    + (((self.e134 * rhs.e14 + self.e234 * rhs.e24)
+                        - (self.e4 * rhs.e34 + self.e12 * rhs.e123))
+                        - ((self.e13 * rhs.e1 + self.e23 * rhs.e2)
+                            + (self.e123 * rhs.e12 + self.e1234 * rhs.e124))),
+                e4: (((self.s * rhs.e4 + self.e1 * rhs.e14)
+                    + (self.e2 * rhs.e24 + self.e3 * rhs.e34))
+                    + ((self.e4 * rhs.s + self.e1234 * rhs.e123)
+                        - (self.e12 * rhs.e124 + self.e13 * rhs.e134)))
+                    - (((self.e14 * rhs.e1 + self.e23 * rhs.e234)
+                        + (self.e24 * rhs.e2 + self.e34 * rhs.e3))
+                        + ((self.e123 * rhs.e1234 + self.e124 * rhs.e12)
+                            + (self.e134 * rhs.e13 + self.e234 * rhs.e23))),
+                e12: (((self.s * rhs.e12 + self.e1 * rhs.e2)
+                    + (self.e3 * rhs.e123 + self.e4 * rhs.e124))
+                    + ((self.e12 * rhs.s + self.e23 * rhs.e13)
+                        + (self.e24 * rhs.e14 + self.e123 * rhs.e3)))
+                    + (((self.e124 * rhs.e4 + self.e234 * rhs.e134)
+                        - (self.e2 * rhs.e1 + self.e13 * rhs.e23))
+                        - ((self.e14 * rhs.e24 + self.e34 * rhs.e1234)
+                            + (self.e134 * rhs.e234 + self.e1234 * rhs.e34))),
+                e13: (((self.s * rhs.e13 + self.e1 * rhs.e3)
+                    + (self.e4 * rhs.e134 + self.e12 * rhs.e23))
+                    + ((self.e13 * rhs.s + self.e24 * rhs.e1234)
+                        + (self.e34 * rhs.e14 + self.e124 * rhs.e234)))
+                    + (((self.e134 * rhs.e4 + self.e1234 * rhs.e24)
+                        - (self.e2 * rhs.e123 + self.e3 * rhs.e1))
+                        - ((self.e14 * rhs.e34 + self.e23 * rhs.e12)
+                            + (self.e123 * rhs.e2 + self.e234 * rhs.e124))),
+                e14: (((self.s * rhs.e14 + self.e1 * rhs.e4)
+                    + (self.e12 * rhs.e24 + self.e13 * rhs.e34))
+                    + ((self.e14 * rhs.s + self.e234 * rhs.e123)
+                        - (self.e2 * rhs.e124 + self.e3 * rhs.e134)))
+                    - (((self.e4 * rhs.e1 + self.e23 * rhs.e1234)
+                        + (self.e24 * rhs.e12 + self.e34 * rhs.e13))
+                        + ((self.e123 * rhs.e234 + self.e124 * rhs.e2)
+                            + (self.e134 * rhs.e3 + self.e1234 * rhs.e23))),
+                e23: (((self.s * rhs.e23 + self.e1 * rhs.e123)
+                    + (self.e2 * rhs.e3 + self.e4 * rhs.e234))
+                    + ((self.e13 * rhs.e12 + self.e23 * rhs.s)
+                        + (self.e34 * rhs.e24 + self.e123 * rhs.e1)))
+                    + (((self.e134 * rhs.e124 + self.e234 * rhs.e4)
+                        - (self.e3 * rhs.e2 + self.e12 * rhs.e13))
+                        - ((self.e14 * rhs.e1234 + self.e24 * rhs.e34)
+                            + (self.e124 * rhs.e134 + self.e1234 * rhs.e14))),
+                e24: (((self.s * rhs.e24 + self.e1 * rhs.e124)
+                    + (self.e2 * rhs.e4 + self.e13 * rhs.e1234))
+                    + ((self.e14 * rhs.e12 + self.e23 * rhs.e34)
+                        + (self.e24 * rhs.s + self.e123 * rhs.e134)))
+                    + (((self.e124 * rhs.e1 + self.e1234 * rhs.e13)
+                        - (self.e3 * rhs.e234 + self.e4 * rhs.e2))
+                        - ((self.e12 * rhs.e14 + self.e34 * rhs.e23)
+                            + (self.e134 * rhs.e123 + self.e234 * rhs.e3))),
+                e34: (((self.s * rhs.e34 + self.e1 * rhs.e134)
+                    + (self.e2 * rhs.e234 + self.e3 * rhs.e4))
+                    + ((self.e14 * rhs.e13 + self.e24 * rhs.e23)
+                        + (self.e34 * rhs.s + self.e124 * rhs.e123)))
+                    + (((self.e134 * rhs.e1 + self.e234 * rhs.e2)
+                        - (self.e4 * rhs.e3 + self.e12 * rhs.e1234))
+                        - ((self.e13 * rhs.e14 + self.e23 * rhs.e24)
+                            + (self.e123 * rhs.e124 + self.e1234 * rhs.e12))),
+                e123: (((self.s * rhs.e123 + self.e1 * rhs.e23)
+                    + (self.e3 * rhs.e12 + self.e12 * rhs.e3))
+                    + ((self.e14 * rhs.e234 + self.e23 * rhs.e1)
+                        + (self.e34 * rhs.e124 + self.e123 * rhs.s)))
+                    + (((self.e134 * rhs.e24 + self.e1234 * rhs.e4)
+                        - (self.e2 * rhs.e13 + self.e4 * rhs.e1234))
+                        - ((self.e13 * rhs.e2 + self.e24 * rhs.e134)
+                            + (self.e124 * rhs.e34 + self.e234 * rhs.e14))),
+                e124: (((self.s * rhs.e124 + self.e1 * rhs.e24)
+                    + (self.e3 * rhs.e1234 + self.e4 * rhs.e12))
+                    + ((self.e12 * rhs.e4 + self.e23 * rhs.e134)
+                        + (self.e24 * rhs.e1 + self.e123 * rhs.e34)))
+                    + (((self.e124 * rhs.s + self.e234 * rhs.e13)
+                        - (self.e2 * rhs.e14 + self.e13 * rhs.e234))
+                        - ((self.e14 * rhs.e2 + self.e34 * rhs.e123)
+                            + (self.e134 * rhs.e23 + self.e1234 * rhs.e3))),
+                e134: (((self.s * rhs.e134 + self.e1 * rhs.e34)
+                    + (self.e4 * rhs.e13 + self.e12 * rhs.e234))
+                    + ((self.e13 * rhs.e4 + self.e24 * rhs.e123)
+                        + (self.e34 * rhs.e1 + self.e124 * rhs.e23)))
+                    + (((self.e134 * rhs.s + self.e1234 * rhs.e2)
+                        - (self.e2 * rhs.e1234 + self.e3 * rhs.e14))
+                        - ((self.e14 * rhs.e3 + self.e23 * rhs.e124)
+                            + (self.e123 * rhs.e24 + self.e234 * rhs.e12))),
+                e234: (((self.s * rhs.e234 + self.e1 * rhs.e1234)
+                    + (self.e2 * rhs.e34 + self.e4 * rhs.e23))
+                    + ((self.e13 * rhs.e124 + self.e23 * rhs.e4)
+                        + (self.e34 * rhs.e2 + self.e123 * rhs.e14)))
+                    + (((self.e134 * rhs.e12 + self.e234 * rhs.s)
+                        - (self.e3 * rhs.e24 + self.e12 * rhs.e134))
+                        - ((self.e14 * rhs.e123 + self.e24 * rhs.e3)
+                            + (self.e124 * rhs.e13 + self.e1234 * rhs.e1))),
+                e1234: (((self.s * rhs.e1234 + self.e1 * rhs.e234)
+                    + (self.e3 * rhs.e124 + self.e12 * rhs.e34))
+                    + ((self.e14 * rhs.e23 + self.e23 * rhs.e14)
+                        + (self.e34 * rhs.e12 + self.e123 * rhs.e4)))
+                    + (((self.e134 * rhs.e2 + self.e1234 * rhs.s)
+                        - (self.e2 * rhs.e134 + self.e4 * rhs.e123))
+                        - ((self.e13 * rhs.e24 + self.e24 * rhs.e13)
+                            + (self.e124 * rhs.e3 + self.e234 * rhs.e1))),
             }
         }
     }
@@ -4048,10 +4189,10 @@ pub mod g4 {
         #[inline]
         fn bitxor(self, rhs: Bivector) -> Trivector {
             Trivector {
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 - self.e2 * rhs.e13,
-                e124: self.e1 * rhs.e24 + self.e4 * rhs.e12 - self.e2 * rhs.e14,
-                e134: self.e1 * rhs.e34 + self.e4 * rhs.e13 - self.e3 * rhs.e14,
-                e234: self.e2 * rhs.e34 + self.e4 * rhs.e23 - self.e3 * rhs.e24,
+                e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12) - self.e2 * rhs.e13,
+                e124: (self.e1 * rhs.e24 + self.e4 * rhs.e12) - self.e2 * rhs.e14,
+                e134: (self.e1 * rhs.e34 + self.e4 * rhs.e13) - self.e3 * rhs.e14,
+                e234: (self.e2 * rhs.e34 + self.e4 * rhs.e23) - self.e3 * rhs.e24,
             }
         }
     }
@@ -4060,8 +4201,8 @@ pub mod g4 {
         #[inline]
         fn bitxor(self, rhs: Trivector) -> Quadvector {
             Quadvector {
-                e1234: self.e1 * rhs.e234 + self.e3 * rhs.e124 - self.e2 * rhs.e134
-                    - self.e4 * rhs.e123,
+                e1234: (self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    - (self.e2 * rhs.e134 + self.e4 * rhs.e123),
             }
         }
     }
@@ -4082,10 +4223,10 @@ pub mod g4 {
                 e2: self.e2 * rhs.s,
                 e3: self.e3 * rhs.s,
                 e4: self.e4 * rhs.s,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 - self.e2 * rhs.e13,
-                e124: self.e1 * rhs.e24 + self.e4 * rhs.e12 - self.e2 * rhs.e14,
-                e134: self.e1 * rhs.e34 + self.e4 * rhs.e13 - self.e3 * rhs.e14,
-                e234: self.e2 * rhs.e34 + self.e4 * rhs.e23 - self.e3 * rhs.e24,
+                e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12) - self.e2 * rhs.e13,
+                e124: (self.e1 * rhs.e24 + self.e4 * rhs.e12) - self.e2 * rhs.e14,
+                e134: (self.e1 * rhs.e34 + self.e4 * rhs.e13) - self.e3 * rhs.e14,
+                e234: (self.e2 * rhs.e34 + self.e4 * rhs.e23) - self.e3 * rhs.e24,
             }
         }
     }
@@ -4101,8 +4242,8 @@ pub mod g4 {
                 e23: self.e2 * rhs.e3 - self.e3 * rhs.e2,
                 e24: self.e2 * rhs.e4 - self.e4 * rhs.e2,
                 e34: self.e3 * rhs.e4 - self.e4 * rhs.e3,
-                e1234: self.e1 * rhs.e234 + self.e3 * rhs.e124 - self.e2 * rhs.e134
-                    - self.e4 * rhs.e123,
+                e1234: (self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    - (self.e2 * rhs.e134 + self.e4 * rhs.e123),
             }
         }
     }
@@ -4122,12 +4263,12 @@ pub mod g4 {
                 e23: self.e2 * rhs.e3 - self.e3 * rhs.e2,
                 e24: self.e2 * rhs.e4 - self.e4 * rhs.e2,
                 e34: self.e3 * rhs.e4 - self.e4 * rhs.e3,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 - self.e2 * rhs.e13,
-                e124: self.e1 * rhs.e24 + self.e4 * rhs.e12 - self.e2 * rhs.e14,
-                e134: self.e1 * rhs.e34 + self.e4 * rhs.e13 - self.e3 * rhs.e14,
-                e234: self.e2 * rhs.e34 + self.e4 * rhs.e23 - self.e3 * rhs.e24,
-                e1234: self.e1 * rhs.e234 + self.e3 * rhs.e124 - self.e2 * rhs.e134
-                    - self.e4 * rhs.e123,
+                e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12) - self.e2 * rhs.e13,
+                e124: (self.e1 * rhs.e24 + self.e4 * rhs.e12) - self.e2 * rhs.e14,
+                e134: (self.e1 * rhs.e34 + self.e4 * rhs.e13) - self.e3 * rhs.e14,
+                e234: (self.e2 * rhs.e34 + self.e4 * rhs.e23) - self.e3 * rhs.e24,
+                e1234: (self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    - (self.e2 * rhs.e134 + self.e4 * rhs.e123),
             }
         }
     }
@@ -4150,10 +4291,10 @@ pub mod g4 {
         #[inline]
         fn bitxor(self, rhs: Vector) -> Trivector {
             Trivector {
-                e123: self.e12 * rhs.e3 + self.e23 * rhs.e1 - self.e13 * rhs.e2,
-                e124: self.e12 * rhs.e4 + self.e24 * rhs.e1 - self.e14 * rhs.e2,
-                e134: self.e13 * rhs.e4 + self.e34 * rhs.e1 - self.e14 * rhs.e3,
-                e234: self.e23 * rhs.e4 + self.e34 * rhs.e2 - self.e24 * rhs.e3,
+                e123: (self.e12 * rhs.e3 + self.e23 * rhs.e1) - self.e13 * rhs.e2,
+                e124: (self.e12 * rhs.e4 + self.e24 * rhs.e1) - self.e14 * rhs.e2,
+                e134: (self.e13 * rhs.e4 + self.e34 * rhs.e1) - self.e14 * rhs.e3,
+                e234: (self.e23 * rhs.e4 + self.e34 * rhs.e2) - self.e24 * rhs.e3,
             }
         }
     }
@@ -4162,8 +4303,8 @@ pub mod g4 {
         #[inline]
         fn bitxor(self, rhs: Bivector) -> Quadvector {
             Quadvector {
-                e1234: self.e12 * rhs.e34 + self.e14 * rhs.e23 + self.e23 * rhs.e14
-                    + self.e34 * rhs.e12 - self.e13 * rhs.e24 - self.e24 * rhs.e13,
+                e1234: ((self.e12 * rhs.e34 + self.e14 * rhs.e23) + self.e23 * rhs.e14)
+                    + ((self.e34 * rhs.e12 - self.e13 * rhs.e24) - self.e24 * rhs.e13),
             }
         }
     }
@@ -4195,8 +4336,8 @@ pub mod g4 {
                 e23: self.e23 * rhs.s,
                 e24: self.e24 * rhs.s,
                 e34: self.e34 * rhs.s,
-                e1234: self.e12 * rhs.e34 + self.e14 * rhs.e23 + self.e23 * rhs.e14
-                    + self.e34 * rhs.e12 - self.e13 * rhs.e24 - self.e24 * rhs.e13,
+                e1234: ((self.e12 * rhs.e34 + self.e14 * rhs.e23) + self.e23 * rhs.e14)
+                    + ((self.e34 * rhs.e12 - self.e13 * rhs.e24) - self.e24 * rhs.e13),
             }
         }
     }
@@ -4205,10 +4346,10 @@ pub mod g4 {
         #[inline]
         fn bitxor(self, rhs: Odd) -> Trivector {
             Trivector {
-                e123: self.e12 * rhs.e3 + self.e23 * rhs.e1 - self.e13 * rhs.e2,
-                e124: self.e12 * rhs.e4 + self.e24 * rhs.e1 - self.e14 * rhs.e2,
-                e134: self.e13 * rhs.e4 + self.e34 * rhs.e1 - self.e14 * rhs.e3,
-                e234: self.e23 * rhs.e4 + self.e34 * rhs.e2 - self.e24 * rhs.e3,
+                e123: (self.e12 * rhs.e3 + self.e23 * rhs.e1) - self.e13 * rhs.e2,
+                e124: (self.e12 * rhs.e4 + self.e24 * rhs.e1) - self.e14 * rhs.e2,
+                e134: (self.e13 * rhs.e4 + self.e34 * rhs.e1) - self.e14 * rhs.e3,
+                e234: (self.e23 * rhs.e4 + self.e34 * rhs.e2) - self.e24 * rhs.e3,
             }
         }
     }
@@ -4228,12 +4369,12 @@ pub mod g4 {
                 e23: self.e23 * rhs.s,
                 e24: self.e24 * rhs.s,
                 e34: self.e34 * rhs.s,
-                e123: self.e12 * rhs.e3 + self.e23 * rhs.e1 - self.e13 * rhs.e2,
-                e124: self.e12 * rhs.e4 + self.e24 * rhs.e1 - self.e14 * rhs.e2,
-                e134: self.e13 * rhs.e4 + self.e34 * rhs.e1 - self.e14 * rhs.e3,
-                e234: self.e23 * rhs.e4 + self.e34 * rhs.e2 - self.e24 * rhs.e3,
-                e1234: self.e12 * rhs.e34 + self.e14 * rhs.e23 + self.e23 * rhs.e14
-                    + self.e34 * rhs.e12 - self.e13 * rhs.e24 - self.e24 * rhs.e13,
+                e123: (self.e12 * rhs.e3 + self.e23 * rhs.e1) - self.e13 * rhs.e2,
+                e124: (self.e12 * rhs.e4 + self.e24 * rhs.e1) - self.e14 * rhs.e2,
+                e134: (self.e13 * rhs.e4 + self.e34 * rhs.e1) - self.e14 * rhs.e3,
+                e234: (self.e23 * rhs.e4 + self.e34 * rhs.e2) - self.e24 * rhs.e3,
+                e1234: ((self.e12 * rhs.e34 + self.e14 * rhs.e23) + self.e23 * rhs.e14)
+                    + ((self.e34 * rhs.e12 - self.e13 * rhs.e24) - self.e24 * rhs.e13),
             }
         }
     }
@@ -4254,8 +4395,8 @@ pub mod g4 {
         #[inline]
         fn bitxor(self, rhs: Vector) -> Quadvector {
             Quadvector {
-                e1234: self.e123 * rhs.e4 + self.e134 * rhs.e2 - self.e124 * rhs.e3
-                    - self.e234 * rhs.e1,
+                e1234: (self.e123 * rhs.e4 + self.e134 * rhs.e2)
+                    - (self.e124 * rhs.e3 + self.e234 * rhs.e1),
             }
         }
     }
@@ -4300,8 +4441,8 @@ pub mod g4 {
         #[inline]
         fn bitxor(self, rhs: Odd) -> Quadvector {
             Quadvector {
-                e1234: self.e123 * rhs.e4 + self.e134 * rhs.e2 - self.e124 * rhs.e3
-                    - self.e234 * rhs.e1,
+                e1234: (self.e123 * rhs.e4 + self.e134 * rhs.e2)
+                    - (self.e124 * rhs.e3 + self.e234 * rhs.e1),
             }
         }
     }
@@ -4325,8 +4466,8 @@ pub mod g4 {
                 e124: self.e124 * rhs.s,
                 e134: self.e134 * rhs.s,
                 e234: self.e234 * rhs.s,
-                e1234: self.e123 * rhs.e4 + self.e134 * rhs.e2 - self.e124 * rhs.e3
-                    - self.e234 * rhs.e1,
+                e1234: (self.e123 * rhs.e4 + self.e134 * rhs.e2)
+                    - (self.e124 * rhs.e3 + self.e234 * rhs.e1),
             }
         }
     }
@@ -4422,10 +4563,10 @@ pub mod g4 {
                 e2: self.s * rhs.e2,
                 e3: self.s * rhs.e3,
                 e4: self.s * rhs.e4,
-                e123: self.e12 * rhs.e3 + self.e23 * rhs.e1 - self.e13 * rhs.e2,
-                e124: self.e12 * rhs.e4 + self.e24 * rhs.e1 - self.e14 * rhs.e2,
-                e134: self.e13 * rhs.e4 + self.e34 * rhs.e1 - self.e14 * rhs.e3,
-                e234: self.e23 * rhs.e4 + self.e34 * rhs.e2 - self.e24 * rhs.e3,
+                e123: (self.e12 * rhs.e3 + self.e23 * rhs.e1) - self.e13 * rhs.e2,
+                e124: (self.e12 * rhs.e4 + self.e24 * rhs.e1) - self.e14 * rhs.e2,
+                e134: (self.e13 * rhs.e4 + self.e34 * rhs.e1) - self.e14 * rhs.e3,
+                e234: (self.e23 * rhs.e4 + self.e34 * rhs.e2) - self.e24 * rhs.e3,
             }
         }
     }
@@ -4441,8 +4582,8 @@ pub mod g4 {
                 e23: self.s * rhs.e23,
                 e24: self.s * rhs.e24,
                 e34: self.s * rhs.e34,
-                e1234: self.e12 * rhs.e34 + self.e14 * rhs.e23 + self.e23 * rhs.e14
-                    + self.e34 * rhs.e12 - self.e13 * rhs.e24 - self.e24 * rhs.e13,
+                e1234: ((self.e12 * rhs.e34 + self.e14 * rhs.e23) + self.e23 * rhs.e14)
+                    + ((self.e34 * rhs.e12 - self.e13 * rhs.e24) - self.e24 * rhs.e13),
             }
         }
     }
@@ -4479,9 +4620,10 @@ pub mod g4 {
                 e23: self.s * rhs.e23 + self.e23 * rhs.s,
                 e24: self.s * rhs.e24 + self.e24 * rhs.s,
                 e34: self.s * rhs.e34 + self.e34 * rhs.s,
-                e1234: self.s * rhs.e1234 + self.e12 * rhs.e34 + self.e14 * rhs.e23
-                    + self.e23 * rhs.e14 + self.e34 * rhs.e12 + self.e1234 * rhs.s
-                    - self.e13 * rhs.e24 - self.e24 * rhs.e13,
+                e1234: ((self.s * rhs.e1234 + self.e12 * rhs.e34)
+                    + (self.e14 * rhs.e23 + self.e23 * rhs.e14))
+                    + ((self.e34 * rhs.e12 + self.e1234 * rhs.s)
+                        - (self.e13 * rhs.e24 + self.e24 * rhs.e13)),
             }
         }
     }
@@ -4494,14 +4636,14 @@ pub mod g4 {
                 e2: self.s * rhs.e2,
                 e3: self.s * rhs.e3,
                 e4: self.s * rhs.e4,
-                e123: self.s * rhs.e123 + self.e12 * rhs.e3 + self.e23 * rhs.e1
-                    - self.e13 * rhs.e2,
-                e124: self.s * rhs.e124 + self.e12 * rhs.e4 + self.e24 * rhs.e1
-                    - self.e14 * rhs.e2,
-                e134: self.s * rhs.e134 + self.e13 * rhs.e4 + self.e34 * rhs.e1
-                    - self.e14 * rhs.e3,
-                e234: self.s * rhs.e234 + self.e23 * rhs.e4 + self.e34 * rhs.e2
-                    - self.e24 * rhs.e3,
+                e123: (self.s * rhs.e123 + self.e12 * rhs.e3)
+                    + (self.e23 * rhs.e1 - self.e13 * rhs.e2),
+                e124: (self.s * rhs.e124 + self.e12 * rhs.e4)
+                    + (self.e24 * rhs.e1 - self.e14 * rhs.e2),
+                e134: (self.s * rhs.e134 + self.e13 * rhs.e4)
+                    + (self.e34 * rhs.e1 - self.e14 * rhs.e3),
+                e234: (self.s * rhs.e234 + self.e23 * rhs.e4)
+                    + (self.e34 * rhs.e2 - self.e24 * rhs.e3),
             }
         }
     }
@@ -4521,17 +4663,18 @@ pub mod g4 {
                 e23: self.s * rhs.e23 + self.e23 * rhs.s,
                 e24: self.s * rhs.e24 + self.e24 * rhs.s,
                 e34: self.s * rhs.e34 + self.e34 * rhs.s,
-                e123: self.s * rhs.e123 + self.e12 * rhs.e3 + self.e23 * rhs.e1
-                    - self.e13 * rhs.e2,
-                e124: self.s * rhs.e124 + self.e12 * rhs.e4 + self.e24 * rhs.e1
-                    - self.e14 * rhs.e2,
-                e134: self.s * rhs.e134 + self.e13 * rhs.e4 + self.e34 * rhs.e1
-                    - self.e14 * rhs.e3,
-                e234: self.s * rhs.e234 + self.e23 * rhs.e4 + self.e34 * rhs.e2
-                    - self.e24 * rhs.e3,
-                e1234: self.s * rhs.e1234 + self.e12 * rhs.e34 + self.e14 * rhs.e23
-                    + self.e23 * rhs.e14 + self.e34 * rhs.e12 + self.e1234 * rhs.s
-                    - self.e13 * rhs.e24 - self.e24 * rhs.e13,
+                e123: (self.s * rhs.e123 + self.e12 * rhs.e3)
+                    + (self.e23 * rhs.e1 - self.e13 * rhs.e2),
+                e124: (self.s * rhs.e124 + self.e12 * rhs.e4)
+                    + (self.e24 * rhs.e1 - self.e14 * rhs.e2),
+                e134: (self.s * rhs.e134 + self.e13 * rhs.e4)
+                    + (self.e34 * rhs.e1 - self.e14 * rhs.e3),
+                e234: (self.s * rhs.e234 + self.e23 * rhs.e4)
+                    + (self.e34 * rhs.e2 - self.e24 * rhs.e3),
+                e1234: ((self.s * rhs.e1234 + self.e12 * rhs.e34)
+                    + (self.e14 * rhs.e23 + self.e23 * rhs.e14))
+                    + ((self.e34 * rhs.e12 + self.e1234 * rhs.s)
+                        - (self.e13 * rhs.e24 + self.e24 * rhs.e13)),
             }
         }
     }
@@ -4563,8 +4706,8 @@ pub mod g4 {
                 e23: self.e2 * rhs.e3 - self.e3 * rhs.e2,
                 e24: self.e2 * rhs.e4 - self.e4 * rhs.e2,
                 e34: self.e3 * rhs.e4 - self.e4 * rhs.e3,
-                e1234: self.e123 * rhs.e4 + self.e134 * rhs.e2 - self.e124 * rhs.e3
-                    - self.e234 * rhs.e1,
+                e1234: (self.e123 * rhs.e4 + self.e134 * rhs.e2)
+                    - (self.e124 * rhs.e3 + self.e234 * rhs.e1),
             }
         }
     }
@@ -4573,10 +4716,10 @@ pub mod g4 {
         #[inline]
         fn bitxor(self, rhs: Bivector) -> Trivector {
             Trivector {
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 - self.e2 * rhs.e13,
-                e124: self.e1 * rhs.e24 + self.e4 * rhs.e12 - self.e2 * rhs.e14,
-                e134: self.e1 * rhs.e34 + self.e4 * rhs.e13 - self.e3 * rhs.e14,
-                e234: self.e2 * rhs.e34 + self.e4 * rhs.e23 - self.e3 * rhs.e24,
+                e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12) - self.e2 * rhs.e13,
+                e124: (self.e1 * rhs.e24 + self.e4 * rhs.e12) - self.e2 * rhs.e14,
+                e134: (self.e1 * rhs.e34 + self.e4 * rhs.e13) - self.e3 * rhs.e14,
+                e234: (self.e2 * rhs.e34 + self.e4 * rhs.e23) - self.e3 * rhs.e24,
             }
         }
     }
@@ -4585,8 +4728,8 @@ pub mod g4 {
         #[inline]
         fn bitxor(self, rhs: Trivector) -> Quadvector {
             Quadvector {
-                e1234: self.e1 * rhs.e234 + self.e3 * rhs.e124 - self.e2 * rhs.e134
-                    - self.e4 * rhs.e123,
+                e1234: (self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    - (self.e2 * rhs.e134 + self.e4 * rhs.e123),
             }
         }
     }
@@ -4607,14 +4750,14 @@ pub mod g4 {
                 e2: self.e2 * rhs.s,
                 e3: self.e3 * rhs.s,
                 e4: self.e4 * rhs.s,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 + self.e123 * rhs.s
-                    - self.e2 * rhs.e13,
-                e124: self.e1 * rhs.e24 + self.e4 * rhs.e12 + self.e124 * rhs.s
-                    - self.e2 * rhs.e14,
-                e134: self.e1 * rhs.e34 + self.e4 * rhs.e13 + self.e134 * rhs.s
-                    - self.e3 * rhs.e14,
-                e234: self.e2 * rhs.e34 + self.e4 * rhs.e23 + self.e234 * rhs.s
-                    - self.e3 * rhs.e24,
+                e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12)
+                    + (self.e123 * rhs.s - self.e2 * rhs.e13),
+                e124: (self.e1 * rhs.e24 + self.e4 * rhs.e12)
+                    + (self.e124 * rhs.s - self.e2 * rhs.e14),
+                e134: (self.e1 * rhs.e34 + self.e4 * rhs.e13)
+                    + (self.e134 * rhs.s - self.e3 * rhs.e14),
+                e234: (self.e2 * rhs.e34 + self.e4 * rhs.e23)
+                    + (self.e234 * rhs.s - self.e3 * rhs.e24),
             }
         }
     }
@@ -4630,9 +4773,10 @@ pub mod g4 {
                 e23: self.e2 * rhs.e3 - self.e3 * rhs.e2,
                 e24: self.e2 * rhs.e4 - self.e4 * rhs.e2,
                 e34: self.e3 * rhs.e4 - self.e4 * rhs.e3,
-                e1234: self.e1 * rhs.e234 + self.e3 * rhs.e124 + self.e123 * rhs.e4
-                    + self.e134 * rhs.e2 - self.e2 * rhs.e134 - self.e4 * rhs.e123
-                    - self.e124 * rhs.e3 - self.e234 * rhs.e1,
+                e1234: ((self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    + (self.e123 * rhs.e4 + self.e134 * rhs.e2))
+                    - ((self.e2 * rhs.e134 + self.e4 * rhs.e123)
+                        + (self.e124 * rhs.e3 + self.e234 * rhs.e1)),
             }
         }
     }
@@ -4652,17 +4796,18 @@ pub mod g4 {
                 e23: self.e2 * rhs.e3 - self.e3 * rhs.e2,
                 e24: self.e2 * rhs.e4 - self.e4 * rhs.e2,
                 e34: self.e3 * rhs.e4 - self.e4 * rhs.e3,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 + self.e123 * rhs.s
-                    - self.e2 * rhs.e13,
-                e124: self.e1 * rhs.e24 + self.e4 * rhs.e12 + self.e124 * rhs.s
-                    - self.e2 * rhs.e14,
-                e134: self.e1 * rhs.e34 + self.e4 * rhs.e13 + self.e134 * rhs.s
-                    - self.e3 * rhs.e14,
-                e234: self.e2 * rhs.e34 + self.e4 * rhs.e23 + self.e234 * rhs.s
-                    - self.e3 * rhs.e24,
-                e1234: self.e1 * rhs.e234 + self.e3 * rhs.e124 + self.e123 * rhs.e4
-                    + self.e134 * rhs.e2 - self.e2 * rhs.e134 - self.e4 * rhs.e123
-                    - self.e124 * rhs.e3 - self.e234 * rhs.e1,
+                e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12)
+                    + (self.e123 * rhs.s - self.e2 * rhs.e13),
+                e124: (self.e1 * rhs.e24 + self.e4 * rhs.e12)
+                    + (self.e124 * rhs.s - self.e2 * rhs.e14),
+                e134: (self.e1 * rhs.e34 + self.e4 * rhs.e13)
+                    + (self.e134 * rhs.s - self.e3 * rhs.e14),
+                e234: (self.e2 * rhs.e34 + self.e4 * rhs.e23)
+                    + (self.e234 * rhs.s - self.e3 * rhs.e24),
+                e1234: ((self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    + (self.e123 * rhs.e4 + self.e134 * rhs.e2))
+                    - ((self.e2 * rhs.e134 + self.e4 * rhs.e123)
+                        + (self.e124 * rhs.e3 + self.e234 * rhs.e1)),
             }
         }
     }
@@ -4706,12 +4851,12 @@ pub mod g4 {
                 e23: self.e2 * rhs.e3 - self.e3 * rhs.e2,
                 e24: self.e2 * rhs.e4 - self.e4 * rhs.e2,
                 e34: self.e3 * rhs.e4 - self.e4 * rhs.e3,
-                e123: self.e12 * rhs.e3 + self.e23 * rhs.e1 - self.e13 * rhs.e2,
-                e124: self.e12 * rhs.e4 + self.e24 * rhs.e1 - self.e14 * rhs.e2,
-                e134: self.e13 * rhs.e4 + self.e34 * rhs.e1 - self.e14 * rhs.e3,
-                e234: self.e23 * rhs.e4 + self.e34 * rhs.e2 - self.e24 * rhs.e3,
-                e1234: self.e123 * rhs.e4 + self.e134 * rhs.e2 - self.e124 * rhs.e3
-                    - self.e234 * rhs.e1,
+                e123: (self.e12 * rhs.e3 + self.e23 * rhs.e1) - self.e13 * rhs.e2,
+                e124: (self.e12 * rhs.e4 + self.e24 * rhs.e1) - self.e14 * rhs.e2,
+                e134: (self.e13 * rhs.e4 + self.e34 * rhs.e1) - self.e14 * rhs.e3,
+                e234: (self.e23 * rhs.e4 + self.e34 * rhs.e2) - self.e24 * rhs.e3,
+                e1234: (self.e123 * rhs.e4 + self.e134 * rhs.e2)
+                    - (self.e124 * rhs.e3 + self.e234 * rhs.e1),
             }
         }
     }
@@ -4731,12 +4876,12 @@ pub mod g4 {
                 e23: self.s * rhs.e23,
                 e24: self.s * rhs.e24,
                 e34: self.s * rhs.e34,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 - self.e2 * rhs.e13,
-                e124: self.e1 * rhs.e24 + self.e4 * rhs.e12 - self.e2 * rhs.e14,
-                e134: self.e1 * rhs.e34 + self.e4 * rhs.e13 - self.e3 * rhs.e14,
-                e234: self.e2 * rhs.e34 + self.e4 * rhs.e23 - self.e3 * rhs.e24,
-                e1234: self.e12 * rhs.e34 + self.e14 * rhs.e23 + self.e23 * rhs.e14
-                    + self.e34 * rhs.e12 - self.e13 * rhs.e24 - self.e24 * rhs.e13,
+                e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12) - self.e2 * rhs.e13,
+                e124: (self.e1 * rhs.e24 + self.e4 * rhs.e12) - self.e2 * rhs.e14,
+                e134: (self.e1 * rhs.e34 + self.e4 * rhs.e13) - self.e3 * rhs.e14,
+                e234: (self.e2 * rhs.e34 + self.e4 * rhs.e23) - self.e3 * rhs.e24,
+                e1234: ((self.e12 * rhs.e34 + self.e14 * rhs.e23) + self.e23 * rhs.e14)
+                    + ((self.e34 * rhs.e12 - self.e13 * rhs.e24) - self.e24 * rhs.e13),
             }
         }
     }
@@ -4760,8 +4905,8 @@ pub mod g4 {
                 e124: self.s * rhs.e124,
                 e134: self.s * rhs.e134,
                 e234: self.s * rhs.e234,
-                e1234: self.e1 * rhs.e234 + self.e3 * rhs.e124 - self.e2 * rhs.e134
-                    - self.e4 * rhs.e123,
+                e1234: (self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    - (self.e2 * rhs.e134 + self.e4 * rhs.e123),
             }
         }
     }
@@ -4790,17 +4935,18 @@ pub mod g4 {
                 e23: self.s * rhs.e23 + self.e23 * rhs.s,
                 e24: self.s * rhs.e24 + self.e24 * rhs.s,
                 e34: self.s * rhs.e34 + self.e34 * rhs.s,
-                e123: self.e1 * rhs.e23 + self.e3 * rhs.e12 + self.e123 * rhs.s
-                    - self.e2 * rhs.e13,
-                e124: self.e1 * rhs.e24 + self.e4 * rhs.e12 + self.e124 * rhs.s
-                    - self.e2 * rhs.e14,
-                e134: self.e1 * rhs.e34 + self.e4 * rhs.e13 + self.e134 * rhs.s
-                    - self.e3 * rhs.e14,
-                e234: self.e2 * rhs.e34 + self.e4 * rhs.e23 + self.e234 * rhs.s
-                    - self.e3 * rhs.e24,
-                e1234: self.s * rhs.e1234 + self.e12 * rhs.e34 + self.e14 * rhs.e23
-                    + self.e23 * rhs.e14 + self.e34 * rhs.e12 + self.e1234 * rhs.s
-                    - self.e13 * rhs.e24 - self.e24 * rhs.e13,
+                e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12)
+                    + (self.e123 * rhs.s - self.e2 * rhs.e13),
+                e124: (self.e1 * rhs.e24 + self.e4 * rhs.e12)
+                    + (self.e124 * rhs.s - self.e2 * rhs.e14),
+                e134: (self.e1 * rhs.e34 + self.e4 * rhs.e13)
+                    + (self.e134 * rhs.s - self.e3 * rhs.e14),
+                e234: (self.e2 * rhs.e34 + self.e4 * rhs.e23)
+                    + (self.e234 * rhs.s - self.e3 * rhs.e24),
+                e1234: ((self.s * rhs.e1234 + self.e12 * rhs.e34)
+                    + (self.e14 * rhs.e23 + self.e23 * rhs.e14))
+                    + ((self.e34 * rhs.e12 + self.e1234 * rhs.s)
+                        - (self.e13 * rhs.e24 + self.e24 * rhs.e13)),
             }
         }
     }
@@ -4820,17 +4966,18 @@ pub mod g4 {
                 e23: self.e2 * rhs.e3 - self.e3 * rhs.e2,
                 e24: self.e2 * rhs.e4 - self.e4 * rhs.e2,
                 e34: self.e3 * rhs.e4 - self.e4 * rhs.e3,
-                e123: self.s * rhs.e123 + self.e12 * rhs.e3 + self.e23 * rhs.e1
-                    - self.e13 * rhs.e2,
-                e124: self.s * rhs.e124 + self.e12 * rhs.e4 + self.e24 * rhs.e1
-                    - self.e14 * rhs.e2,
-                e134: self.s * rhs.e134 + self.e13 * rhs.e4 + self.e34 * rhs.e1
-                    - self.e14 * rhs.e3,
-                e234: self.s * rhs.e234 + self.e23 * rhs.e4 + self.e34 * rhs.e2
-                    - self.e24 * rhs.e3,
-                e1234: self.e1 * rhs.e234 + self.e3 * rhs.e124 + self.e123 * rhs.e4
-                    + self.e134 * rhs.e2 - self.e2 * rhs.e134 - self.e4 * rhs.e123
-                    - self.e124 * rhs.e3 - self.e234 * rhs.e1,
+                e123: (self.s * rhs.e123 + self.e12 * rhs.e3)
+                    + (self.e23 * rhs.e1 - self.e13 * rhs.e2),
+                e124: (self.s * rhs.e124 + self.e12 * rhs.e4)
+                    + (self.e24 * rhs.e1 - self.e14 * rhs.e2),
+                e134: (self.s * rhs.e134 + self.e13 * rhs.e4)
+                    + (self.e34 * rhs.e1 - self.e14 * rhs.e3),
+                e234: (self.s * rhs.e234 + self.e23 * rhs.e4)
+                    + (self.e34 * rhs.e2 - self.e24 * rhs.e3),
+                e1234: ((self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    + (self.e123 * rhs.e4 + self.e134 * rhs.e2))
+                    - ((self.e2 * rhs.e134 + self.e4 * rhs.e123)
+                        + (self.e124 * rhs.e3 + self.e234 * rhs.e1)),
             }
         }
     }
@@ -4844,36 +4991,42 @@ pub mod g4 {
                 e2: self.s * rhs.e2 + self.e2 * rhs.s,
                 e3: self.s * rhs.e3 + self.e3 * rhs.s,
                 e4: self.s * rhs.e4 + self.e4 * rhs.s,
-                e12: self.s * rhs.e12 + self.e1 * rhs.e2 + self.e12 * rhs.s
-                    - self.e2 * rhs.e1,
-                e13: self.s * rhs.e13 + self.e1 * rhs.e3 + self.e13 * rhs.s
-                    - self.e3 * rhs.e1,
-                e14: self.s * rhs.e14 + self.e1 * rhs.e4 + self.e14 * rhs.s
-                    - self.e4 * rhs.e1,
-                e23: self.s * rhs.e23 + self.e2 * rhs.e3 + self.e23 * rhs.s
-                    - self.e3 * rhs.e2,
-                e24: self.s * rhs.e24 + self.e2 * rhs.e4 + self.e24 * rhs.s
-                    - self.e4 * rhs.e2,
-                e34: self.s * rhs.e34 + self.e3 * rhs.e4 + self.e34 * rhs.s
-                    - self.e4 * rhs.e3,
-                e123: self.s * rhs.e123 + self.e1 * rhs.e23 + self.e3 * rhs.e12
-                    + self.e12 * rhs.e3 + self.e23 * rhs.e1 + self.e123 * rhs.s
-                    - self.e2 * rhs.e13 - self.e13 * rhs.e2,
-                e124: self.s * rhs.e124 + self.e1 * rhs.e24 + self.e4 * rhs.e12
-                    + self.e12 * rhs.e4 + self.e24 * rhs.e1 + self.e124 * rhs.s
-                    - self.e2 * rhs.e14 - self.e14 * rhs.e2,
-                e134: self.s * rhs.e134 + self.e1 * rhs.e34 + self.e4 * rhs.e13
-                    + self.e13 * rhs.e4 + self.e34 * rhs.e1 + self.e134 * rhs.s
-                    - self.e3 * rhs.e14 - self.e14 * rhs.e3,
-                e234: self.s * rhs.e234 + self.e2 * rhs.e34 + self.e4 * rhs.e23
-                    + self.e23 * rhs.e4 + self.e34 * rhs.e2 + self.e234 * rhs.s
-                    - self.e3 * rhs.e24 - self.e24 * rhs.e3,
-                e1234: self.s * rhs.e1234 + self.e1 * rhs.e234 + self.e3 * rhs.e124
-                    + self.e12 * rhs.e34 + self.e14 * rhs.e23 + self.e23 * rhs.e14
-                    + self.e34 * rhs.e12 + self.e123 * rhs.e4 + self.e134 * rhs.e2
-                    + self.e1234 * rhs.s - self.e2 * rhs.e134 - self.e4 * rhs.e123
-                    - self.e13 * rhs.e24 - self.e24 * rhs.e13 - self.e124 * rhs.e3
-                    - self.e234 * rhs.e1,
+                e12: (self.s * rhs.e12 + self.e1 * rhs.e2)
+                    + (self.e12 * rhs.s - self.e2 * rhs.e1),
+                e13: (self.s * rhs.e13 + self.e1 * rhs.e3)
+                    + (self.e13 * rhs.s - self.e3 * rhs.e1),
+                e14: (self.s * rhs.e14 + self.e1 * rhs.e4)
+                    + (self.e14 * rhs.s - self.e4 * rhs.e1),
+                e23: (self.s * rhs.e23 + self.e2 * rhs.e3)
+                    + (self.e23 * rhs.s - self.e3 * rhs.e2),
+                e24: (self.s * rhs.e24 + self.e2 * rhs.e4)
+                    + (self.e24 * rhs.s - self.e4 * rhs.e2),
+                e34: (self.s * rhs.e34 + self.e3 * rhs.e4)
+                    + (self.e34 * rhs.s - self.e4 * rhs.e3),
+                e123: ((self.s * rhs.e123 + self.e1 * rhs.e23)
+                    + (self.e3 * rhs.e12 + self.e12 * rhs.e3))
+                    + ((self.e23 * rhs.e1 + self.e123 * rhs.s)
+                        - (self.e2 * rhs.e13 + self.e13 * rhs.e2)),
+                e124: ((self.s * rhs.e124 + self.e1 * rhs.e24)
+                    + (self.e4 * rhs.e12 + self.e12 * rhs.e4))
+                    + ((self.e24 * rhs.e1 + self.e124 * rhs.s)
+                        - (self.e2 * rhs.e14 + self.e14 * rhs.e2)),
+                e134: ((self.s * rhs.e134 + self.e1 * rhs.e34)
+                    + (self.e4 * rhs.e13 + self.e13 * rhs.e4))
+                    + ((self.e34 * rhs.e1 + self.e134 * rhs.s)
+                        - (self.e3 * rhs.e14 + self.e14 * rhs.e3)),
+                e234: ((self.s * rhs.e234 + self.e2 * rhs.e34)
+                    + (self.e4 * rhs.e23 + self.e23 * rhs.e4))
+                    + ((self.e34 * rhs.e2 + self.e234 * rhs.s)
+                        - (self.e3 * rhs.e24 + self.e24 * rhs.e3)),
+                e1234: (((self.s * rhs.e1234 + self.e1 * rhs.e234)
+                    + (self.e3 * rhs.e124 + self.e12 * rhs.e34))
+                    + ((self.e14 * rhs.e23 + self.e23 * rhs.e14)
+                        + (self.e34 * rhs.e12 + self.e123 * rhs.e4)))
+                    + (((self.e134 * rhs.e2 + self.e1234 * rhs.s)
+                        - (self.e2 * rhs.e134 + self.e4 * rhs.e123))
+                        - ((self.e13 * rhs.e24 + self.e24 * rhs.e13)
+                            + (self.e124 * rhs.e3 + self.e234 * rhs.e1))),
             }
         }
     }
@@ -4996,7 +5149,7 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn bitor(self, rhs: Vector) -> f64 {
-            self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3 + self.e4 * rhs.e4
+            (self.e1 * rhs.e1 + self.e2 * rhs.e2) + (self.e3 * rhs.e3 + self.e4 * rhs.e4)
         }
     }
     impl ::core::ops::BitOr<Bivector> for Vector {
@@ -5004,10 +5157,10 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Bivector) -> Vector {
             Vector {
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13 - self.e4 * rhs.e14,
-                e2: self.e1 * rhs.e12 - self.e3 * rhs.e23 - self.e4 * rhs.e24,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 - self.e4 * rhs.e34,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34,
+                e1: -((self.e2 * rhs.e12 + self.e3 * rhs.e13) + self.e4 * rhs.e14),
+                e2: (self.e1 * rhs.e12 - self.e3 * rhs.e23) - self.e4 * rhs.e24,
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23) - self.e4 * rhs.e34,
+                e4: (self.e1 * rhs.e14 + self.e2 * rhs.e24) + self.e3 * rhs.e34,
             }
         }
     }
@@ -5018,7 +5171,7 @@ pub mod g4 {
             Bivector {
                 e12: self.e3 * rhs.e123 + self.e4 * rhs.e124,
                 e13: self.e4 * rhs.e134 - self.e2 * rhs.e123,
-                e14: -self.e2 * rhs.e124 - self.e3 * rhs.e134,
+                e14: -(self.e2 * rhs.e124 + self.e3 * rhs.e134),
                 e23: self.e1 * rhs.e123 + self.e4 * rhs.e234,
                 e24: self.e1 * rhs.e124 - self.e3 * rhs.e234,
                 e34: self.e1 * rhs.e134 + self.e2 * rhs.e234,
@@ -5042,14 +5195,14 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Even) -> Odd {
             Odd {
-                e1: self.e1 * rhs.s - self.e2 * rhs.e12 - self.e3 * rhs.e13
-                    - self.e4 * rhs.e14,
-                e2: self.e1 * rhs.e12 + self.e2 * rhs.s - self.e3 * rhs.e23
-                    - self.e4 * rhs.e24,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e3 * rhs.s
-                    - self.e4 * rhs.e34,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34
-                    + self.e4 * rhs.s,
+                e1: (self.e1 * rhs.s - self.e2 * rhs.e12)
+                    - (self.e3 * rhs.e13 + self.e4 * rhs.e14),
+                e2: (self.e1 * rhs.e12 + self.e2 * rhs.s)
+                    - (self.e3 * rhs.e23 + self.e4 * rhs.e24),
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23)
+                    + (self.e3 * rhs.s - self.e4 * rhs.e34),
+                e4: (self.e1 * rhs.e14 + self.e2 * rhs.e24)
+                    + (self.e3 * rhs.e34 + self.e4 * rhs.s),
                 e123: -self.e4 * rhs.e1234,
                 e124: self.e3 * rhs.e1234,
                 e134: -self.e2 * rhs.e1234,
@@ -5062,11 +5215,11 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Odd) -> Even {
             Even {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    + self.e4 * rhs.e4,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 + self.e4 * rhs.e4),
                 e12: self.e3 * rhs.e123 + self.e4 * rhs.e124,
                 e13: self.e4 * rhs.e134 - self.e2 * rhs.e123,
-                e14: -self.e2 * rhs.e124 - self.e3 * rhs.e134,
+                e14: -(self.e2 * rhs.e124 + self.e3 * rhs.e134),
                 e23: self.e1 * rhs.e123 + self.e4 * rhs.e234,
                 e24: self.e1 * rhs.e124 - self.e3 * rhs.e234,
                 e34: self.e1 * rhs.e134 + self.e2 * rhs.e234,
@@ -5079,19 +5232,19 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    + self.e4 * rhs.e4,
-                e1: self.e1 * rhs.s - self.e2 * rhs.e12 - self.e3 * rhs.e13
-                    - self.e4 * rhs.e14,
-                e2: self.e1 * rhs.e12 + self.e2 * rhs.s - self.e3 * rhs.e23
-                    - self.e4 * rhs.e24,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e3 * rhs.s
-                    - self.e4 * rhs.e34,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34
-                    + self.e4 * rhs.s,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 + self.e4 * rhs.e4),
+                e1: (self.e1 * rhs.s - self.e2 * rhs.e12)
+                    - (self.e3 * rhs.e13 + self.e4 * rhs.e14),
+                e2: (self.e1 * rhs.e12 + self.e2 * rhs.s)
+                    - (self.e3 * rhs.e23 + self.e4 * rhs.e24),
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23)
+                    + (self.e3 * rhs.s - self.e4 * rhs.e34),
+                e4: (self.e1 * rhs.e14 + self.e2 * rhs.e24)
+                    + (self.e3 * rhs.e34 + self.e4 * rhs.s),
                 e12: self.e3 * rhs.e123 + self.e4 * rhs.e124,
                 e13: self.e4 * rhs.e134 - self.e2 * rhs.e123,
-                e14: -self.e2 * rhs.e124 - self.e3 * rhs.e134,
+                e14: -(self.e2 * rhs.e124 + self.e3 * rhs.e134),
                 e23: self.e1 * rhs.e123 + self.e4 * rhs.e234,
                 e24: self.e1 * rhs.e124 - self.e3 * rhs.e234,
                 e34: self.e1 * rhs.e134 + self.e2 * rhs.e234,
@@ -5122,10 +5275,10 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Vector) -> Vector {
             Vector {
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 + self.e14 * rhs.e4,
-                e2: self.e23 * rhs.e3 + self.e24 * rhs.e4 - self.e12 * rhs.e1,
-                e3: self.e34 * rhs.e4 - self.e13 * rhs.e1 - self.e23 * rhs.e2,
-                e4: -self.e14 * rhs.e1 - self.e24 * rhs.e2 - self.e34 * rhs.e3,
+                e1: (self.e12 * rhs.e2 + self.e13 * rhs.e3) + self.e14 * rhs.e4,
+                e2: (self.e23 * rhs.e3 + self.e24 * rhs.e4) - self.e12 * rhs.e1,
+                e3: (self.e34 * rhs.e4 - self.e13 * rhs.e1) - self.e23 * rhs.e2,
+                e4: -((self.e14 * rhs.e1 + self.e24 * rhs.e2) + self.e34 * rhs.e3),
             }
         }
     }
@@ -5133,8 +5286,8 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn bitor(self, rhs: Bivector) -> f64 {
-            -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34
+            -(((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e14 * rhs.e14)
+                + ((self.e23 * rhs.e23 + self.e24 * rhs.e24) + self.e34 * rhs.e34))
         }
     }
     impl ::core::ops::BitOr<Trivector> for Bivector {
@@ -5142,10 +5295,10 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Trivector) -> Vector {
             Vector {
-                e1: -self.e23 * rhs.e123 - self.e24 * rhs.e124 - self.e34 * rhs.e134,
-                e2: self.e13 * rhs.e123 + self.e14 * rhs.e124 - self.e34 * rhs.e234,
-                e3: self.e14 * rhs.e134 + self.e24 * rhs.e234 - self.e12 * rhs.e123,
-                e4: -self.e12 * rhs.e124 - self.e13 * rhs.e134 - self.e23 * rhs.e234,
+                e1: -((self.e23 * rhs.e123 + self.e24 * rhs.e124) + self.e34 * rhs.e134),
+                e2: (self.e13 * rhs.e123 + self.e14 * rhs.e124) - self.e34 * rhs.e234,
+                e3: (self.e14 * rhs.e134 + self.e24 * rhs.e234) - self.e12 * rhs.e123,
+                e4: -((self.e12 * rhs.e124 + self.e13 * rhs.e134) + self.e23 * rhs.e234),
             }
         }
     }
@@ -5168,8 +5321,8 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Even) -> Even {
             Even {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                    - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34,
+                s: -(((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e14 * rhs.e14)
+                    + ((self.e23 * rhs.e23 + self.e24 * rhs.e24) + self.e34 * rhs.e34)),
                 e12: self.e12 * rhs.s - self.e34 * rhs.e1234,
                 e13: self.e13 * rhs.s + self.e24 * rhs.e1234,
                 e14: self.e14 * rhs.s - self.e23 * rhs.e1234,
@@ -5185,14 +5338,15 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Odd) -> Vector {
             Vector {
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 + self.e14 * rhs.e4
-                    - self.e23 * rhs.e123 - self.e24 * rhs.e124 - self.e34 * rhs.e134,
-                e2: self.e13 * rhs.e123 + self.e14 * rhs.e124 + self.e23 * rhs.e3
-                    + self.e24 * rhs.e4 - self.e12 * rhs.e1 - self.e34 * rhs.e234,
-                e3: self.e14 * rhs.e134 + self.e24 * rhs.e234 + self.e34 * rhs.e4
-                    - self.e12 * rhs.e123 - self.e13 * rhs.e1 - self.e23 * rhs.e2,
-                e4: -self.e12 * rhs.e124 - self.e13 * rhs.e134 - self.e14 * rhs.e1
-                    - self.e23 * rhs.e234 - self.e24 * rhs.e2 - self.e34 * rhs.e3,
+                e1: ((self.e12 * rhs.e2 + self.e13 * rhs.e3) + self.e14 * rhs.e4)
+                    - ((self.e23 * rhs.e123 + self.e24 * rhs.e124)
+                        + self.e34 * rhs.e134),
+                e2: ((self.e13 * rhs.e123 + self.e14 * rhs.e124) + self.e23 * rhs.e3)
+                    + ((self.e24 * rhs.e4 - self.e12 * rhs.e1) - self.e34 * rhs.e234),
+                e3: ((self.e14 * rhs.e134 + self.e24 * rhs.e234) + self.e34 * rhs.e4)
+                    - ((self.e12 * rhs.e123 + self.e13 * rhs.e1) + self.e23 * rhs.e2),
+                e4: -(((self.e12 * rhs.e124 + self.e13 * rhs.e134) + self.e14 * rhs.e1)
+                    + ((self.e23 * rhs.e234 + self.e24 * rhs.e2) + self.e34 * rhs.e3)),
             }
         }
     }
@@ -5201,16 +5355,17 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                    - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34,
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 + self.e14 * rhs.e4
-                    - self.e23 * rhs.e123 - self.e24 * rhs.e124 - self.e34 * rhs.e134,
-                e2: self.e13 * rhs.e123 + self.e14 * rhs.e124 + self.e23 * rhs.e3
-                    + self.e24 * rhs.e4 - self.e12 * rhs.e1 - self.e34 * rhs.e234,
-                e3: self.e14 * rhs.e134 + self.e24 * rhs.e234 + self.e34 * rhs.e4
-                    - self.e12 * rhs.e123 - self.e13 * rhs.e1 - self.e23 * rhs.e2,
-                e4: -self.e12 * rhs.e124 - self.e13 * rhs.e134 - self.e14 * rhs.e1
-                    - self.e23 * rhs.e234 - self.e24 * rhs.e2 - self.e34 * rhs.e3,
+                s: -(((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e14 * rhs.e14)
+                    + ((self.e23 * rhs.e23 + self.e24 * rhs.e24) + self.e34 * rhs.e34)),
+                e1: ((self.e12 * rhs.e2 + self.e13 * rhs.e3) + self.e14 * rhs.e4)
+                    - ((self.e23 * rhs.e123 + self.e24 * rhs.e124)
+                        + self.e34 * rhs.e134),
+                e2: ((self.e13 * rhs.e123 + self.e14 * rhs.e124) + self.e23 * rhs.e3)
+                    + ((self.e24 * rhs.e4 - self.e12 * rhs.e1) - self.e34 * rhs.e234),
+                e3: ((self.e14 * rhs.e134 + self.e24 * rhs.e234) + self.e34 * rhs.e4)
+                    - ((self.e12 * rhs.e123 + self.e13 * rhs.e1) + self.e23 * rhs.e2),
+                e4: -(((self.e12 * rhs.e124 + self.e13 * rhs.e134) + self.e14 * rhs.e1)
+                    + ((self.e23 * rhs.e234 + self.e24 * rhs.e2) + self.e34 * rhs.e3)),
                 e12: self.e12 * rhs.s - self.e34 * rhs.e1234,
                 e13: self.e13 * rhs.s + self.e24 * rhs.e1234,
                 e14: self.e14 * rhs.s - self.e23 * rhs.e1234,
@@ -5244,7 +5399,7 @@ pub mod g4 {
             Bivector {
                 e12: self.e123 * rhs.e3 + self.e124 * rhs.e4,
                 e13: self.e134 * rhs.e4 - self.e123 * rhs.e2,
-                e14: -self.e124 * rhs.e2 - self.e134 * rhs.e3,
+                e14: -(self.e124 * rhs.e2 + self.e134 * rhs.e3),
                 e23: self.e123 * rhs.e1 + self.e234 * rhs.e4,
                 e24: self.e124 * rhs.e1 - self.e234 * rhs.e3,
                 e34: self.e134 * rhs.e1 + self.e234 * rhs.e2,
@@ -5256,10 +5411,10 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Bivector) -> Vector {
             Vector {
-                e1: -self.e123 * rhs.e23 - self.e124 * rhs.e24 - self.e134 * rhs.e34,
-                e2: self.e123 * rhs.e13 + self.e124 * rhs.e14 - self.e234 * rhs.e34,
-                e3: self.e134 * rhs.e14 + self.e234 * rhs.e24 - self.e123 * rhs.e12,
-                e4: -self.e124 * rhs.e12 - self.e134 * rhs.e13 - self.e234 * rhs.e23,
+                e1: -((self.e123 * rhs.e23 + self.e124 * rhs.e24) + self.e134 * rhs.e34),
+                e2: (self.e123 * rhs.e13 + self.e124 * rhs.e14) - self.e234 * rhs.e34,
+                e3: (self.e134 * rhs.e14 + self.e234 * rhs.e24) - self.e123 * rhs.e12,
+                e4: -((self.e124 * rhs.e12 + self.e134 * rhs.e13) + self.e234 * rhs.e23),
             }
         }
     }
@@ -5267,8 +5422,8 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn bitor(self, rhs: Trivector) -> f64 {
-            -self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                - self.e234 * rhs.e234
+            -((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                + (self.e134 * rhs.e134 + self.e234 * rhs.e234))
         }
     }
     impl ::core::ops::BitOr<Quadvector> for Trivector {
@@ -5288,14 +5443,14 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Even) -> Odd {
             Odd {
-                e1: self.e234 * rhs.e1234 - self.e123 * rhs.e23 - self.e124 * rhs.e24
-                    - self.e134 * rhs.e34,
-                e2: self.e123 * rhs.e13 + self.e124 * rhs.e14 - self.e134 * rhs.e1234
-                    - self.e234 * rhs.e34,
-                e3: self.e124 * rhs.e1234 + self.e134 * rhs.e14 + self.e234 * rhs.e24
-                    - self.e123 * rhs.e12,
-                e4: -self.e123 * rhs.e1234 - self.e124 * rhs.e12 - self.e134 * rhs.e13
-                    - self.e234 * rhs.e23,
+                e1: (self.e234 * rhs.e1234 - self.e123 * rhs.e23)
+                    - (self.e124 * rhs.e24 + self.e134 * rhs.e34),
+                e2: (self.e123 * rhs.e13 + self.e124 * rhs.e14)
+                    - (self.e134 * rhs.e1234 + self.e234 * rhs.e34),
+                e3: (self.e124 * rhs.e1234 + self.e134 * rhs.e14)
+                    + (self.e234 * rhs.e24 - self.e123 * rhs.e12),
+                e4: -((self.e123 * rhs.e1234 + self.e124 * rhs.e12)
+                    + (self.e134 * rhs.e13 + self.e234 * rhs.e23)),
                 e123: self.e123 * rhs.s,
                 e124: self.e124 * rhs.s,
                 e134: self.e134 * rhs.s,
@@ -5308,11 +5463,11 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Odd) -> Even {
             Even {
-                s: -self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                    - self.e234 * rhs.e234,
+                s: -((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                    + (self.e134 * rhs.e134 + self.e234 * rhs.e234)),
                 e12: self.e123 * rhs.e3 + self.e124 * rhs.e4,
                 e13: self.e134 * rhs.e4 - self.e123 * rhs.e2,
-                e14: -self.e124 * rhs.e2 - self.e134 * rhs.e3,
+                e14: -(self.e124 * rhs.e2 + self.e134 * rhs.e3),
                 e23: self.e123 * rhs.e1 + self.e234 * rhs.e4,
                 e24: self.e124 * rhs.e1 - self.e234 * rhs.e3,
                 e34: self.e134 * rhs.e1 + self.e234 * rhs.e2,
@@ -5325,19 +5480,19 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: -self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                    - self.e234 * rhs.e234,
-                e1: self.e234 * rhs.e1234 - self.e123 * rhs.e23 - self.e124 * rhs.e24
-                    - self.e134 * rhs.e34,
-                e2: self.e123 * rhs.e13 + self.e124 * rhs.e14 - self.e134 * rhs.e1234
-                    - self.e234 * rhs.e34,
-                e3: self.e124 * rhs.e1234 + self.e134 * rhs.e14 + self.e234 * rhs.e24
-                    - self.e123 * rhs.e12,
-                e4: -self.e123 * rhs.e1234 - self.e124 * rhs.e12 - self.e134 * rhs.e13
-                    - self.e234 * rhs.e23,
+                s: -((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                    + (self.e134 * rhs.e134 + self.e234 * rhs.e234)),
+                e1: (self.e234 * rhs.e1234 - self.e123 * rhs.e23)
+                    - (self.e124 * rhs.e24 + self.e134 * rhs.e34),
+                e2: (self.e123 * rhs.e13 + self.e124 * rhs.e14)
+                    - (self.e134 * rhs.e1234 + self.e234 * rhs.e34),
+                e3: (self.e124 * rhs.e1234 + self.e134 * rhs.e14)
+                    + (self.e234 * rhs.e24 - self.e123 * rhs.e12),
+                e4: -((self.e123 * rhs.e1234 + self.e124 * rhs.e12)
+                    + (self.e134 * rhs.e13 + self.e234 * rhs.e23)),
                 e12: self.e123 * rhs.e3 + self.e124 * rhs.e4,
                 e13: self.e134 * rhs.e4 - self.e123 * rhs.e2,
-                e14: -self.e124 * rhs.e2 - self.e134 * rhs.e3,
+                e14: -(self.e124 * rhs.e2 + self.e134 * rhs.e3),
                 e23: self.e123 * rhs.e1 + self.e234 * rhs.e4,
                 e24: self.e124 * rhs.e1 - self.e234 * rhs.e3,
                 e34: self.e134 * rhs.e1 + self.e234 * rhs.e2,
@@ -5480,14 +5635,14 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Vector) -> Odd {
             Odd {
-                e1: self.s * rhs.e1 + self.e12 * rhs.e2 + self.e13 * rhs.e3
-                    + self.e14 * rhs.e4,
-                e2: self.s * rhs.e2 + self.e23 * rhs.e3 + self.e24 * rhs.e4
-                    - self.e12 * rhs.e1,
-                e3: self.s * rhs.e3 + self.e34 * rhs.e4 - self.e13 * rhs.e1
-                    - self.e23 * rhs.e2,
-                e4: self.s * rhs.e4 - self.e14 * rhs.e1 - self.e24 * rhs.e2
-                    - self.e34 * rhs.e3,
+                e1: (self.s * rhs.e1 + self.e12 * rhs.e2)
+                    + (self.e13 * rhs.e3 + self.e14 * rhs.e4),
+                e2: (self.s * rhs.e2 + self.e23 * rhs.e3)
+                    + (self.e24 * rhs.e4 - self.e12 * rhs.e1),
+                e3: (self.s * rhs.e3 + self.e34 * rhs.e4)
+                    - (self.e13 * rhs.e1 + self.e23 * rhs.e2),
+                e4: (self.s * rhs.e4 - self.e14 * rhs.e1)
+                    - (self.e24 * rhs.e2 + self.e34 * rhs.e3),
                 e123: self.e1234 * rhs.e4,
                 e124: -self.e1234 * rhs.e3,
                 e134: self.e1234 * rhs.e2,
@@ -5500,8 +5655,8 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Bivector) -> Even {
             Even {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                    - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34,
+                s: -(((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e14 * rhs.e14)
+                    + ((self.e23 * rhs.e23 + self.e24 * rhs.e24) + self.e34 * rhs.e34)),
                 e12: self.s * rhs.e12 - self.e1234 * rhs.e34,
                 e13: self.s * rhs.e13 + self.e1234 * rhs.e24,
                 e14: self.s * rhs.e14 - self.e1234 * rhs.e23,
@@ -5517,14 +5672,14 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Trivector) -> Odd {
             Odd {
-                e1: -self.e23 * rhs.e123 - self.e24 * rhs.e124 - self.e34 * rhs.e134
-                    - self.e1234 * rhs.e234,
-                e2: self.e13 * rhs.e123 + self.e14 * rhs.e124 + self.e1234 * rhs.e134
-                    - self.e34 * rhs.e234,
-                e3: self.e14 * rhs.e134 + self.e24 * rhs.e234 - self.e12 * rhs.e123
-                    - self.e1234 * rhs.e124,
-                e4: self.e1234 * rhs.e123 - self.e12 * rhs.e124 - self.e13 * rhs.e134
-                    - self.e23 * rhs.e234,
+                e1: -((self.e23 * rhs.e123 + self.e24 * rhs.e124)
+                    + (self.e34 * rhs.e134 + self.e1234 * rhs.e234)),
+                e2: (self.e13 * rhs.e123 + self.e14 * rhs.e124)
+                    + (self.e1234 * rhs.e134 - self.e34 * rhs.e234),
+                e3: (self.e14 * rhs.e134 + self.e24 * rhs.e234)
+                    - (self.e12 * rhs.e123 + self.e1234 * rhs.e124),
+                e4: (self.e1234 * rhs.e123 - self.e12 * rhs.e124)
+                    - (self.e13 * rhs.e134 + self.e23 * rhs.e234),
                 e123: self.s * rhs.e123,
                 e124: self.s * rhs.e124,
                 e134: self.s * rhs.e134,
@@ -5553,21 +5708,22 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Even) -> Even {
             Even {
-                s: self.s * rhs.s + self.e1234 * rhs.e1234 - self.e12 * rhs.e12
-                    - self.e13 * rhs.e13 - self.e14 * rhs.e14 - self.e23 * rhs.e23
-                    - self.e24 * rhs.e24 - self.e34 * rhs.e34,
-                e12: self.s * rhs.e12 + self.e12 * rhs.s - self.e34 * rhs.e1234
-                    - self.e1234 * rhs.e34,
-                e13: self.s * rhs.e13 + self.e13 * rhs.s + self.e24 * rhs.e1234
-                    + self.e1234 * rhs.e24,
-                e14: self.s * rhs.e14 + self.e14 * rhs.s - self.e23 * rhs.e1234
-                    - self.e1234 * rhs.e23,
-                e23: self.s * rhs.e23 + self.e23 * rhs.s - self.e14 * rhs.e1234
-                    - self.e1234 * rhs.e14,
-                e24: self.s * rhs.e24 + self.e13 * rhs.e1234 + self.e24 * rhs.s
-                    + self.e1234 * rhs.e13,
-                e34: self.s * rhs.e34 + self.e34 * rhs.s - self.e12 * rhs.e1234
-                    - self.e1234 * rhs.e12,
+                s: ((self.s * rhs.s + self.e1234 * rhs.e1234)
+                    - (self.e12 * rhs.e12 + self.e13 * rhs.e13))
+                    - ((self.e14 * rhs.e14 + self.e23 * rhs.e23)
+                        + (self.e24 * rhs.e24 + self.e34 * rhs.e34)),
+                e12: (self.s * rhs.e12 + self.e12 * rhs.s)
+                    - (self.e34 * rhs.e1234 + self.e1234 * rhs.e34),
+                e13: (self.s * rhs.e13 + self.e13 * rhs.s)
+                    + (self.e24 * rhs.e1234 + self.e1234 * rhs.e24),
+                e14: (self.s * rhs.e14 + self.e14 * rhs.s)
+                    - (self.e23 * rhs.e1234 + self.e1234 * rhs.e23),
+                e23: (self.s * rhs.e23 + self.e23 * rhs.s)
+                    - (self.e14 * rhs.e1234 + self.e1234 * rhs.e14),
+                e24: (self.s * rhs.e24 + self.e13 * rhs.e1234)
+                    + (self.e24 * rhs.s + self.e1234 * rhs.e13),
+                e34: (self.s * rhs.e34 + self.e34 * rhs.s)
+                    - (self.e12 * rhs.e1234 + self.e1234 * rhs.e12),
                 e1234: self.s * rhs.e1234 + self.e1234 * rhs.s,
             }
         }
@@ -5577,18 +5733,22 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Odd) -> Odd {
             Odd {
-                e1: self.s * rhs.e1 + self.e12 * rhs.e2 + self.e13 * rhs.e3
-                    + self.e14 * rhs.e4 - self.e23 * rhs.e123 - self.e24 * rhs.e124
-                    - self.e34 * rhs.e134 - self.e1234 * rhs.e234,
-                e2: self.s * rhs.e2 + self.e13 * rhs.e123 + self.e14 * rhs.e124
-                    + self.e23 * rhs.e3 + self.e24 * rhs.e4 + self.e1234 * rhs.e134
-                    - self.e12 * rhs.e1 - self.e34 * rhs.e234,
-                e3: self.s * rhs.e3 + self.e14 * rhs.e134 + self.e24 * rhs.e234
-                    + self.e34 * rhs.e4 - self.e12 * rhs.e123 - self.e13 * rhs.e1
-                    - self.e23 * rhs.e2 - self.e1234 * rhs.e124,
-                e4: self.s * rhs.e4 + self.e1234 * rhs.e123 - self.e12 * rhs.e124
-                    - self.e13 * rhs.e134 - self.e14 * rhs.e1 - self.e23 * rhs.e234
-                    - self.e24 * rhs.e2 - self.e34 * rhs.e3,
+                e1: ((self.s * rhs.e1 + self.e12 * rhs.e2)
+                    + (self.e13 * rhs.e3 + self.e14 * rhs.e4))
+                    - ((self.e23 * rhs.e123 + self.e24 * rhs.e124)
+                        + (self.e34 * rhs.e134 + self.e1234 * rhs.e234)),
+                e2: ((self.s * rhs.e2 + self.e13 * rhs.e123)
+                    + (self.e14 * rhs.e124 + self.e23 * rhs.e3))
+                    + ((self.e24 * rhs.e4 + self.e1234 * rhs.e134)
+                        - (self.e12 * rhs.e1 + self.e34 * rhs.e234)),
+                e3: ((self.s * rhs.e3 + self.e14 * rhs.e134)
+                    + (self.e24 * rhs.e234 + self.e34 * rhs.e4))
+                    - ((self.e12 * rhs.e123 + self.e13 * rhs.e1)
+                        + (self.e23 * rhs.e2 + self.e1234 * rhs.e124)),
+                e4: ((self.s * rhs.e4 + self.e1234 * rhs.e123)
+                    - (self.e12 * rhs.e124 + self.e13 * rhs.e134))
+                    - ((self.e14 * rhs.e1 + self.e23 * rhs.e234)
+                        + (self.e24 * rhs.e2 + self.e34 * rhs.e3)),
                 e123: self.s * rhs.e123 + self.e1234 * rhs.e4,
                 e124: self.s * rhs.e124 - self.e1234 * rhs.e3,
                 e134: self.s * rhs.e134 + self.e1234 * rhs.e2,
@@ -5601,33 +5761,38 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.s * rhs.s + self.e1234 * rhs.e1234 - self.e12 * rhs.e12
-                    - self.e13 * rhs.e13 - self.e14 * rhs.e14 - self.e23 * rhs.e23
-                    - self.e24 * rhs.e24 - self.e34 * rhs.e34,
-                e1: self.s * rhs.e1 + self.e12 * rhs.e2 + self.e13 * rhs.e3
-                    + self.e14 * rhs.e4 - self.e23 * rhs.e123 - self.e24 * rhs.e124
-                    - self.e34 * rhs.e134 - self.e1234 * rhs.e234,
-                e2: self.s * rhs.e2 + self.e13 * rhs.e123 + self.e14 * rhs.e124
-                    + self.e23 * rhs.e3 + self.e24 * rhs.e4 + self.e1234 * rhs.e134
-                    - self.e12 * rhs.e1 - self.e34 * rhs.e234,
-                e3: self.s * rhs.e3 + self.e14 * rhs.e134 + self.e24 * rhs.e234
-                    + self.e34 * rhs.e4 - self.e12 * rhs.e123 - self.e13 * rhs.e1
-                    - self.e23 * rhs.e2 - self.e1234 * rhs.e124,
-                e4: self.s * rhs.e4 + self.e1234 * rhs.e123 - self.e12 * rhs.e124
-                    - self.e13 * rhs.e134 - self.e14 * rhs.e1 - self.e23 * rhs.e234
-                    - self.e24 * rhs.e2 - self.e34 * rhs.e3,
-                e12: self.s * rhs.e12 + self.e12 * rhs.s - self.e34 * rhs.e1234
-                    - self.e1234 * rhs.e34,
-                e13: self.s * rhs.e13 + self.e13 * rhs.s + self.e24 * rhs.e1234
-                    + self.e1234 * rhs.e24,
-                e14: self.s * rhs.e14 + self.e14 * rhs.s - self.e23 * rhs.e1234
-                    - self.e1234 * rhs.e23,
-                e23: self.s * rhs.e23 + self.e23 * rhs.s - self.e14 * rhs.e1234
-                    - self.e1234 * rhs.e14,
-                e24: self.s * rhs.e24 + self.e13 * rhs.e1234 + self.e24 * rhs.s
-                    + self.e1234 * rhs.e13,
-                e34: self.s * rhs.e34 + self.e34 * rhs.s - self.e12 * rhs.e1234
-                    - self.e1234 * rhs.e12,
+                s: ((self.s * rhs.s + self.e1234 * rhs.e1234)
+                    - (self.e12 * rhs.e12 + self.e13 * rhs.e13))
+                    - ((self.e14 * rhs.e14 + self.e23 * rhs.e23)
+                        + (self.e24 * rhs.e24 + self.e34 * rhs.e34)),
+                e1: ((self.s * rhs.e1 + self.e12 * rhs.e2)
+                    + (self.e13 * rhs.e3 + self.e14 * rhs.e4))
+                    - ((self.e23 * rhs.e123 + self.e24 * rhs.e124)
+                        + (self.e34 * rhs.e134 + self.e1234 * rhs.e234)),
+                e2: ((self.s * rhs.e2 + self.e13 * rhs.e123)
+                    + (self.e14 * rhs.e124 + self.e23 * rhs.e3))
+                    + ((self.e24 * rhs.e4 + self.e1234 * rhs.e134)
+                        - (self.e12 * rhs.e1 + self.e34 * rhs.e234)),
+                e3: ((self.s * rhs.e3 + self.e14 * rhs.e134)
+                    + (self.e24 * rhs.e234 + self.e34 * rhs.e4))
+                    - ((self.e12 * rhs.e123 + self.e13 * rhs.e1)
+                        + (self.e23 * rhs.e2 + self.e1234 * rhs.e124)),
+                e4: ((self.s * rhs.e4 + self.e1234 * rhs.e123)
+                    - (self.e12 * rhs.e124 + self.e13 * rhs.e134))
+                    - ((self.e14 * rhs.e1 + self.e23 * rhs.e234)
+                        + (self.e24 * rhs.e2 + self.e34 * rhs.e3)),
+                e12: (self.s * rhs.e12 + self.e12 * rhs.s)
+                    - (self.e34 * rhs.e1234 + self.e1234 * rhs.e34),
+                e13: (self.s * rhs.e13 + self.e13 * rhs.s)
+                    + (self.e24 * rhs.e1234 + self.e1234 * rhs.e24),
+                e14: (self.s * rhs.e14 + self.e14 * rhs.s)
+                    - (self.e23 * rhs.e1234 + self.e1234 * rhs.e23),
+                e23: (self.s * rhs.e23 + self.e23 * rhs.s)
+                    - (self.e14 * rhs.e1234 + self.e1234 * rhs.e14),
+                e24: (self.s * rhs.e24 + self.e13 * rhs.e1234)
+                    + (self.e24 * rhs.s + self.e1234 * rhs.e13),
+                e34: (self.s * rhs.e34 + self.e34 * rhs.s)
+                    - (self.e12 * rhs.e1234 + self.e1234 * rhs.e12),
                 e123: self.s * rhs.e123 + self.e1234 * rhs.e4,
                 e124: self.s * rhs.e124 - self.e1234 * rhs.e3,
                 e134: self.s * rhs.e134 + self.e1234 * rhs.e2,
@@ -5657,11 +5822,11 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Vector) -> Even {
             Even {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    + self.e4 * rhs.e4,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 + self.e4 * rhs.e4),
                 e12: self.e123 * rhs.e3 + self.e124 * rhs.e4,
                 e13: self.e134 * rhs.e4 - self.e123 * rhs.e2,
-                e14: -self.e124 * rhs.e2 - self.e134 * rhs.e3,
+                e14: -(self.e124 * rhs.e2 + self.e134 * rhs.e3),
                 e23: self.e123 * rhs.e1 + self.e234 * rhs.e4,
                 e24: self.e124 * rhs.e1 - self.e234 * rhs.e3,
                 e34: self.e134 * rhs.e1 + self.e234 * rhs.e2,
@@ -5674,14 +5839,15 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Bivector) -> Vector {
             Vector {
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13 - self.e4 * rhs.e14
-                    - self.e123 * rhs.e23 - self.e124 * rhs.e24 - self.e134 * rhs.e34,
-                e2: self.e1 * rhs.e12 + self.e123 * rhs.e13 + self.e124 * rhs.e14
-                    - self.e3 * rhs.e23 - self.e4 * rhs.e24 - self.e234 * rhs.e34,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e134 * rhs.e14
-                    + self.e234 * rhs.e24 - self.e4 * rhs.e34 - self.e123 * rhs.e12,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34
-                    - self.e124 * rhs.e12 - self.e134 * rhs.e13 - self.e234 * rhs.e23,
+                e1: -(((self.e2 * rhs.e12 + self.e3 * rhs.e13) + self.e4 * rhs.e14)
+                    + ((self.e123 * rhs.e23 + self.e124 * rhs.e24)
+                        + self.e134 * rhs.e34)),
+                e2: ((self.e1 * rhs.e12 + self.e123 * rhs.e13) + self.e124 * rhs.e14)
+                    - ((self.e3 * rhs.e23 + self.e4 * rhs.e24) + self.e234 * rhs.e34),
+                e3: ((self.e1 * rhs.e13 + self.e2 * rhs.e23) + self.e134 * rhs.e14)
+                    + ((self.e234 * rhs.e24 - self.e4 * rhs.e34) - self.e123 * rhs.e12),
+                e4: ((self.e1 * rhs.e14 + self.e2 * rhs.e24) + self.e3 * rhs.e34)
+                    - ((self.e124 * rhs.e12 + self.e134 * rhs.e13) + self.e234 * rhs.e23),
             }
         }
     }
@@ -5690,11 +5856,11 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Trivector) -> Even {
             Even {
-                s: -self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                    - self.e234 * rhs.e234,
+                s: -((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                    + (self.e134 * rhs.e134 + self.e234 * rhs.e234)),
                 e12: self.e3 * rhs.e123 + self.e4 * rhs.e124,
                 e13: self.e4 * rhs.e134 - self.e2 * rhs.e123,
-                e14: -self.e2 * rhs.e124 - self.e3 * rhs.e134,
+                e14: -(self.e2 * rhs.e124 + self.e3 * rhs.e134),
                 e23: self.e1 * rhs.e123 + self.e4 * rhs.e234,
                 e24: self.e1 * rhs.e124 - self.e3 * rhs.e234,
                 e34: self.e1 * rhs.e134 + self.e2 * rhs.e234,
@@ -5723,18 +5889,22 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Even) -> Odd {
             Odd {
-                e1: self.e1 * rhs.s + self.e234 * rhs.e1234 - self.e2 * rhs.e12
-                    - self.e3 * rhs.e13 - self.e4 * rhs.e14 - self.e123 * rhs.e23
-                    - self.e124 * rhs.e24 - self.e134 * rhs.e34,
-                e2: self.e1 * rhs.e12 + self.e2 * rhs.s + self.e123 * rhs.e13
-                    + self.e124 * rhs.e14 - self.e3 * rhs.e23 - self.e4 * rhs.e24
-                    - self.e134 * rhs.e1234 - self.e234 * rhs.e34,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e3 * rhs.s
-                    + self.e124 * rhs.e1234 + self.e134 * rhs.e14 + self.e234 * rhs.e24
-                    - self.e4 * rhs.e34 - self.e123 * rhs.e12,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34
-                    + self.e4 * rhs.s - self.e123 * rhs.e1234 - self.e124 * rhs.e12
-                    - self.e134 * rhs.e13 - self.e234 * rhs.e23,
+                e1: ((self.e1 * rhs.s + self.e234 * rhs.e1234)
+                    - (self.e2 * rhs.e12 + self.e3 * rhs.e13))
+                    - ((self.e4 * rhs.e14 + self.e123 * rhs.e23)
+                        + (self.e124 * rhs.e24 + self.e134 * rhs.e34)),
+                e2: ((self.e1 * rhs.e12 + self.e2 * rhs.s)
+                    + (self.e123 * rhs.e13 + self.e124 * rhs.e14))
+                    - ((self.e3 * rhs.e23 + self.e4 * rhs.e24)
+                        + (self.e134 * rhs.e1234 + self.e234 * rhs.e34)),
+                e3: ((self.e1 * rhs.e13 + self.e2 * rhs.e23)
+                    + (self.e3 * rhs.s + self.e124 * rhs.e1234))
+                    + ((self.e134 * rhs.e14 + self.e234 * rhs.e24)
+                        - (self.e4 * rhs.e34 + self.e123 * rhs.e12)),
+                e4: ((self.e1 * rhs.e14 + self.e2 * rhs.e24)
+                    + (self.e3 * rhs.e34 + self.e4 * rhs.s))
+                    - ((self.e123 * rhs.e1234 + self.e124 * rhs.e12)
+                        + (self.e134 * rhs.e13 + self.e234 * rhs.e23)),
                 e123: self.e123 * rhs.s - self.e4 * rhs.e1234,
                 e124: self.e3 * rhs.e1234 + self.e124 * rhs.s,
                 e134: self.e134 * rhs.s - self.e2 * rhs.e1234,
@@ -5747,21 +5917,22 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Odd) -> Even {
             Even {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    + self.e4 * rhs.e4 - self.e123 * rhs.e123 - self.e124 * rhs.e124
-                    - self.e134 * rhs.e134 - self.e234 * rhs.e234,
-                e12: self.e3 * rhs.e123 + self.e4 * rhs.e124 + self.e123 * rhs.e3
-                    + self.e124 * rhs.e4,
-                e13: self.e4 * rhs.e134 + self.e134 * rhs.e4 - self.e2 * rhs.e123
-                    - self.e123 * rhs.e2,
-                e14: -self.e2 * rhs.e124 - self.e3 * rhs.e134 - self.e124 * rhs.e2
-                    - self.e134 * rhs.e3,
-                e23: self.e1 * rhs.e123 + self.e4 * rhs.e234 + self.e123 * rhs.e1
-                    + self.e234 * rhs.e4,
-                e24: self.e1 * rhs.e124 + self.e124 * rhs.e1 - self.e3 * rhs.e234
-                    - self.e234 * rhs.e3,
-                e34: self.e1 * rhs.e134 + self.e2 * rhs.e234 + self.e134 * rhs.e1
-                    + self.e234 * rhs.e2,
+                s: ((self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 + self.e4 * rhs.e4))
+                    - ((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                        + (self.e134 * rhs.e134 + self.e234 * rhs.e234)),
+                e12: (self.e3 * rhs.e123 + self.e4 * rhs.e124)
+                    + (self.e123 * rhs.e3 + self.e124 * rhs.e4),
+                e13: (self.e4 * rhs.e134 + self.e134 * rhs.e4)
+                    - (self.e2 * rhs.e123 + self.e123 * rhs.e2),
+                e14: -((self.e2 * rhs.e124 + self.e3 * rhs.e134)
+                    + (self.e124 * rhs.e2 + self.e134 * rhs.e3)),
+                e23: (self.e1 * rhs.e123 + self.e4 * rhs.e234)
+                    + (self.e123 * rhs.e1 + self.e234 * rhs.e4),
+                e24: (self.e1 * rhs.e124 + self.e124 * rhs.e1)
+                    - (self.e3 * rhs.e234 + self.e234 * rhs.e3),
+                e34: (self.e1 * rhs.e134 + self.e2 * rhs.e234)
+                    + (self.e134 * rhs.e1 + self.e234 * rhs.e2),
                 e1234: 0.0,
             }
         }
@@ -5771,33 +5942,38 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    + self.e4 * rhs.e4 - self.e123 * rhs.e123 - self.e124 * rhs.e124
-                    - self.e134 * rhs.e134 - self.e234 * rhs.e234,
-                e1: self.e1 * rhs.s + self.e234 * rhs.e1234 - self.e2 * rhs.e12
-                    - self.e3 * rhs.e13 - self.e4 * rhs.e14 - self.e123 * rhs.e23
-                    - self.e124 * rhs.e24 - self.e134 * rhs.e34,
-                e2: self.e1 * rhs.e12 + self.e2 * rhs.s + self.e123 * rhs.e13
-                    + self.e124 * rhs.e14 - self.e3 * rhs.e23 - self.e4 * rhs.e24
-                    - self.e134 * rhs.e1234 - self.e234 * rhs.e34,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e3 * rhs.s
-                    + self.e124 * rhs.e1234 + self.e134 * rhs.e14 + self.e234 * rhs.e24
-                    - self.e4 * rhs.e34 - self.e123 * rhs.e12,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34
-                    + self.e4 * rhs.s - self.e123 * rhs.e1234 - self.e124 * rhs.e12
-                    - self.e134 * rhs.e13 - self.e234 * rhs.e23,
-                e12: self.e3 * rhs.e123 + self.e4 * rhs.e124 + self.e123 * rhs.e3
-                    + self.e124 * rhs.e4,
-                e13: self.e4 * rhs.e134 + self.e134 * rhs.e4 - self.e2 * rhs.e123
-                    - self.e123 * rhs.e2,
-                e14: -self.e2 * rhs.e124 - self.e3 * rhs.e134 - self.e124 * rhs.e2
-                    - self.e134 * rhs.e3,
-                e23: self.e1 * rhs.e123 + self.e4 * rhs.e234 + self.e123 * rhs.e1
-                    + self.e234 * rhs.e4,
-                e24: self.e1 * rhs.e124 + self.e124 * rhs.e1 - self.e3 * rhs.e234
-                    - self.e234 * rhs.e3,
-                e34: self.e1 * rhs.e134 + self.e2 * rhs.e234 + self.e134 * rhs.e1
-                    + self.e234 * rhs.e2,
+                s: ((self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 + self.e4 * rhs.e4))
+                    - ((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                        + (self.e134 * rhs.e134 + self.e234 * rhs.e234)),
+                e1: ((self.e1 * rhs.s + self.e234 * rhs.e1234)
+                    - (self.e2 * rhs.e12 + self.e3 * rhs.e13))
+                    - ((self.e4 * rhs.e14 + self.e123 * rhs.e23)
+                        + (self.e124 * rhs.e24 + self.e134 * rhs.e34)),
+                e2: ((self.e1 * rhs.e12 + self.e2 * rhs.s)
+                    + (self.e123 * rhs.e13 + self.e124 * rhs.e14))
+                    - ((self.e3 * rhs.e23 + self.e4 * rhs.e24)
+                        + (self.e134 * rhs.e1234 + self.e234 * rhs.e34)),
+                e3: ((self.e1 * rhs.e13 + self.e2 * rhs.e23)
+                    + (self.e3 * rhs.s + self.e124 * rhs.e1234))
+                    + ((self.e134 * rhs.e14 + self.e234 * rhs.e24)
+                        - (self.e4 * rhs.e34 + self.e123 * rhs.e12)),
+                e4: ((self.e1 * rhs.e14 + self.e2 * rhs.e24)
+                    + (self.e3 * rhs.e34 + self.e4 * rhs.s))
+                    - ((self.e123 * rhs.e1234 + self.e124 * rhs.e12)
+                        + (self.e134 * rhs.e13 + self.e234 * rhs.e23)),
+                e12: (self.e3 * rhs.e123 + self.e4 * rhs.e124)
+                    + (self.e123 * rhs.e3 + self.e124 * rhs.e4),
+                e13: (self.e4 * rhs.e134 + self.e134 * rhs.e4)
+                    - (self.e2 * rhs.e123 + self.e123 * rhs.e2),
+                e14: -((self.e2 * rhs.e124 + self.e3 * rhs.e134)
+                    + (self.e124 * rhs.e2 + self.e134 * rhs.e3)),
+                e23: (self.e1 * rhs.e123 + self.e4 * rhs.e234)
+                    + (self.e123 * rhs.e1 + self.e234 * rhs.e4),
+                e24: (self.e1 * rhs.e124 + self.e124 * rhs.e1)
+                    - (self.e3 * rhs.e234 + self.e234 * rhs.e3),
+                e34: (self.e1 * rhs.e134 + self.e2 * rhs.e234)
+                    + (self.e134 * rhs.e1 + self.e234 * rhs.e2),
                 e123: self.e123 * rhs.s - self.e4 * rhs.e1234,
                 e124: self.e3 * rhs.e1234 + self.e124 * rhs.s,
                 e134: self.e134 * rhs.s - self.e2 * rhs.e1234,
@@ -5835,19 +6011,19 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Vector) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    + self.e4 * rhs.e4,
-                e1: self.s * rhs.e1 + self.e12 * rhs.e2 + self.e13 * rhs.e3
-                    + self.e14 * rhs.e4,
-                e2: self.s * rhs.e2 + self.e23 * rhs.e3 + self.e24 * rhs.e4
-                    - self.e12 * rhs.e1,
-                e3: self.s * rhs.e3 + self.e34 * rhs.e4 - self.e13 * rhs.e1
-                    - self.e23 * rhs.e2,
-                e4: self.s * rhs.e4 - self.e14 * rhs.e1 - self.e24 * rhs.e2
-                    - self.e34 * rhs.e3,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 + self.e4 * rhs.e4),
+                e1: (self.s * rhs.e1 + self.e12 * rhs.e2)
+                    + (self.e13 * rhs.e3 + self.e14 * rhs.e4),
+                e2: (self.s * rhs.e2 + self.e23 * rhs.e3)
+                    + (self.e24 * rhs.e4 - self.e12 * rhs.e1),
+                e3: (self.s * rhs.e3 + self.e34 * rhs.e4)
+                    - (self.e13 * rhs.e1 + self.e23 * rhs.e2),
+                e4: (self.s * rhs.e4 - self.e14 * rhs.e1)
+                    - (self.e24 * rhs.e2 + self.e34 * rhs.e3),
                 e12: self.e123 * rhs.e3 + self.e124 * rhs.e4,
                 e13: self.e134 * rhs.e4 - self.e123 * rhs.e2,
-                e14: -self.e124 * rhs.e2 - self.e134 * rhs.e3,
+                e14: -(self.e124 * rhs.e2 + self.e134 * rhs.e3),
                 e23: self.e123 * rhs.e1 + self.e234 * rhs.e4,
                 e24: self.e124 * rhs.e1 - self.e234 * rhs.e3,
                 e34: self.e134 * rhs.e1 + self.e234 * rhs.e2,
@@ -5864,16 +6040,18 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Bivector) -> Multivector {
             Multivector {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                    - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34,
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13 - self.e4 * rhs.e14
-                    - self.e123 * rhs.e23 - self.e124 * rhs.e24 - self.e134 * rhs.e34,
-                e2: self.e1 * rhs.e12 + self.e123 * rhs.e13 + self.e124 * rhs.e14
-                    - self.e3 * rhs.e23 - self.e4 * rhs.e24 - self.e234 * rhs.e34,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e134 * rhs.e14
-                    + self.e234 * rhs.e24 - self.e4 * rhs.e34 - self.e123 * rhs.e12,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34
-                    - self.e124 * rhs.e12 - self.e134 * rhs.e13 - self.e234 * rhs.e23,
+                s: -(((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e14 * rhs.e14)
+                    + ((self.e23 * rhs.e23 + self.e24 * rhs.e24) + self.e34 * rhs.e34)),
+                e1: -(((self.e2 * rhs.e12 + self.e3 * rhs.e13) + self.e4 * rhs.e14)
+                    + ((self.e123 * rhs.e23 + self.e124 * rhs.e24)
+                        + self.e134 * rhs.e34)),
+                e2: ((self.e1 * rhs.e12 + self.e123 * rhs.e13) + self.e124 * rhs.e14)
+                    - ((self.e3 * rhs.e23 + self.e4 * rhs.e24) + self.e234 * rhs.e34),
+                e3: ((self.e1 * rhs.e13 + self.e2 * rhs.e23) + self.e134 * rhs.e14)
+                    + ((self.e234 * rhs.e24 - self.e4 * rhs.e34) - self.e123 * rhs.e12),
+                e4: ((self.e1 * rhs.e14 + self.e2 * rhs.e24) + self.e3 * rhs.e34)
+                    - ((self.e124 * rhs.e12 + self.e134 * rhs.e13)
+                        + self.e234 * rhs.e23),
                 e12: self.s * rhs.e12 - self.e1234 * rhs.e34,
                 e13: self.s * rhs.e13 + self.e1234 * rhs.e24,
                 e14: self.s * rhs.e14 - self.e1234 * rhs.e23,
@@ -5893,19 +6071,19 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Trivector) -> Multivector {
             Multivector {
-                s: -self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                    - self.e234 * rhs.e234,
-                e1: -self.e23 * rhs.e123 - self.e24 * rhs.e124 - self.e34 * rhs.e134
-                    - self.e1234 * rhs.e234,
-                e2: self.e13 * rhs.e123 + self.e14 * rhs.e124 + self.e1234 * rhs.e134
-                    - self.e34 * rhs.e234,
-                e3: self.e14 * rhs.e134 + self.e24 * rhs.e234 - self.e12 * rhs.e123
-                    - self.e1234 * rhs.e124,
-                e4: self.e1234 * rhs.e123 - self.e12 * rhs.e124 - self.e13 * rhs.e134
-                    - self.e23 * rhs.e234,
+                s: -((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                    + (self.e134 * rhs.e134 + self.e234 * rhs.e234)),
+                e1: -((self.e23 * rhs.e123 + self.e24 * rhs.e124)
+                    + (self.e34 * rhs.e134 + self.e1234 * rhs.e234)),
+                e2: (self.e13 * rhs.e123 + self.e14 * rhs.e124)
+                    + (self.e1234 * rhs.e134 - self.e34 * rhs.e234),
+                e3: (self.e14 * rhs.e134 + self.e24 * rhs.e234)
+                    - (self.e12 * rhs.e123 + self.e1234 * rhs.e124),
+                e4: (self.e1234 * rhs.e123 - self.e12 * rhs.e124)
+                    - (self.e13 * rhs.e134 + self.e23 * rhs.e234),
                 e12: self.e3 * rhs.e123 + self.e4 * rhs.e124,
                 e13: self.e4 * rhs.e134 - self.e2 * rhs.e123,
-                e14: -self.e2 * rhs.e124 - self.e3 * rhs.e134,
+                e14: -(self.e2 * rhs.e124 + self.e3 * rhs.e134),
                 e23: self.e1 * rhs.e123 + self.e4 * rhs.e234,
                 e24: self.e1 * rhs.e124 - self.e3 * rhs.e234,
                 e34: self.e1 * rhs.e134 + self.e2 * rhs.e234,
@@ -5946,33 +6124,38 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Even) -> Multivector {
             Multivector {
-                s: self.s * rhs.s + self.e1234 * rhs.e1234 - self.e12 * rhs.e12
-                    - self.e13 * rhs.e13 - self.e14 * rhs.e14 - self.e23 * rhs.e23
-                    - self.e24 * rhs.e24 - self.e34 * rhs.e34,
-                e1: self.e1 * rhs.s + self.e234 * rhs.e1234 - self.e2 * rhs.e12
-                    - self.e3 * rhs.e13 - self.e4 * rhs.e14 - self.e123 * rhs.e23
-                    - self.e124 * rhs.e24 - self.e134 * rhs.e34,
-                e2: self.e1 * rhs.e12 + self.e2 * rhs.s + self.e123 * rhs.e13
-                    + self.e124 * rhs.e14 - self.e3 * rhs.e23 - self.e4 * rhs.e24
-                    - self.e134 * rhs.e1234 - self.e234 * rhs.e34,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e3 * rhs.s
-                    + self.e124 * rhs.e1234 + self.e134 * rhs.e14 + self.e234 * rhs.e24
-                    - self.e4 * rhs.e34 - self.e123 * rhs.e12,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34
-                    + self.e4 * rhs.s - self.e123 * rhs.e1234 - self.e124 * rhs.e12
-                    - self.e134 * rhs.e13 - self.e234 * rhs.e23,
-                e12: self.s * rhs.e12 + self.e12 * rhs.s - self.e34 * rhs.e1234
-                    - self.e1234 * rhs.e34,
-                e13: self.s * rhs.e13 + self.e13 * rhs.s + self.e24 * rhs.e1234
-                    + self.e1234 * rhs.e24,
-                e14: self.s * rhs.e14 + self.e14 * rhs.s - self.e23 * rhs.e1234
-                    - self.e1234 * rhs.e23,
-                e23: self.s * rhs.e23 + self.e23 * rhs.s - self.e14 * rhs.e1234
-                    - self.e1234 * rhs.e14,
-                e24: self.s * rhs.e24 + self.e13 * rhs.e1234 + self.e24 * rhs.s
-                    + self.e1234 * rhs.e13,
-                e34: self.s * rhs.e34 + self.e34 * rhs.s - self.e12 * rhs.e1234
-                    - self.e1234 * rhs.e12,
+                s: ((self.s * rhs.s + self.e1234 * rhs.e1234)
+                    - (self.e12 * rhs.e12 + self.e13 * rhs.e13))
+                    - ((self.e14 * rhs.e14 + self.e23 * rhs.e23)
+                        + (self.e24 * rhs.e24 + self.e34 * rhs.e34)),
+                e1: ((self.e1 * rhs.s + self.e234 * rhs.e1234)
+                    - (self.e2 * rhs.e12 + self.e3 * rhs.e13))
+                    - ((self.e4 * rhs.e14 + self.e123 * rhs.e23)
+                        + (self.e124 * rhs.e24 + self.e134 * rhs.e34)),
+                e2: ((self.e1 * rhs.e12 + self.e2 * rhs.s)
+                    + (self.e123 * rhs.e13 + self.e124 * rhs.e14))
+                    - ((self.e3 * rhs.e23 + self.e4 * rhs.e24)
+                        + (self.e134 * rhs.e1234 + self.e234 * rhs.e34)),
+                e3: ((self.e1 * rhs.e13 + self.e2 * rhs.e23)
+                    + (self.e3 * rhs.s + self.e124 * rhs.e1234))
+                    + ((self.e134 * rhs.e14 + self.e234 * rhs.e24)
+                        - (self.e4 * rhs.e34 + self.e123 * rhs.e12)),
+                e4: ((self.e1 * rhs.e14 + self.e2 * rhs.e24)
+                    + (self.e3 * rhs.e34 + self.e4 * rhs.s))
+                    - ((self.e123 * rhs.e1234 + self.e124 * rhs.e12)
+                        + (self.e134 * rhs.e13 + self.e234 * rhs.e23)),
+                e12: (self.s * rhs.e12 + self.e12 * rhs.s)
+                    - (self.e34 * rhs.e1234 + self.e1234 * rhs.e34),
+                e13: (self.s * rhs.e13 + self.e13 * rhs.s)
+                    + (self.e24 * rhs.e1234 + self.e1234 * rhs.e24),
+                e14: (self.s * rhs.e14 + self.e14 * rhs.s)
+                    - (self.e23 * rhs.e1234 + self.e1234 * rhs.e23),
+                e23: (self.s * rhs.e23 + self.e23 * rhs.s)
+                    - (self.e14 * rhs.e1234 + self.e1234 * rhs.e14),
+                e24: (self.s * rhs.e24 + self.e13 * rhs.e1234)
+                    + (self.e24 * rhs.s + self.e1234 * rhs.e13),
+                e34: (self.s * rhs.e34 + self.e34 * rhs.s)
+                    - (self.e12 * rhs.e1234 + self.e1234 * rhs.e12),
                 e123: self.e123 * rhs.s - self.e4 * rhs.e1234,
                 e124: self.e3 * rhs.e1234 + self.e124 * rhs.s,
                 e134: self.e134 * rhs.s - self.e2 * rhs.e1234,
@@ -5986,33 +6169,38 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Odd) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    + self.e4 * rhs.e4 - self.e123 * rhs.e123 - self.e124 * rhs.e124
-                    - self.e134 * rhs.e134 - self.e234 * rhs.e234,
-                e1: self.s * rhs.e1 + self.e12 * rhs.e2 + self.e13 * rhs.e3
-                    + self.e14 * rhs.e4 - self.e23 * rhs.e123 - self.e24 * rhs.e124
-                    - self.e34 * rhs.e134 - self.e1234 * rhs.e234,
-                e2: self.s * rhs.e2 + self.e13 * rhs.e123 + self.e14 * rhs.e124
-                    + self.e23 * rhs.e3 + self.e24 * rhs.e4 + self.e1234 * rhs.e134
-                    - self.e12 * rhs.e1 - self.e34 * rhs.e234,
-                e3: self.s * rhs.e3 + self.e14 * rhs.e134 + self.e24 * rhs.e234
-                    + self.e34 * rhs.e4 - self.e12 * rhs.e123 - self.e13 * rhs.e1
-                    - self.e23 * rhs.e2 - self.e1234 * rhs.e124,
-                e4: self.s * rhs.e4 + self.e1234 * rhs.e123 - self.e12 * rhs.e124
-                    - self.e13 * rhs.e134 - self.e14 * rhs.e1 - self.e23 * rhs.e234
-                    - self.e24 * rhs.e2 - self.e34 * rhs.e3,
-                e12: self.e3 * rhs.e123 + self.e4 * rhs.e124 + self.e123 * rhs.e3
-                    + self.e124 * rhs.e4,
-                e13: self.e4 * rhs.e134 + self.e134 * rhs.e4 - self.e2 * rhs.e123
-                    - self.e123 * rhs.e2,
-                e14: -self.e2 * rhs.e124 - self.e3 * rhs.e134 - self.e124 * rhs.e2
-                    - self.e134 * rhs.e3,
-                e23: self.e1 * rhs.e123 + self.e4 * rhs.e234 + self.e123 * rhs.e1
-                    + self.e234 * rhs.e4,
-                e24: self.e1 * rhs.e124 + self.e124 * rhs.e1 - self.e3 * rhs.e234
-                    - self.e234 * rhs.e3,
-                e34: self.e1 * rhs.e134 + self.e2 * rhs.e234 + self.e134 * rhs.e1
-                    + self.e234 * rhs.e2,
+                s: ((self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 + self.e4 * rhs.e4))
+                    - ((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                        + (self.e134 * rhs.e134 + self.e234 * rhs.e234)),
+                e1: ((self.s * rhs.e1 + self.e12 * rhs.e2)
+                    + (self.e13 * rhs.e3 + self.e14 * rhs.e4))
+                    - ((self.e23 * rhs.e123 + self.e24 * rhs.e124)
+                        + (self.e34 * rhs.e134 + self.e1234 * rhs.e234)),
+                e2: ((self.s * rhs.e2 + self.e13 * rhs.e123)
+                    + (self.e14 * rhs.e124 + self.e23 * rhs.e3))
+                    + ((self.e24 * rhs.e4 + self.e1234 * rhs.e134)
+                        - (self.e12 * rhs.e1 + self.e34 * rhs.e234)),
+                e3: ((self.s * rhs.e3 + self.e14 * rhs.e134)
+                    + (self.e24 * rhs.e234 + self.e34 * rhs.e4))
+                    - ((self.e12 * rhs.e123 + self.e13 * rhs.e1)
+                        + (self.e23 * rhs.e2 + self.e1234 * rhs.e124)),
+                e4: ((self.s * rhs.e4 + self.e1234 * rhs.e123)
+                    - (self.e12 * rhs.e124 + self.e13 * rhs.e134))
+                    - ((self.e14 * rhs.e1 + self.e23 * rhs.e234)
+                        + (self.e24 * rhs.e2 + self.e34 * rhs.e3)),
+                e12: (self.e3 * rhs.e123 + self.e4 * rhs.e124)
+                    + (self.e123 * rhs.e3 + self.e124 * rhs.e4),
+                e13: (self.e4 * rhs.e134 + self.e134 * rhs.e4)
+                    - (self.e2 * rhs.e123 + self.e123 * rhs.e2),
+                e14: -((self.e2 * rhs.e124 + self.e3 * rhs.e134)
+                    + (self.e124 * rhs.e2 + self.e134 * rhs.e3)),
+                e23: (self.e1 * rhs.e123 + self.e4 * rhs.e234)
+                    + (self.e123 * rhs.e1 + self.e234 * rhs.e4),
+                e24: (self.e1 * rhs.e124 + self.e124 * rhs.e1)
+                    - (self.e3 * rhs.e234 + self.e234 * rhs.e3),
+                e34: (self.e1 * rhs.e134 + self.e2 * rhs.e234)
+                    + (self.e134 * rhs.e1 + self.e234 * rhs.e2),
                 e123: self.s * rhs.e123 + self.e1234 * rhs.e4,
                 e124: self.s * rhs.e124 - self.e1234 * rhs.e3,
                 e134: self.s * rhs.e134 + self.e1234 * rhs.e2,
@@ -6026,62 +6214,78 @@ pub mod g4 {
         #[inline]
         fn bitor(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.s * rhs.s + self.e1 * rhs.e1 + self.e2 * rhs.e2
-                    + self.e3 * rhs.e3 + self.e4 * rhs.e4 + self.e1234 * rhs.e1234
-                    - self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                    - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34
-                    - self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                    - self.e234 * rhs.e234,
-                e1: self.s * rhs.e1 + self.e1 * rhs.s + self.e12 * rhs.e2
-                    + self.e13 * rhs.e3 + self.e14 * rhs.e4 + self.e234 * rhs.e1234
-                    - self.e2 * rhs.e12 - self.e3 * rhs.e13 - self.e4 * rhs.e14
-                    - self.e23 * rhs.e123 - self.e24 * rhs.e124 - self.e34 * rhs.e134
-                    - self.e123 * rhs.e23 - self.e124 * rhs.e24 - self.e134 * rhs.e34
-                    - self.e1234 * rhs.e234,
-                e2: self.s * rhs.e2 + self.e1 * rhs.e12 + self.e2 * rhs.s
-                    + self.e13 * rhs.e123 + self.e14 * rhs.e124 + self.e23 * rhs.e3
-                    + self.e24 * rhs.e4 + self.e123 * rhs.e13 + self.e124 * rhs.e14
-                    + self.e1234 * rhs.e134 - self.e3 * rhs.e23 - self.e4 * rhs.e24
-                    - self.e12 * rhs.e1 - self.e34 * rhs.e234 - self.e134 * rhs.e1234
-                    - self.e234 * rhs.e34,
-                e3: self.s * rhs.e3 + self.e1 * rhs.e13 + self.e2 * rhs.e23
-                    + self.e3 * rhs.s + self.e14 * rhs.e134 + self.e24 * rhs.e234
-                    + self.e34 * rhs.e4 + self.e124 * rhs.e1234 + self.e134 * rhs.e14
-                    + self.e234 * rhs.e24 - self.e4 * rhs.e34 - self.e12 * rhs.e123
-                    - self.e13 * rhs.e1 - self.e23 * rhs.e2 - self.e123 * rhs.e12
-                    - self.e1234 * rhs.e124,
-                e4: self.s * rhs.e4 + self.e1 * rhs.e14 + self.e2 * rhs.e24
-                    + self.e3 * rhs.e34 + self.e4 * rhs.s + self.e1234 * rhs.e123
-                    - self.e12 * rhs.e124 - self.e13 * rhs.e134 - self.e14 * rhs.e1
-                    - self.e23 * rhs.e234 - self.e24 * rhs.e2 - self.e34 * rhs.e3
-                    - self.e123 * rhs.e1234 - self.e124 * rhs.e12 - self.e134 * rhs.e13
-                    - self.e234 * rhs.e23,
-                e12: self.s * rhs.e12 + self.e3 * rhs.e123 + self.e4 * rhs.e124
-                    + self.e12 * rhs.s + self.e123 * rhs.e3 + self.e124 * rhs.e4
-                    - self.e34 * rhs.e1234 - self.e1234 * rhs.e34,
-                e13: self.s * rhs.e13 + self.e4 * rhs.e134 + self.e13 * rhs.s
-                    + self.e24 * rhs.e1234 + self.e134 * rhs.e4 + self.e1234 * rhs.e24
-                    - self.e2 * rhs.e123 - self.e123 * rhs.e2,
-                e14: self.s * rhs.e14 + self.e14 * rhs.s - self.e2 * rhs.e124
-                    - self.e3 * rhs.e134 - self.e23 * rhs.e1234 - self.e124 * rhs.e2
-                    - self.e134 * rhs.e3 - self.e1234 * rhs.e23,
-                e23: self.s * rhs.e23 + self.e1 * rhs.e123 + self.e4 * rhs.e234
-                    + self.e23 * rhs.s + self.e123 * rhs.e1 + self.e234 * rhs.e4
-                    - self.e14 * rhs.e1234 - self.e1234 * rhs.e14,
-                e24: self.s * rhs.e24 + self.e1 * rhs.e124 + self.e13 * rhs.e1234
-                    + self.e24 * rhs.s + self.e124 * rhs.e1 + self.e1234 * rhs.e13
-                    - self.e3 * rhs.e234 - self.e234 * rhs.e3,
-                e34: self.s * rhs.e34 + self.e1 * rhs.e134 + self.e2 * rhs.e234
-                    + self.e34 * rhs.s + self.e134 * rhs.e1 + self.e234 * rhs.e2
-                    - self.e12 * rhs.e1234 - self.e1234 * rhs.e12,
-                e123: self.s * rhs.e123 + self.e123 * rhs.s + self.e1234 * rhs.e4
-                    - self.e4 * rhs.e1234,
-                e124: self.s * rhs.e124 + self.e3 * rhs.e1234 + self.e124 * rhs.s
-                    - self.e1234 * rhs.e3,
-                e134: self.s * rhs.e134 + self.e134 * rhs.s + self.e1234 * rhs.e2
-                    - self.e2 * rhs.e1234,
-                e234: self.s * rhs.e234 + self.e1 * rhs.e1234 + self.e234 * rhs.s
-                    - self.e1234 * rhs.e1,
+                s: (((self.s * rhs.s + self.e1 * rhs.e1)
+                    + (self.e2 * rhs.e2 + self.e3 * rhs.e3))
+                    + ((self.e4 * rhs.e4 + self.e1234 * rhs.e1234)
+                        - (self.e12 * rhs.e12 + self.e13 * rhs.e13)))
+                    - (((self.e14 * rhs.e14 + self.e23 * rhs.e23)
+                        + (self.e24 * rhs.e24 + self.e34 * rhs.e34))
+                        + ((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                            + (self.e134 * rhs.e134 + self.e234 * rhs.e234))),
+                e1: (((self.s * rhs.e1 + self.e1 * rhs.s)
+                    + (self.e12 * rhs.e2 + self.e13 * rhs.e3))
+                    + ((self.e14 * rhs.e4 + self.e234 * rhs.e1234)
+                        - (self.e2 * rhs.e12 + self.e3 * rhs.e13)))
+                    - (((self.e4 * rhs.e14 + self.e23 * rhs.e123)
+                        + (self.e24 * rhs.e124 + self.e34 * rhs.e134))
+                        + ((self.e123 * rhs.e23 + self.e124 * rhs.e24)
+                            + (self.e134 * rhs.e34 + self.e1234 * rhs.e234))),
+                e2: (((self.s * rhs.e2 + self.e1 * rhs.e12)
+                    + (self.e2 * rhs.s + self.e13 * rhs.e123))
+                    + ((self.e14 * rhs.e124 + self.e23 * rhs.e3)
+                        + (self.e24 * rhs.e4 + self.e123 * rhs.e13)))
+                    + (((self.e124 * rhs.e14 + self.e1234 * rhs.e134)
+                        - (self.e3 * rhs.e23 + self.e4 * rhs.e24))
+                        - ((self.e12 * rhs.e1 + self.e34 * rhs.e234)
+                            + (self.e134 * rhs.e1234 + self.e234 * rhs.e34))),
+                e3: (((self.s * rhs.e3 + self.e1 * rhs.e13)
+                    + (self.e2 * rhs.e23 + self.e3 * rhs.s))
+                    + ((self.e14 * rhs.e134 + self.e24 * rhs.e234)
+                        + (self.e34 * rhs.e4 + self.e124 * rhs.e1234)))
+                    + (((self.e134 * rhs.e14 + self.e234 * rhs.e24)
+                        - (self.e4 * rhs.e34 + self.e12 * rhs.e123))
+                        - ((self.e13 * rhs.e1 + self.e23 * rhs.e2)
+                            + (self.e123 * rhs.e12 + self.e1234 * rhs.e124))),
+                e4: (((self.s * rhs.e4 + self.e1 * rhs.e14)
+                    + (self.e2 * rhs.e24 + self.e3 * rhs.e34))
+                    + ((self.e4 * rhs.s + self.e1234 * rhs.e123)
+                        - (self.e12 * rhs.e124 + self.e13 * rhs.e134)))
+                    - (((self.e14 * rhs.e1 + self.e23 * rhs.e234)
+                        + (self.e24 * rhs.e2 + self.e34 * rhs.e3))
+                        + ((self.e123 * rhs.e1234 + self.e124 * rhs.e12)
+                            + (self.e134 * rhs.e13 + self.e234 * rhs.e23))),
+                e12: ((self.s * rhs.e12 + self.e3 * rhs.e123)
+                    + (self.e4 * rhs.e124 + self.e12 * rhs.s))
+                    + ((self.e123 * rhs.e3 + self.e124 * rhs.e4)
+                        - (self.e34 * rhs.e1234 + self.e1234 * rhs.e34)),
+                e13: ((self.s * rhs.e13 + self.e4 * rhs.e134)
+                    + (self.e13 * rhs.s + self.e24 * rhs.e1234))
+                    + ((self.e134 * rhs.e4 + self.e1234 * rhs.e24)
+                        - (self.e2 * rhs.e123 + self.e123 * rhs.e2)),
+                e14: ((self.s * rhs.e14 + self.e14 * rhs.s)
+                    - (self.e2 * rhs.e124 + self.e3 * rhs.e134))
+                    - ((self.e23 * rhs.e1234 + self.e124 * rhs.e2)
+                        + (self.e134 * rhs.e3 + self.e1234 * rhs.e23)),
+                e23: ((self.s * rhs.e23 + self.e1 * rhs.e123)
+                    + (self.e4 * rhs.e234 + self.e23 * rhs.s))
+                    + ((self.e123 * rhs.e1 + self.e234 * rhs.e4)
+                        - (self.e14 * rhs.e1234 + self.e1234 * rhs.e14)),
+                e24: ((self.s * rhs.e24 + self.e1 * rhs.e124)
+                    + (self.e13 * rhs.e1234 + self.e24 * rhs.s))
+                    + ((self.e124 * rhs.e1 + self.e1234 * rhs.e13)
+                        - (self.e3 * rhs.e234 + self.e234 * rhs.e3)),
+                e34: ((self.s * rhs.e34 + self.e1 * rhs.e134)
+                    + (self.e2 * rhs.e234 + self.e34 * rhs.s))
+                    + ((self.e134 * rhs.e1 + self.e234 * rhs.e2)
+                        - (self.e12 * rhs.e1234 + self.e1234 * rhs.e12)),
+                e123: (self.s * rhs.e123 + self.e123 * rhs.s)
+                    + (self.e1234 * rhs.e4 - self.e4 * rhs.e1234),
+                e124: (self.s * rhs.e124 + self.e3 * rhs.e1234)
+                    + (self.e124 * rhs.s - self.e1234 * rhs.e3),
+                e134: (self.s * rhs.e134 + self.e134 * rhs.s)
+                    + (self.e1234 * rhs.e2 - self.e2 * rhs.e1234),
+                e234: (self.s * rhs.e234 + self.e1 * rhs.e1234)
+                    + (self.e234 * rhs.s - self.e1234 * rhs.e1),
                 e1234: self.s * rhs.e1234 + self.e1234 * rhs.s,
             }
         }
@@ -6201,7 +6405,7 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn left_contraction(self, rhs: Vector) -> f64 {
-            self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3 + self.e4 * rhs.e4
+            (self.e1 * rhs.e1 + self.e2 * rhs.e2) + (self.e3 * rhs.e3 + self.e4 * rhs.e4)
         }
     }
     impl LeftContraction<Bivector> for Vector {
@@ -6209,10 +6413,10 @@ pub mod g4 {
         #[inline]
         fn left_contraction(self, rhs: Bivector) -> Vector {
             Vector {
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13 - self.e4 * rhs.e14,
-                e2: self.e1 * rhs.e12 - self.e3 * rhs.e23 - self.e4 * rhs.e24,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 - self.e4 * rhs.e34,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34,
+                e1: -((self.e2 * rhs.e12 + self.e3 * rhs.e13) + self.e4 * rhs.e14),
+                e2: (self.e1 * rhs.e12 - self.e3 * rhs.e23) - self.e4 * rhs.e24,
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23) - self.e4 * rhs.e34,
+                e4: (self.e1 * rhs.e14 + self.e2 * rhs.e24) + self.e3 * rhs.e34,
             }
         }
     }
@@ -6223,7 +6427,7 @@ pub mod g4 {
             Bivector {
                 e12: self.e3 * rhs.e123 + self.e4 * rhs.e124,
                 e13: self.e4 * rhs.e134 - self.e2 * rhs.e123,
-                e14: -self.e2 * rhs.e124 - self.e3 * rhs.e134,
+                e14: -(self.e2 * rhs.e124 + self.e3 * rhs.e134),
                 e23: self.e1 * rhs.e123 + self.e4 * rhs.e234,
                 e24: self.e1 * rhs.e124 - self.e3 * rhs.e234,
                 e34: self.e1 * rhs.e134 + self.e2 * rhs.e234,
@@ -6247,10 +6451,10 @@ pub mod g4 {
         #[inline]
         fn left_contraction(self, rhs: Even) -> Odd {
             Odd {
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13 - self.e4 * rhs.e14,
-                e2: self.e1 * rhs.e12 - self.e3 * rhs.e23 - self.e4 * rhs.e24,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 - self.e4 * rhs.e34,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34,
+                e1: -((self.e2 * rhs.e12 + self.e3 * rhs.e13) + self.e4 * rhs.e14),
+                e2: (self.e1 * rhs.e12 - self.e3 * rhs.e23) - self.e4 * rhs.e24,
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23) - self.e4 * rhs.e34,
+                e4: (self.e1 * rhs.e14 + self.e2 * rhs.e24) + self.e3 * rhs.e34,
                 e123: -self.e4 * rhs.e1234,
                 e124: self.e3 * rhs.e1234,
                 e134: -self.e2 * rhs.e1234,
@@ -6263,11 +6467,11 @@ pub mod g4 {
         #[inline]
         fn left_contraction(self, rhs: Odd) -> Even {
             Even {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    + self.e4 * rhs.e4,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 + self.e4 * rhs.e4),
                 e12: self.e3 * rhs.e123 + self.e4 * rhs.e124,
                 e13: self.e4 * rhs.e134 - self.e2 * rhs.e123,
-                e14: -self.e2 * rhs.e124 - self.e3 * rhs.e134,
+                e14: -(self.e2 * rhs.e124 + self.e3 * rhs.e134),
                 e23: self.e1 * rhs.e123 + self.e4 * rhs.e234,
                 e24: self.e1 * rhs.e124 - self.e3 * rhs.e234,
                 e34: self.e1 * rhs.e134 + self.e2 * rhs.e234,
@@ -6280,15 +6484,15 @@ pub mod g4 {
         #[inline]
         fn left_contraction(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    + self.e4 * rhs.e4,
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13 - self.e4 * rhs.e14,
-                e2: self.e1 * rhs.e12 - self.e3 * rhs.e23 - self.e4 * rhs.e24,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 - self.e4 * rhs.e34,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 + self.e4 * rhs.e4),
+                e1: -((self.e2 * rhs.e12 + self.e3 * rhs.e13) + self.e4 * rhs.e14),
+                e2: (self.e1 * rhs.e12 - self.e3 * rhs.e23) - self.e4 * rhs.e24,
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23) - self.e4 * rhs.e34,
+                e4: (self.e1 * rhs.e14 + self.e2 * rhs.e24) + self.e3 * rhs.e34,
                 e12: self.e3 * rhs.e123 + self.e4 * rhs.e124,
                 e13: self.e4 * rhs.e134 - self.e2 * rhs.e123,
-                e14: -self.e2 * rhs.e124 - self.e3 * rhs.e134,
+                e14: -(self.e2 * rhs.e124 + self.e3 * rhs.e134),
                 e23: self.e1 * rhs.e123 + self.e4 * rhs.e234,
                 e24: self.e1 * rhs.e124 - self.e3 * rhs.e234,
                 e34: self.e1 * rhs.e134 + self.e2 * rhs.e234,
@@ -6320,8 +6524,8 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn left_contraction(self, rhs: Bivector) -> f64 {
-            -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34
+            -(((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e14 * rhs.e14)
+                + ((self.e23 * rhs.e23 + self.e24 * rhs.e24) + self.e34 * rhs.e34))
         }
     }
     impl LeftContraction<Trivector> for Bivector {
@@ -6329,10 +6533,10 @@ pub mod g4 {
         #[inline]
         fn left_contraction(self, rhs: Trivector) -> Vector {
             Vector {
-                e1: -self.e23 * rhs.e123 - self.e24 * rhs.e124 - self.e34 * rhs.e134,
-                e2: self.e13 * rhs.e123 + self.e14 * rhs.e124 - self.e34 * rhs.e234,
-                e3: self.e14 * rhs.e134 + self.e24 * rhs.e234 - self.e12 * rhs.e123,
-                e4: -self.e12 * rhs.e124 - self.e13 * rhs.e134 - self.e23 * rhs.e234,
+                e1: -((self.e23 * rhs.e123 + self.e24 * rhs.e124) + self.e34 * rhs.e134),
+                e2: (self.e13 * rhs.e123 + self.e14 * rhs.e124) - self.e34 * rhs.e234,
+                e3: (self.e14 * rhs.e134 + self.e24 * rhs.e234) - self.e12 * rhs.e123,
+                e4: -((self.e12 * rhs.e124 + self.e13 * rhs.e134) + self.e23 * rhs.e234),
             }
         }
     }
@@ -6355,8 +6559,8 @@ pub mod g4 {
         #[inline]
         fn left_contraction(self, rhs: Even) -> Even {
             Even {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                    - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34,
+                s: -(((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e14 * rhs.e14)
+                    + ((self.e23 * rhs.e23 + self.e24 * rhs.e24) + self.e34 * rhs.e34)),
                 e12: -self.e34 * rhs.e1234,
                 e13: self.e24 * rhs.e1234,
                 e14: -self.e23 * rhs.e1234,
@@ -6372,10 +6576,10 @@ pub mod g4 {
         #[inline]
         fn left_contraction(self, rhs: Odd) -> Vector {
             Vector {
-                e1: -self.e23 * rhs.e123 - self.e24 * rhs.e124 - self.e34 * rhs.e134,
-                e2: self.e13 * rhs.e123 + self.e14 * rhs.e124 - self.e34 * rhs.e234,
-                e3: self.e14 * rhs.e134 + self.e24 * rhs.e234 - self.e12 * rhs.e123,
-                e4: -self.e12 * rhs.e124 - self.e13 * rhs.e134 - self.e23 * rhs.e234,
+                e1: -((self.e23 * rhs.e123 + self.e24 * rhs.e124) + self.e34 * rhs.e134),
+                e2: (self.e13 * rhs.e123 + self.e14 * rhs.e124) - self.e34 * rhs.e234,
+                e3: (self.e14 * rhs.e134 + self.e24 * rhs.e234) - self.e12 * rhs.e123,
+                e4: -((self.e12 * rhs.e124 + self.e13 * rhs.e134) + self.e23 * rhs.e234),
             }
         }
     }
@@ -6384,12 +6588,12 @@ pub mod g4 {
         #[inline]
         fn left_contraction(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                    - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34,
-                e1: -self.e23 * rhs.e123 - self.e24 * rhs.e124 - self.e34 * rhs.e134,
-                e2: self.e13 * rhs.e123 + self.e14 * rhs.e124 - self.e34 * rhs.e234,
-                e3: self.e14 * rhs.e134 + self.e24 * rhs.e234 - self.e12 * rhs.e123,
-                e4: -self.e12 * rhs.e124 - self.e13 * rhs.e134 - self.e23 * rhs.e234,
+                s: -(((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e14 * rhs.e14)
+                    + ((self.e23 * rhs.e23 + self.e24 * rhs.e24) + self.e34 * rhs.e34)),
+                e1: -((self.e23 * rhs.e123 + self.e24 * rhs.e124) + self.e34 * rhs.e134),
+                e2: (self.e13 * rhs.e123 + self.e14 * rhs.e124) - self.e34 * rhs.e234,
+                e3: (self.e14 * rhs.e134 + self.e24 * rhs.e234) - self.e12 * rhs.e123,
+                e4: -((self.e12 * rhs.e124 + self.e13 * rhs.e134) + self.e23 * rhs.e234),
                 e12: -self.e34 * rhs.e1234,
                 e13: self.e24 * rhs.e1234,
                 e14: -self.e23 * rhs.e1234,
@@ -6432,8 +6636,8 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn left_contraction(self, rhs: Trivector) -> f64 {
-            -self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                - self.e234 * rhs.e234
+            -((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                + (self.e134 * rhs.e134 + self.e234 * rhs.e234))
         }
     }
     impl LeftContraction<Quadvector> for Trivector {
@@ -6464,8 +6668,8 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn left_contraction(self, rhs: Odd) -> f64 {
-            -self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                - self.e234 * rhs.e234
+            -((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                + (self.e134 * rhs.e134 + self.e234 * rhs.e234))
         }
     }
     impl LeftContraction<Multivector> for Trivector {
@@ -6473,8 +6677,8 @@ pub mod g4 {
         #[inline]
         fn left_contraction(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: -self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                    - self.e234 * rhs.e234,
+                s: -((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                    + (self.e134 * rhs.e134 + self.e234 * rhs.e234)),
                 e1: self.e234 * rhs.e1234,
                 e2: -self.e134 * rhs.e1234,
                 e3: self.e124 * rhs.e1234,
@@ -6578,8 +6782,8 @@ pub mod g4 {
         #[inline]
         fn left_contraction(self, rhs: Bivector) -> Even {
             Even {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                    - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34,
+                s: -(((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e14 * rhs.e14)
+                    + ((self.e23 * rhs.e23 + self.e24 * rhs.e24) + self.e34 * rhs.e34)),
                 e12: self.s * rhs.e12,
                 e13: self.s * rhs.e13,
                 e14: self.s * rhs.e14,
@@ -6595,10 +6799,10 @@ pub mod g4 {
         #[inline]
         fn left_contraction(self, rhs: Trivector) -> Odd {
             Odd {
-                e1: -self.e23 * rhs.e123 - self.e24 * rhs.e124 - self.e34 * rhs.e134,
-                e2: self.e13 * rhs.e123 + self.e14 * rhs.e124 - self.e34 * rhs.e234,
-                e3: self.e14 * rhs.e134 + self.e24 * rhs.e234 - self.e12 * rhs.e123,
-                e4: -self.e12 * rhs.e124 - self.e13 * rhs.e134 - self.e23 * rhs.e234,
+                e1: -((self.e23 * rhs.e123 + self.e24 * rhs.e124) + self.e34 * rhs.e134),
+                e2: (self.e13 * rhs.e123 + self.e14 * rhs.e124) - self.e34 * rhs.e234,
+                e3: (self.e14 * rhs.e134 + self.e24 * rhs.e234) - self.e12 * rhs.e123,
+                e4: -((self.e12 * rhs.e124 + self.e13 * rhs.e134) + self.e23 * rhs.e234),
                 e123: self.s * rhs.e123,
                 e124: self.s * rhs.e124,
                 e134: self.s * rhs.e134,
@@ -6627,9 +6831,10 @@ pub mod g4 {
         #[inline]
         fn left_contraction(self, rhs: Even) -> Even {
             Even {
-                s: self.s * rhs.s + self.e1234 * rhs.e1234 - self.e12 * rhs.e12
-                    - self.e13 * rhs.e13 - self.e14 * rhs.e14 - self.e23 * rhs.e23
-                    - self.e24 * rhs.e24 - self.e34 * rhs.e34,
+                s: ((self.s * rhs.s + self.e1234 * rhs.e1234)
+                    - (self.e12 * rhs.e12 + self.e13 * rhs.e13))
+                    - ((self.e14 * rhs.e14 + self.e23 * rhs.e23)
+                        + (self.e24 * rhs.e24 + self.e34 * rhs.e34)),
                 e12: self.s * rhs.e12 - self.e34 * rhs.e1234,
                 e13: self.s * rhs.e13 + self.e24 * rhs.e1234,
                 e14: self.s * rhs.e14 - self.e23 * rhs.e1234,
@@ -6645,14 +6850,14 @@ pub mod g4 {
         #[inline]
         fn left_contraction(self, rhs: Odd) -> Odd {
             Odd {
-                e1: self.s * rhs.e1 - self.e23 * rhs.e123 - self.e24 * rhs.e124
-                    - self.e34 * rhs.e134,
-                e2: self.s * rhs.e2 + self.e13 * rhs.e123 + self.e14 * rhs.e124
-                    - self.e34 * rhs.e234,
-                e3: self.s * rhs.e3 + self.e14 * rhs.e134 + self.e24 * rhs.e234
-                    - self.e12 * rhs.e123,
-                e4: self.s * rhs.e4 - self.e12 * rhs.e124 - self.e13 * rhs.e134
-                    - self.e23 * rhs.e234,
+                e1: (self.s * rhs.e1 - self.e23 * rhs.e123)
+                    - (self.e24 * rhs.e124 + self.e34 * rhs.e134),
+                e2: (self.s * rhs.e2 + self.e13 * rhs.e123)
+                    + (self.e14 * rhs.e124 - self.e34 * rhs.e234),
+                e3: (self.s * rhs.e3 + self.e14 * rhs.e134)
+                    + (self.e24 * rhs.e234 - self.e12 * rhs.e123),
+                e4: (self.s * rhs.e4 - self.e12 * rhs.e124)
+                    - (self.e13 * rhs.e134 + self.e23 * rhs.e234),
                 e123: self.s * rhs.e123,
                 e124: self.s * rhs.e124,
                 e134: self.s * rhs.e134,
@@ -6665,17 +6870,18 @@ pub mod g4 {
         #[inline]
         fn left_contraction(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.s * rhs.s + self.e1234 * rhs.e1234 - self.e12 * rhs.e12
-                    - self.e13 * rhs.e13 - self.e14 * rhs.e14 - self.e23 * rhs.e23
-                    - self.e24 * rhs.e24 - self.e34 * rhs.e34,
-                e1: self.s * rhs.e1 - self.e23 * rhs.e123 - self.e24 * rhs.e124
-                    - self.e34 * rhs.e134,
-                e2: self.s * rhs.e2 + self.e13 * rhs.e123 + self.e14 * rhs.e124
-                    - self.e34 * rhs.e234,
-                e3: self.s * rhs.e3 + self.e14 * rhs.e134 + self.e24 * rhs.e234
-                    - self.e12 * rhs.e123,
-                e4: self.s * rhs.e4 - self.e12 * rhs.e124 - self.e13 * rhs.e134
-                    - self.e23 * rhs.e234,
+                s: ((self.s * rhs.s + self.e1234 * rhs.e1234)
+                    - (self.e12 * rhs.e12 + self.e13 * rhs.e13))
+                    - ((self.e14 * rhs.e14 + self.e23 * rhs.e23)
+                        + (self.e24 * rhs.e24 + self.e34 * rhs.e34)),
+                e1: (self.s * rhs.e1 - self.e23 * rhs.e123)
+                    - (self.e24 * rhs.e124 + self.e34 * rhs.e134),
+                e2: (self.s * rhs.e2 + self.e13 * rhs.e123)
+                    + (self.e14 * rhs.e124 - self.e34 * rhs.e234),
+                e3: (self.s * rhs.e3 + self.e14 * rhs.e134)
+                    + (self.e24 * rhs.e234 - self.e12 * rhs.e123),
+                e4: (self.s * rhs.e4 - self.e12 * rhs.e124)
+                    - (self.e13 * rhs.e134 + self.e23 * rhs.e234),
                 e12: self.s * rhs.e12 - self.e34 * rhs.e1234,
                 e13: self.s * rhs.e13 + self.e24 * rhs.e1234,
                 e14: self.s * rhs.e14 - self.e23 * rhs.e1234,
@@ -6702,7 +6908,7 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn left_contraction(self, rhs: Vector) -> f64 {
-            self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3 + self.e4 * rhs.e4
+            (self.e1 * rhs.e1 + self.e2 * rhs.e2) + (self.e3 * rhs.e3 + self.e4 * rhs.e4)
         }
     }
     impl LeftContraction<Bivector> for Odd {
@@ -6710,10 +6916,10 @@ pub mod g4 {
         #[inline]
         fn left_contraction(self, rhs: Bivector) -> Vector {
             Vector {
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13 - self.e4 * rhs.e14,
-                e2: self.e1 * rhs.e12 - self.e3 * rhs.e23 - self.e4 * rhs.e24,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 - self.e4 * rhs.e34,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34,
+                e1: -((self.e2 * rhs.e12 + self.e3 * rhs.e13) + self.e4 * rhs.e14),
+                e2: (self.e1 * rhs.e12 - self.e3 * rhs.e23) - self.e4 * rhs.e24,
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23) - self.e4 * rhs.e34,
+                e4: (self.e1 * rhs.e14 + self.e2 * rhs.e24) + self.e3 * rhs.e34,
             }
         }
     }
@@ -6722,11 +6928,11 @@ pub mod g4 {
         #[inline]
         fn left_contraction(self, rhs: Trivector) -> Even {
             Even {
-                s: -self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                    - self.e234 * rhs.e234,
+                s: -((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                    + (self.e134 * rhs.e134 + self.e234 * rhs.e234)),
                 e12: self.e3 * rhs.e123 + self.e4 * rhs.e124,
                 e13: self.e4 * rhs.e134 - self.e2 * rhs.e123,
-                e14: -self.e2 * rhs.e124 - self.e3 * rhs.e134,
+                e14: -(self.e2 * rhs.e124 + self.e3 * rhs.e134),
                 e23: self.e1 * rhs.e123 + self.e4 * rhs.e234,
                 e24: self.e1 * rhs.e124 - self.e3 * rhs.e234,
                 e34: self.e1 * rhs.e134 + self.e2 * rhs.e234,
@@ -6755,14 +6961,14 @@ pub mod g4 {
         #[inline]
         fn left_contraction(self, rhs: Even) -> Odd {
             Odd {
-                e1: self.e234 * rhs.e1234 - self.e2 * rhs.e12 - self.e3 * rhs.e13
-                    - self.e4 * rhs.e14,
-                e2: self.e1 * rhs.e12 - self.e3 * rhs.e23 - self.e4 * rhs.e24
-                    - self.e134 * rhs.e1234,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e124 * rhs.e1234
-                    - self.e4 * rhs.e34,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34
-                    - self.e123 * rhs.e1234,
+                e1: (self.e234 * rhs.e1234 - self.e2 * rhs.e12)
+                    - (self.e3 * rhs.e13 + self.e4 * rhs.e14),
+                e2: (self.e1 * rhs.e12 - self.e3 * rhs.e23)
+                    - (self.e4 * rhs.e24 + self.e134 * rhs.e1234),
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23)
+                    + (self.e124 * rhs.e1234 - self.e4 * rhs.e34),
+                e4: (self.e1 * rhs.e14 + self.e2 * rhs.e24)
+                    + (self.e3 * rhs.e34 - self.e123 * rhs.e1234),
                 e123: -self.e4 * rhs.e1234,
                 e124: self.e3 * rhs.e1234,
                 e134: -self.e2 * rhs.e1234,
@@ -6775,12 +6981,13 @@ pub mod g4 {
         #[inline]
         fn left_contraction(self, rhs: Odd) -> Even {
             Even {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    + self.e4 * rhs.e4 - self.e123 * rhs.e123 - self.e124 * rhs.e124
-                    - self.e134 * rhs.e134 - self.e234 * rhs.e234,
+                s: ((self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 + self.e4 * rhs.e4))
+                    - ((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                        + (self.e134 * rhs.e134 + self.e234 * rhs.e234)),
                 e12: self.e3 * rhs.e123 + self.e4 * rhs.e124,
                 e13: self.e4 * rhs.e134 - self.e2 * rhs.e123,
-                e14: -self.e2 * rhs.e124 - self.e3 * rhs.e134,
+                e14: -(self.e2 * rhs.e124 + self.e3 * rhs.e134),
                 e23: self.e1 * rhs.e123 + self.e4 * rhs.e234,
                 e24: self.e1 * rhs.e124 - self.e3 * rhs.e234,
                 e34: self.e1 * rhs.e134 + self.e2 * rhs.e234,
@@ -6793,20 +7000,21 @@ pub mod g4 {
         #[inline]
         fn left_contraction(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    + self.e4 * rhs.e4 - self.e123 * rhs.e123 - self.e124 * rhs.e124
-                    - self.e134 * rhs.e134 - self.e234 * rhs.e234,
-                e1: self.e234 * rhs.e1234 - self.e2 * rhs.e12 - self.e3 * rhs.e13
-                    - self.e4 * rhs.e14,
-                e2: self.e1 * rhs.e12 - self.e3 * rhs.e23 - self.e4 * rhs.e24
-                    - self.e134 * rhs.e1234,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e124 * rhs.e1234
-                    - self.e4 * rhs.e34,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34
-                    - self.e123 * rhs.e1234,
+                s: ((self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 + self.e4 * rhs.e4))
+                    - ((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                        + (self.e134 * rhs.e134 + self.e234 * rhs.e234)),
+                e1: (self.e234 * rhs.e1234 - self.e2 * rhs.e12)
+                    - (self.e3 * rhs.e13 + self.e4 * rhs.e14),
+                e2: (self.e1 * rhs.e12 - self.e3 * rhs.e23)
+                    - (self.e4 * rhs.e24 + self.e134 * rhs.e1234),
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23)
+                    + (self.e124 * rhs.e1234 - self.e4 * rhs.e34),
+                e4: (self.e1 * rhs.e14 + self.e2 * rhs.e24)
+                    + (self.e3 * rhs.e34 - self.e123 * rhs.e1234),
                 e12: self.e3 * rhs.e123 + self.e4 * rhs.e124,
                 e13: self.e4 * rhs.e134 - self.e2 * rhs.e123,
-                e14: -self.e2 * rhs.e124 - self.e3 * rhs.e134,
+                e14: -(self.e2 * rhs.e124 + self.e3 * rhs.e134),
                 e23: self.e1 * rhs.e123 + self.e4 * rhs.e234,
                 e24: self.e1 * rhs.e124 - self.e3 * rhs.e234,
                 e34: self.e1 * rhs.e134 + self.e2 * rhs.e234,
@@ -6830,8 +7038,8 @@ pub mod g4 {
         #[inline]
         fn left_contraction(self, rhs: Vector) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    + self.e4 * rhs.e4,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 + self.e4 * rhs.e4),
                 e1: self.s * rhs.e1,
                 e2: self.s * rhs.e2,
                 e3: self.s * rhs.e3,
@@ -6855,12 +7063,12 @@ pub mod g4 {
         #[inline]
         fn left_contraction(self, rhs: Bivector) -> Multivector {
             Multivector {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                    - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34,
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13 - self.e4 * rhs.e14,
-                e2: self.e1 * rhs.e12 - self.e3 * rhs.e23 - self.e4 * rhs.e24,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 - self.e4 * rhs.e34,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34,
+                s: -(((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e14 * rhs.e14)
+                    + ((self.e23 * rhs.e23 + self.e24 * rhs.e24) + self.e34 * rhs.e34)),
+                e1: -((self.e2 * rhs.e12 + self.e3 * rhs.e13) + self.e4 * rhs.e14),
+                e2: (self.e1 * rhs.e12 - self.e3 * rhs.e23) - self.e4 * rhs.e24,
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23) - self.e4 * rhs.e34,
+                e4: (self.e1 * rhs.e14 + self.e2 * rhs.e24) + self.e3 * rhs.e34,
                 e12: self.s * rhs.e12,
                 e13: self.s * rhs.e13,
                 e14: self.s * rhs.e14,
@@ -6880,15 +7088,15 @@ pub mod g4 {
         #[inline]
         fn left_contraction(self, rhs: Trivector) -> Multivector {
             Multivector {
-                s: -self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                    - self.e234 * rhs.e234,
-                e1: -self.e23 * rhs.e123 - self.e24 * rhs.e124 - self.e34 * rhs.e134,
-                e2: self.e13 * rhs.e123 + self.e14 * rhs.e124 - self.e34 * rhs.e234,
-                e3: self.e14 * rhs.e134 + self.e24 * rhs.e234 - self.e12 * rhs.e123,
-                e4: -self.e12 * rhs.e124 - self.e13 * rhs.e134 - self.e23 * rhs.e234,
+                s: -((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                    + (self.e134 * rhs.e134 + self.e234 * rhs.e234)),
+                e1: -((self.e23 * rhs.e123 + self.e24 * rhs.e124) + self.e34 * rhs.e134),
+                e2: (self.e13 * rhs.e123 + self.e14 * rhs.e124) - self.e34 * rhs.e234,
+                e3: (self.e14 * rhs.e134 + self.e24 * rhs.e234) - self.e12 * rhs.e123,
+                e4: -((self.e12 * rhs.e124 + self.e13 * rhs.e134) + self.e23 * rhs.e234),
                 e12: self.e3 * rhs.e123 + self.e4 * rhs.e124,
                 e13: self.e4 * rhs.e134 - self.e2 * rhs.e123,
-                e14: -self.e2 * rhs.e124 - self.e3 * rhs.e134,
+                e14: -(self.e2 * rhs.e124 + self.e3 * rhs.e134),
                 e23: self.e1 * rhs.e123 + self.e4 * rhs.e234,
                 e24: self.e1 * rhs.e124 - self.e3 * rhs.e234,
                 e34: self.e1 * rhs.e134 + self.e2 * rhs.e234,
@@ -6929,17 +7137,18 @@ pub mod g4 {
         #[inline]
         fn left_contraction(self, rhs: Even) -> Multivector {
             Multivector {
-                s: self.s * rhs.s + self.e1234 * rhs.e1234 - self.e12 * rhs.e12
-                    - self.e13 * rhs.e13 - self.e14 * rhs.e14 - self.e23 * rhs.e23
-                    - self.e24 * rhs.e24 - self.e34 * rhs.e34,
-                e1: self.e234 * rhs.e1234 - self.e2 * rhs.e12 - self.e3 * rhs.e13
-                    - self.e4 * rhs.e14,
-                e2: self.e1 * rhs.e12 - self.e3 * rhs.e23 - self.e4 * rhs.e24
-                    - self.e134 * rhs.e1234,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e124 * rhs.e1234
-                    - self.e4 * rhs.e34,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34
-                    - self.e123 * rhs.e1234,
+                s: ((self.s * rhs.s + self.e1234 * rhs.e1234)
+                    - (self.e12 * rhs.e12 + self.e13 * rhs.e13))
+                    - ((self.e14 * rhs.e14 + self.e23 * rhs.e23)
+                        + (self.e24 * rhs.e24 + self.e34 * rhs.e34)),
+                e1: (self.e234 * rhs.e1234 - self.e2 * rhs.e12)
+                    - (self.e3 * rhs.e13 + self.e4 * rhs.e14),
+                e2: (self.e1 * rhs.e12 - self.e3 * rhs.e23)
+                    - (self.e4 * rhs.e24 + self.e134 * rhs.e1234),
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23)
+                    + (self.e124 * rhs.e1234 - self.e4 * rhs.e34),
+                e4: (self.e1 * rhs.e14 + self.e2 * rhs.e24)
+                    + (self.e3 * rhs.e34 - self.e123 * rhs.e1234),
                 e12: self.s * rhs.e12 - self.e34 * rhs.e1234,
                 e13: self.s * rhs.e13 + self.e24 * rhs.e1234,
                 e14: self.s * rhs.e14 - self.e23 * rhs.e1234,
@@ -6959,20 +7168,21 @@ pub mod g4 {
         #[inline]
         fn left_contraction(self, rhs: Odd) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    + self.e4 * rhs.e4 - self.e123 * rhs.e123 - self.e124 * rhs.e124
-                    - self.e134 * rhs.e134 - self.e234 * rhs.e234,
-                e1: self.s * rhs.e1 - self.e23 * rhs.e123 - self.e24 * rhs.e124
-                    - self.e34 * rhs.e134,
-                e2: self.s * rhs.e2 + self.e13 * rhs.e123 + self.e14 * rhs.e124
-                    - self.e34 * rhs.e234,
-                e3: self.s * rhs.e3 + self.e14 * rhs.e134 + self.e24 * rhs.e234
-                    - self.e12 * rhs.e123,
-                e4: self.s * rhs.e4 - self.e12 * rhs.e124 - self.e13 * rhs.e134
-                    - self.e23 * rhs.e234,
+                s: ((self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 + self.e4 * rhs.e4))
+                    - ((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                        + (self.e134 * rhs.e134 + self.e234 * rhs.e234)),
+                e1: (self.s * rhs.e1 - self.e23 * rhs.e123)
+                    - (self.e24 * rhs.e124 + self.e34 * rhs.e134),
+                e2: (self.s * rhs.e2 + self.e13 * rhs.e123)
+                    + (self.e14 * rhs.e124 - self.e34 * rhs.e234),
+                e3: (self.s * rhs.e3 + self.e14 * rhs.e134)
+                    + (self.e24 * rhs.e234 - self.e12 * rhs.e123),
+                e4: (self.s * rhs.e4 - self.e12 * rhs.e124)
+                    - (self.e13 * rhs.e134 + self.e23 * rhs.e234),
                 e12: self.e3 * rhs.e123 + self.e4 * rhs.e124,
                 e13: self.e4 * rhs.e134 - self.e2 * rhs.e123,
-                e14: -self.e2 * rhs.e124 - self.e3 * rhs.e134,
+                e14: -(self.e2 * rhs.e124 + self.e3 * rhs.e134),
                 e23: self.e1 * rhs.e123 + self.e4 * rhs.e234,
                 e24: self.e1 * rhs.e124 - self.e3 * rhs.e234,
                 e34: self.e1 * rhs.e134 + self.e2 * rhs.e234,
@@ -6989,36 +7199,42 @@ pub mod g4 {
         #[inline]
         fn left_contraction(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.s * rhs.s + self.e1 * rhs.e1 + self.e2 * rhs.e2
-                    + self.e3 * rhs.e3 + self.e4 * rhs.e4 + self.e1234 * rhs.e1234
-                    - self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                    - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34
-                    - self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                    - self.e234 * rhs.e234,
-                e1: self.s * rhs.e1 + self.e234 * rhs.e1234 - self.e2 * rhs.e12
-                    - self.e3 * rhs.e13 - self.e4 * rhs.e14 - self.e23 * rhs.e123
-                    - self.e24 * rhs.e124 - self.e34 * rhs.e134,
-                e2: self.s * rhs.e2 + self.e1 * rhs.e12 + self.e13 * rhs.e123
-                    + self.e14 * rhs.e124 - self.e3 * rhs.e23 - self.e4 * rhs.e24
-                    - self.e34 * rhs.e234 - self.e134 * rhs.e1234,
-                e3: self.s * rhs.e3 + self.e1 * rhs.e13 + self.e2 * rhs.e23
-                    + self.e14 * rhs.e134 + self.e24 * rhs.e234 + self.e124 * rhs.e1234
-                    - self.e4 * rhs.e34 - self.e12 * rhs.e123,
-                e4: self.s * rhs.e4 + self.e1 * rhs.e14 + self.e2 * rhs.e24
-                    + self.e3 * rhs.e34 - self.e12 * rhs.e124 - self.e13 * rhs.e134
-                    - self.e23 * rhs.e234 - self.e123 * rhs.e1234,
-                e12: self.s * rhs.e12 + self.e3 * rhs.e123 + self.e4 * rhs.e124
-                    - self.e34 * rhs.e1234,
-                e13: self.s * rhs.e13 + self.e4 * rhs.e134 + self.e24 * rhs.e1234
-                    - self.e2 * rhs.e123,
-                e14: self.s * rhs.e14 - self.e2 * rhs.e124 - self.e3 * rhs.e134
-                    - self.e23 * rhs.e1234,
-                e23: self.s * rhs.e23 + self.e1 * rhs.e123 + self.e4 * rhs.e234
-                    - self.e14 * rhs.e1234,
-                e24: self.s * rhs.e24 + self.e1 * rhs.e124 + self.e13 * rhs.e1234
-                    - self.e3 * rhs.e234,
-                e34: self.s * rhs.e34 + self.e1 * rhs.e134 + self.e2 * rhs.e234
-                    - self.e12 * rhs.e1234,
+                s: (((self.s * rhs.s + self.e1 * rhs.e1)
+                    + (self.e2 * rhs.e2 + self.e3 * rhs.e3))
+                    + ((self.e4 * rhs.e4 + self.e1234 * rhs.e1234)
+                        - (self.e12 * rhs.e12 + self.e13 * rhs.e13)))
+                    - (((self.e14 * rhs.e14 + self.e23 * rhs.e23)
+                        + (self.e24 * rhs.e24 + self.e34 * rhs.e34))
+                        + ((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                            + (self.e134 * rhs.e134 + self.e234 * rhs.e234))),
+                e1: ((self.s * rhs.e1 + self.e234 * rhs.e1234)
+                    - (self.e2 * rhs.e12 + self.e3 * rhs.e13))
+                    - ((self.e4 * rhs.e14 + self.e23 * rhs.e123)
+                        + (self.e24 * rhs.e124 + self.e34 * rhs.e134)),
+                e2: ((self.s * rhs.e2 + self.e1 * rhs.e12)
+                    + (self.e13 * rhs.e123 + self.e14 * rhs.e124))
+                    - ((self.e3 * rhs.e23 + self.e4 * rhs.e24)
+                        + (self.e34 * rhs.e234 + self.e134 * rhs.e1234)),
+                e3: ((self.s * rhs.e3 + self.e1 * rhs.e13)
+                    + (self.e2 * rhs.e23 + self.e14 * rhs.e134))
+                    + ((self.e24 * rhs.e234 + self.e124 * rhs.e1234)
+                        - (self.e4 * rhs.e34 + self.e12 * rhs.e123)),
+                e4: ((self.s * rhs.e4 + self.e1 * rhs.e14)
+                    + (self.e2 * rhs.e24 + self.e3 * rhs.e34))
+                    - ((self.e12 * rhs.e124 + self.e13 * rhs.e134)
+                        + (self.e23 * rhs.e234 + self.e123 * rhs.e1234)),
+                e12: (self.s * rhs.e12 + self.e3 * rhs.e123)
+                    + (self.e4 * rhs.e124 - self.e34 * rhs.e1234),
+                e13: (self.s * rhs.e13 + self.e4 * rhs.e134)
+                    + (self.e24 * rhs.e1234 - self.e2 * rhs.e123),
+                e14: (self.s * rhs.e14 - self.e2 * rhs.e124)
+                    - (self.e3 * rhs.e134 + self.e23 * rhs.e1234),
+                e23: (self.s * rhs.e23 + self.e1 * rhs.e123)
+                    + (self.e4 * rhs.e234 - self.e14 * rhs.e1234),
+                e24: (self.s * rhs.e24 + self.e1 * rhs.e124)
+                    + (self.e13 * rhs.e1234 - self.e3 * rhs.e234),
+                e34: (self.s * rhs.e34 + self.e1 * rhs.e134)
+                    + (self.e2 * rhs.e234 - self.e12 * rhs.e1234),
                 e123: self.s * rhs.e123 - self.e4 * rhs.e1234,
                 e124: self.s * rhs.e124 + self.e3 * rhs.e1234,
                 e134: self.s * rhs.e134 - self.e2 * rhs.e1234,
@@ -7097,7 +7313,7 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn right_contraction(self, rhs: Vector) -> f64 {
-            self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3 + self.e4 * rhs.e4
+            (self.e1 * rhs.e1 + self.e2 * rhs.e2) + (self.e3 * rhs.e3 + self.e4 * rhs.e4)
         }
     }
     impl RightContraction<Bivector> for Vector {
@@ -7140,7 +7356,7 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn right_contraction(self, rhs: Odd) -> f64 {
-            self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3 + self.e4 * rhs.e4
+            (self.e1 * rhs.e1 + self.e2 * rhs.e2) + (self.e3 * rhs.e3 + self.e4 * rhs.e4)
         }
     }
     impl RightContraction<Multivector> for Vector {
@@ -7148,8 +7364,8 @@ pub mod g4 {
         #[inline]
         fn right_contraction(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    + self.e4 * rhs.e4,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 + self.e4 * rhs.e4),
                 e1: self.e1 * rhs.s,
                 e2: self.e2 * rhs.s,
                 e3: self.e3 * rhs.s,
@@ -7187,10 +7403,10 @@ pub mod g4 {
         #[inline]
         fn right_contraction(self, rhs: Vector) -> Vector {
             Vector {
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 + self.e14 * rhs.e4,
-                e2: self.e23 * rhs.e3 + self.e24 * rhs.e4 - self.e12 * rhs.e1,
-                e3: self.e34 * rhs.e4 - self.e13 * rhs.e1 - self.e23 * rhs.e2,
-                e4: -self.e14 * rhs.e1 - self.e24 * rhs.e2 - self.e34 * rhs.e3,
+                e1: (self.e12 * rhs.e2 + self.e13 * rhs.e3) + self.e14 * rhs.e4,
+                e2: (self.e23 * rhs.e3 + self.e24 * rhs.e4) - self.e12 * rhs.e1,
+                e3: (self.e34 * rhs.e4 - self.e13 * rhs.e1) - self.e23 * rhs.e2,
+                e4: -((self.e14 * rhs.e1 + self.e24 * rhs.e2) + self.e34 * rhs.e3),
             }
         }
     }
@@ -7198,8 +7414,8 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn right_contraction(self, rhs: Bivector) -> f64 {
-            -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34
+            -(((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e14 * rhs.e14)
+                + ((self.e23 * rhs.e23 + self.e24 * rhs.e24) + self.e34 * rhs.e34))
         }
     }
     impl RightContraction<Trivector> for Bivector {
@@ -7223,8 +7439,8 @@ pub mod g4 {
         #[inline]
         fn right_contraction(self, rhs: Even) -> Even {
             Even {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                    - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34,
+                s: -(((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e14 * rhs.e14)
+                    + ((self.e23 * rhs.e23 + self.e24 * rhs.e24) + self.e34 * rhs.e34)),
                 e12: self.e12 * rhs.s,
                 e13: self.e13 * rhs.s,
                 e14: self.e14 * rhs.s,
@@ -7240,10 +7456,10 @@ pub mod g4 {
         #[inline]
         fn right_contraction(self, rhs: Odd) -> Vector {
             Vector {
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 + self.e14 * rhs.e4,
-                e2: self.e23 * rhs.e3 + self.e24 * rhs.e4 - self.e12 * rhs.e1,
-                e3: self.e34 * rhs.e4 - self.e13 * rhs.e1 - self.e23 * rhs.e2,
-                e4: -self.e14 * rhs.e1 - self.e24 * rhs.e2 - self.e34 * rhs.e3,
+                e1: (self.e12 * rhs.e2 + self.e13 * rhs.e3) + self.e14 * rhs.e4,
+                e2: (self.e23 * rhs.e3 + self.e24 * rhs.e4) - self.e12 * rhs.e1,
+                e3: (self.e34 * rhs.e4 - self.e13 * rhs.e1) - self.e23 * rhs.e2,
+                e4: -((self.e14 * rhs.e1 + self.e24 * rhs.e2) + self.e34 * rhs.e3),
             }
         }
     }
@@ -7252,12 +7468,12 @@ pub mod g4 {
         #[inline]
         fn right_contraction(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                    - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34,
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 + self.e14 * rhs.e4,
-                e2: self.e23 * rhs.e3 + self.e24 * rhs.e4 - self.e12 * rhs.e1,
-                e3: self.e34 * rhs.e4 - self.e13 * rhs.e1 - self.e23 * rhs.e2,
-                e4: -self.e14 * rhs.e1 - self.e24 * rhs.e2 - self.e34 * rhs.e3,
+                s: -(((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e14 * rhs.e14)
+                    + ((self.e23 * rhs.e23 + self.e24 * rhs.e24) + self.e34 * rhs.e34)),
+                e1: (self.e12 * rhs.e2 + self.e13 * rhs.e3) + self.e14 * rhs.e4,
+                e2: (self.e23 * rhs.e3 + self.e24 * rhs.e4) - self.e12 * rhs.e1,
+                e3: (self.e34 * rhs.e4 - self.e13 * rhs.e1) - self.e23 * rhs.e2,
+                e4: -((self.e14 * rhs.e1 + self.e24 * rhs.e2) + self.e34 * rhs.e3),
                 e12: self.e12 * rhs.s,
                 e13: self.e13 * rhs.s,
                 e14: self.e14 * rhs.s,
@@ -7291,7 +7507,7 @@ pub mod g4 {
             Bivector {
                 e12: self.e123 * rhs.e3 + self.e124 * rhs.e4,
                 e13: self.e134 * rhs.e4 - self.e123 * rhs.e2,
-                e14: -self.e124 * rhs.e2 - self.e134 * rhs.e3,
+                e14: -(self.e124 * rhs.e2 + self.e134 * rhs.e3),
                 e23: self.e123 * rhs.e1 + self.e234 * rhs.e4,
                 e24: self.e124 * rhs.e1 - self.e234 * rhs.e3,
                 e34: self.e134 * rhs.e1 + self.e234 * rhs.e2,
@@ -7303,10 +7519,10 @@ pub mod g4 {
         #[inline]
         fn right_contraction(self, rhs: Bivector) -> Vector {
             Vector {
-                e1: -self.e123 * rhs.e23 - self.e124 * rhs.e24 - self.e134 * rhs.e34,
-                e2: self.e123 * rhs.e13 + self.e124 * rhs.e14 - self.e234 * rhs.e34,
-                e3: self.e134 * rhs.e14 + self.e234 * rhs.e24 - self.e123 * rhs.e12,
-                e4: -self.e124 * rhs.e12 - self.e134 * rhs.e13 - self.e234 * rhs.e23,
+                e1: -((self.e123 * rhs.e23 + self.e124 * rhs.e24) + self.e134 * rhs.e34),
+                e2: (self.e123 * rhs.e13 + self.e124 * rhs.e14) - self.e234 * rhs.e34,
+                e3: (self.e134 * rhs.e14 + self.e234 * rhs.e24) - self.e123 * rhs.e12,
+                e4: -((self.e124 * rhs.e12 + self.e134 * rhs.e13) + self.e234 * rhs.e23),
             }
         }
     }
@@ -7314,8 +7530,8 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn right_contraction(self, rhs: Trivector) -> f64 {
-            -self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                - self.e234 * rhs.e234
+            -((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                + (self.e134 * rhs.e134 + self.e234 * rhs.e234))
         }
     }
     impl RightContraction<Quadvector> for Trivector {
@@ -7331,10 +7547,10 @@ pub mod g4 {
         #[inline]
         fn right_contraction(self, rhs: Even) -> Odd {
             Odd {
-                e1: -self.e123 * rhs.e23 - self.e124 * rhs.e24 - self.e134 * rhs.e34,
-                e2: self.e123 * rhs.e13 + self.e124 * rhs.e14 - self.e234 * rhs.e34,
-                e3: self.e134 * rhs.e14 + self.e234 * rhs.e24 - self.e123 * rhs.e12,
-                e4: -self.e124 * rhs.e12 - self.e134 * rhs.e13 - self.e234 * rhs.e23,
+                e1: -((self.e123 * rhs.e23 + self.e124 * rhs.e24) + self.e134 * rhs.e34),
+                e2: (self.e123 * rhs.e13 + self.e124 * rhs.e14) - self.e234 * rhs.e34,
+                e3: (self.e134 * rhs.e14 + self.e234 * rhs.e24) - self.e123 * rhs.e12,
+                e4: -((self.e124 * rhs.e12 + self.e134 * rhs.e13) + self.e234 * rhs.e23),
                 e123: self.e123 * rhs.s,
                 e124: self.e124 * rhs.s,
                 e134: self.e134 * rhs.s,
@@ -7347,11 +7563,11 @@ pub mod g4 {
         #[inline]
         fn right_contraction(self, rhs: Odd) -> Even {
             Even {
-                s: -self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                    - self.e234 * rhs.e234,
+                s: -((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                    + (self.e134 * rhs.e134 + self.e234 * rhs.e234)),
                 e12: self.e123 * rhs.e3 + self.e124 * rhs.e4,
                 e13: self.e134 * rhs.e4 - self.e123 * rhs.e2,
-                e14: -self.e124 * rhs.e2 - self.e134 * rhs.e3,
+                e14: -(self.e124 * rhs.e2 + self.e134 * rhs.e3),
                 e23: self.e123 * rhs.e1 + self.e234 * rhs.e4,
                 e24: self.e124 * rhs.e1 - self.e234 * rhs.e3,
                 e34: self.e134 * rhs.e1 + self.e234 * rhs.e2,
@@ -7364,15 +7580,15 @@ pub mod g4 {
         #[inline]
         fn right_contraction(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: -self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                    - self.e234 * rhs.e234,
-                e1: -self.e123 * rhs.e23 - self.e124 * rhs.e24 - self.e134 * rhs.e34,
-                e2: self.e123 * rhs.e13 + self.e124 * rhs.e14 - self.e234 * rhs.e34,
-                e3: self.e134 * rhs.e14 + self.e234 * rhs.e24 - self.e123 * rhs.e12,
-                e4: -self.e124 * rhs.e12 - self.e134 * rhs.e13 - self.e234 * rhs.e23,
+                s: -((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                    + (self.e134 * rhs.e134 + self.e234 * rhs.e234)),
+                e1: -((self.e123 * rhs.e23 + self.e124 * rhs.e24) + self.e134 * rhs.e34),
+                e2: (self.e123 * rhs.e13 + self.e124 * rhs.e14) - self.e234 * rhs.e34,
+                e3: (self.e134 * rhs.e14 + self.e234 * rhs.e24) - self.e123 * rhs.e12,
+                e4: -((self.e124 * rhs.e12 + self.e134 * rhs.e13) + self.e234 * rhs.e23),
                 e12: self.e123 * rhs.e3 + self.e124 * rhs.e4,
                 e13: self.e134 * rhs.e4 - self.e123 * rhs.e2,
-                e14: -self.e124 * rhs.e2 - self.e134 * rhs.e3,
+                e14: -(self.e124 * rhs.e2 + self.e134 * rhs.e3),
                 e23: self.e123 * rhs.e1 + self.e234 * rhs.e4,
                 e24: self.e124 * rhs.e1 - self.e234 * rhs.e3,
                 e34: self.e134 * rhs.e1 + self.e234 * rhs.e2,
@@ -7515,10 +7731,10 @@ pub mod g4 {
         #[inline]
         fn right_contraction(self, rhs: Vector) -> Odd {
             Odd {
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 + self.e14 * rhs.e4,
-                e2: self.e23 * rhs.e3 + self.e24 * rhs.e4 - self.e12 * rhs.e1,
-                e3: self.e34 * rhs.e4 - self.e13 * rhs.e1 - self.e23 * rhs.e2,
-                e4: -self.e14 * rhs.e1 - self.e24 * rhs.e2 - self.e34 * rhs.e3,
+                e1: (self.e12 * rhs.e2 + self.e13 * rhs.e3) + self.e14 * rhs.e4,
+                e2: (self.e23 * rhs.e3 + self.e24 * rhs.e4) - self.e12 * rhs.e1,
+                e3: (self.e34 * rhs.e4 - self.e13 * rhs.e1) - self.e23 * rhs.e2,
+                e4: -((self.e14 * rhs.e1 + self.e24 * rhs.e2) + self.e34 * rhs.e3),
                 e123: self.e1234 * rhs.e4,
                 e124: -self.e1234 * rhs.e3,
                 e134: self.e1234 * rhs.e2,
@@ -7531,8 +7747,8 @@ pub mod g4 {
         #[inline]
         fn right_contraction(self, rhs: Bivector) -> Even {
             Even {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                    - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34,
+                s: -(((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e14 * rhs.e14)
+                    + ((self.e23 * rhs.e23 + self.e24 * rhs.e24) + self.e34 * rhs.e34)),
                 e12: -self.e1234 * rhs.e34,
                 e13: self.e1234 * rhs.e24,
                 e14: -self.e1234 * rhs.e23,
@@ -7567,9 +7783,10 @@ pub mod g4 {
         #[inline]
         fn right_contraction(self, rhs: Even) -> Even {
             Even {
-                s: self.s * rhs.s + self.e1234 * rhs.e1234 - self.e12 * rhs.e12
-                    - self.e13 * rhs.e13 - self.e14 * rhs.e14 - self.e23 * rhs.e23
-                    - self.e24 * rhs.e24 - self.e34 * rhs.e34,
+                s: ((self.s * rhs.s + self.e1234 * rhs.e1234)
+                    - (self.e12 * rhs.e12 + self.e13 * rhs.e13))
+                    - ((self.e14 * rhs.e14 + self.e23 * rhs.e23)
+                        + (self.e24 * rhs.e24 + self.e34 * rhs.e34)),
                 e12: self.e12 * rhs.s - self.e1234 * rhs.e34,
                 e13: self.e13 * rhs.s + self.e1234 * rhs.e24,
                 e14: self.e14 * rhs.s - self.e1234 * rhs.e23,
@@ -7585,14 +7802,14 @@ pub mod g4 {
         #[inline]
         fn right_contraction(self, rhs: Odd) -> Odd {
             Odd {
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 + self.e14 * rhs.e4
-                    - self.e1234 * rhs.e234,
-                e2: self.e23 * rhs.e3 + self.e24 * rhs.e4 + self.e1234 * rhs.e134
-                    - self.e12 * rhs.e1,
-                e3: self.e34 * rhs.e4 - self.e13 * rhs.e1 - self.e23 * rhs.e2
-                    - self.e1234 * rhs.e124,
-                e4: self.e1234 * rhs.e123 - self.e14 * rhs.e1 - self.e24 * rhs.e2
-                    - self.e34 * rhs.e3,
+                e1: (self.e12 * rhs.e2 + self.e13 * rhs.e3)
+                    + (self.e14 * rhs.e4 - self.e1234 * rhs.e234),
+                e2: (self.e23 * rhs.e3 + self.e24 * rhs.e4)
+                    + (self.e1234 * rhs.e134 - self.e12 * rhs.e1),
+                e3: (self.e34 * rhs.e4 - self.e13 * rhs.e1)
+                    - (self.e23 * rhs.e2 + self.e1234 * rhs.e124),
+                e4: (self.e1234 * rhs.e123 - self.e14 * rhs.e1)
+                    - (self.e24 * rhs.e2 + self.e34 * rhs.e3),
                 e123: self.e1234 * rhs.e4,
                 e124: -self.e1234 * rhs.e3,
                 e134: self.e1234 * rhs.e2,
@@ -7605,17 +7822,18 @@ pub mod g4 {
         #[inline]
         fn right_contraction(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.s * rhs.s + self.e1234 * rhs.e1234 - self.e12 * rhs.e12
-                    - self.e13 * rhs.e13 - self.e14 * rhs.e14 - self.e23 * rhs.e23
-                    - self.e24 * rhs.e24 - self.e34 * rhs.e34,
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 + self.e14 * rhs.e4
-                    - self.e1234 * rhs.e234,
-                e2: self.e23 * rhs.e3 + self.e24 * rhs.e4 + self.e1234 * rhs.e134
-                    - self.e12 * rhs.e1,
-                e3: self.e34 * rhs.e4 - self.e13 * rhs.e1 - self.e23 * rhs.e2
-                    - self.e1234 * rhs.e124,
-                e4: self.e1234 * rhs.e123 - self.e14 * rhs.e1 - self.e24 * rhs.e2
-                    - self.e34 * rhs.e3,
+                s: ((self.s * rhs.s + self.e1234 * rhs.e1234)
+                    - (self.e12 * rhs.e12 + self.e13 * rhs.e13))
+                    - ((self.e14 * rhs.e14 + self.e23 * rhs.e23)
+                        + (self.e24 * rhs.e24 + self.e34 * rhs.e34)),
+                e1: (self.e12 * rhs.e2 + self.e13 * rhs.e3)
+                    + (self.e14 * rhs.e4 - self.e1234 * rhs.e234),
+                e2: (self.e23 * rhs.e3 + self.e24 * rhs.e4)
+                    + (self.e1234 * rhs.e134 - self.e12 * rhs.e1),
+                e3: (self.e34 * rhs.e4 - self.e13 * rhs.e1)
+                    - (self.e23 * rhs.e2 + self.e1234 * rhs.e124),
+                e4: (self.e1234 * rhs.e123 - self.e14 * rhs.e1)
+                    - (self.e24 * rhs.e2 + self.e34 * rhs.e3),
                 e12: self.e12 * rhs.s - self.e1234 * rhs.e34,
                 e13: self.e13 * rhs.s + self.e1234 * rhs.e24,
                 e14: self.e14 * rhs.s - self.e1234 * rhs.e23,
@@ -7651,11 +7869,11 @@ pub mod g4 {
         #[inline]
         fn right_contraction(self, rhs: Vector) -> Even {
             Even {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    + self.e4 * rhs.e4,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 + self.e4 * rhs.e4),
                 e12: self.e123 * rhs.e3 + self.e124 * rhs.e4,
                 e13: self.e134 * rhs.e4 - self.e123 * rhs.e2,
-                e14: -self.e124 * rhs.e2 - self.e134 * rhs.e3,
+                e14: -(self.e124 * rhs.e2 + self.e134 * rhs.e3),
                 e23: self.e123 * rhs.e1 + self.e234 * rhs.e4,
                 e24: self.e124 * rhs.e1 - self.e234 * rhs.e3,
                 e34: self.e134 * rhs.e1 + self.e234 * rhs.e2,
@@ -7668,10 +7886,10 @@ pub mod g4 {
         #[inline]
         fn right_contraction(self, rhs: Bivector) -> Vector {
             Vector {
-                e1: -self.e123 * rhs.e23 - self.e124 * rhs.e24 - self.e134 * rhs.e34,
-                e2: self.e123 * rhs.e13 + self.e124 * rhs.e14 - self.e234 * rhs.e34,
-                e3: self.e134 * rhs.e14 + self.e234 * rhs.e24 - self.e123 * rhs.e12,
-                e4: -self.e124 * rhs.e12 - self.e134 * rhs.e13 - self.e234 * rhs.e23,
+                e1: -((self.e123 * rhs.e23 + self.e124 * rhs.e24) + self.e134 * rhs.e34),
+                e2: (self.e123 * rhs.e13 + self.e124 * rhs.e14) - self.e234 * rhs.e34,
+                e3: (self.e134 * rhs.e14 + self.e234 * rhs.e24) - self.e123 * rhs.e12,
+                e4: -((self.e124 * rhs.e12 + self.e134 * rhs.e13) + self.e234 * rhs.e23),
             }
         }
     }
@@ -7679,8 +7897,8 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn right_contraction(self, rhs: Trivector) -> f64 {
-            -self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                - self.e234 * rhs.e234
+            -((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                + (self.e134 * rhs.e134 + self.e234 * rhs.e234))
         }
     }
     impl RightContraction<Quadvector> for Odd {
@@ -7696,14 +7914,14 @@ pub mod g4 {
         #[inline]
         fn right_contraction(self, rhs: Even) -> Odd {
             Odd {
-                e1: self.e1 * rhs.s - self.e123 * rhs.e23 - self.e124 * rhs.e24
-                    - self.e134 * rhs.e34,
-                e2: self.e2 * rhs.s + self.e123 * rhs.e13 + self.e124 * rhs.e14
-                    - self.e234 * rhs.e34,
-                e3: self.e3 * rhs.s + self.e134 * rhs.e14 + self.e234 * rhs.e24
-                    - self.e123 * rhs.e12,
-                e4: self.e4 * rhs.s - self.e124 * rhs.e12 - self.e134 * rhs.e13
-                    - self.e234 * rhs.e23,
+                e1: (self.e1 * rhs.s - self.e123 * rhs.e23)
+                    - (self.e124 * rhs.e24 + self.e134 * rhs.e34),
+                e2: (self.e2 * rhs.s + self.e123 * rhs.e13)
+                    + (self.e124 * rhs.e14 - self.e234 * rhs.e34),
+                e3: (self.e3 * rhs.s + self.e134 * rhs.e14)
+                    + (self.e234 * rhs.e24 - self.e123 * rhs.e12),
+                e4: (self.e4 * rhs.s - self.e124 * rhs.e12)
+                    - (self.e134 * rhs.e13 + self.e234 * rhs.e23),
                 e123: self.e123 * rhs.s,
                 e124: self.e124 * rhs.s,
                 e134: self.e134 * rhs.s,
@@ -7716,12 +7934,13 @@ pub mod g4 {
         #[inline]
         fn right_contraction(self, rhs: Odd) -> Even {
             Even {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    + self.e4 * rhs.e4 - self.e123 * rhs.e123 - self.e124 * rhs.e124
-                    - self.e134 * rhs.e134 - self.e234 * rhs.e234,
+                s: ((self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 + self.e4 * rhs.e4))
+                    - ((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                        + (self.e134 * rhs.e134 + self.e234 * rhs.e234)),
                 e12: self.e123 * rhs.e3 + self.e124 * rhs.e4,
                 e13: self.e134 * rhs.e4 - self.e123 * rhs.e2,
-                e14: -self.e124 * rhs.e2 - self.e134 * rhs.e3,
+                e14: -(self.e124 * rhs.e2 + self.e134 * rhs.e3),
                 e23: self.e123 * rhs.e1 + self.e234 * rhs.e4,
                 e24: self.e124 * rhs.e1 - self.e234 * rhs.e3,
                 e34: self.e134 * rhs.e1 + self.e234 * rhs.e2,
@@ -7734,20 +7953,21 @@ pub mod g4 {
         #[inline]
         fn right_contraction(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    + self.e4 * rhs.e4 - self.e123 * rhs.e123 - self.e124 * rhs.e124
-                    - self.e134 * rhs.e134 - self.e234 * rhs.e234,
-                e1: self.e1 * rhs.s - self.e123 * rhs.e23 - self.e124 * rhs.e24
-                    - self.e134 * rhs.e34,
-                e2: self.e2 * rhs.s + self.e123 * rhs.e13 + self.e124 * rhs.e14
-                    - self.e234 * rhs.e34,
-                e3: self.e3 * rhs.s + self.e134 * rhs.e14 + self.e234 * rhs.e24
-                    - self.e123 * rhs.e12,
-                e4: self.e4 * rhs.s - self.e124 * rhs.e12 - self.e134 * rhs.e13
-                    - self.e234 * rhs.e23,
+                s: ((self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 + self.e4 * rhs.e4))
+                    - ((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                        + (self.e134 * rhs.e134 + self.e234 * rhs.e234)),
+                e1: (self.e1 * rhs.s - self.e123 * rhs.e23)
+                    - (self.e124 * rhs.e24 + self.e134 * rhs.e34),
+                e2: (self.e2 * rhs.s + self.e123 * rhs.e13)
+                    + (self.e124 * rhs.e14 - self.e234 * rhs.e34),
+                e3: (self.e3 * rhs.s + self.e134 * rhs.e14)
+                    + (self.e234 * rhs.e24 - self.e123 * rhs.e12),
+                e4: (self.e4 * rhs.s - self.e124 * rhs.e12)
+                    - (self.e134 * rhs.e13 + self.e234 * rhs.e23),
                 e12: self.e123 * rhs.e3 + self.e124 * rhs.e4,
                 e13: self.e134 * rhs.e4 - self.e123 * rhs.e2,
-                e14: -self.e124 * rhs.e2 - self.e134 * rhs.e3,
+                e14: -(self.e124 * rhs.e2 + self.e134 * rhs.e3),
                 e23: self.e123 * rhs.e1 + self.e234 * rhs.e4,
                 e24: self.e124 * rhs.e1 - self.e234 * rhs.e3,
                 e34: self.e134 * rhs.e1 + self.e234 * rhs.e2,
@@ -7788,15 +8008,15 @@ pub mod g4 {
         #[inline]
         fn right_contraction(self, rhs: Vector) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    + self.e4 * rhs.e4,
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 + self.e14 * rhs.e4,
-                e2: self.e23 * rhs.e3 + self.e24 * rhs.e4 - self.e12 * rhs.e1,
-                e3: self.e34 * rhs.e4 - self.e13 * rhs.e1 - self.e23 * rhs.e2,
-                e4: -self.e14 * rhs.e1 - self.e24 * rhs.e2 - self.e34 * rhs.e3,
+                s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 + self.e4 * rhs.e4),
+                e1: (self.e12 * rhs.e2 + self.e13 * rhs.e3) + self.e14 * rhs.e4,
+                e2: (self.e23 * rhs.e3 + self.e24 * rhs.e4) - self.e12 * rhs.e1,
+                e3: (self.e34 * rhs.e4 - self.e13 * rhs.e1) - self.e23 * rhs.e2,
+                e4: -((self.e14 * rhs.e1 + self.e24 * rhs.e2) + self.e34 * rhs.e3),
                 e12: self.e123 * rhs.e3 + self.e124 * rhs.e4,
                 e13: self.e134 * rhs.e4 - self.e123 * rhs.e2,
-                e14: -self.e124 * rhs.e2 - self.e134 * rhs.e3,
+                e14: -(self.e124 * rhs.e2 + self.e134 * rhs.e3),
                 e23: self.e123 * rhs.e1 + self.e234 * rhs.e4,
                 e24: self.e124 * rhs.e1 - self.e234 * rhs.e3,
                 e34: self.e134 * rhs.e1 + self.e234 * rhs.e2,
@@ -7813,12 +8033,12 @@ pub mod g4 {
         #[inline]
         fn right_contraction(self, rhs: Bivector) -> Multivector {
             Multivector {
-                s: -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                    - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34,
-                e1: -self.e123 * rhs.e23 - self.e124 * rhs.e24 - self.e134 * rhs.e34,
-                e2: self.e123 * rhs.e13 + self.e124 * rhs.e14 - self.e234 * rhs.e34,
-                e3: self.e134 * rhs.e14 + self.e234 * rhs.e24 - self.e123 * rhs.e12,
-                e4: -self.e124 * rhs.e12 - self.e134 * rhs.e13 - self.e234 * rhs.e23,
+                s: -(((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e14 * rhs.e14)
+                    + ((self.e23 * rhs.e23 + self.e24 * rhs.e24) + self.e34 * rhs.e34)),
+                e1: -((self.e123 * rhs.e23 + self.e124 * rhs.e24) + self.e134 * rhs.e34),
+                e2: (self.e123 * rhs.e13 + self.e124 * rhs.e14) - self.e234 * rhs.e34,
+                e3: (self.e134 * rhs.e14 + self.e234 * rhs.e24) - self.e123 * rhs.e12,
+                e4: -((self.e124 * rhs.e12 + self.e134 * rhs.e13) + self.e234 * rhs.e23),
                 e12: -self.e1234 * rhs.e34,
                 e13: self.e1234 * rhs.e24,
                 e14: -self.e1234 * rhs.e23,
@@ -7838,8 +8058,8 @@ pub mod g4 {
         #[inline]
         fn right_contraction(self, rhs: Trivector) -> Multivector {
             Multivector {
-                s: -self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                    - self.e234 * rhs.e234,
+                s: -((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                    + (self.e134 * rhs.e134 + self.e234 * rhs.e234)),
                 e1: -self.e1234 * rhs.e234,
                 e2: self.e1234 * rhs.e134,
                 e3: -self.e1234 * rhs.e124,
@@ -7870,17 +8090,18 @@ pub mod g4 {
         #[inline]
         fn right_contraction(self, rhs: Even) -> Multivector {
             Multivector {
-                s: self.s * rhs.s + self.e1234 * rhs.e1234 - self.e12 * rhs.e12
-                    - self.e13 * rhs.e13 - self.e14 * rhs.e14 - self.e23 * rhs.e23
-                    - self.e24 * rhs.e24 - self.e34 * rhs.e34,
-                e1: self.e1 * rhs.s - self.e123 * rhs.e23 - self.e124 * rhs.e24
-                    - self.e134 * rhs.e34,
-                e2: self.e2 * rhs.s + self.e123 * rhs.e13 + self.e124 * rhs.e14
-                    - self.e234 * rhs.e34,
-                e3: self.e3 * rhs.s + self.e134 * rhs.e14 + self.e234 * rhs.e24
-                    - self.e123 * rhs.e12,
-                e4: self.e4 * rhs.s - self.e124 * rhs.e12 - self.e134 * rhs.e13
-                    - self.e234 * rhs.e23,
+                s: ((self.s * rhs.s + self.e1234 * rhs.e1234)
+                    - (self.e12 * rhs.e12 + self.e13 * rhs.e13))
+                    - ((self.e14 * rhs.e14 + self.e23 * rhs.e23)
+                        + (self.e24 * rhs.e24 + self.e34 * rhs.e34)),
+                e1: (self.e1 * rhs.s - self.e123 * rhs.e23)
+                    - (self.e124 * rhs.e24 + self.e134 * rhs.e34),
+                e2: (self.e2 * rhs.s + self.e123 * rhs.e13)
+                    + (self.e124 * rhs.e14 - self.e234 * rhs.e34),
+                e3: (self.e3 * rhs.s + self.e134 * rhs.e14)
+                    + (self.e234 * rhs.e24 - self.e123 * rhs.e12),
+                e4: (self.e4 * rhs.s - self.e124 * rhs.e12)
+                    - (self.e134 * rhs.e13 + self.e234 * rhs.e23),
                 e12: self.e12 * rhs.s - self.e1234 * rhs.e34,
                 e13: self.e13 * rhs.s + self.e1234 * rhs.e24,
                 e14: self.e14 * rhs.s - self.e1234 * rhs.e23,
@@ -7900,20 +8121,21 @@ pub mod g4 {
         #[inline]
         fn right_contraction(self, rhs: Odd) -> Multivector {
             Multivector {
-                s: self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                    + self.e4 * rhs.e4 - self.e123 * rhs.e123 - self.e124 * rhs.e124
-                    - self.e134 * rhs.e134 - self.e234 * rhs.e234,
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 + self.e14 * rhs.e4
-                    - self.e1234 * rhs.e234,
-                e2: self.e23 * rhs.e3 + self.e24 * rhs.e4 + self.e1234 * rhs.e134
-                    - self.e12 * rhs.e1,
-                e3: self.e34 * rhs.e4 - self.e13 * rhs.e1 - self.e23 * rhs.e2
-                    - self.e1234 * rhs.e124,
-                e4: self.e1234 * rhs.e123 - self.e14 * rhs.e1 - self.e24 * rhs.e2
-                    - self.e34 * rhs.e3,
+                s: ((self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                    + (self.e3 * rhs.e3 + self.e4 * rhs.e4))
+                    - ((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                        + (self.e134 * rhs.e134 + self.e234 * rhs.e234)),
+                e1: (self.e12 * rhs.e2 + self.e13 * rhs.e3)
+                    + (self.e14 * rhs.e4 - self.e1234 * rhs.e234),
+                e2: (self.e23 * rhs.e3 + self.e24 * rhs.e4)
+                    + (self.e1234 * rhs.e134 - self.e12 * rhs.e1),
+                e3: (self.e34 * rhs.e4 - self.e13 * rhs.e1)
+                    - (self.e23 * rhs.e2 + self.e1234 * rhs.e124),
+                e4: (self.e1234 * rhs.e123 - self.e14 * rhs.e1)
+                    - (self.e24 * rhs.e2 + self.e34 * rhs.e3),
                 e12: self.e123 * rhs.e3 + self.e124 * rhs.e4,
                 e13: self.e134 * rhs.e4 - self.e123 * rhs.e2,
-                e14: -self.e124 * rhs.e2 - self.e134 * rhs.e3,
+                e14: -(self.e124 * rhs.e2 + self.e134 * rhs.e3),
                 e23: self.e123 * rhs.e1 + self.e234 * rhs.e4,
                 e24: self.e124 * rhs.e1 - self.e234 * rhs.e3,
                 e34: self.e134 * rhs.e1 + self.e234 * rhs.e2,
@@ -7930,36 +8152,42 @@ pub mod g4 {
         #[inline]
         fn right_contraction(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: self.s * rhs.s + self.e1 * rhs.e1 + self.e2 * rhs.e2
-                    + self.e3 * rhs.e3 + self.e4 * rhs.e4 + self.e1234 * rhs.e1234
-                    - self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                    - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34
-                    - self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                    - self.e234 * rhs.e234,
-                e1: self.e1 * rhs.s + self.e12 * rhs.e2 + self.e13 * rhs.e3
-                    + self.e14 * rhs.e4 - self.e123 * rhs.e23 - self.e124 * rhs.e24
-                    - self.e134 * rhs.e34 - self.e1234 * rhs.e234,
-                e2: self.e2 * rhs.s + self.e23 * rhs.e3 + self.e24 * rhs.e4
-                    + self.e123 * rhs.e13 + self.e124 * rhs.e14 + self.e1234 * rhs.e134
-                    - self.e12 * rhs.e1 - self.e234 * rhs.e34,
-                e3: self.e3 * rhs.s + self.e34 * rhs.e4 + self.e134 * rhs.e14
-                    + self.e234 * rhs.e24 - self.e13 * rhs.e1 - self.e23 * rhs.e2
-                    - self.e123 * rhs.e12 - self.e1234 * rhs.e124,
-                e4: self.e4 * rhs.s + self.e1234 * rhs.e123 - self.e14 * rhs.e1
-                    - self.e24 * rhs.e2 - self.e34 * rhs.e3 - self.e124 * rhs.e12
-                    - self.e134 * rhs.e13 - self.e234 * rhs.e23,
-                e12: self.e12 * rhs.s + self.e123 * rhs.e3 + self.e124 * rhs.e4
-                    - self.e1234 * rhs.e34,
-                e13: self.e13 * rhs.s + self.e134 * rhs.e4 + self.e1234 * rhs.e24
-                    - self.e123 * rhs.e2,
-                e14: self.e14 * rhs.s - self.e124 * rhs.e2 - self.e134 * rhs.e3
-                    - self.e1234 * rhs.e23,
-                e23: self.e23 * rhs.s + self.e123 * rhs.e1 + self.e234 * rhs.e4
-                    - self.e1234 * rhs.e14,
-                e24: self.e24 * rhs.s + self.e124 * rhs.e1 + self.e1234 * rhs.e13
-                    - self.e234 * rhs.e3,
-                e34: self.e34 * rhs.s + self.e134 * rhs.e1 + self.e234 * rhs.e2
-                    - self.e1234 * rhs.e12,
+                s: (((self.s * rhs.s + self.e1 * rhs.e1)
+                    + (self.e2 * rhs.e2 + self.e3 * rhs.e3))
+                    + ((self.e4 * rhs.e4 + self.e1234 * rhs.e1234)
+                        - (self.e12 * rhs.e12 + self.e13 * rhs.e13)))
+                    - (((self.e14 * rhs.e14 + self.e23 * rhs.e23)
+                        + (self.e24 * rhs.e24 + self.e34 * rhs.e34))
+                        + ((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                            + (self.e134 * rhs.e134 + self.e234 * rhs.e234))),
+                e1: ((self.e1 * rhs.s + self.e12 * rhs.e2)
+                    + (self.e13 * rhs.e3 + self.e14 * rhs.e4))
+                    - ((self.e123 * rhs.e23 + self.e124 * rhs.e24)
+                        + (self.e134 * rhs.e34 + self.e1234 * rhs.e234)),
+                e2: ((self.e2 * rhs.s + self.e23 * rhs.e3)
+                    + (self.e24 * rhs.e4 + self.e123 * rhs.e13))
+                    + ((self.e124 * rhs.e14 + self.e1234 * rhs.e134)
+                        - (self.e12 * rhs.e1 + self.e234 * rhs.e34)),
+                e3: ((self.e3 * rhs.s + self.e34 * rhs.e4)
+                    + (self.e134 * rhs.e14 + self.e234 * rhs.e24))
+                    - ((self.e13 * rhs.e1 + self.e23 * rhs.e2)
+                        + (self.e123 * rhs.e12 + self.e1234 * rhs.e124)),
+                e4: ((self.e4 * rhs.s + self.e1234 * rhs.e123)
+                    - (self.e14 * rhs.e1 + self.e24 * rhs.e2))
+                    - ((self.e34 * rhs.e3 + self.e124 * rhs.e12)
+                        + (self.e134 * rhs.e13 + self.e234 * rhs.e23)),
+                e12: (self.e12 * rhs.s + self.e123 * rhs.e3)
+                    + (self.e124 * rhs.e4 - self.e1234 * rhs.e34),
+                e13: (self.e13 * rhs.s + self.e134 * rhs.e4)
+                    + (self.e1234 * rhs.e24 - self.e123 * rhs.e2),
+                e14: (self.e14 * rhs.s - self.e124 * rhs.e2)
+                    - (self.e134 * rhs.e3 + self.e1234 * rhs.e23),
+                e23: (self.e23 * rhs.s + self.e123 * rhs.e1)
+                    + (self.e234 * rhs.e4 - self.e1234 * rhs.e14),
+                e24: (self.e24 * rhs.s + self.e124 * rhs.e1)
+                    + (self.e1234 * rhs.e13 - self.e234 * rhs.e3),
+                e34: (self.e34 * rhs.s + self.e134 * rhs.e1)
+                    + (self.e234 * rhs.e2 - self.e1234 * rhs.e12),
                 e123: self.e123 * rhs.s + self.e1234 * rhs.e4,
                 e124: self.e124 * rhs.s - self.e1234 * rhs.e3,
                 e134: self.e134 * rhs.s + self.e1234 * rhs.e2,
@@ -8034,7 +8262,7 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Vector) -> f64 {
-            self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3 + self.e4 * rhs.e4
+            (self.e1 * rhs.e1 + self.e2 * rhs.e2) + (self.e3 * rhs.e3 + self.e4 * rhs.e4)
         }
     }
     impl ScalarProduct<Bivector> for Vector {
@@ -8073,14 +8301,14 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Odd) -> f64 {
-            self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3 + self.e4 * rhs.e4
+            (self.e1 * rhs.e1 + self.e2 * rhs.e2) + (self.e3 * rhs.e3 + self.e4 * rhs.e4)
         }
     }
     impl ScalarProduct<Multivector> for Vector {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Multivector) -> f64 {
-            self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3 + self.e4 * rhs.e4
+            (self.e1 * rhs.e1 + self.e2 * rhs.e2) + (self.e3 * rhs.e3 + self.e4 * rhs.e4)
         }
     }
     impl ScalarProduct<f64> for Bivector {
@@ -8103,8 +8331,8 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Bivector) -> f64 {
-            -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34
+            -(((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e14 * rhs.e14)
+                + ((self.e23 * rhs.e23 + self.e24 * rhs.e24) + self.e34 * rhs.e34))
         }
     }
     impl ScalarProduct<Trivector> for Bivector {
@@ -8127,8 +8355,8 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Even) -> f64 {
-            -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34
+            -(((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e14 * rhs.e14)
+                + ((self.e23 * rhs.e23 + self.e24 * rhs.e24) + self.e34 * rhs.e34))
         }
     }
     impl ScalarProduct<Odd> for Bivector {
@@ -8143,8 +8371,8 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Multivector) -> f64 {
-            -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34
+            -(((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e14 * rhs.e14)
+                + ((self.e23 * rhs.e23 + self.e24 * rhs.e24) + self.e34 * rhs.e34))
         }
     }
     impl ScalarProduct<f64> for Trivector {
@@ -8175,8 +8403,8 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Trivector) -> f64 {
-            -self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                - self.e234 * rhs.e234
+            -((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                + (self.e134 * rhs.e134 + self.e234 * rhs.e234))
         }
     }
     impl ScalarProduct<Quadvector> for Trivector {
@@ -8199,16 +8427,16 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Odd) -> f64 {
-            -self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                - self.e234 * rhs.e234
+            -((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                + (self.e134 * rhs.e134 + self.e234 * rhs.e234))
         }
     }
     impl ScalarProduct<Multivector> for Trivector {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Multivector) -> f64 {
-            -self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                - self.e234 * rhs.e234
+            -((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                + (self.e134 * rhs.e134 + self.e234 * rhs.e234))
         }
     }
     impl ScalarProduct<f64> for Quadvector {
@@ -8291,8 +8519,8 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Bivector) -> f64 {
-            -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34
+            -(((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e14 * rhs.e14)
+                + ((self.e23 * rhs.e23 + self.e24 * rhs.e24) + self.e34 * rhs.e34))
         }
     }
     impl ScalarProduct<Trivector> for Even {
@@ -8314,9 +8542,10 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Even) -> f64 {
-            self.s * rhs.s + self.e1234 * rhs.e1234 - self.e12 * rhs.e12
-                - self.e13 * rhs.e13 - self.e14 * rhs.e14 - self.e23 * rhs.e23
-                - self.e24 * rhs.e24 - self.e34 * rhs.e34
+            ((self.s * rhs.s + self.e1234 * rhs.e1234)
+                - (self.e12 * rhs.e12 + self.e13 * rhs.e13))
+                - ((self.e14 * rhs.e14 + self.e23 * rhs.e23)
+                    + (self.e24 * rhs.e24 + self.e34 * rhs.e34))
         }
     }
     impl ScalarProduct<Odd> for Even {
@@ -8331,9 +8560,10 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Multivector) -> f64 {
-            self.s * rhs.s + self.e1234 * rhs.e1234 - self.e12 * rhs.e12
-                - self.e13 * rhs.e13 - self.e14 * rhs.e14 - self.e23 * rhs.e23
-                - self.e24 * rhs.e24 - self.e34 * rhs.e34
+            ((self.s * rhs.s + self.e1234 * rhs.e1234)
+                - (self.e12 * rhs.e12 + self.e13 * rhs.e13))
+                - ((self.e14 * rhs.e14 + self.e23 * rhs.e23)
+                    + (self.e24 * rhs.e24 + self.e34 * rhs.e34))
         }
     }
     impl ScalarProduct<f64> for Odd {
@@ -8348,7 +8578,7 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Vector) -> f64 {
-            self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3 + self.e4 * rhs.e4
+            (self.e1 * rhs.e1 + self.e2 * rhs.e2) + (self.e3 * rhs.e3 + self.e4 * rhs.e4)
         }
     }
     impl ScalarProduct<Bivector> for Odd {
@@ -8363,8 +8593,8 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Trivector) -> f64 {
-            -self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                - self.e234 * rhs.e234
+            -((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                + (self.e134 * rhs.e134 + self.e234 * rhs.e234))
         }
     }
     impl ScalarProduct<Quadvector> for Odd {
@@ -8387,18 +8617,20 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Odd) -> f64 {
-            self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3 + self.e4 * rhs.e4
-                - self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                - self.e234 * rhs.e234
+            ((self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                + (self.e3 * rhs.e3 + self.e4 * rhs.e4))
+                - ((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                    + (self.e134 * rhs.e134 + self.e234 * rhs.e234))
         }
     }
     impl ScalarProduct<Multivector> for Odd {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Multivector) -> f64 {
-            self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3 + self.e4 * rhs.e4
-                - self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                - self.e234 * rhs.e234
+            ((self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                + (self.e3 * rhs.e3 + self.e4 * rhs.e4))
+                - ((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                    + (self.e134 * rhs.e134 + self.e234 * rhs.e234))
         }
     }
     impl ScalarProduct<f64> for Multivector {
@@ -8412,23 +8644,23 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Vector) -> f64 {
-            self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3 + self.e4 * rhs.e4
+            (self.e1 * rhs.e1 + self.e2 * rhs.e2) + (self.e3 * rhs.e3 + self.e4 * rhs.e4)
         }
     }
     impl ScalarProduct<Bivector> for Multivector {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Bivector) -> f64 {
-            -self.e12 * rhs.e12 - self.e13 * rhs.e13 - self.e14 * rhs.e14
-                - self.e23 * rhs.e23 - self.e24 * rhs.e24 - self.e34 * rhs.e34
+            -(((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e14 * rhs.e14)
+                + ((self.e23 * rhs.e23 + self.e24 * rhs.e24) + self.e34 * rhs.e34))
         }
     }
     impl ScalarProduct<Trivector> for Multivector {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Trivector) -> f64 {
-            -self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                - self.e234 * rhs.e234
+            -((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                + (self.e134 * rhs.e134 + self.e234 * rhs.e234))
         }
     }
     impl ScalarProduct<Quadvector> for Multivector {
@@ -8442,29 +8674,34 @@ pub mod g4 {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Even) -> f64 {
-            self.s * rhs.s + self.e1234 * rhs.e1234 - self.e12 * rhs.e12
-                - self.e13 * rhs.e13 - self.e14 * rhs.e14 - self.e23 * rhs.e23
-                - self.e24 * rhs.e24 - self.e34 * rhs.e34
+            ((self.s * rhs.s + self.e1234 * rhs.e1234)
+                - (self.e12 * rhs.e12 + self.e13 * rhs.e13))
+                - ((self.e14 * rhs.e14 + self.e23 * rhs.e23)
+                    + (self.e24 * rhs.e24 + self.e34 * rhs.e34))
         }
     }
     impl ScalarProduct<Odd> for Multivector {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Odd) -> f64 {
-            self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3 + self.e4 * rhs.e4
-                - self.e123 * rhs.e123 - self.e124 * rhs.e124 - self.e134 * rhs.e134
-                - self.e234 * rhs.e234
+            ((self.e1 * rhs.e1 + self.e2 * rhs.e2)
+                + (self.e3 * rhs.e3 + self.e4 * rhs.e4))
+                - ((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                    + (self.e134 * rhs.e134 + self.e234 * rhs.e234))
         }
     }
     impl ScalarProduct<Multivector> for Multivector {
         type Output = f64;
         #[inline]
         fn scalar_product(self, rhs: Multivector) -> f64 {
-            self.s * rhs.s + self.e1 * rhs.e1 + self.e2 * rhs.e2 + self.e3 * rhs.e3
-                + self.e4 * rhs.e4 + self.e1234 * rhs.e1234 - self.e12 * rhs.e12
-                - self.e13 * rhs.e13 - self.e14 * rhs.e14 - self.e23 * rhs.e23
-                - self.e24 * rhs.e24 - self.e34 * rhs.e34 - self.e123 * rhs.e123
-                - self.e124 * rhs.e124 - self.e134 * rhs.e134 - self.e234 * rhs.e234
+            (((self.s * rhs.s + self.e1 * rhs.e1)
+                + (self.e2 * rhs.e2 + self.e3 * rhs.e3))
+                + ((self.e4 * rhs.e4 + self.e1234 * rhs.e1234)
+                    - (self.e12 * rhs.e12 + self.e13 * rhs.e13)))
+                - (((self.e14 * rhs.e14 + self.e23 * rhs.e23)
+                    + (self.e24 * rhs.e24 + self.e34 * rhs.e34))
+                    + ((self.e123 * rhs.e123 + self.e124 * rhs.e124)
+                        + (self.e134 * rhs.e134 + self.e234 * rhs.e234)))
         }
     }
     impl Commutator<Vector> for f64 {
@@ -8550,10 +8787,10 @@ pub mod g4 {
         #[inline]
         fn commutator(self, rhs: Bivector) -> Vector {
             Vector {
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13 - self.e4 * rhs.e14,
-                e2: self.e1 * rhs.e12 - self.e3 * rhs.e23 - self.e4 * rhs.e24,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 - self.e4 * rhs.e34,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34,
+                e1: -((self.e2 * rhs.e12 + self.e3 * rhs.e13) + self.e4 * rhs.e14),
+                e2: (self.e1 * rhs.e12 - self.e3 * rhs.e23) - self.e4 * rhs.e24,
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23) - self.e4 * rhs.e34,
+                e4: (self.e1 * rhs.e14 + self.e2 * rhs.e24) + self.e3 * rhs.e34,
             }
         }
     }
@@ -8562,8 +8799,8 @@ pub mod g4 {
         #[inline]
         fn commutator(self, rhs: Trivector) -> Quadvector {
             Quadvector {
-                e1234: self.e1 * rhs.e234 + self.e3 * rhs.e124 - self.e2 * rhs.e134
-                    - self.e4 * rhs.e123,
+                e1234: (self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    - (self.e2 * rhs.e134 + self.e4 * rhs.e123),
             }
         }
     }
@@ -8584,10 +8821,10 @@ pub mod g4 {
         #[inline]
         fn commutator(self, rhs: Even) -> Odd {
             Odd {
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13 - self.e4 * rhs.e14,
-                e2: self.e1 * rhs.e12 - self.e3 * rhs.e23 - self.e4 * rhs.e24,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 - self.e4 * rhs.e34,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34,
+                e1: -((self.e2 * rhs.e12 + self.e3 * rhs.e13) + self.e4 * rhs.e14),
+                e2: (self.e1 * rhs.e12 - self.e3 * rhs.e23) - self.e4 * rhs.e24,
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23) - self.e4 * rhs.e34,
+                e4: (self.e1 * rhs.e14 + self.e2 * rhs.e24) + self.e3 * rhs.e34,
                 e123: -self.e4 * rhs.e1234,
                 e124: self.e3 * rhs.e1234,
                 e134: -self.e2 * rhs.e1234,
@@ -8607,8 +8844,8 @@ pub mod g4 {
                 e23: self.e2 * rhs.e3 - self.e3 * rhs.e2,
                 e24: self.e2 * rhs.e4 - self.e4 * rhs.e2,
                 e34: self.e3 * rhs.e4 - self.e4 * rhs.e3,
-                e1234: self.e1 * rhs.e234 + self.e3 * rhs.e124 - self.e2 * rhs.e134
-                    - self.e4 * rhs.e123,
+                e1234: (self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    - (self.e2 * rhs.e134 + self.e4 * rhs.e123),
             }
         }
     }
@@ -8618,10 +8855,10 @@ pub mod g4 {
         fn commutator(self, rhs: Multivector) -> Multivector {
             Multivector {
                 s: 0.0,
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13 - self.e4 * rhs.e14,
-                e2: self.e1 * rhs.e12 - self.e3 * rhs.e23 - self.e4 * rhs.e24,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 - self.e4 * rhs.e34,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34,
+                e1: -((self.e2 * rhs.e12 + self.e3 * rhs.e13) + self.e4 * rhs.e14),
+                e2: (self.e1 * rhs.e12 - self.e3 * rhs.e23) - self.e4 * rhs.e24,
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23) - self.e4 * rhs.e34,
+                e4: (self.e1 * rhs.e14 + self.e2 * rhs.e24) + self.e3 * rhs.e34,
                 e12: self.e1 * rhs.e2 - self.e2 * rhs.e1,
                 e13: self.e1 * rhs.e3 - self.e3 * rhs.e1,
                 e14: self.e1 * rhs.e4 - self.e4 * rhs.e1,
@@ -8632,8 +8869,8 @@ pub mod g4 {
                 e124: self.e3 * rhs.e1234,
                 e134: -self.e2 * rhs.e1234,
                 e234: self.e1 * rhs.e1234,
-                e1234: self.e1 * rhs.e234 + self.e3 * rhs.e124 - self.e2 * rhs.e134
-                    - self.e4 * rhs.e123,
+                e1234: (self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    - (self.e2 * rhs.e134 + self.e4 * rhs.e123),
             }
         }
     }
@@ -8650,10 +8887,10 @@ pub mod g4 {
         #[inline]
         fn commutator(self, rhs: Vector) -> Vector {
             Vector {
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 + self.e14 * rhs.e4,
-                e2: self.e23 * rhs.e3 + self.e24 * rhs.e4 - self.e12 * rhs.e1,
-                e3: self.e34 * rhs.e4 - self.e13 * rhs.e1 - self.e23 * rhs.e2,
-                e4: -self.e14 * rhs.e1 - self.e24 * rhs.e2 - self.e34 * rhs.e3,
+                e1: (self.e12 * rhs.e2 + self.e13 * rhs.e3) + self.e14 * rhs.e4,
+                e2: (self.e23 * rhs.e3 + self.e24 * rhs.e4) - self.e12 * rhs.e1,
+                e3: (self.e34 * rhs.e4 - self.e13 * rhs.e1) - self.e23 * rhs.e2,
+                e4: -((self.e14 * rhs.e1 + self.e24 * rhs.e2) + self.e34 * rhs.e3),
             }
         }
     }
@@ -8662,18 +8899,18 @@ pub mod g4 {
         #[inline]
         fn commutator(self, rhs: Bivector) -> Bivector {
             Bivector {
-                e12: self.e23 * rhs.e13 + self.e24 * rhs.e14 - self.e13 * rhs.e23
-                    - self.e14 * rhs.e24,
-                e13: self.e12 * rhs.e23 + self.e34 * rhs.e14 - self.e14 * rhs.e34
-                    - self.e23 * rhs.e12,
-                e14: self.e12 * rhs.e24 + self.e13 * rhs.e34 - self.e24 * rhs.e12
-                    - self.e34 * rhs.e13,
-                e23: self.e13 * rhs.e12 + self.e34 * rhs.e24 - self.e12 * rhs.e13
-                    - self.e24 * rhs.e34,
-                e24: self.e14 * rhs.e12 + self.e23 * rhs.e34 - self.e12 * rhs.e14
-                    - self.e34 * rhs.e23,
-                e34: self.e14 * rhs.e13 + self.e24 * rhs.e23 - self.e13 * rhs.e14
-                    - self.e23 * rhs.e24,
+                e12: (self.e23 * rhs.e13 + self.e24 * rhs.e14)
+                    - (self.e13 * rhs.e23 + self.e14 * rhs.e24),
+                e13: (self.e12 * rhs.e23 + self.e34 * rhs.e14)
+                    - (self.e14 * rhs.e34 + self.e23 * rhs.e12),
+                e14: (self.e12 * rhs.e24 + self.e13 * rhs.e34)
+                    - (self.e24 * rhs.e12 + self.e34 * rhs.e13),
+                e23: (self.e13 * rhs.e12 + self.e34 * rhs.e24)
+                    - (self.e12 * rhs.e13 + self.e24 * rhs.e34),
+                e24: (self.e14 * rhs.e12 + self.e23 * rhs.e34)
+                    - (self.e12 * rhs.e14 + self.e34 * rhs.e23),
+                e34: (self.e14 * rhs.e13 + self.e24 * rhs.e23)
+                    - (self.e13 * rhs.e14 + self.e23 * rhs.e24),
             }
         }
     }
@@ -8682,10 +8919,10 @@ pub mod g4 {
         #[inline]
         fn commutator(self, rhs: Trivector) -> Trivector {
             Trivector {
-                e123: self.e14 * rhs.e234 + self.e34 * rhs.e124 - self.e24 * rhs.e134,
-                e124: self.e23 * rhs.e134 - self.e13 * rhs.e234 - self.e34 * rhs.e123,
-                e134: self.e12 * rhs.e234 + self.e24 * rhs.e123 - self.e23 * rhs.e124,
-                e234: self.e13 * rhs.e124 - self.e12 * rhs.e134 - self.e14 * rhs.e123,
+                e123: (self.e14 * rhs.e234 + self.e34 * rhs.e124) - self.e24 * rhs.e134,
+                e124: (self.e23 * rhs.e134 - self.e13 * rhs.e234) - self.e34 * rhs.e123,
+                e134: (self.e12 * rhs.e234 + self.e24 * rhs.e123) - self.e23 * rhs.e124,
+                e234: (self.e13 * rhs.e124 - self.e12 * rhs.e134) - self.e14 * rhs.e123,
             }
         }
     }
@@ -8702,18 +8939,18 @@ pub mod g4 {
         #[inline]
         fn commutator(self, rhs: Even) -> Bivector {
             Bivector {
-                e12: self.e23 * rhs.e13 + self.e24 * rhs.e14 - self.e13 * rhs.e23
-                    - self.e14 * rhs.e24,
-                e13: self.e12 * rhs.e23 + self.e34 * rhs.e14 - self.e14 * rhs.e34
-                    - self.e23 * rhs.e12,
-                e14: self.e12 * rhs.e24 + self.e13 * rhs.e34 - self.e24 * rhs.e12
-                    - self.e34 * rhs.e13,
-                e23: self.e13 * rhs.e12 + self.e34 * rhs.e24 - self.e12 * rhs.e13
-                    - self.e24 * rhs.e34,
-                e24: self.e14 * rhs.e12 + self.e23 * rhs.e34 - self.e12 * rhs.e14
-                    - self.e34 * rhs.e23,
-                e34: self.e14 * rhs.e13 + self.e24 * rhs.e23 - self.e13 * rhs.e14
-                    - self.e23 * rhs.e24,
+                e12: (self.e23 * rhs.e13 + self.e24 * rhs.e14)
+                    - (self.e13 * rhs.e23 + self.e14 * rhs.e24),
+                e13: (self.e12 * rhs.e23 + self.e34 * rhs.e14)
+                    - (self.e14 * rhs.e34 + self.e23 * rhs.e12),
+                e14: (self.e12 * rhs.e24 + self.e13 * rhs.e34)
+                    - (self.e24 * rhs.e12 + self.e34 * rhs.e13),
+                e23: (self.e13 * rhs.e12 + self.e34 * rhs.e24)
+                    - (self.e12 * rhs.e13 + self.e24 * rhs.e34),
+                e24: (self.e14 * rhs.e12 + self.e23 * rhs.e34)
+                    - (self.e12 * rhs.e14 + self.e34 * rhs.e23),
+                e34: (self.e14 * rhs.e13 + self.e24 * rhs.e23)
+                    - (self.e13 * rhs.e14 + self.e23 * rhs.e24),
             }
         }
     }
@@ -8722,14 +8959,14 @@ pub mod g4 {
         #[inline]
         fn commutator(self, rhs: Odd) -> Odd {
             Odd {
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 + self.e14 * rhs.e4,
-                e2: self.e23 * rhs.e3 + self.e24 * rhs.e4 - self.e12 * rhs.e1,
-                e3: self.e34 * rhs.e4 - self.e13 * rhs.e1 - self.e23 * rhs.e2,
-                e4: -self.e14 * rhs.e1 - self.e24 * rhs.e2 - self.e34 * rhs.e3,
-                e123: self.e14 * rhs.e234 + self.e34 * rhs.e124 - self.e24 * rhs.e134,
-                e124: self.e23 * rhs.e134 - self.e13 * rhs.e234 - self.e34 * rhs.e123,
-                e134: self.e12 * rhs.e234 + self.e24 * rhs.e123 - self.e23 * rhs.e124,
-                e234: self.e13 * rhs.e124 - self.e12 * rhs.e134 - self.e14 * rhs.e123,
+                e1: (self.e12 * rhs.e2 + self.e13 * rhs.e3) + self.e14 * rhs.e4,
+                e2: (self.e23 * rhs.e3 + self.e24 * rhs.e4) - self.e12 * rhs.e1,
+                e3: (self.e34 * rhs.e4 - self.e13 * rhs.e1) - self.e23 * rhs.e2,
+                e4: -((self.e14 * rhs.e1 + self.e24 * rhs.e2) + self.e34 * rhs.e3),
+                e123: (self.e14 * rhs.e234 + self.e34 * rhs.e124) - self.e24 * rhs.e134,
+                e124: (self.e23 * rhs.e134 - self.e13 * rhs.e234) - self.e34 * rhs.e123,
+                e134: (self.e12 * rhs.e234 + self.e24 * rhs.e123) - self.e23 * rhs.e124,
+                e234: (self.e13 * rhs.e124 - self.e12 * rhs.e134) - self.e14 * rhs.e123,
             }
         }
     }
@@ -8739,26 +8976,26 @@ pub mod g4 {
         fn commutator(self, rhs: Multivector) -> Multivector {
             Multivector {
                 s: 0.0,
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 + self.e14 * rhs.e4,
-                e2: self.e23 * rhs.e3 + self.e24 * rhs.e4 - self.e12 * rhs.e1,
-                e3: self.e34 * rhs.e4 - self.e13 * rhs.e1 - self.e23 * rhs.e2,
-                e4: -self.e14 * rhs.e1 - self.e24 * rhs.e2 - self.e34 * rhs.e3,
-                e12: self.e23 * rhs.e13 + self.e24 * rhs.e14 - self.e13 * rhs.e23
-                    - self.e14 * rhs.e24,
-                e13: self.e12 * rhs.e23 + self.e34 * rhs.e14 - self.e14 * rhs.e34
-                    - self.e23 * rhs.e12,
-                e14: self.e12 * rhs.e24 + self.e13 * rhs.e34 - self.e24 * rhs.e12
-                    - self.e34 * rhs.e13,
-                e23: self.e13 * rhs.e12 + self.e34 * rhs.e24 - self.e12 * rhs.e13
-                    - self.e24 * rhs.e34,
-                e24: self.e14 * rhs.e12 + self.e23 * rhs.e34 - self.e12 * rhs.e14
-                    - self.e34 * rhs.e23,
-                e34: self.e14 * rhs.e13 + self.e24 * rhs.e23 - self.e13 * rhs.e14
-                    - self.e23 * rhs.e24,
-                e123: self.e14 * rhs.e234 + self.e34 * rhs.e124 - self.e24 * rhs.e134,
-                e124: self.e23 * rhs.e134 - self.e13 * rhs.e234 - self.e34 * rhs.e123,
-                e134: self.e12 * rhs.e234 + self.e24 * rhs.e123 - self.e23 * rhs.e124,
-                e234: self.e13 * rhs.e124 - self.e12 * rhs.e134 - self.e14 * rhs.e123,
+                e1: (self.e12 * rhs.e2 + self.e13 * rhs.e3) + self.e14 * rhs.e4,
+                e2: (self.e23 * rhs.e3 + self.e24 * rhs.e4) - self.e12 * rhs.e1,
+                e3: (self.e34 * rhs.e4 - self.e13 * rhs.e1) - self.e23 * rhs.e2,
+                e4: -((self.e14 * rhs.e1 + self.e24 * rhs.e2) + self.e34 * rhs.e3),
+                e12: (self.e23 * rhs.e13 + self.e24 * rhs.e14)
+                    - (self.e13 * rhs.e23 + self.e14 * rhs.e24),
+                e13: (self.e12 * rhs.e23 + self.e34 * rhs.e14)
+                    - (self.e14 * rhs.e34 + self.e23 * rhs.e12),
+                e14: (self.e12 * rhs.e24 + self.e13 * rhs.e34)
+                    - (self.e24 * rhs.e12 + self.e34 * rhs.e13),
+                e23: (self.e13 * rhs.e12 + self.e34 * rhs.e24)
+                    - (self.e12 * rhs.e13 + self.e24 * rhs.e34),
+                e24: (self.e14 * rhs.e12 + self.e23 * rhs.e34)
+                    - (self.e12 * rhs.e14 + self.e34 * rhs.e23),
+                e34: (self.e14 * rhs.e13 + self.e24 * rhs.e23)
+                    - (self.e13 * rhs.e14 + self.e23 * rhs.e24),
+                e123: (self.e14 * rhs.e234 + self.e34 * rhs.e124) - self.e24 * rhs.e134,
+                e124: (self.e23 * rhs.e134 - self.e13 * rhs.e234) - self.e34 * rhs.e123,
+                e134: (self.e12 * rhs.e234 + self.e24 * rhs.e123) - self.e23 * rhs.e124,
+                e234: (self.e13 * rhs.e124 - self.e12 * rhs.e134) - self.e14 * rhs.e123,
                 e1234: 0.0,
             }
         }
@@ -8776,8 +9013,8 @@ pub mod g4 {
         #[inline]
         fn commutator(self, rhs: Vector) -> Quadvector {
             Quadvector {
-                e1234: self.e123 * rhs.e4 + self.e134 * rhs.e2 - self.e124 * rhs.e3
-                    - self.e234 * rhs.e1,
+                e1234: (self.e123 * rhs.e4 + self.e134 * rhs.e2)
+                    - (self.e124 * rhs.e3 + self.e234 * rhs.e1),
             }
         }
     }
@@ -8786,10 +9023,10 @@ pub mod g4 {
         #[inline]
         fn commutator(self, rhs: Bivector) -> Trivector {
             Trivector {
-                e123: self.e134 * rhs.e24 - self.e124 * rhs.e34 - self.e234 * rhs.e14,
-                e124: self.e123 * rhs.e34 + self.e234 * rhs.e13 - self.e134 * rhs.e23,
-                e134: self.e124 * rhs.e23 - self.e123 * rhs.e24 - self.e234 * rhs.e12,
-                e234: self.e123 * rhs.e14 + self.e134 * rhs.e12 - self.e124 * rhs.e13,
+                e123: (self.e134 * rhs.e24 - self.e124 * rhs.e34) - self.e234 * rhs.e14,
+                e124: (self.e123 * rhs.e34 + self.e234 * rhs.e13) - self.e134 * rhs.e23,
+                e134: (self.e124 * rhs.e23 - self.e123 * rhs.e24) - self.e234 * rhs.e12,
+                e234: (self.e123 * rhs.e14 + self.e134 * rhs.e12) - self.e124 * rhs.e13,
             }
         }
     }
@@ -8828,10 +9065,10 @@ pub mod g4 {
                 e2: -self.e134 * rhs.e1234,
                 e3: self.e124 * rhs.e1234,
                 e4: -self.e123 * rhs.e1234,
-                e123: self.e134 * rhs.e24 - self.e124 * rhs.e34 - self.e234 * rhs.e14,
-                e124: self.e123 * rhs.e34 + self.e234 * rhs.e13 - self.e134 * rhs.e23,
-                e134: self.e124 * rhs.e23 - self.e123 * rhs.e24 - self.e234 * rhs.e12,
-                e234: self.e123 * rhs.e14 + self.e134 * rhs.e12 - self.e124 * rhs.e13,
+                e123: (self.e134 * rhs.e24 - self.e124 * rhs.e34) - self.e234 * rhs.e14,
+                e124: (self.e123 * rhs.e34 + self.e234 * rhs.e13) - self.e134 * rhs.e23,
+                e134: (self.e124 * rhs.e23 - self.e123 * rhs.e24) - self.e234 * rhs.e12,
+                e234: (self.e123 * rhs.e14 + self.e134 * rhs.e12) - self.e124 * rhs.e13,
             }
         }
     }
@@ -8847,8 +9084,8 @@ pub mod g4 {
                 e23: self.e134 * rhs.e124 - self.e124 * rhs.e134,
                 e24: self.e123 * rhs.e134 - self.e134 * rhs.e123,
                 e34: self.e124 * rhs.e123 - self.e123 * rhs.e124,
-                e1234: self.e123 * rhs.e4 + self.e134 * rhs.e2 - self.e124 * rhs.e3
-                    - self.e234 * rhs.e1,
+                e1234: (self.e123 * rhs.e4 + self.e134 * rhs.e2)
+                    - (self.e124 * rhs.e3 + self.e234 * rhs.e1),
             }
         }
     }
@@ -8868,12 +9105,12 @@ pub mod g4 {
                 e23: self.e134 * rhs.e124 - self.e124 * rhs.e134,
                 e24: self.e123 * rhs.e134 - self.e134 * rhs.e123,
                 e34: self.e124 * rhs.e123 - self.e123 * rhs.e124,
-                e123: self.e134 * rhs.e24 - self.e124 * rhs.e34 - self.e234 * rhs.e14,
-                e124: self.e123 * rhs.e34 + self.e234 * rhs.e13 - self.e134 * rhs.e23,
-                e134: self.e124 * rhs.e23 - self.e123 * rhs.e24 - self.e234 * rhs.e12,
-                e234: self.e123 * rhs.e14 + self.e134 * rhs.e12 - self.e124 * rhs.e13,
-                e1234: self.e123 * rhs.e4 + self.e134 * rhs.e2 - self.e124 * rhs.e3
-                    - self.e234 * rhs.e1,
+                e123: (self.e134 * rhs.e24 - self.e124 * rhs.e34) - self.e234 * rhs.e14,
+                e124: (self.e123 * rhs.e34 + self.e234 * rhs.e13) - self.e134 * rhs.e23,
+                e134: (self.e124 * rhs.e23 - self.e123 * rhs.e24) - self.e234 * rhs.e12,
+                e234: (self.e123 * rhs.e14 + self.e134 * rhs.e12) - self.e124 * rhs.e13,
+                e1234: (self.e123 * rhs.e4 + self.e134 * rhs.e2)
+                    - (self.e124 * rhs.e3 + self.e234 * rhs.e1),
             }
         }
     }
@@ -8978,10 +9215,10 @@ pub mod g4 {
         #[inline]
         fn commutator(self, rhs: Vector) -> Odd {
             Odd {
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 + self.e14 * rhs.e4,
-                e2: self.e23 * rhs.e3 + self.e24 * rhs.e4 - self.e12 * rhs.e1,
-                e3: self.e34 * rhs.e4 - self.e13 * rhs.e1 - self.e23 * rhs.e2,
-                e4: -self.e14 * rhs.e1 - self.e24 * rhs.e2 - self.e34 * rhs.e3,
+                e1: (self.e12 * rhs.e2 + self.e13 * rhs.e3) + self.e14 * rhs.e4,
+                e2: (self.e23 * rhs.e3 + self.e24 * rhs.e4) - self.e12 * rhs.e1,
+                e3: (self.e34 * rhs.e4 - self.e13 * rhs.e1) - self.e23 * rhs.e2,
+                e4: -((self.e14 * rhs.e1 + self.e24 * rhs.e2) + self.e34 * rhs.e3),
                 e123: self.e1234 * rhs.e4,
                 e124: -self.e1234 * rhs.e3,
                 e134: self.e1234 * rhs.e2,
@@ -8994,18 +9231,18 @@ pub mod g4 {
         #[inline]
         fn commutator(self, rhs: Bivector) -> Bivector {
             Bivector {
-                e12: self.e23 * rhs.e13 + self.e24 * rhs.e14 - self.e13 * rhs.e23
-                    - self.e14 * rhs.e24,
-                e13: self.e12 * rhs.e23 + self.e34 * rhs.e14 - self.e14 * rhs.e34
-                    - self.e23 * rhs.e12,
-                e14: self.e12 * rhs.e24 + self.e13 * rhs.e34 - self.e24 * rhs.e12
-                    - self.e34 * rhs.e13,
-                e23: self.e13 * rhs.e12 + self.e34 * rhs.e24 - self.e12 * rhs.e13
-                    - self.e24 * rhs.e34,
-                e24: self.e14 * rhs.e12 + self.e23 * rhs.e34 - self.e12 * rhs.e14
-                    - self.e34 * rhs.e23,
-                e34: self.e14 * rhs.e13 + self.e24 * rhs.e23 - self.e13 * rhs.e14
-                    - self.e23 * rhs.e24,
+                e12: (self.e23 * rhs.e13 + self.e24 * rhs.e14)
+                    - (self.e13 * rhs.e23 + self.e14 * rhs.e24),
+                e13: (self.e12 * rhs.e23 + self.e34 * rhs.e14)
+                    - (self.e14 * rhs.e34 + self.e23 * rhs.e12),
+                e14: (self.e12 * rhs.e24 + self.e13 * rhs.e34)
+                    - (self.e24 * rhs.e12 + self.e34 * rhs.e13),
+                e23: (self.e13 * rhs.e12 + self.e34 * rhs.e24)
+                    - (self.e12 * rhs.e13 + self.e24 * rhs.e34),
+                e24: (self.e14 * rhs.e12 + self.e23 * rhs.e34)
+                    - (self.e12 * rhs.e14 + self.e34 * rhs.e23),
+                e34: (self.e14 * rhs.e13 + self.e24 * rhs.e23)
+                    - (self.e13 * rhs.e14 + self.e23 * rhs.e24),
             }
         }
     }
@@ -9018,10 +9255,10 @@ pub mod g4 {
                 e2: self.e1234 * rhs.e134,
                 e3: -self.e1234 * rhs.e124,
                 e4: self.e1234 * rhs.e123,
-                e123: self.e14 * rhs.e234 + self.e34 * rhs.e124 - self.e24 * rhs.e134,
-                e124: self.e23 * rhs.e134 - self.e13 * rhs.e234 - self.e34 * rhs.e123,
-                e134: self.e12 * rhs.e234 + self.e24 * rhs.e123 - self.e23 * rhs.e124,
-                e234: self.e13 * rhs.e124 - self.e12 * rhs.e134 - self.e14 * rhs.e123,
+                e123: (self.e14 * rhs.e234 + self.e34 * rhs.e124) - self.e24 * rhs.e134,
+                e124: (self.e23 * rhs.e134 - self.e13 * rhs.e234) - self.e34 * rhs.e123,
+                e134: (self.e12 * rhs.e234 + self.e24 * rhs.e123) - self.e23 * rhs.e124,
+                e234: (self.e13 * rhs.e124 - self.e12 * rhs.e134) - self.e14 * rhs.e123,
             }
         }
     }
@@ -9038,18 +9275,18 @@ pub mod g4 {
         #[inline]
         fn commutator(self, rhs: Even) -> Bivector {
             Bivector {
-                e12: self.e23 * rhs.e13 + self.e24 * rhs.e14 - self.e13 * rhs.e23
-                    - self.e14 * rhs.e24,
-                e13: self.e12 * rhs.e23 + self.e34 * rhs.e14 - self.e14 * rhs.e34
-                    - self.e23 * rhs.e12,
-                e14: self.e12 * rhs.e24 + self.e13 * rhs.e34 - self.e24 * rhs.e12
-                    - self.e34 * rhs.e13,
-                e23: self.e13 * rhs.e12 + self.e34 * rhs.e24 - self.e12 * rhs.e13
-                    - self.e24 * rhs.e34,
-                e24: self.e14 * rhs.e12 + self.e23 * rhs.e34 - self.e12 * rhs.e14
-                    - self.e34 * rhs.e23,
-                e34: self.e14 * rhs.e13 + self.e24 * rhs.e23 - self.e13 * rhs.e14
-                    - self.e23 * rhs.e24,
+                e12: (self.e23 * rhs.e13 + self.e24 * rhs.e14)
+                    - (self.e13 * rhs.e23 + self.e14 * rhs.e24),
+                e13: (self.e12 * rhs.e23 + self.e34 * rhs.e14)
+                    - (self.e14 * rhs.e34 + self.e23 * rhs.e12),
+                e14: (self.e12 * rhs.e24 + self.e13 * rhs.e34)
+                    - (self.e24 * rhs.e12 + self.e34 * rhs.e13),
+                e23: (self.e13 * rhs.e12 + self.e34 * rhs.e24)
+                    - (self.e12 * rhs.e13 + self.e24 * rhs.e34),
+                e24: (self.e14 * rhs.e12 + self.e23 * rhs.e34)
+                    - (self.e12 * rhs.e14 + self.e34 * rhs.e23),
+                e34: (self.e14 * rhs.e13 + self.e24 * rhs.e23)
+                    - (self.e13 * rhs.e14 + self.e23 * rhs.e24),
             }
         }
     }
@@ -9058,22 +9295,22 @@ pub mod g4 {
         #[inline]
         fn commutator(self, rhs: Odd) -> Odd {
             Odd {
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 + self.e14 * rhs.e4
-                    - self.e1234 * rhs.e234,
-                e2: self.e23 * rhs.e3 + self.e24 * rhs.e4 + self.e1234 * rhs.e134
-                    - self.e12 * rhs.e1,
-                e3: self.e34 * rhs.e4 - self.e13 * rhs.e1 - self.e23 * rhs.e2
-                    - self.e1234 * rhs.e124,
-                e4: self.e1234 * rhs.e123 - self.e14 * rhs.e1 - self.e24 * rhs.e2
-                    - self.e34 * rhs.e3,
-                e123: self.e14 * rhs.e234 + self.e34 * rhs.e124 + self.e1234 * rhs.e4
-                    - self.e24 * rhs.e134,
-                e124: self.e23 * rhs.e134 - self.e13 * rhs.e234 - self.e34 * rhs.e123
-                    - self.e1234 * rhs.e3,
-                e134: self.e12 * rhs.e234 + self.e24 * rhs.e123 + self.e1234 * rhs.e2
-                    - self.e23 * rhs.e124,
-                e234: self.e13 * rhs.e124 - self.e12 * rhs.e134 - self.e14 * rhs.e123
-                    - self.e1234 * rhs.e1,
+                e1: (self.e12 * rhs.e2 + self.e13 * rhs.e3)
+                    + (self.e14 * rhs.e4 - self.e1234 * rhs.e234),
+                e2: (self.e23 * rhs.e3 + self.e24 * rhs.e4)
+                    + (self.e1234 * rhs.e134 - self.e12 * rhs.e1),
+                e3: (self.e34 * rhs.e4 - self.e13 * rhs.e1)
+                    - (self.e23 * rhs.e2 + self.e1234 * rhs.e124),
+                e4: (self.e1234 * rhs.e123 - self.e14 * rhs.e1)
+                    - (self.e24 * rhs.e2 + self.e34 * rhs.e3),
+                e123: (self.e14 * rhs.e234 + self.e34 * rhs.e124)
+                    + (self.e1234 * rhs.e4 - self.e24 * rhs.e134),
+                e124: (self.e23 * rhs.e134 - self.e13 * rhs.e234)
+                    - (self.e34 * rhs.e123 + self.e1234 * rhs.e3),
+                e134: (self.e12 * rhs.e234 + self.e24 * rhs.e123)
+                    + (self.e1234 * rhs.e2 - self.e23 * rhs.e124),
+                e234: (self.e13 * rhs.e124 - self.e12 * rhs.e134)
+                    - (self.e14 * rhs.e123 + self.e1234 * rhs.e1),
             }
         }
     }
@@ -9083,34 +9320,34 @@ pub mod g4 {
         fn commutator(self, rhs: Multivector) -> Multivector {
             Multivector {
                 s: 0.0,
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 + self.e14 * rhs.e4
-                    - self.e1234 * rhs.e234,
-                e2: self.e23 * rhs.e3 + self.e24 * rhs.e4 + self.e1234 * rhs.e134
-                    - self.e12 * rhs.e1,
-                e3: self.e34 * rhs.e4 - self.e13 * rhs.e1 - self.e23 * rhs.e2
-                    - self.e1234 * rhs.e124,
-                e4: self.e1234 * rhs.e123 - self.e14 * rhs.e1 - self.e24 * rhs.e2
-                    - self.e34 * rhs.e3,
-                e12: self.e23 * rhs.e13 + self.e24 * rhs.e14 - self.e13 * rhs.e23
-                    - self.e14 * rhs.e24,
-                e13: self.e12 * rhs.e23 + self.e34 * rhs.e14 - self.e14 * rhs.e34
-                    - self.e23 * rhs.e12,
-                e14: self.e12 * rhs.e24 + self.e13 * rhs.e34 - self.e24 * rhs.e12
-                    - self.e34 * rhs.e13,
-                e23: self.e13 * rhs.e12 + self.e34 * rhs.e24 - self.e12 * rhs.e13
-                    - self.e24 * rhs.e34,
-                e24: self.e14 * rhs.e12 + self.e23 * rhs.e34 - self.e12 * rhs.e14
-                    - self.e34 * rhs.e23,
-                e34: self.e14 * rhs.e13 + self.e24 * rhs.e23 - self.e13 * rhs.e14
-                    - self.e23 * rhs.e24,
-                e123: self.e14 * rhs.e234 + self.e34 * rhs.e124 + self.e1234 * rhs.e4
-                    - self.e24 * rhs.e134,
-                e124: self.e23 * rhs.e134 - self.e13 * rhs.e234 - self.e34 * rhs.e123
-                    - self.e1234 * rhs.e3,
-                e134: self.e12 * rhs.e234 + self.e24 * rhs.e123 + self.e1234 * rhs.e2
-                    - self.e23 * rhs.e124,
-                e234: self.e13 * rhs.e124 - self.e12 * rhs.e134 - self.e14 * rhs.e123
-                    - self.e1234 * rhs.e1,
+                e1: (self.e12 * rhs.e2 + self.e13 * rhs.e3)
+                    + (self.e14 * rhs.e4 - self.e1234 * rhs.e234),
+                e2: (self.e23 * rhs.e3 + self.e24 * rhs.e4)
+                    + (self.e1234 * rhs.e134 - self.e12 * rhs.e1),
+                e3: (self.e34 * rhs.e4 - self.e13 * rhs.e1)
+                    - (self.e23 * rhs.e2 + self.e1234 * rhs.e124),
+                e4: (self.e1234 * rhs.e123 - self.e14 * rhs.e1)
+                    - (self.e24 * rhs.e2 + self.e34 * rhs.e3),
+                e12: (self.e23 * rhs.e13 + self.e24 * rhs.e14)
+                    - (self.e13 * rhs.e23 + self.e14 * rhs.e24),
+                e13: (self.e12 * rhs.e23 + self.e34 * rhs.e14)
+                    - (self.e14 * rhs.e34 + self.e23 * rhs.e12),
+                e14: (self.e12 * rhs.e24 + self.e13 * rhs.e34)
+                    - (self.e24 * rhs.e12 + self.e34 * rhs.e13),
+                e23: (self.e13 * rhs.e12 + self.e34 * rhs.e24)
+                    - (self.e12 * rhs.e13 + self.e24 * rhs.e34),
+                e24: (self.e14 * rhs.e12 + self.e23 * rhs.e34)
+                    - (self.e12 * rhs.e14 + self.e34 * rhs.e23),
+                e34: (self.e14 * rhs.e13 + self.e24 * rhs.e23)
+                    - (self.e13 * rhs.e14 + self.e23 * rhs.e24),
+                e123: (self.e14 * rhs.e234 + self.e34 * rhs.e124)
+                    + (self.e1234 * rhs.e4 - self.e24 * rhs.e134),
+                e124: (self.e23 * rhs.e134 - self.e13 * rhs.e234)
+                    - (self.e34 * rhs.e123 + self.e1234 * rhs.e3),
+                e134: (self.e12 * rhs.e234 + self.e24 * rhs.e123)
+                    + (self.e1234 * rhs.e2 - self.e23 * rhs.e124),
+                e234: (self.e13 * rhs.e124 - self.e12 * rhs.e134)
+                    - (self.e14 * rhs.e123 + self.e1234 * rhs.e1),
                 e1234: 0.0,
             }
         }
@@ -9135,8 +9372,8 @@ pub mod g4 {
                 e23: self.e2 * rhs.e3 - self.e3 * rhs.e2,
                 e24: self.e2 * rhs.e4 - self.e4 * rhs.e2,
                 e34: self.e3 * rhs.e4 - self.e4 * rhs.e3,
-                e1234: self.e123 * rhs.e4 + self.e134 * rhs.e2 - self.e124 * rhs.e3
-                    - self.e234 * rhs.e1,
+                e1234: (self.e123 * rhs.e4 + self.e134 * rhs.e2)
+                    - (self.e124 * rhs.e3 + self.e234 * rhs.e1),
             }
         }
     }
@@ -9145,14 +9382,14 @@ pub mod g4 {
         #[inline]
         fn commutator(self, rhs: Bivector) -> Odd {
             Odd {
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13 - self.e4 * rhs.e14,
-                e2: self.e1 * rhs.e12 - self.e3 * rhs.e23 - self.e4 * rhs.e24,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 - self.e4 * rhs.e34,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34,
-                e123: self.e134 * rhs.e24 - self.e124 * rhs.e34 - self.e234 * rhs.e14,
-                e124: self.e123 * rhs.e34 + self.e234 * rhs.e13 - self.e134 * rhs.e23,
-                e134: self.e124 * rhs.e23 - self.e123 * rhs.e24 - self.e234 * rhs.e12,
-                e234: self.e123 * rhs.e14 + self.e134 * rhs.e12 - self.e124 * rhs.e13,
+                e1: -((self.e2 * rhs.e12 + self.e3 * rhs.e13) + self.e4 * rhs.e14),
+                e2: (self.e1 * rhs.e12 - self.e3 * rhs.e23) - self.e4 * rhs.e24,
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23) - self.e4 * rhs.e34,
+                e4: (self.e1 * rhs.e14 + self.e2 * rhs.e24) + self.e3 * rhs.e34,
+                e123: (self.e134 * rhs.e24 - self.e124 * rhs.e34) - self.e234 * rhs.e14,
+                e124: (self.e123 * rhs.e34 + self.e234 * rhs.e13) - self.e134 * rhs.e23,
+                e134: (self.e124 * rhs.e23 - self.e123 * rhs.e24) - self.e234 * rhs.e12,
+                e234: (self.e123 * rhs.e14 + self.e134 * rhs.e12) - self.e124 * rhs.e13,
             }
         }
     }
@@ -9168,8 +9405,8 @@ pub mod g4 {
                 e23: self.e134 * rhs.e124 - self.e124 * rhs.e134,
                 e24: self.e123 * rhs.e134 - self.e134 * rhs.e123,
                 e34: self.e124 * rhs.e123 - self.e123 * rhs.e124,
-                e1234: self.e1 * rhs.e234 + self.e3 * rhs.e124 - self.e2 * rhs.e134
-                    - self.e4 * rhs.e123,
+                e1234: (self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    - (self.e2 * rhs.e134 + self.e4 * rhs.e123),
             }
         }
     }
@@ -9194,22 +9431,22 @@ pub mod g4 {
         #[inline]
         fn commutator(self, rhs: Even) -> Odd {
             Odd {
-                e1: self.e234 * rhs.e1234 - self.e2 * rhs.e12 - self.e3 * rhs.e13
-                    - self.e4 * rhs.e14,
-                e2: self.e1 * rhs.e12 - self.e3 * rhs.e23 - self.e4 * rhs.e24
-                    - self.e134 * rhs.e1234,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e124 * rhs.e1234
-                    - self.e4 * rhs.e34,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34
-                    - self.e123 * rhs.e1234,
-                e123: self.e134 * rhs.e24 - self.e4 * rhs.e1234 - self.e124 * rhs.e34
-                    - self.e234 * rhs.e14,
-                e124: self.e3 * rhs.e1234 + self.e123 * rhs.e34 + self.e234 * rhs.e13
-                    - self.e134 * rhs.e23,
-                e134: self.e124 * rhs.e23 - self.e2 * rhs.e1234 - self.e123 * rhs.e24
-                    - self.e234 * rhs.e12,
-                e234: self.e1 * rhs.e1234 + self.e123 * rhs.e14 + self.e134 * rhs.e12
-                    - self.e124 * rhs.e13,
+                e1: (self.e234 * rhs.e1234 - self.e2 * rhs.e12)
+                    - (self.e3 * rhs.e13 + self.e4 * rhs.e14),
+                e2: (self.e1 * rhs.e12 - self.e3 * rhs.e23)
+                    - (self.e4 * rhs.e24 + self.e134 * rhs.e1234),
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23)
+                    + (self.e124 * rhs.e1234 - self.e4 * rhs.e34),
+                e4: (self.e1 * rhs.e14 + self.e2 * rhs.e24)
+                    + (self.e3 * rhs.e34 - self.e123 * rhs.e1234),
+                e123: (self.e134 * rhs.e24 - self.e4 * rhs.e1234)
+                    - (self.e124 * rhs.e34 + self.e234 * rhs.e14),
+                e124: (self.e3 * rhs.e1234 + self.e123 * rhs.e34)
+                    + (self.e234 * rhs.e13 - self.e134 * rhs.e23),
+                e134: (self.e124 * rhs.e23 - self.e2 * rhs.e1234)
+                    - (self.e123 * rhs.e24 + self.e234 * rhs.e12),
+                e234: (self.e1 * rhs.e1234 + self.e123 * rhs.e14)
+                    + (self.e134 * rhs.e12 - self.e124 * rhs.e13),
             }
         }
     }
@@ -9219,21 +9456,22 @@ pub mod g4 {
         fn commutator(self, rhs: Odd) -> Even {
             Even {
                 s: 0.0,
-                e12: self.e1 * rhs.e2 + self.e234 * rhs.e134 - self.e2 * rhs.e1
-                    - self.e134 * rhs.e234,
-                e13: self.e1 * rhs.e3 + self.e124 * rhs.e234 - self.e3 * rhs.e1
-                    - self.e234 * rhs.e124,
-                e14: self.e1 * rhs.e4 + self.e234 * rhs.e123 - self.e4 * rhs.e1
-                    - self.e123 * rhs.e234,
-                e23: self.e2 * rhs.e3 + self.e134 * rhs.e124 - self.e3 * rhs.e2
-                    - self.e124 * rhs.e134,
-                e24: self.e2 * rhs.e4 + self.e123 * rhs.e134 - self.e4 * rhs.e2
-                    - self.e134 * rhs.e123,
-                e34: self.e3 * rhs.e4 + self.e124 * rhs.e123 - self.e4 * rhs.e3
-                    - self.e123 * rhs.e124,
-                e1234: self.e1 * rhs.e234 + self.e3 * rhs.e124 + self.e123 * rhs.e4
-                    + self.e134 * rhs.e2 - self.e2 * rhs.e134 - self.e4 * rhs.e123
-                    - self.e124 * rhs.e3 - self.e234 * rhs.e1,
+                e12: (self.e1 * rhs.e2 + self.e234 * rhs.e134)
+                    - (self.e2 * rhs.e1 + self.e134 * rhs.e234),
+                e13: (self.e1 * rhs.e3 + self.e124 * rhs.e234)
+                    - (self.e3 * rhs.e1 + self.e234 * rhs.e124),
+                e14: (self.e1 * rhs.e4 + self.e234 * rhs.e123)
+                    - (self.e4 * rhs.e1 + self.e123 * rhs.e234),
+                e23: (self.e2 * rhs.e3 + self.e134 * rhs.e124)
+                    - (self.e3 * rhs.e2 + self.e124 * rhs.e134),
+                e24: (self.e2 * rhs.e4 + self.e123 * rhs.e134)
+                    - (self.e4 * rhs.e2 + self.e134 * rhs.e123),
+                e34: (self.e3 * rhs.e4 + self.e124 * rhs.e123)
+                    - (self.e4 * rhs.e3 + self.e123 * rhs.e124),
+                e1234: ((self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    + (self.e123 * rhs.e4 + self.e134 * rhs.e2))
+                    - ((self.e2 * rhs.e134 + self.e4 * rhs.e123)
+                        + (self.e124 * rhs.e3 + self.e234 * rhs.e1)),
             }
         }
     }
@@ -9243,37 +9481,38 @@ pub mod g4 {
         fn commutator(self, rhs: Multivector) -> Multivector {
             Multivector {
                 s: 0.0,
-                e1: self.e234 * rhs.e1234 - self.e2 * rhs.e12 - self.e3 * rhs.e13
-                    - self.e4 * rhs.e14,
-                e2: self.e1 * rhs.e12 - self.e3 * rhs.e23 - self.e4 * rhs.e24
-                    - self.e134 * rhs.e1234,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e124 * rhs.e1234
-                    - self.e4 * rhs.e34,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34
-                    - self.e123 * rhs.e1234,
-                e12: self.e1 * rhs.e2 + self.e234 * rhs.e134 - self.e2 * rhs.e1
-                    - self.e134 * rhs.e234,
-                e13: self.e1 * rhs.e3 + self.e124 * rhs.e234 - self.e3 * rhs.e1
-                    - self.e234 * rhs.e124,
-                e14: self.e1 * rhs.e4 + self.e234 * rhs.e123 - self.e4 * rhs.e1
-                    - self.e123 * rhs.e234,
-                e23: self.e2 * rhs.e3 + self.e134 * rhs.e124 - self.e3 * rhs.e2
-                    - self.e124 * rhs.e134,
-                e24: self.e2 * rhs.e4 + self.e123 * rhs.e134 - self.e4 * rhs.e2
-                    - self.e134 * rhs.e123,
-                e34: self.e3 * rhs.e4 + self.e124 * rhs.e123 - self.e4 * rhs.e3
-                    - self.e123 * rhs.e124,
-                e123: self.e134 * rhs.e24 - self.e4 * rhs.e1234 - self.e124 * rhs.e34
-                    - self.e234 * rhs.e14,
-                e124: self.e3 * rhs.e1234 + self.e123 * rhs.e34 + self.e234 * rhs.e13
-                    - self.e134 * rhs.e23,
-                e134: self.e124 * rhs.e23 - self.e2 * rhs.e1234 - self.e123 * rhs.e24
-                    - self.e234 * rhs.e12,
-                e234: self.e1 * rhs.e1234 + self.e123 * rhs.e14 + self.e134 * rhs.e12
-                    - self.e124 * rhs.e13,
-                e1234: self.e1 * rhs.e234 + self.e3 * rhs.e124 + self.e123 * rhs.e4
-                    + self.e134 * rhs.e2 - self.e2 * rhs.e134 - self.e4 * rhs.e123
-                    - self.e124 * rhs.e3 - self.e234 * rhs.e1,
+                e1: (self.e234 * rhs.e1234 - self.e2 * rhs.e12)
+                    - (self.e3 * rhs.e13 + self.e4 * rhs.e14),
+                e2: (self.e1 * rhs.e12 - self.e3 * rhs.e23)
+                    - (self.e4 * rhs.e24 + self.e134 * rhs.e1234),
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23)
+                    + (self.e124 * rhs.e1234 - self.e4 * rhs.e34),
+                e4: (self.e1 * rhs.e14 + self.e2 * rhs.e24)
+                    + (self.e3 * rhs.e34 - self.e123 * rhs.e1234),
+                e12: (self.e1 * rhs.e2 + self.e234 * rhs.e134)
+                    - (self.e2 * rhs.e1 + self.e134 * rhs.e234),
+                e13: (self.e1 * rhs.e3 + self.e124 * rhs.e234)
+                    - (self.e3 * rhs.e1 + self.e234 * rhs.e124),
+                e14: (self.e1 * rhs.e4 + self.e234 * rhs.e123)
+                    - (self.e4 * rhs.e1 + self.e123 * rhs.e234),
+                e23: (self.e2 * rhs.e3 + self.e134 * rhs.e124)
+                    - (self.e3 * rhs.e2 + self.e124 * rhs.e134),
+                e24: (self.e2 * rhs.e4 + self.e123 * rhs.e134)
+                    - (self.e4 * rhs.e2 + self.e134 * rhs.e123),
+                e34: (self.e3 * rhs.e4 + self.e124 * rhs.e123)
+                    - (self.e4 * rhs.e3 + self.e123 * rhs.e124),
+                e123: (self.e134 * rhs.e24 - self.e4 * rhs.e1234)
+                    - (self.e124 * rhs.e34 + self.e234 * rhs.e14),
+                e124: (self.e3 * rhs.e1234 + self.e123 * rhs.e34)
+                    + (self.e234 * rhs.e13 - self.e134 * rhs.e23),
+                e134: (self.e124 * rhs.e23 - self.e2 * rhs.e1234)
+                    - (self.e123 * rhs.e24 + self.e234 * rhs.e12),
+                e234: (self.e1 * rhs.e1234 + self.e123 * rhs.e14)
+                    + (self.e134 * rhs.e12 - self.e124 * rhs.e13),
+                e1234: ((self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    + (self.e123 * rhs.e4 + self.e134 * rhs.e2))
+                    - ((self.e2 * rhs.e134 + self.e4 * rhs.e123)
+                        + (self.e124 * rhs.e3 + self.e234 * rhs.e1)),
             }
         }
     }
@@ -9291,10 +9530,10 @@ pub mod g4 {
         fn commutator(self, rhs: Vector) -> Multivector {
             Multivector {
                 s: 0.0,
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 + self.e14 * rhs.e4,
-                e2: self.e23 * rhs.e3 + self.e24 * rhs.e4 - self.e12 * rhs.e1,
-                e3: self.e34 * rhs.e4 - self.e13 * rhs.e1 - self.e23 * rhs.e2,
-                e4: -self.e14 * rhs.e1 - self.e24 * rhs.e2 - self.e34 * rhs.e3,
+                e1: (self.e12 * rhs.e2 + self.e13 * rhs.e3) + self.e14 * rhs.e4,
+                e2: (self.e23 * rhs.e3 + self.e24 * rhs.e4) - self.e12 * rhs.e1,
+                e3: (self.e34 * rhs.e4 - self.e13 * rhs.e1) - self.e23 * rhs.e2,
+                e4: -((self.e14 * rhs.e1 + self.e24 * rhs.e2) + self.e34 * rhs.e3),
                 e12: self.e1 * rhs.e2 - self.e2 * rhs.e1,
                 e13: self.e1 * rhs.e3 - self.e3 * rhs.e1,
                 e14: self.e1 * rhs.e4 - self.e4 * rhs.e1,
@@ -9305,8 +9544,8 @@ pub mod g4 {
                 e124: -self.e1234 * rhs.e3,
                 e134: self.e1234 * rhs.e2,
                 e234: -self.e1234 * rhs.e1,
-                e1234: self.e123 * rhs.e4 + self.e134 * rhs.e2 - self.e124 * rhs.e3
-                    - self.e234 * rhs.e1,
+                e1234: (self.e123 * rhs.e4 + self.e134 * rhs.e2)
+                    - (self.e124 * rhs.e3 + self.e234 * rhs.e1),
             }
         }
     }
@@ -9316,26 +9555,26 @@ pub mod g4 {
         fn commutator(self, rhs: Bivector) -> Multivector {
             Multivector {
                 s: 0.0,
-                e1: -self.e2 * rhs.e12 - self.e3 * rhs.e13 - self.e4 * rhs.e14,
-                e2: self.e1 * rhs.e12 - self.e3 * rhs.e23 - self.e4 * rhs.e24,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 - self.e4 * rhs.e34,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34,
-                e12: self.e23 * rhs.e13 + self.e24 * rhs.e14 - self.e13 * rhs.e23
-                    - self.e14 * rhs.e24,
-                e13: self.e12 * rhs.e23 + self.e34 * rhs.e14 - self.e14 * rhs.e34
-                    - self.e23 * rhs.e12,
-                e14: self.e12 * rhs.e24 + self.e13 * rhs.e34 - self.e24 * rhs.e12
-                    - self.e34 * rhs.e13,
-                e23: self.e13 * rhs.e12 + self.e34 * rhs.e24 - self.e12 * rhs.e13
-                    - self.e24 * rhs.e34,
-                e24: self.e14 * rhs.e12 + self.e23 * rhs.e34 - self.e12 * rhs.e14
-                    - self.e34 * rhs.e23,
-                e34: self.e14 * rhs.e13 + self.e24 * rhs.e23 - self.e13 * rhs.e14
-                    - self.e23 * rhs.e24,
-                e123: self.e134 * rhs.e24 - self.e124 * rhs.e34 - self.e234 * rhs.e14,
-                e124: self.e123 * rhs.e34 + self.e234 * rhs.e13 - self.e134 * rhs.e23,
-                e134: self.e124 * rhs.e23 - self.e123 * rhs.e24 - self.e234 * rhs.e12,
-                e234: self.e123 * rhs.e14 + self.e134 * rhs.e12 - self.e124 * rhs.e13,
+                e1: -((self.e2 * rhs.e12 + self.e3 * rhs.e13) + self.e4 * rhs.e14),
+                e2: (self.e1 * rhs.e12 - self.e3 * rhs.e23) - self.e4 * rhs.e24,
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23) - self.e4 * rhs.e34,
+                e4: (self.e1 * rhs.e14 + self.e2 * rhs.e24) + self.e3 * rhs.e34,
+                e12: (self.e23 * rhs.e13 + self.e24 * rhs.e14)
+                    - (self.e13 * rhs.e23 + self.e14 * rhs.e24),
+                e13: (self.e12 * rhs.e23 + self.e34 * rhs.e14)
+                    - (self.e14 * rhs.e34 + self.e23 * rhs.e12),
+                e14: (self.e12 * rhs.e24 + self.e13 * rhs.e34)
+                    - (self.e24 * rhs.e12 + self.e34 * rhs.e13),
+                e23: (self.e13 * rhs.e12 + self.e34 * rhs.e24)
+                    - (self.e12 * rhs.e13 + self.e24 * rhs.e34),
+                e24: (self.e14 * rhs.e12 + self.e23 * rhs.e34)
+                    - (self.e12 * rhs.e14 + self.e34 * rhs.e23),
+                e34: (self.e14 * rhs.e13 + self.e24 * rhs.e23)
+                    - (self.e13 * rhs.e14 + self.e23 * rhs.e24),
+                e123: (self.e134 * rhs.e24 - self.e124 * rhs.e34) - self.e234 * rhs.e14,
+                e124: (self.e123 * rhs.e34 + self.e234 * rhs.e13) - self.e134 * rhs.e23,
+                e134: (self.e124 * rhs.e23 - self.e123 * rhs.e24) - self.e234 * rhs.e12,
+                e234: (self.e123 * rhs.e14 + self.e134 * rhs.e12) - self.e124 * rhs.e13,
                 e1234: 0.0,
             }
         }
@@ -9356,12 +9595,12 @@ pub mod g4 {
                 e23: self.e134 * rhs.e124 - self.e124 * rhs.e134,
                 e24: self.e123 * rhs.e134 - self.e134 * rhs.e123,
                 e34: self.e124 * rhs.e123 - self.e123 * rhs.e124,
-                e123: self.e14 * rhs.e234 + self.e34 * rhs.e124 - self.e24 * rhs.e134,
-                e124: self.e23 * rhs.e134 - self.e13 * rhs.e234 - self.e34 * rhs.e123,
-                e134: self.e12 * rhs.e234 + self.e24 * rhs.e123 - self.e23 * rhs.e124,
-                e234: self.e13 * rhs.e124 - self.e12 * rhs.e134 - self.e14 * rhs.e123,
-                e1234: self.e1 * rhs.e234 + self.e3 * rhs.e124 - self.e2 * rhs.e134
-                    - self.e4 * rhs.e123,
+                e123: (self.e14 * rhs.e234 + self.e34 * rhs.e124) - self.e24 * rhs.e134,
+                e124: (self.e23 * rhs.e134 - self.e13 * rhs.e234) - self.e34 * rhs.e123,
+                e134: (self.e12 * rhs.e234 + self.e24 * rhs.e123) - self.e23 * rhs.e124,
+                e234: (self.e13 * rhs.e124 - self.e12 * rhs.e134) - self.e14 * rhs.e123,
+                e1234: (self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    - (self.e2 * rhs.e134 + self.e4 * rhs.e123),
             }
         }
     }
@@ -9387,34 +9626,34 @@ pub mod g4 {
         fn commutator(self, rhs: Even) -> Multivector {
             Multivector {
                 s: 0.0,
-                e1: self.e234 * rhs.e1234 - self.e2 * rhs.e12 - self.e3 * rhs.e13
-                    - self.e4 * rhs.e14,
-                e2: self.e1 * rhs.e12 - self.e3 * rhs.e23 - self.e4 * rhs.e24
-                    - self.e134 * rhs.e1234,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e124 * rhs.e1234
-                    - self.e4 * rhs.e34,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34
-                    - self.e123 * rhs.e1234,
-                e12: self.e23 * rhs.e13 + self.e24 * rhs.e14 - self.e13 * rhs.e23
-                    - self.e14 * rhs.e24,
-                e13: self.e12 * rhs.e23 + self.e34 * rhs.e14 - self.e14 * rhs.e34
-                    - self.e23 * rhs.e12,
-                e14: self.e12 * rhs.e24 + self.e13 * rhs.e34 - self.e24 * rhs.e12
-                    - self.e34 * rhs.e13,
-                e23: self.e13 * rhs.e12 + self.e34 * rhs.e24 - self.e12 * rhs.e13
-                    - self.e24 * rhs.e34,
-                e24: self.e14 * rhs.e12 + self.e23 * rhs.e34 - self.e12 * rhs.e14
-                    - self.e34 * rhs.e23,
-                e34: self.e14 * rhs.e13 + self.e24 * rhs.e23 - self.e13 * rhs.e14
-                    - self.e23 * rhs.e24,
-                e123: self.e134 * rhs.e24 - self.e4 * rhs.e1234 - self.e124 * rhs.e34
-                    - self.e234 * rhs.e14,
-                e124: self.e3 * rhs.e1234 + self.e123 * rhs.e34 + self.e234 * rhs.e13
-                    - self.e134 * rhs.e23,
-                e134: self.e124 * rhs.e23 - self.e2 * rhs.e1234 - self.e123 * rhs.e24
-                    - self.e234 * rhs.e12,
-                e234: self.e1 * rhs.e1234 + self.e123 * rhs.e14 + self.e134 * rhs.e12
-                    - self.e124 * rhs.e13,
+                e1: (self.e234 * rhs.e1234 - self.e2 * rhs.e12)
+                    - (self.e3 * rhs.e13 + self.e4 * rhs.e14),
+                e2: (self.e1 * rhs.e12 - self.e3 * rhs.e23)
+                    - (self.e4 * rhs.e24 + self.e134 * rhs.e1234),
+                e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23)
+                    + (self.e124 * rhs.e1234 - self.e4 * rhs.e34),
+                e4: (self.e1 * rhs.e14 + self.e2 * rhs.e24)
+                    + (self.e3 * rhs.e34 - self.e123 * rhs.e1234),
+                e12: (self.e23 * rhs.e13 + self.e24 * rhs.e14)
+                    - (self.e13 * rhs.e23 + self.e14 * rhs.e24),
+                e13: (self.e12 * rhs.e23 + self.e34 * rhs.e14)
+                    - (self.e14 * rhs.e34 + self.e23 * rhs.e12),
+                e14: (self.e12 * rhs.e24 + self.e13 * rhs.e34)
+                    - (self.e24 * rhs.e12 + self.e34 * rhs.e13),
+                e23: (self.e13 * rhs.e12 + self.e34 * rhs.e24)
+                    - (self.e12 * rhs.e13 + self.e24 * rhs.e34),
+                e24: (self.e14 * rhs.e12 + self.e23 * rhs.e34)
+                    - (self.e12 * rhs.e14 + self.e34 * rhs.e23),
+                e34: (self.e14 * rhs.e13 + self.e24 * rhs.e23)
+                    - (self.e13 * rhs.e14 + self.e23 * rhs.e24),
+                e123: (self.e134 * rhs.e24 - self.e4 * rhs.e1234)
+                    - (self.e124 * rhs.e34 + self.e234 * rhs.e14),
+                e124: (self.e3 * rhs.e1234 + self.e123 * rhs.e34)
+                    + (self.e234 * rhs.e13 - self.e134 * rhs.e23),
+                e134: (self.e124 * rhs.e23 - self.e2 * rhs.e1234)
+                    - (self.e123 * rhs.e24 + self.e234 * rhs.e12),
+                e234: (self.e1 * rhs.e1234 + self.e123 * rhs.e14)
+                    + (self.e134 * rhs.e12 - self.e124 * rhs.e13),
                 e1234: 0.0,
             }
         }
@@ -9425,37 +9664,38 @@ pub mod g4 {
         fn commutator(self, rhs: Odd) -> Multivector {
             Multivector {
                 s: 0.0,
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 + self.e14 * rhs.e4
-                    - self.e1234 * rhs.e234,
-                e2: self.e23 * rhs.e3 + self.e24 * rhs.e4 + self.e1234 * rhs.e134
-                    - self.e12 * rhs.e1,
-                e3: self.e34 * rhs.e4 - self.e13 * rhs.e1 - self.e23 * rhs.e2
-                    - self.e1234 * rhs.e124,
-                e4: self.e1234 * rhs.e123 - self.e14 * rhs.e1 - self.e24 * rhs.e2
-                    - self.e34 * rhs.e3,
-                e12: self.e1 * rhs.e2 + self.e234 * rhs.e134 - self.e2 * rhs.e1
-                    - self.e134 * rhs.e234,
-                e13: self.e1 * rhs.e3 + self.e124 * rhs.e234 - self.e3 * rhs.e1
-                    - self.e234 * rhs.e124,
-                e14: self.e1 * rhs.e4 + self.e234 * rhs.e123 - self.e4 * rhs.e1
-                    - self.e123 * rhs.e234,
-                e23: self.e2 * rhs.e3 + self.e134 * rhs.e124 - self.e3 * rhs.e2
-                    - self.e124 * rhs.e134,
-                e24: self.e2 * rhs.e4 + self.e123 * rhs.e134 - self.e4 * rhs.e2
-                    - self.e134 * rhs.e123,
-                e34: self.e3 * rhs.e4 + self.e124 * rhs.e123 - self.e4 * rhs.e3
-                    - self.e123 * rhs.e124,
-                e123: self.e14 * rhs.e234 + self.e34 * rhs.e124 + self.e1234 * rhs.e4
-                    - self.e24 * rhs.e134,
-                e124: self.e23 * rhs.e134 - self.e13 * rhs.e234 - self.e34 * rhs.e123
-                    - self.e1234 * rhs.e3,
-                e134: self.e12 * rhs.e234 + self.e24 * rhs.e123 + self.e1234 * rhs.e2
-                    - self.e23 * rhs.e124,
-                e234: self.e13 * rhs.e124 - self.e12 * rhs.e134 - self.e14 * rhs.e123
-                    - self.e1234 * rhs.e1,
-                e1234: self.e1 * rhs.e234 + self.e3 * rhs.e124 + self.e123 * rhs.e4
-                    + self.e134 * rhs.e2 - self.e2 * rhs.e134 - self.e4 * rhs.e123
-                    - self.e124 * rhs.e3 - self.e234 * rhs.e1,
+                e1: (self.e12 * rhs.e2 + self.e13 * rhs.e3)
+                    + (self.e14 * rhs.e4 - self.e1234 * rhs.e234),
+                e2: (self.e23 * rhs.e3 + self.e24 * rhs.e4)
+                    + (self.e1234 * rhs.e134 - self.e12 * rhs.e1),
+                e3: (self.e34 * rhs.e4 - self.e13 * rhs.e1)
+                    - (self.e23 * rhs.e2 + self.e1234 * rhs.e124),
+                e4: (self.e1234 * rhs.e123 - self.e14 * rhs.e1)
+                    - (self.e24 * rhs.e2 + self.e34 * rhs.e3),
+                e12: (self.e1 * rhs.e2 + self.e234 * rhs.e134)
+                    - (self.e2 * rhs.e1 + self.e134 * rhs.e234),
+                e13: (self.e1 * rhs.e3 + self.e124 * rhs.e234)
+                    - (self.e3 * rhs.e1 + self.e234 * rhs.e124),
+                e14: (self.e1 * rhs.e4 + self.e234 * rhs.e123)
+                    - (self.e4 * rhs.e1 + self.e123 * rhs.e234),
+                e23: (self.e2 * rhs.e3 + self.e134 * rhs.e124)
+                    - (self.e3 * rhs.e2 + self.e124 * rhs.e134),
+                e24: (self.e2 * rhs.e4 + self.e123 * rhs.e134)
+                    - (self.e4 * rhs.e2 + self.e134 * rhs.e123),
+                e34: (self.e3 * rhs.e4 + self.e124 * rhs.e123)
+                    - (self.e4 * rhs.e3 + self.e123 * rhs.e124),
+                e123: (self.e14 * rhs.e234 + self.e34 * rhs.e124)
+                    + (self.e1234 * rhs.e4 - self.e24 * rhs.e134),
+                e124: (self.e23 * rhs.e134 - self.e13 * rhs.e234)
+                    - (self.e34 * rhs.e123 + self.e1234 * rhs.e3),
+                e134: (self.e12 * rhs.e234 + self.e24 * rhs.e123)
+                    + (self.e1234 * rhs.e2 - self.e23 * rhs.e124),
+                e234: (self.e13 * rhs.e124 - self.e12 * rhs.e134)
+                    - (self.e14 * rhs.e123 + self.e1234 * rhs.e1),
+                e1234: ((self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    + (self.e123 * rhs.e4 + self.e134 * rhs.e2))
+                    - ((self.e2 * rhs.e134 + self.e4 * rhs.e123)
+                        + (self.e124 * rhs.e3 + self.e234 * rhs.e1)),
             }
         }
     }
@@ -9465,51 +9705,66 @@ pub mod g4 {
         fn commutator(self, rhs: Multivector) -> Multivector {
             Multivector {
                 s: 0.0,
-                e1: self.e12 * rhs.e2 + self.e13 * rhs.e3 + self.e14 * rhs.e4
-                    + self.e234 * rhs.e1234 - self.e2 * rhs.e12 - self.e3 * rhs.e13
-                    - self.e4 * rhs.e14 - self.e1234 * rhs.e234,
-                e2: self.e1 * rhs.e12 + self.e23 * rhs.e3 + self.e24 * rhs.e4
-                    + self.e1234 * rhs.e134 - self.e3 * rhs.e23 - self.e4 * rhs.e24
-                    - self.e12 * rhs.e1 - self.e134 * rhs.e1234,
-                e3: self.e1 * rhs.e13 + self.e2 * rhs.e23 + self.e34 * rhs.e4
-                    + self.e124 * rhs.e1234 - self.e4 * rhs.e34 - self.e13 * rhs.e1
-                    - self.e23 * rhs.e2 - self.e1234 * rhs.e124,
-                e4: self.e1 * rhs.e14 + self.e2 * rhs.e24 + self.e3 * rhs.e34
-                    + self.e1234 * rhs.e123 - self.e14 * rhs.e1 - self.e24 * rhs.e2
-                    - self.e34 * rhs.e3 - self.e123 * rhs.e1234,
-                e12: self.e1 * rhs.e2 + self.e23 * rhs.e13 + self.e24 * rhs.e14
-                    + self.e234 * rhs.e134 - self.e2 * rhs.e1 - self.e13 * rhs.e23
-                    - self.e14 * rhs.e24 - self.e134 * rhs.e234,
-                e13: self.e1 * rhs.e3 + self.e12 * rhs.e23 + self.e34 * rhs.e14
-                    + self.e124 * rhs.e234 - self.e3 * rhs.e1 - self.e14 * rhs.e34
-                    - self.e23 * rhs.e12 - self.e234 * rhs.e124,
-                e14: self.e1 * rhs.e4 + self.e12 * rhs.e24 + self.e13 * rhs.e34
-                    + self.e234 * rhs.e123 - self.e4 * rhs.e1 - self.e24 * rhs.e12
-                    - self.e34 * rhs.e13 - self.e123 * rhs.e234,
-                e23: self.e2 * rhs.e3 + self.e13 * rhs.e12 + self.e34 * rhs.e24
-                    + self.e134 * rhs.e124 - self.e3 * rhs.e2 - self.e12 * rhs.e13
-                    - self.e24 * rhs.e34 - self.e124 * rhs.e134,
-                e24: self.e2 * rhs.e4 + self.e14 * rhs.e12 + self.e23 * rhs.e34
-                    + self.e123 * rhs.e134 - self.e4 * rhs.e2 - self.e12 * rhs.e14
-                    - self.e34 * rhs.e23 - self.e134 * rhs.e123,
-                e34: self.e3 * rhs.e4 + self.e14 * rhs.e13 + self.e24 * rhs.e23
-                    + self.e124 * rhs.e123 - self.e4 * rhs.e3 - self.e13 * rhs.e14
-                    - self.e23 * rhs.e24 - self.e123 * rhs.e124,
-                e123: self.e14 * rhs.e234 + self.e34 * rhs.e124 + self.e134 * rhs.e24
-                    + self.e1234 * rhs.e4 - self.e4 * rhs.e1234 - self.e24 * rhs.e134
-                    - self.e124 * rhs.e34 - self.e234 * rhs.e14,
-                e124: self.e3 * rhs.e1234 + self.e23 * rhs.e134 + self.e123 * rhs.e34
-                    + self.e234 * rhs.e13 - self.e13 * rhs.e234 - self.e34 * rhs.e123
-                    - self.e134 * rhs.e23 - self.e1234 * rhs.e3,
-                e134: self.e12 * rhs.e234 + self.e24 * rhs.e123 + self.e124 * rhs.e23
-                    + self.e1234 * rhs.e2 - self.e2 * rhs.e1234 - self.e23 * rhs.e124
-                    - self.e123 * rhs.e24 - self.e234 * rhs.e12,
-                e234: self.e1 * rhs.e1234 + self.e13 * rhs.e124 + self.e123 * rhs.e14
-                    + self.e134 * rhs.e12 - self.e12 * rhs.e134 - self.e14 * rhs.e123
-                    - self.e124 * rhs.e13 - self.e1234 * rhs.e1,
-                e1234: self.e1 * rhs.e234 + self.e3 * rhs.e124 + self.e123 * rhs.e4
-                    + self.e134 * rhs.e2 - self.e2 * rhs.e134 - self.e4 * rhs.e123
-                    - self.e124 * rhs.e3 - self.e234 * rhs.e1,
+                e1: ((self.e12 * rhs.e2 + self.e13 * rhs.e3)
+                    + (self.e14 * rhs.e4 + self.e234 * rhs.e1234))
+                    - ((self.e2 * rhs.e12 + self.e3 * rhs.e13)
+                        + (self.e4 * rhs.e14 + self.e1234 * rhs.e234)),
+                e2: ((self.e1 * rhs.e12 + self.e23 * rhs.e3)
+                    + (self.e24 * rhs.e4 + self.e1234 * rhs.e134))
+                    - ((self.e3 * rhs.e23 + self.e4 * rhs.e24)
+                        + (self.e12 * rhs.e1 + self.e134 * rhs.e1234)),
+                e3: ((self.e1 * rhs.e13 + self.e2 * rhs.e23)
+                    + (self.e34 * rhs.e4 + self.e124 * rhs.e1234))
+                    - ((self.e4 * rhs.e34 + self.e13 * rhs.e1)
+                        + (self.e23 * rhs.e2 + self.e1234 * rhs.e124)),
+                e4: ((self.e1 * rhs.e14 + self.e2 * rhs.e24)
+                    + (self.e3 * rhs.e34 + self.e1234 * rhs.e123))
+                    - ((self.e14 * rhs.e1 + self.e24 * rhs.e2)
+                        + (self.e34 * rhs.e3 + self.e123 * rhs.e1234)),
+                e12: ((self.e1 * rhs.e2 + self.e23 * rhs.e13)
+                    + (self.e24 * rhs.e14 + self.e234 * rhs.e134))
+                    - ((self.e2 * rhs.e1 + self.e13 * rhs.e23)
+                        + (self.e14 * rhs.e24 + self.e134 * rhs.e234)),
+                e13: ((self.e1 * rhs.e3 + self.e12 * rhs.e23)
+                    + (self.e34 * rhs.e14 + self.e124 * rhs.e234))
+                    - ((self.e3 * rhs.e1 + self.e14 * rhs.e34)
+                        + (self.e23 * rhs.e12 + self.e234 * rhs.e124)),
+                e14: ((self.e1 * rhs.e4 + self.e12 * rhs.e24)
+                    + (self.e13 * rhs.e34 + self.e234 * rhs.e123))
+                    - ((self.e4 * rhs.e1 + self.e24 * rhs.e12)
+                        + (self.e34 * rhs.e13 + self.e123 * rhs.e234)),
+                e23: ((self.e2 * rhs.e3 + self.e13 * rhs.e12)
+                    + (self.e34 * rhs.e24 + self.e134 * rhs.e124))
+                    - ((self.e3 * rhs.e2 + self.e12 * rhs.e13)
+                        + (self.e24 * rhs.e34 + self.e124 * rhs.e134)),
+                e24: ((self.e2 * rhs.e4 + self.e14 * rhs.e12)
+                    + (self.e23 * rhs.e34 + self.e123 * rhs.e134))
+                    - ((self.e4 * rhs.e2 + self.e12 * rhs.e14)
+                        + (self.e34 * rhs.e23 + self.e134 * rhs.e123)),
+                e34: ((self.e3 * rhs.e4 + self.e14 * rhs.e13)
+                    + (self.e24 * rhs.e23 + self.e124 * rhs.e123))
+                    - ((self.e4 * rhs.e3 + self.e13 * rhs.e14)
+                        + (self.e23 * rhs.e24 + self.e123 * rhs.e124)),
+                e123: ((self.e14 * rhs.e234 + self.e34 * rhs.e124)
+                    + (self.e134 * rhs.e24 + self.e1234 * rhs.e4))
+                    - ((self.e4 * rhs.e1234 + self.e24 * rhs.e134)
+                        + (self.e124 * rhs.e34 + self.e234 * rhs.e14)),
+                e124: ((self.e3 * rhs.e1234 + self.e23 * rhs.e134)
+                    + (self.e123 * rhs.e34 + self.e234 * rhs.e13))
+                    - ((self.e13 * rhs.e234 + self.e34 * rhs.e123)
+                        + (self.e134 * rhs.e23 + self.e1234 * rhs.e3)),
+                e134: ((self.e12 * rhs.e234 + self.e24 * rhs.e123)
+                    + (self.e124 * rhs.e23 + self.e1234 * rhs.e2))
+                    - ((self.e2 * rhs.e1234 + self.e23 * rhs.e124)
+                        + (self.e123 * rhs.e24 + self.e234 * rhs.e12)),
+                e234: ((self.e1 * rhs.e1234 + self.e13 * rhs.e124)
+                    + (self.e123 * rhs.e14 + self.e134 * rhs.e12))
+                    - ((self.e12 * rhs.e134 + self.e14 * rhs.e123)
+                        + (self.e124 * rhs.e13 + self.e1234 * rhs.e1)),
+                e1234: ((self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    + (self.e123 * rhs.e4 + self.e134 * rhs.e2))
+                    - ((self.e2 * rhs.e134 + self.e4 * rhs.e123)
+                        + (self.e124 * rhs.e3 + self.e234 * rhs.e1)),
             }
         }
     }
@@ -15062,10 +15317,12 @@ pub mod g4 {
     /// where a general linear solve would lose digits; `None` for a null blade.
     #[allow(dead_code)]
     fn mv_blade_inverse(a: Multivector) -> Option<Multivector> {
-        let norm_squared: f64 = a.s * a.s + a.e1 * a.e1 + a.e2 * a.e2 + a.e3 * a.e3
-            + a.e4 * a.e4 + a.e12 * a.e12 + a.e13 * a.e13 + a.e14 * a.e14 + a.e23 * a.e23
-            + a.e24 * a.e24 + a.e34 * a.e34 + a.e123 * a.e123 + a.e124 * a.e124
-            + a.e134 * a.e134 + a.e234 * a.e234 + a.e1234 * a.e1234;
+        let norm_squared: f64 = (((a.s * a.s + a.e1 * a.e1)
+            + (a.e2 * a.e2 + a.e3 * a.e3))
+            + ((a.e4 * a.e4 + a.e12 * a.e12) + (a.e13 * a.e13 + a.e14 * a.e14)))
+            + (((a.e23 * a.e23 + a.e24 * a.e24) + (a.e34 * a.e34 + a.e123 * a.e123))
+                + ((a.e124 * a.e124 + a.e134 * a.e134)
+                    + (a.e234 * a.e234 + a.e1234 * a.e1234)));
         if norm_squared == 0.0 || !norm_squared.is_finite() {
             return None;
         }
@@ -15093,93 +15350,113 @@ pub mod g4 {
     #[allow(dead_code)]
     fn mv_geometric(a: Multivector, b: Multivector) -> Multivector {
         Multivector {
-            s: a.s * b.s + a.e1 * b.e1 + a.e2 * b.e2 + a.e3 * b.e3 + a.e4 * b.e4
-                + a.e1234 * b.e1234 - a.e12 * b.e12 - a.e13 * b.e13 - a.e14 * b.e14
-                - a.e23 * b.e23 - a.e24 * b.e24 - a.e34 * b.e34 - a.e123 * b.e123
-                - a.e124 * b.e124 - a.e134 * b.e134 - a.e234 * b.e234,
-            e1: a.s * b.e1 + a.e1 * b.s + a.e12 * b.e2 + a.e13 * b.e3 + a.e14 * b.e4
-                + a.e234 * b.e1234 - a.e2 * b.e12 - a.e3 * b.e13 - a.e4 * b.e14
-                - a.e23 * b.e123 - a.e24 * b.e124 - a.e34 * b.e134 - a.e123 * b.e23
-                - a.e124 * b.e24 - a.e134 * b.e34 - a.e1234 * b.e234,
-            e2: a.s * b.e2 + a.e1 * b.e12 + a.e2 * b.s + a.e13 * b.e123 + a.e14 * b.e124
-                + a.e23 * b.e3 + a.e24 * b.e4 + a.e123 * b.e13 + a.e124 * b.e14
-                + a.e1234 * b.e134 - a.e3 * b.e23 - a.e4 * b.e24 - a.e12 * b.e1
-                - a.e34 * b.e234 - a.e134 * b.e1234 - a.e234 * b.e34,
-            e3: a.s * b.e3 + a.e1 * b.e13 + a.e2 * b.e23 + a.e3 * b.s + a.e14 * b.e134
-                + a.e24 * b.e234 + a.e34 * b.e4 + a.e124 * b.e1234 + a.e134 * b.e14
-                + a.e234 * b.e24 - a.e4 * b.e34 - a.e12 * b.e123 - a.e13 * b.e1
-                - a.e23 * b.e2 - a.e123 * b.e12 - a.e1234 * b.e124,
-            e4: a.s * b.e4 + a.e1 * b.e14 + a.e2 * b.e24 + a.e3 * b.e34 + a.e4 * b.s
-                + a.e1234 * b.e123 - a.e12 * b.e124 - a.e13 * b.e134 - a.e14 * b.e1
-                - a.e23 * b.e234 - a.e24 * b.e2 - a.e34 * b.e3 - a.e123 * b.e1234
-                - a.e124 * b.e12 - a.e134 * b.e13 - a.e234 * b.e23,
-            e12: a.s * b.e12 + a.e1 * b.e2 + a.e3 * b.e123 + a.e4 * b.e124 + a.e12 * b.s
-                + a.e23 * b.e13 + a.e24 * b.e14 + a.e123 * b.e3 + a.e124 * b.e4
-                + a.e234 * b.e134 - a.e2 * b.e1 - a.e13 * b.e23 - a.e14 * b.e24
-                - a.e34 * b.e1234 - a.e134 * b.e234 - a.e1234 * b.e34,
-            e13: a.s * b.e13 + a.e1 * b.e3 + a.e4 * b.e134 + a.e12 * b.e23 + a.e13 * b.s
-                + a.e24 * b.e1234 + a.e34 * b.e14 + a.e124 * b.e234 + a.e134 * b.e4
-                + a.e1234 * b.e24 - a.e2 * b.e123 - a.e3 * b.e1 - a.e14 * b.e34
-                - a.e23 * b.e12 - a.e123 * b.e2 - a.e234 * b.e124,
-            e14: a.s * b.e14 + a.e1 * b.e4 + a.e12 * b.e24 + a.e13 * b.e34 + a.e14 * b.s
-                + a.e234 * b.e123 - a.e2 * b.e124 - a.e3 * b.e134 - a.e4 * b.e1
-                - a.e23 * b.e1234 - a.e24 * b.e12 - a.e34 * b.e13 - a.e123 * b.e234
-                - a.e124 * b.e2 - a.e134 * b.e3 - a.e1234 * b.e23,
-            e23: a.s * b.e23 + a.e1 * b.e123 + a.e2 * b.e3 + a.e4 * b.e234
-                + a.e13 * b.e12 + a.e23 * b.s + a.e34 * b.e24 + a.e123 * b.e1
-                + a.e134 * b.e124 + a.e234 * b.e4 - a.e3 * b.e2 - a.e12 * b.e13
-                - a.e14 * b.e1234 - a.e24 * b.e34 - a.e124 * b.e134 - a.e1234 * b.e14,
-            e24: a.s * b.e24 + a.e1 * b.e124 + a.e2 * b.e4 + a.e13 * b.e1234
-                + a.e14 * b.e12 + a.e23 * b.e34 + a.e24 * b.s + a.e123 * b.e134
-                + a.e124 * b.e1 + a.e1234 * b.e13 - a.e3 * b.e234 - a.e4 * b.e2
-                - a.e12 * b.e14 - a.e34 * b.e23 - a.e134 * b.e123 - a.e234 * b.e3,
-            e34: a.s * b.e34 + a.e1 * b.e134 + a.e2 * b.e234 + a.e3 * b.e4
-                + a.e14 * b.e13 + a.e24 * b.e23 + a.e34 * b.s + a.e124 * b.e123
-                + a.e134 * b.e1 + a.e234 * b.e2 - a.e4 * b.e3 - a.e12 * b.e1234
-                - a.e13 * b.e14 - a.e23 * b.e24 - a.e123 * b.e124 - a.e1234 * b.e12,
-            e123: a.s * b.e123 + a.e1 * b.e23 + a.e3 * b.e12 + a.e12 * b.e3
-                + a.e14 * b.e234 + a.e23 * b.e1 + a.e34 * b.e124 + a.e123 * b.s
-                + a.e134 * b.e24 + a.e1234 * b.e4 - a.e2 * b.e13 - a.e4 * b.e1234
-                - a.e13 * b.e2 - a.e24 * b.e134 - a.e124 * b.e34 - a.e234 * b.e14,
-            e124: a.s * b.e124 + a.e1 * b.e24 + a.e3 * b.e1234 + a.e4 * b.e12
-                + a.e12 * b.e4 + a.e23 * b.e134 + a.e24 * b.e1 + a.e123 * b.e34
-                + a.e124 * b.s + a.e234 * b.e13 - a.e2 * b.e14 - a.e13 * b.e234
-                - a.e14 * b.e2 - a.e34 * b.e123 - a.e134 * b.e23 - a.e1234 * b.e3,
-            e134: a.s * b.e134 + a.e1 * b.e34 + a.e4 * b.e13 + a.e12 * b.e234
-                + a.e13 * b.e4 + a.e24 * b.e123 + a.e34 * b.e1 + a.e124 * b.e23
-                + a.e134 * b.s + a.e1234 * b.e2 - a.e2 * b.e1234 - a.e3 * b.e14
-                - a.e14 * b.e3 - a.e23 * b.e124 - a.e123 * b.e24 - a.e234 * b.e12,
-            e234: a.s * b.e234 + a.e1 * b.e1234 + a.e2 * b.e34 + a.e4 * b.e23
-                + a.e13 * b.e124 + a.e23 * b.e4 + a.e34 * b.e2 + a.e123 * b.e14
-                + a.e134 * b.e12 + a.e234 * b.s - a.e3 * b.e24 - a.e12 * b.e134
-                - a.e14 * b.e123 - a.e24 * b.e3 - a.e124 * b.e13 - a.e1234 * b.e1,
-            e1234: a.s * b.e1234 + a.e1 * b.e234 + a.e3 * b.e124 + a.e12 * b.e34
-                + a.e14 * b.e23 + a.e23 * b.e14 + a.e34 * b.e12 + a.e123 * b.e4
-                + a.e134 * b.e2 + a.e1234 * b.s - a.e2 * b.e134 - a.e4 * b.e123
-                - a.e13 * b.e24 - a.e24 * b.e13 - a.e124 * b.e3 - a.e234 * b.e1,
+            s: (((a.s * b.s + a.e1 * b.e1) + (a.e2 * b.e2 + a.e3 * b.e3))
+                + ((a.e4 * b.e4 + a.e1234 * b.e1234) - (a.e12 * b.e12 + a.e13 * b.e13)))
+                - (((a.e14 * b.e14 + a.e23 * b.e23) + (a.e24 * b.e24 + a.e34 * b.e34))
+                    + ((a.e123 * b.e123 + a.e124 * b.e124)
+                        + (a.e134 * b.e134 + a.e234 * b.e234))),
+            e1: (((a.s * b.e1 + a.e1 * b.s) + (a.e12 * b.e2 + a.e13 * b.e3))
+                + ((a.e14 * b.e4 + a.e234 * b.e1234) - (a.e2 * b.e12 + a.e3 * b.e13)))
+                - (((a.e4 * b.e14 + a.e23 * b.e123) + (a.e24 * b.e124 + a.e34 * b.e134))
+                    + ((a.e123 * b.e23 + a.e124 * b.e24)
+                        + (a.e134 * b.e34 + a.e1234 * b.e234))),
+            e2: (((a.s * b.e2 + a.e1 * b.e12) + (a.e2 * b.s + a.e13 * b.e123))
+                + ((a.e14 * b.e124 + a.e23 * b.e3) + (a.e24 * b.e4 + a.e123 * b.e13)))
+                + (((a.e124 * b.e14 + a.e1234 * b.e134) - (a.e3 * b.e23 + a.e4 * b.e24))
+                    - ((a.e12 * b.e1 + a.e34 * b.e234)
+                        + (a.e134 * b.e1234 + a.e234 * b.e34))),
+            e3: (((a.s * b.e3 + a.e1 * b.e13) + (a.e2 * b.e23 + a.e3 * b.s))
+                + ((a.e14 * b.e134 + a.e24 * b.e234)
+                    + (a.e34 * b.e4 + a.e124 * b.e1234)))
+                + (((a.e134 * b.e14 + a.e234 * b.e24) - (a.e4 * b.e34 + a.e12 * b.e123))
+                    - ((a.e13 * b.e1 + a.e23 * b.e2)
+                        + (a.e123 * b.e12 + a.e1234 * b.e124))),
+            e4: (((a.s * b.e4 + a.e1 * b.e14) + (a.e2 * b.e24 + a.e3 * b.e34))
+                + ((a.e4 * b.s + a.e1234 * b.e123) - (a.e12 * b.e124 + a.e13 * b.e134)))
+                - (((a.e14 * b.e1 + a.e23 * b.e234) + (a.e24 * b.e2 + a.e34 * b.e3))
+                    + ((a.e123 * b.e1234 + a.e124 * b.e12)
+                        + (a.e134 * b.e13 + a.e234 * b.e23))),
+            e12: (((a.s * b.e12 + a.e1 * b.e2) + (a.e3 * b.e123 + a.e4 * b.e124))
+                + ((a.e12 * b.s + a.e23 * b.e13) + (a.e24 * b.e14 + a.e123 * b.e3)))
+                + (((a.e124 * b.e4 + a.e234 * b.e134) - (a.e2 * b.e1 + a.e13 * b.e23))
+                    - ((a.e14 * b.e24 + a.e34 * b.e1234)
+                        + (a.e134 * b.e234 + a.e1234 * b.e34))),
+            e13: (((a.s * b.e13 + a.e1 * b.e3) + (a.e4 * b.e134 + a.e12 * b.e23))
+                + ((a.e13 * b.s + a.e24 * b.e1234) + (a.e34 * b.e14 + a.e124 * b.e234)))
+                + (((a.e134 * b.e4 + a.e1234 * b.e24) - (a.e2 * b.e123 + a.e3 * b.e1))
+                    - ((a.e14 * b.e34 + a.e23 * b.e12)
+                        + (a.e123 * b.e2 + a.e234 * b.e124))),
+            e14: (((a.s * b.e14 + a.e1 * b.e4) + (a.e12 * b.e24 + a.e13 * b.e34))
+                + ((a.e14 * b.s + a.e234 * b.e123) - (a.e2 * b.e124 + a.e3 * b.e134)))
+                - (((a.e4 * b.e1 + a.e23 * b.e1234) + (a.e24 * b.e12 + a.e34 * b.e13))
+                    + ((a.e123 * b.e234 + a.e124 * b.e2)
+                        + (a.e134 * b.e3 + a.e1234 * b.e23))),
+            e23: (((a.s * b.e23 + a.e1 * b.e123) + (a.e2 * b.e3 + a.e4 * b.e234))
+                + ((a.e13 * b.e12 + a.e23 * b.s) + (a.e34 * b.e24 + a.e123 * b.e1)))
+                + (((a.e134 * b.e124 + a.e234 * b.e4) - (a.e3 * b.e2 + a.e12 * b.e13))
+                    - ((a.e14 * b.e1234 + a.e24 * b.e34)
+                        + (a.e124 * b.e134 + a.e1234 * b.e14))),
+            e24: (((a.s * b.e24 + a.e1 * b.e124) + (a.e2 * b.e4 + a.e13 * b.e1234))
+                + ((a.e14 * b.e12 + a.e23 * b.e34) + (a.e24 * b.s + a.e123 * b.e134)))
+                + (((a.e124 * b.e1 + a.e1234 * b.e13) - (a.e3 * b.e234 + a.e4 * b.e2))
+                    - ((a.e12 * b.e14 + a.e34 * b.e23)
+                        + (a.e134 * b.e123 + a.e234 * b.e3))),
+            e34: (((a.s * b.e34 + a.e1 * b.e134) + (a.e2 * b.e234 + a.e3 * b.e4))
+                + ((a.e14 * b.e13 + a.e24 * b.e23) + (a.e34 * b.s + a.e124 * b.e123)))
+                + (((a.e134 * b.e1 + a.e234 * b.e2) - (a.e4 * b.e3 + a.e12 * b.e1234))
+                    - ((a.e13 * b.e14 + a.e23 * b.e24)
+                        + (a.e123 * b.e124 + a.e1234 * b.e12))),
+            e123: (((a.s * b.e123 + a.e1 * b.e23) + (a.e3 * b.e12 + a.e12 * b.e3))
+                + ((a.e14 * b.e234 + a.e23 * b.e1) + (a.e34 * b.e124 + a.e123 * b.s)))
+                + (((a.e134 * b.e24 + a.e1234 * b.e4) - (a.e2 * b.e13 + a.e4 * b.e1234))
+                    - ((a.e13 * b.e2 + a.e24 * b.e134)
+                        + (a.e124 * b.e34 + a.e234 * b.e14))),
+            e124: (((a.s * b.e124 + a.e1 * b.e24) + (a.e3 * b.e1234 + a.e4 * b.e12))
+                + ((a.e12 * b.e4 + a.e23 * b.e134) + (a.e24 * b.e1 + a.e123 * b.e34)))
+                + (((a.e124 * b.s + a.e234 * b.e13) - (a.e2 * b.e14 + a.e13 * b.e234))
+                    - ((a.e14 * b.e2 + a.e34 * b.e123)
+                        + (a.e134 * b.e23 + a.e1234 * b.e3))),
+            e134: (((a.s * b.e134 + a.e1 * b.e34) + (a.e4 * b.e13 + a.e12 * b.e234))
+                + ((a.e13 * b.e4 + a.e24 * b.e123) + (a.e34 * b.e1 + a.e124 * b.e23)))
+                + (((a.e134 * b.s + a.e1234 * b.e2) - (a.e2 * b.e1234 + a.e3 * b.e14))
+                    - ((a.e14 * b.e3 + a.e23 * b.e124)
+                        + (a.e123 * b.e24 + a.e234 * b.e12))),
+            e234: (((a.s * b.e234 + a.e1 * b.e1234) + (a.e2 * b.e34 + a.e4 * b.e23))
+                + ((a.e13 * b.e124 + a.e23 * b.e4) + (a.e34 * b.e2 + a.e123 * b.e14)))
+                + (((a.e134 * b.e12 + a.e234 * b.s) - (a.e3 * b.e24 + a.e12 * b.e134))
+                    - ((a.e14 * b.e123 + a.e24 * b.e3)
+                        + (a.e124 * b.e13 + a.e1234 * b.e1))),
+            e1234: (((a.s * b.e1234 + a.e1 * b.e234) + (a.e3 * b.e124 + a.e12 * b.e34))
+                + ((a.e14 * b.e23 + a.e23 * b.e14) + (a.e34 * b.e12 + a.e123 * b.e4)))
+                + (((a.e134 * b.e2 + a.e1234 * b.s) - (a.e2 * b.e134 + a.e4 * b.e123))
+                    - ((a.e13 * b.e24 + a.e24 * b.e13)
+                        + (a.e124 * b.e3 + a.e234 * b.e1))),
         }
     }
     #[allow(dead_code)]
     fn mv_left_contraction(a: Multivector, b: Multivector) -> Multivector {
         Multivector {
-            s: a.s * b.s + a.e1 * b.e1 + a.e2 * b.e2 + a.e3 * b.e3 + a.e4 * b.e4
-                + a.e1234 * b.e1234 - a.e12 * b.e12 - a.e13 * b.e13 - a.e14 * b.e14
-                - a.e23 * b.e23 - a.e24 * b.e24 - a.e34 * b.e34 - a.e123 * b.e123
-                - a.e124 * b.e124 - a.e134 * b.e134 - a.e234 * b.e234,
-            e1: a.s * b.e1 + a.e234 * b.e1234 - a.e2 * b.e12 - a.e3 * b.e13
-                - a.e4 * b.e14 - a.e23 * b.e123 - a.e24 * b.e124 - a.e34 * b.e134,
-            e2: a.s * b.e2 + a.e1 * b.e12 + a.e13 * b.e123 + a.e14 * b.e124
-                - a.e3 * b.e23 - a.e4 * b.e24 - a.e34 * b.e234 - a.e134 * b.e1234,
-            e3: a.s * b.e3 + a.e1 * b.e13 + a.e2 * b.e23 + a.e14 * b.e134
-                + a.e24 * b.e234 + a.e124 * b.e1234 - a.e4 * b.e34 - a.e12 * b.e123,
-            e4: a.s * b.e4 + a.e1 * b.e14 + a.e2 * b.e24 + a.e3 * b.e34 - a.e12 * b.e124
-                - a.e13 * b.e134 - a.e23 * b.e234 - a.e123 * b.e1234,
-            e12: a.s * b.e12 + a.e3 * b.e123 + a.e4 * b.e124 - a.e34 * b.e1234,
-            e13: a.s * b.e13 + a.e4 * b.e134 + a.e24 * b.e1234 - a.e2 * b.e123,
-            e14: a.s * b.e14 - a.e2 * b.e124 - a.e3 * b.e134 - a.e23 * b.e1234,
-            e23: a.s * b.e23 + a.e1 * b.e123 + a.e4 * b.e234 - a.e14 * b.e1234,
-            e24: a.s * b.e24 + a.e1 * b.e124 + a.e13 * b.e1234 - a.e3 * b.e234,
-            e34: a.s * b.e34 + a.e1 * b.e134 + a.e2 * b.e234 - a.e12 * b.e1234,
+            s: (((a.s * b.s + a.e1 * b.e1) + (a.e2 * b.e2 + a.e3 * b.e3))
+                + ((a.e4 * b.e4 + a.e1234 * b.e1234) - (a.e12 * b.e12 + a.e13 * b.e13)))
+                - (((a.e14 * b.e14 + a.e23 * b.e23) + (a.e24 * b.e24 + a.e34 * b.e34))
+                    + ((a.e123 * b.e123 + a.e124 * b.e124)
+                        + (a.e134 * b.e134 + a.e234 * b.e234))),
+            e1: ((a.s * b.e1 + a.e234 * b.e1234) - (a.e2 * b.e12 + a.e3 * b.e13))
+                - ((a.e4 * b.e14 + a.e23 * b.e123) + (a.e24 * b.e124 + a.e34 * b.e134)),
+            e2: ((a.s * b.e2 + a.e1 * b.e12) + (a.e13 * b.e123 + a.e14 * b.e124))
+                - ((a.e3 * b.e23 + a.e4 * b.e24) + (a.e34 * b.e234 + a.e134 * b.e1234)),
+            e3: ((a.s * b.e3 + a.e1 * b.e13) + (a.e2 * b.e23 + a.e14 * b.e134))
+                + ((a.e24 * b.e234 + a.e124 * b.e1234)
+                    - (a.e4 * b.e34 + a.e12 * b.e123)),
+            e4: ((a.s * b.e4 + a.e1 * b.e14) + (a.e2 * b.e24 + a.e3 * b.e34))
+                - ((a.e12 * b.e124 + a.e13 * b.e134)
+                    + (a.e23 * b.e234 + a.e123 * b.e1234)),
+            e12: (a.s * b.e12 + a.e3 * b.e123) + (a.e4 * b.e124 - a.e34 * b.e1234),
+            e13: (a.s * b.e13 + a.e4 * b.e134) + (a.e24 * b.e1234 - a.e2 * b.e123),
+            e14: (a.s * b.e14 - a.e2 * b.e124) - (a.e3 * b.e134 + a.e23 * b.e1234),
+            e23: (a.s * b.e23 + a.e1 * b.e123) + (a.e4 * b.e234 - a.e14 * b.e1234),
+            e24: (a.s * b.e24 + a.e1 * b.e124) + (a.e13 * b.e1234 - a.e3 * b.e234),
+            e34: (a.s * b.e34 + a.e1 * b.e134) + (a.e2 * b.e234 - a.e12 * b.e1234),
             e123: a.s * b.e123 - a.e4 * b.e1234,
             e124: a.s * b.e124 + a.e3 * b.e1234,
             e134: a.s * b.e134 - a.e2 * b.e1234,
@@ -15189,13 +15466,15 @@ pub mod g4 {
     }
     impl Bivector {
         ///`exp(B)` in closed form for every bivector and every metric: cos/sin, cosh/sinh or 1 + B per invariant plane (see docs/derivations/exp-log.md).
+        #[inline]
         #[must_use]
         pub fn exp(self) -> Even {
-            let s: f64 = -self.e12 * self.e12 - self.e13 * self.e13 - self.e14 * self.e14
-                - self.e23 * self.e23 - self.e24 * self.e24 - self.e34 * self.e34;
+            let s: f64 = -(((self.e12 * self.e12 + self.e13 * self.e13)
+                + self.e14 * self.e14)
+                + ((self.e23 * self.e23 + self.e24 * self.e24) + self.e34 * self.e34));
             let q = Quadvector {
                 e1234: 2.0
-                    * (self.e12 * self.e34 + self.e14 * self.e23 - self.e13 * self.e24),
+                    * ((self.e12 * self.e34 + self.e14 * self.e23) - self.e13 * self.e24),
             };
             let t: f64 = q.e1234 * q.e1234;
             let [c0, c4, s0, s4] = exp_weights(s, t);
@@ -15222,6 +15501,7 @@ pub mod g4 {
     impl Even {
         /// The bivector `B` with `B.exp() == self` on the principal range (rotation
         /// angles below pi per plane); `self` must be a unit rotor.
+        #[inline]
         #[must_use]
         pub fn log(self) -> Bivector {
             let p = Bivector {
@@ -15232,9 +15512,9 @@ pub mod g4 {
                 e24: self.e24,
                 e34: self.e34,
             };
-            let p0: f64 = -p.e12 * p.e12 - p.e13 * p.e13 - p.e14 * p.e14 - p.e23 * p.e23
-                - p.e24 * p.e24 - p.e34 * p.e34;
-            let p4: f64 = 2.0 * (p.e12 * p.e34 + p.e14 * p.e23 - p.e13 * p.e24);
+            let p0: f64 = -(((p.e12 * p.e12 + p.e13 * p.e13) + p.e14 * p.e14)
+                + ((p.e23 * p.e23 + p.e24 * p.e24) + p.e34 * p.e34));
+            let p4: f64 = 2.0 * ((p.e12 * p.e34 + p.e14 * p.e23) - p.e13 * p.e24);
             let [g0, g4] = log_weights_4d(self.s, self.e1234, p0, p4, 1.0);
             let unit = Quadvector { e1234: 1.0 };
             let p_unit: Bivector = Bivector {

@@ -122,6 +122,7 @@ pub fn emit_exp(plan: &Plan) -> TokenStream {
     quote! {
         impl Bivector {
             #[doc = #doc]
+            #[inline]
             #[must_use]
             pub fn exp(self) -> Even {
                 #body
@@ -171,6 +172,7 @@ pub fn emit_log(plan: &Plan) -> TokenStream {
         impl Even {
             /// The bivector `B` with `B.exp() == self` on the principal range (rotation
             /// angles below pi per plane); `self` must be a unit rotor.
+            #[inline]
             #[must_use]
             pub fn log(self) -> Bivector {
                 #body

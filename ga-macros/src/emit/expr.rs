@@ -125,6 +125,18 @@ pub fn type_tokens(plan: &Plan, id: TypeId) -> TokenStream {
 /// `c1 * m1 + c2 * m2 + ...` with integer coefficients, written without any
 /// multiplication by 0 or 1: terms are grouped by |c|, positives first in each group.
 pub fn signed_sum(terms: &[(i32, TokenStream)]) -> TokenStream {
+    sum_with(terms, join_signed)
+}
+
+/// [`signed_sum`] as a running sum `a + b - c`, for short sums where a tree buys no depth.
+pub fn signed_sum_linear(terms: &[(i32, TokenStream)]) -> TokenStream {
+    sum_with(terms, join_linear)
+}
+
+fn sum_with(
+    terms: &[(i32, TokenStream)],
+    join: fn(&[(bool, TokenStream)], bool) -> TokenStream,
+) -> TokenStream {
     if terms.is_empty() {
         let zero = float(0.0);
         return quote!(#zero);
@@ -138,7 +150,7 @@ pub fn signed_sum(terms: &[(i32, TokenStream)]) -> TokenStream {
     for (magnitude, mut group) in groups {
         group.sort_by_key(|(positive, _)| !*positive);
         let all_negative = group.iter().all(|(p, _)| !p);
-        let inner = join_signed(&group, all_negative && magnitude != 1);
+        let inner = join(&group, all_negative && magnitude != 1);
         if magnitude == 1 {
             if first {
                 out.extend(inner);
@@ -167,11 +179,10 @@ pub fn signed_sum(terms: &[(i32, TokenStream)]) -> TokenStream {
     out
 }
 
-fn join_signed(group: &[(bool, TokenStream)], negate_all: bool) -> TokenStream {
+fn join_linear(group: &[(bool, TokenStream)], negate_all: bool) -> TokenStream {
     let mut out = TokenStream::new();
     for (i, (positive, m)) in group.iter().enumerate() {
-        let positive = *positive != negate_all;
-        match (i == 0, positive) {
+        match (i == 0, *positive != negate_all) {
             (true, true) => out.extend(quote!(#m)),
             (true, false) => out.extend(quote!(-#m)),
             (false, true) => out.extend(quote!(+ #m)),
@@ -179,6 +190,47 @@ fn join_signed(group: &[(bool, TokenStream)], negate_all: bool) -> TokenStream {
         }
     }
     out
+}
+
+/// The signed terms of one group as a balanced tree, `(a + b) - (c + d)`: a sum of k terms
+/// is then about log2(k) additions deep instead of k - 1 (the compiler may not reassociate
+/// floating-point additions), and pairwise summation rounds less than a running sum.
+fn join_signed(group: &[(bool, TokenStream)], negate_all: bool) -> TokenStream {
+    let terms: Vec<(bool, TokenStream)> = group
+        .iter()
+        .map(|(positive, m)| (*positive != negate_all, m.clone()))
+        .collect();
+    match balanced(&terms) {
+        (sum, true) => sum,
+        (sum, false) if terms.len() == 1 => quote!(-#sum),
+        (sum, false) => quote!(-(#sum)),
+    }
+}
+
+/// `(expression, positive)` with the value `+expression` or `-expression`.
+fn balanced(terms: &[(bool, TokenStream)]) -> (TokenStream, bool) {
+    if let [(positive, term)] = terms {
+        return (term.clone(), *positive);
+    }
+    let middle = terms.len().div_ceil(2);
+    let (left, left_positive) = operand(&terms[..middle]);
+    let (right, right_positive) = operand(&terms[middle..]);
+    match (left_positive, right_positive) {
+        (true, true) => (quote!(#left + #right), true),
+        (true, false) => (quote!(#left - #right), true),
+        (false, true) => (quote!(#right - #left), true),
+        (false, false) => (quote!(#left + #right), false),
+    }
+}
+
+/// A subtree as an operand: parenthesised unless it is a single term.
+fn operand(terms: &[(bool, TokenStream)]) -> (TokenStream, bool) {
+    let (sum, positive) = balanced(terms);
+    if terms.len() == 1 {
+        (sum, positive)
+    } else {
+        (quote!((#sum)), positive)
+    }
 }
 
 /// A value of type `output` whose component on each blade is given by `component`
