@@ -48,3 +48,9 @@ fn g3_expansion_matches_snapshot() {
 fn g4_expansion_matches_snapshot() {
     check("g4", "pub mod g4 { metric: [1, 1, 1, 1], scalar: f64 }");
 }
+
+/// G3 in `f32`: the products the cost model moves to four SSE lanes show both bodies.
+#[test]
+fn g3_f32_expansion_matches_snapshot() {
+    check("g3_f32", "pub mod g3 { metric: [1, 1, 1], scalar: f32 }");
+}

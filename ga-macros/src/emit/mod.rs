@@ -6,6 +6,7 @@ mod exp_log;
 mod expr;
 mod operators;
 mod products;
+mod simd;
 mod types;
 mod unary;
 mod versor;
@@ -36,6 +37,9 @@ pub fn module_items(spec: &Spec, plan: &Plan) -> TokenStream {
         {
             items.extend(versor::emit_blades(plan, t));
         }
+    }
+    if simd::module_uses_lanes(plan) {
+        items.extend(simd::emit_lane_helpers());
     }
     items.extend(products::emit_product_traits(plan));
     items.extend(products::emit_products(plan));

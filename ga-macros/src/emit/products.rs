@@ -121,7 +121,23 @@ fn product_impl(plan: &Plan, kind: ProductKind, a: TypeId, b: TypeId) -> TokenSt
     };
     // The commutator keeps the terms of `ab` whose blades anticommute, where (ab - ba)/2
     // counts them at full weight, so its body needs no halving.
-    let body = value;
+    let body = match plan.lane_form(kind, a, b) {
+        Some(form) => {
+            let lanes =
+                super::simd::lane_body(plan, &form, (&quote!(self), a), (&quote!(rhs), b), output);
+            quote! {
+                #[cfg(target_arch = "x86_64")]
+                {
+                    #lanes
+                }
+                #[cfg(not(target_arch = "x86_64"))]
+                {
+                    #value
+                }
+            }
+        }
+        None => value,
+    };
     quote! {
         impl #trait_path<#rhs_ty> for #lhs_ty {
             type Output = #out_ty;

@@ -1,9 +1,12 @@
 //! The product plan: which types exist, which products and operations are emitted, and
 //! for each product the exact list of non-zero terms. Plain data, no syn or quote.
 
+pub mod cost;
+pub mod lanes;
 mod terms;
 mod types;
 
+pub use lanes::{LaneProduct, Side};
 pub use terms::{bilinear, quadratic_self, sandwich, Quadratic};
 pub use types::{Output, TypeId, TypeKind, Types};
 
@@ -253,6 +256,39 @@ impl Plan {
             }
             _ => Output::Type(t),
         }
+    }
+
+    /// The four-lane SIMD form of a product, where one fits and the cost model finds it
+    /// cheaper than the scalar form on both port layouts (see [`cost`]). Only `f32` items:
+    /// an SSE register holds four of them, and SSE2 is in every x86-64 CPU; in `f64` a
+    /// register holds two, and the shuffles between the two halves of a four-component
+    /// value cost more than the scalar form saves.
+    pub fn lane_form(&self, kind: ProductKind, a: TypeId, b: TypeId) -> Option<LaneProduct> {
+        if self.scalar != Scalar::F32
+            || self.lanes.is_some()
+            || a == TypeId::SCALAR
+            || b == TypeId::SCALAR
+        {
+            return None;
+        }
+        let (lhs, rhs) = (&self.types.get(a).blades, &self.types.get(b).blades);
+        let terms = bilinear(&self.metric, kind, lhs, rhs);
+        let Output::Type(output) = self.product_output(kind, a, b) else {
+            return None;
+        };
+        let output = &self.types.get(output).blades;
+        let scalar = cost::scalar_product_counts(terms.values().map(Vec::len));
+        [Side::Rhs, Side::Lhs]
+            .into_iter()
+            .filter_map(|side| LaneProduct::new(&terms, output, lhs.len(), rhs.len(), side))
+            .filter(|form| form.counts().beats(&scalar))
+            .min_by(|x, y| {
+                let cycles = |f: &LaneProduct| {
+                    let c = f.counts();
+                    c.shared_ports_cycles() + c.split_pipes_cycles()
+                };
+                cycles(x).total_cmp(&cycles(y))
+            })
     }
 
     /// The emitted types that act as versors in `sandwich`.
