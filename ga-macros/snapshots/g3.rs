@@ -7418,8 +7418,9 @@ pub mod g3 {
         }
     }
     /// The versor product: `v x ~v` for even `v`, `v x^ ~v` for odd `v` (x^ the grade
-    /// involution), expanded symbolically with like terms collected. Returns `x`'s own
-    /// type; `v` should be a unit versor (the result is scaled by |v|^2 otherwise).
+    /// involution), in the form the generator's cost model picks (a quadratic form with
+    /// like terms collected, or commutators). Returns `x`'s own type; exact for any
+    /// versor, so the result is scaled by |v|^2 when `v` is not unit.
     pub trait Sandwich<X> {
         /// `v x ~v` (even `v`) or `v x^ ~v` (odd `v`).
         #[must_use]
@@ -7958,6 +7959,117 @@ pub mod g3 {
                     e2: m[1][0] * x.e1 + m[1][1] * x.e2 + m[1][2] * x.e3,
                     e3: m[2][0] * x.e1 + m[2][1] * x.e2 + m[2][2] * x.e3,
                 };
+            }
+        }
+    }
+    /// The rotation by a **unit** even versor (a rotor, `v ~v = 1`), in the cheaper
+    /// form that precondition allows: `x + 2 (s C(x) + C(C(x)))` with
+    /// `C(x) = (Bx - xB) / 2` for `v = s + B`, as glam's `Quat * Vec3` assumes a unit
+    /// quaternion. For a rotor of norm `1 + e` the result is off by about `2e |x|`;
+    /// [`Sandwich::sandwich`] is exact for any versor.
+    pub trait SandwichUnit<X> {
+        /// `v x ~v` for a unit `v`.
+        #[must_use]
+        fn sandwich_unit(self, x: X) -> X;
+    }
+    impl SandwichUnit<Vector> for Even {
+        #[inline]
+        fn sandwich_unit(self, x: Vector) -> Vector {
+            let c_e1 = self.e12 * x.e2 + self.e13 * x.e3;
+            let c_e2 = self.e23 * x.e3 - self.e12 * x.e1;
+            let c_e3 = -(self.e13 * x.e1 + self.e23 * x.e2);
+            let two_s = self.s + self.s;
+            let two_e12 = self.e12 + self.e12;
+            let two_e13 = self.e13 + self.e13;
+            let two_e23 = self.e23 + self.e23;
+            Vector {
+                e1: (x.e1 + two_s * c_e1) + (two_e12 * c_e2 + two_e13 * c_e3),
+                e2: (x.e2 + two_s * c_e2) + (two_e23 * c_e3 - two_e12 * c_e1),
+                e3: (x.e3 + two_s * c_e3) - (two_e13 * c_e1 + two_e23 * c_e2),
+            }
+        }
+    }
+    impl SandwichUnit<Bivector> for Even {
+        #[inline]
+        fn sandwich_unit(self, x: Bivector) -> Bivector {
+            let c_e12 = self.e23 * x.e13 - self.e13 * x.e23;
+            let c_e13 = self.e12 * x.e23 - self.e23 * x.e12;
+            let c_e23 = self.e13 * x.e12 - self.e12 * x.e13;
+            let two_s = self.s + self.s;
+            let two_e12 = self.e12 + self.e12;
+            let two_e13 = self.e13 + self.e13;
+            let two_e23 = self.e23 + self.e23;
+            Bivector {
+                e12: (x.e12 + two_s * c_e12) + (two_e23 * c_e13 - two_e13 * c_e23),
+                e13: (x.e13 + two_s * c_e13) + (two_e12 * c_e23 - two_e23 * c_e12),
+                e23: (x.e23 + two_s * c_e23) + (two_e13 * c_e12 - two_e12 * c_e13),
+            }
+        }
+    }
+    impl SandwichUnit<Trivector> for Even {
+        #[inline]
+        fn sandwich_unit(self, x: Trivector) -> Trivector {
+            Trivector { e123: x.e123 }
+        }
+    }
+    impl SandwichUnit<Even> for Even {
+        #[inline]
+        fn sandwich_unit(self, x: Even) -> Even {
+            let c_e12 = self.e23 * x.e13 - self.e13 * x.e23;
+            let c_e13 = self.e12 * x.e23 - self.e23 * x.e12;
+            let c_e23 = self.e13 * x.e12 - self.e12 * x.e13;
+            let two_s = self.s + self.s;
+            let two_e12 = self.e12 + self.e12;
+            let two_e13 = self.e13 + self.e13;
+            let two_e23 = self.e23 + self.e23;
+            Even {
+                s: x.s,
+                e12: (x.e12 + two_s * c_e12) + (two_e23 * c_e13 - two_e13 * c_e23),
+                e13: (x.e13 + two_s * c_e13) + (two_e12 * c_e23 - two_e23 * c_e12),
+                e23: (x.e23 + two_s * c_e23) + (two_e13 * c_e12 - two_e12 * c_e13),
+            }
+        }
+    }
+    impl SandwichUnit<Odd> for Even {
+        #[inline]
+        fn sandwich_unit(self, x: Odd) -> Odd {
+            let c_e1 = self.e12 * x.e2 + self.e13 * x.e3;
+            let c_e2 = self.e23 * x.e3 - self.e12 * x.e1;
+            let c_e3 = -(self.e13 * x.e1 + self.e23 * x.e2);
+            let two_s = self.s + self.s;
+            let two_e12 = self.e12 + self.e12;
+            let two_e13 = self.e13 + self.e13;
+            let two_e23 = self.e23 + self.e23;
+            Odd {
+                e1: (x.e1 + two_s * c_e1) + (two_e12 * c_e2 + two_e13 * c_e3),
+                e2: (x.e2 + two_s * c_e2) + (two_e23 * c_e3 - two_e12 * c_e1),
+                e3: (x.e3 + two_s * c_e3) - (two_e13 * c_e1 + two_e23 * c_e2),
+                e123: x.e123,
+            }
+        }
+    }
+    impl SandwichUnit<Multivector> for Even {
+        #[inline]
+        fn sandwich_unit(self, x: Multivector) -> Multivector {
+            let c_e1 = self.e12 * x.e2 + self.e13 * x.e3;
+            let c_e2 = self.e23 * x.e3 - self.e12 * x.e1;
+            let c_e12 = self.e23 * x.e13 - self.e13 * x.e23;
+            let c_e3 = -(self.e13 * x.e1 + self.e23 * x.e2);
+            let c_e13 = self.e12 * x.e23 - self.e23 * x.e12;
+            let c_e23 = self.e13 * x.e12 - self.e12 * x.e13;
+            let two_s = self.s + self.s;
+            let two_e12 = self.e12 + self.e12;
+            let two_e13 = self.e13 + self.e13;
+            let two_e23 = self.e23 + self.e23;
+            Multivector {
+                s: x.s,
+                e1: (x.e1 + two_s * c_e1) + (two_e12 * c_e2 + two_e13 * c_e3),
+                e2: (x.e2 + two_s * c_e2) + (two_e23 * c_e3 - two_e12 * c_e1),
+                e3: (x.e3 + two_s * c_e3) - (two_e13 * c_e1 + two_e23 * c_e2),
+                e12: (x.e12 + two_s * c_e12) + (two_e23 * c_e13 - two_e13 * c_e23),
+                e13: (x.e13 + two_s * c_e13) + (two_e12 * c_e23 - two_e23 * c_e12),
+                e23: (x.e23 + two_s * c_e23) + (two_e13 * c_e12 - two_e12 * c_e13),
+                e123: x.e123,
             }
         }
     }

@@ -1628,11 +1628,10 @@ pub mod g3 {
             #[cfg(target_arch = "x86_64")]
             {
                 let g = simd::F32x4::new([self.e1, self.e2, self.e3, 0.0]);
-                let by_e1 = g.negate([false, true, true, false])
-                    * simd::F32x4::splat(rhs.e1);
-                let by_e2 = g
-                    .swizzle::<{ simd::order(1, 0, 3, 2) }>()
-                    .negate([false, false, false, true]) * simd::F32x4::splat(rhs.e2);
+                let by_e1 = g
+                    * simd::F32x4::splat(rhs.e1).negate([false, true, true, false]);
+                let by_e2 = g.swizzle::<{ simd::order(1, 0, 3, 2) }>()
+                    * simd::F32x4::splat(rhs.e2).negate([false, false, false, true]);
                 let by_e3 = g.swizzle::<{ simd::order(2, 3, 0, 1) }>()
                     * simd::F32x4::splat(rhs.e3);
                 let [s, e12, e13, e23] = ((by_e1 + by_e2) + by_e3).to_array();
@@ -1680,12 +1679,10 @@ pub mod g3 {
             {
                 let g = simd::F32x4::new([rhs.s, rhs.e12, rhs.e13, rhs.e23]);
                 let by_e1 = g * simd::F32x4::splat(self.e1);
-                let by_e2 = g
-                    .swizzle::<{ simd::order(1, 0, 3, 2) }>()
-                    .negate([true, false, false, true]) * simd::F32x4::splat(self.e2);
-                let by_e3 = g
-                    .swizzle::<{ simd::order(2, 3, 0, 1) }>()
-                    .negate([true, true, false, false]) * simd::F32x4::splat(self.e3);
+                let by_e2 = g.swizzle::<{ simd::order(1, 0, 3, 2) }>()
+                    * simd::F32x4::splat(self.e2).negate([true, false, false, true]);
+                let by_e3 = g.swizzle::<{ simd::order(2, 3, 0, 1) }>()
+                    * simd::F32x4::splat(self.e3).negate([true, true, false, false]);
                 let [e1, e2, e3, e123] = ((by_e1 + by_e2) + by_e3).to_array();
                 Odd { e1, e2, e3, e123 }
             }
@@ -1708,12 +1705,10 @@ pub mod g3 {
             {
                 let g = simd::F32x4::new([rhs.e1, rhs.e2, rhs.e3, rhs.e123]);
                 let by_e1 = g * simd::F32x4::splat(self.e1);
-                let by_e2 = g
-                    .swizzle::<{ simd::order(1, 0, 3, 2) }>()
-                    .negate([false, true, true, false]) * simd::F32x4::splat(self.e2);
-                let by_e3 = g
-                    .swizzle::<{ simd::order(2, 3, 0, 1) }>()
-                    .negate([false, false, true, true]) * simd::F32x4::splat(self.e3);
+                let by_e2 = g.swizzle::<{ simd::order(1, 0, 3, 2) }>()
+                    * simd::F32x4::splat(self.e2).negate([false, true, true, false]);
+                let by_e3 = g.swizzle::<{ simd::order(2, 3, 0, 1) }>()
+                    * simd::F32x4::splat(self.e3).negate([false, false, true, true]);
                 let [s, e12, e13, e23] = ((by_e1 + by_e2) + by_e3).to_array();
                 Even { s, e12, e13, e23 }
             }
@@ -1797,15 +1792,12 @@ pub mod g3 {
             #[cfg(target_arch = "x86_64")]
             {
                 let g = simd::F32x4::new([rhs.s, rhs.e12, rhs.e13, rhs.e23]);
-                let by_e12 = g
-                    .swizzle::<{ simd::order(1, 0, 3, 2) }>()
-                    .negate([true, false, false, true]) * simd::F32x4::splat(self.e12);
-                let by_e13 = g
-                    .swizzle::<{ simd::order(2, 3, 0, 1) }>()
-                    .negate([true, true, false, false]) * simd::F32x4::splat(self.e13);
-                let by_e23 = g
-                    .swizzle::<{ simd::order(3, 2, 1, 0) }>()
-                    .negate([true, false, true, false]) * simd::F32x4::splat(self.e23);
+                let by_e12 = g.swizzle::<{ simd::order(1, 0, 3, 2) }>()
+                    * simd::F32x4::splat(self.e12).negate([true, false, false, true]);
+                let by_e13 = g.swizzle::<{ simd::order(2, 3, 0, 1) }>()
+                    * simd::F32x4::splat(self.e13).negate([true, true, false, false]);
+                let by_e23 = g.swizzle::<{ simd::order(3, 2, 1, 0) }>()
+                    * simd::F32x4::splat(self.e23).negate([true, false, true, false]);
                 let [s, e12, e13, e23] = ((by_e12 + by_e13) + by_e23).to_array();
                 Even { s, e12, e13, e23 }
             }
@@ -1827,15 +1819,12 @@ pub mod g3 {
             #[cfg(target_arch = "x86_64")]
             {
                 let g = simd::F32x4::new([rhs.e1, rhs.e2, rhs.e3, rhs.e123]);
-                let by_e12 = g
-                    .swizzle::<{ simd::order(1, 0, 3, 2) }>()
-                    .negate([false, true, true, false]) * simd::F32x4::splat(self.e12);
-                let by_e13 = g
-                    .swizzle::<{ simd::order(2, 3, 0, 1) }>()
-                    .negate([false, false, true, true]) * simd::F32x4::splat(self.e13);
-                let by_e23 = g
-                    .swizzle::<{ simd::order(3, 2, 1, 0) }>()
-                    .negate([true, false, true, false]) * simd::F32x4::splat(self.e23);
+                let by_e12 = g.swizzle::<{ simd::order(1, 0, 3, 2) }>()
+                    * simd::F32x4::splat(self.e12).negate([false, true, true, false]);
+                let by_e13 = g.swizzle::<{ simd::order(2, 3, 0, 1) }>()
+                    * simd::F32x4::splat(self.e13).negate([false, false, true, true]);
+                let by_e23 = g.swizzle::<{ simd::order(3, 2, 1, 0) }>()
+                    * simd::F32x4::splat(self.e23).negate([true, false, true, false]);
                 let [e1, e2, e3, e123] = ((by_e12 + by_e13) + by_e23).to_array();
                 Odd { e1, e2, e3, e123 }
             }
@@ -1961,11 +1950,10 @@ pub mod g3 {
             #[cfg(target_arch = "x86_64")]
             {
                 let g = simd::F32x4::new([self.s, self.e12, self.e13, self.e23]);
-                let by_e1 = g.negate([false, true, true, false])
-                    * simd::F32x4::splat(rhs.e1);
-                let by_e2 = g
-                    .swizzle::<{ simd::order(1, 0, 3, 2) }>()
-                    .negate([false, false, true, true]) * simd::F32x4::splat(rhs.e2);
+                let by_e1 = g
+                    * simd::F32x4::splat(rhs.e1).negate([false, true, true, false]);
+                let by_e2 = g.swizzle::<{ simd::order(1, 0, 3, 2) }>()
+                    * simd::F32x4::splat(rhs.e2).negate([false, false, true, true]);
                 let by_e3 = g.swizzle::<{ simd::order(2, 3, 0, 1) }>()
                     * simd::F32x4::splat(rhs.e3);
                 let [e1, e2, e3, e123] = ((by_e1 + by_e2) + by_e3).to_array();
@@ -1989,15 +1977,12 @@ pub mod g3 {
             #[cfg(target_arch = "x86_64")]
             {
                 let g = simd::F32x4::new([self.s, self.e12, self.e13, self.e23]);
-                let by_e12 = g
-                    .swizzle::<{ simd::order(1, 0, 3, 2) }>()
-                    .negate([true, false, true, false]) * simd::F32x4::splat(rhs.e12);
-                let by_e13 = g
-                    .swizzle::<{ simd::order(2, 3, 0, 1) }>()
-                    .negate([true, false, false, true]) * simd::F32x4::splat(rhs.e13);
-                let by_e23 = g
-                    .swizzle::<{ simd::order(3, 2, 1, 0) }>()
-                    .negate([true, true, false, false]) * simd::F32x4::splat(rhs.e23);
+                let by_e12 = g.swizzle::<{ simd::order(1, 0, 3, 2) }>()
+                    * simd::F32x4::splat(rhs.e12).negate([true, false, true, false]);
+                let by_e13 = g.swizzle::<{ simd::order(2, 3, 0, 1) }>()
+                    * simd::F32x4::splat(rhs.e13).negate([true, false, false, true]);
+                let by_e23 = g.swizzle::<{ simd::order(3, 2, 1, 0) }>()
+                    * simd::F32x4::splat(rhs.e23).negate([true, true, false, false]);
                 let [s, e12, e13, e23] = ((by_e12 + by_e13) + by_e23).to_array();
                 Even { s, e12, e13, e23 }
             }
@@ -2032,15 +2017,12 @@ pub mod g3 {
             {
                 let g = simd::F32x4::new([self.s, self.e12, self.e13, self.e23]);
                 let by_s = g * simd::F32x4::splat(rhs.s);
-                let by_e12 = g
-                    .swizzle::<{ simd::order(1, 0, 3, 2) }>()
-                    .negate([true, false, true, false]) * simd::F32x4::splat(rhs.e12);
-                let by_e13 = g
-                    .swizzle::<{ simd::order(2, 3, 0, 1) }>()
-                    .negate([true, false, false, true]) * simd::F32x4::splat(rhs.e13);
-                let by_e23 = g
-                    .swizzle::<{ simd::order(3, 2, 1, 0) }>()
-                    .negate([true, true, false, false]) * simd::F32x4::splat(rhs.e23);
+                let by_e12 = g.swizzle::<{ simd::order(1, 0, 3, 2) }>()
+                    * simd::F32x4::splat(rhs.e12).negate([true, false, true, false]);
+                let by_e13 = g.swizzle::<{ simd::order(2, 3, 0, 1) }>()
+                    * simd::F32x4::splat(rhs.e13).negate([true, false, false, true]);
+                let by_e23 = g.swizzle::<{ simd::order(3, 2, 1, 0) }>()
+                    * simd::F32x4::splat(rhs.e23).negate([true, true, false, false]);
                 let [s, e12, e13, e23] = ((by_s + by_e12) + (by_e13 + by_e23))
                     .to_array();
                 Even { s, e12, e13, e23 }
@@ -2067,16 +2049,14 @@ pub mod g3 {
             #[cfg(target_arch = "x86_64")]
             {
                 let g = simd::F32x4::new([self.s, self.e12, self.e13, self.e23]);
-                let by_e1 = g.negate([false, true, true, false])
-                    * simd::F32x4::splat(rhs.e1);
-                let by_e2 = g
-                    .swizzle::<{ simd::order(1, 0, 3, 2) }>()
-                    .negate([false, false, true, true]) * simd::F32x4::splat(rhs.e2);
+                let by_e1 = g
+                    * simd::F32x4::splat(rhs.e1).negate([false, true, true, false]);
+                let by_e2 = g.swizzle::<{ simd::order(1, 0, 3, 2) }>()
+                    * simd::F32x4::splat(rhs.e2).negate([false, false, true, true]);
                 let by_e3 = g.swizzle::<{ simd::order(2, 3, 0, 1) }>()
                     * simd::F32x4::splat(rhs.e3);
-                let by_e123 = g
-                    .swizzle::<{ simd::order(3, 2, 1, 0) }>()
-                    .negate([true, false, true, false]) * simd::F32x4::splat(rhs.e123);
+                let by_e123 = g.swizzle::<{ simd::order(3, 2, 1, 0) }>()
+                    * simd::F32x4::splat(rhs.e123).negate([true, false, true, false]);
                 let [e1, e2, e3, e123] = ((by_e1 + by_e2) + (by_e3 + by_e123))
                     .to_array();
                 Odd { e1, e2, e3, e123 }
@@ -2139,11 +2119,10 @@ pub mod g3 {
             #[cfg(target_arch = "x86_64")]
             {
                 let g = simd::F32x4::new([self.e1, self.e2, self.e3, self.e123]);
-                let by_e1 = g.negate([false, true, true, false])
-                    * simd::F32x4::splat(rhs.e1);
-                let by_e2 = g
-                    .swizzle::<{ simd::order(1, 0, 3, 2) }>()
-                    .negate([false, false, true, true]) * simd::F32x4::splat(rhs.e2);
+                let by_e1 = g
+                    * simd::F32x4::splat(rhs.e1).negate([false, true, true, false]);
+                let by_e2 = g.swizzle::<{ simd::order(1, 0, 3, 2) }>()
+                    * simd::F32x4::splat(rhs.e2).negate([false, false, true, true]);
                 let by_e3 = g.swizzle::<{ simd::order(2, 3, 0, 1) }>()
                     * simd::F32x4::splat(rhs.e3);
                 let [s, e12, e13, e23] = ((by_e1 + by_e2) + by_e3).to_array();
@@ -2167,15 +2146,12 @@ pub mod g3 {
             #[cfg(target_arch = "x86_64")]
             {
                 let g = simd::F32x4::new([self.e1, self.e2, self.e3, self.e123]);
-                let by_e12 = g
-                    .swizzle::<{ simd::order(1, 0, 3, 2) }>()
-                    .negate([true, false, true, false]) * simd::F32x4::splat(rhs.e12);
-                let by_e13 = g
-                    .swizzle::<{ simd::order(2, 3, 0, 1) }>()
-                    .negate([true, false, false, true]) * simd::F32x4::splat(rhs.e13);
-                let by_e23 = g
-                    .swizzle::<{ simd::order(3, 2, 1, 0) }>()
-                    .negate([true, true, false, false]) * simd::F32x4::splat(rhs.e23);
+                let by_e12 = g.swizzle::<{ simd::order(1, 0, 3, 2) }>()
+                    * simd::F32x4::splat(rhs.e12).negate([true, false, true, false]);
+                let by_e13 = g.swizzle::<{ simd::order(2, 3, 0, 1) }>()
+                    * simd::F32x4::splat(rhs.e13).negate([true, false, false, true]);
+                let by_e23 = g.swizzle::<{ simd::order(3, 2, 1, 0) }>()
+                    * simd::F32x4::splat(rhs.e23).negate([true, true, false, false]);
                 let [e1, e2, e3, e123] = ((by_e12 + by_e13) + by_e23).to_array();
                 Odd { e1, e2, e3, e123 }
             }
@@ -2210,15 +2186,12 @@ pub mod g3 {
             {
                 let g = simd::F32x4::new([self.e1, self.e2, self.e3, self.e123]);
                 let by_s = g * simd::F32x4::splat(rhs.s);
-                let by_e12 = g
-                    .swizzle::<{ simd::order(1, 0, 3, 2) }>()
-                    .negate([true, false, true, false]) * simd::F32x4::splat(rhs.e12);
-                let by_e13 = g
-                    .swizzle::<{ simd::order(2, 3, 0, 1) }>()
-                    .negate([true, false, false, true]) * simd::F32x4::splat(rhs.e13);
-                let by_e23 = g
-                    .swizzle::<{ simd::order(3, 2, 1, 0) }>()
-                    .negate([true, true, false, false]) * simd::F32x4::splat(rhs.e23);
+                let by_e12 = g.swizzle::<{ simd::order(1, 0, 3, 2) }>()
+                    * simd::F32x4::splat(rhs.e12).negate([true, false, true, false]);
+                let by_e13 = g.swizzle::<{ simd::order(2, 3, 0, 1) }>()
+                    * simd::F32x4::splat(rhs.e13).negate([true, false, false, true]);
+                let by_e23 = g.swizzle::<{ simd::order(3, 2, 1, 0) }>()
+                    * simd::F32x4::splat(rhs.e23).negate([true, true, false, false]);
                 let [e1, e2, e3, e123] = ((by_s + by_e12) + (by_e13 + by_e23))
                     .to_array();
                 Odd { e1, e2, e3, e123 }
@@ -2245,16 +2218,14 @@ pub mod g3 {
             #[cfg(target_arch = "x86_64")]
             {
                 let g = simd::F32x4::new([self.e1, self.e2, self.e3, self.e123]);
-                let by_e1 = g.negate([false, true, true, false])
-                    * simd::F32x4::splat(rhs.e1);
-                let by_e2 = g
-                    .swizzle::<{ simd::order(1, 0, 3, 2) }>()
-                    .negate([false, false, true, true]) * simd::F32x4::splat(rhs.e2);
+                let by_e1 = g
+                    * simd::F32x4::splat(rhs.e1).negate([false, true, true, false]);
+                let by_e2 = g.swizzle::<{ simd::order(1, 0, 3, 2) }>()
+                    * simd::F32x4::splat(rhs.e2).negate([false, false, true, true]);
                 let by_e3 = g.swizzle::<{ simd::order(2, 3, 0, 1) }>()
                     * simd::F32x4::splat(rhs.e3);
-                let by_e123 = g
-                    .swizzle::<{ simd::order(3, 2, 1, 0) }>()
-                    .negate([true, false, true, false]) * simd::F32x4::splat(rhs.e123);
+                let by_e123 = g.swizzle::<{ simd::order(3, 2, 1, 0) }>()
+                    * simd::F32x4::splat(rhs.e123).negate([true, false, true, false]);
                 let [s, e12, e13, e23] = ((by_e1 + by_e2) + (by_e3 + by_e123))
                     .to_array();
                 Even { s, e12, e13, e23 }
@@ -3123,12 +3094,10 @@ pub mod g3 {
             {
                 let g = simd::F32x4::new([rhs.s, rhs.e12, rhs.e13, rhs.e23]);
                 let by_e1 = g * simd::F32x4::splat(self.e1);
-                let by_e2 = g
-                    .swizzle::<{ simd::order(1, 0, 3, 3) }>()
-                    .negate([true, false, false, false]) * simd::F32x4::splat(self.e2);
-                let by_e3 = g
-                    .swizzle::<{ simd::order(2, 3, 0, 3) }>()
-                    .negate([true, true, false, false]) * simd::F32x4::splat(self.e3);
+                let by_e2 = g.swizzle::<{ simd::order(1, 0, 3, 3) }>()
+                    * simd::F32x4::splat(self.e2).negate([true, false, false, false]);
+                let by_e3 = g.swizzle::<{ simd::order(2, 3, 0, 3) }>()
+                    * simd::F32x4::splat(self.e3).negate([true, true, false, false]);
                 let [e1, e2, e3, ..] = ((by_e1 + by_e2) + by_e3).to_array();
                 Vector { e1, e2, e3 }
             }
@@ -3344,11 +3313,10 @@ pub mod g3 {
             #[cfg(target_arch = "x86_64")]
             {
                 let g = simd::F32x4::new([self.s, self.e12, self.e13, self.e23]);
-                let by_e1 = g.negate([false, true, true, false])
-                    * simd::F32x4::splat(rhs.e1);
-                let by_e2 = g
-                    .swizzle::<{ simd::order(1, 0, 3, 3) }>()
-                    .negate([false, false, true, false]) * simd::F32x4::splat(rhs.e2);
+                let by_e1 = g
+                    * simd::F32x4::splat(rhs.e1).negate([false, true, true, false]);
+                let by_e2 = g.swizzle::<{ simd::order(1, 0, 3, 3) }>()
+                    * simd::F32x4::splat(rhs.e2).negate([false, false, true, false]);
                 let by_e3 = g.swizzle::<{ simd::order(2, 3, 0, 3) }>()
                     * simd::F32x4::splat(rhs.e3);
                 let [e1, e2, e3, ..] = ((by_e1 + by_e2) + by_e3).to_array();
@@ -3408,19 +3376,17 @@ pub mod g3 {
             #[cfg(target_arch = "x86_64")]
             {
                 let g = simd::F32x4::new([self.s, self.e12, self.e13, self.e23]);
-                let by_e1 = g
-                    .keep([true, true, true, false])
-                    .negate([false, true, true, false]) * simd::F32x4::splat(rhs.e1);
+                let by_e1 = g.keep([true, true, true, false])
+                    * simd::F32x4::splat(rhs.e1).negate([false, true, true, false]);
                 let by_e2 = g
                     .swizzle::<{ simd::order(1, 0, 3, 3) }>()
                     .keep([true, true, true, false])
-                    .negate([false, false, true, false]) * simd::F32x4::splat(rhs.e2);
+                    * simd::F32x4::splat(rhs.e2).negate([false, false, true, false]);
                 let by_e3 = g
                     .swizzle::<{ simd::order(2, 3, 0, 3) }>()
                     .keep([true, true, true, false]) * simd::F32x4::splat(rhs.e3);
-                let by_e123 = g
-                    .swizzle::<{ simd::order(3, 2, 1, 0) }>()
-                    .negate([true, false, true, false]) * simd::F32x4::splat(rhs.e123);
+                let by_e123 = g.swizzle::<{ simd::order(3, 2, 1, 0) }>()
+                    * simd::F32x4::splat(rhs.e123).negate([true, false, true, false]);
                 let [e1, e2, e3, e123] = ((by_e1 + by_e2) + (by_e3 + by_e123))
                     .to_array();
                 Odd { e1, e2, e3, e123 }
@@ -3517,15 +3483,15 @@ pub mod g3 {
                 let by_e12 = g
                     .swizzle::<{ simd::order(1, 0, 3, 3) }>()
                     .keep([true, true, true, false])
-                    .negate([true, false, true, false]) * simd::F32x4::splat(rhs.e12);
+                    * simd::F32x4::splat(rhs.e12).negate([true, false, true, false]);
                 let by_e13 = g
                     .swizzle::<{ simd::order(2, 3, 0, 3) }>()
                     .keep([true, true, true, false])
-                    .negate([true, false, false, false]) * simd::F32x4::splat(rhs.e13);
+                    * simd::F32x4::splat(rhs.e13).negate([true, false, false, false]);
                 let by_e23 = g
                     .swizzle::<{ simd::order(3, 2, 1, 3) }>()
                     .keep([true, true, true, false])
-                    .negate([true, true, false, false]) * simd::F32x4::splat(rhs.e23);
+                    * simd::F32x4::splat(rhs.e23).negate([true, true, false, false]);
                 let [e1, e2, e3, e123] = ((by_s + by_e12) + (by_e13 + by_e23))
                     .to_array();
                 Odd { e1, e2, e3, e123 }
@@ -3556,13 +3522,12 @@ pub mod g3 {
                 let by_e2 = g
                     .swizzle::<{ simd::order(1, 1, 3, 3) }>()
                     .keep([true, false, true, false])
-                    .negate([false, false, true, false]) * simd::F32x4::splat(rhs.e2);
+                    * simd::F32x4::splat(rhs.e2).negate([false, false, true, false]);
                 let by_e3 = g
                     .swizzle::<{ simd::order(2, 3, 2, 3) }>()
                     .keep([true, true, false, false]) * simd::F32x4::splat(rhs.e3);
-                let by_e123 = g
-                    .swizzle::<{ simd::order(3, 2, 1, 0) }>()
-                    .negate([true, false, true, false]) * simd::F32x4::splat(rhs.e123);
+                let by_e123 = g.swizzle::<{ simd::order(3, 2, 1, 0) }>()
+                    * simd::F32x4::splat(rhs.e123).negate([true, false, true, false]);
                 let [s, e12, e13, e23] = ((by_e1 + by_e2) + (by_e3 + by_e123))
                     .to_array();
                 Even { s, e12, e13, e23 }
@@ -7848,8 +7813,9 @@ pub mod g3 {
         }
     }
     /// The versor product: `v x ~v` for even `v`, `v x^ ~v` for odd `v` (x^ the grade
-    /// involution), expanded symbolically with like terms collected. Returns `x`'s own
-    /// type; `v` should be a unit versor (the result is scaled by |v|^2 otherwise).
+    /// involution), in the form the generator's cost model picks (a quadratic form with
+    /// like terms collected, or commutators). Returns `x`'s own type; exact for any
+    /// versor, so the result is scaled by |v|^2 when `v` is not unit.
     pub trait Sandwich<X> {
         /// `v x ~v` (even `v`) or `v x^ ~v` (odd `v`).
         #[must_use]
@@ -8000,54 +7966,95 @@ pub mod g3 {
     impl Sandwich<Vector> for Even {
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
-            let two_s = self.s + self.s;
-            let two_e12 = self.e12 + self.e12;
-            let two_e13 = self.e13 + self.e13;
-            let s_s = self.s * self.s;
-            let s_e12 = two_s * self.e12;
-            let s_e13 = two_s * self.e13;
-            let s_e23 = two_s * self.e23;
-            let e12_e12 = self.e12 * self.e12;
-            let e12_e13 = two_e12 * self.e13;
-            let e12_e23 = two_e12 * self.e23;
-            let e13_e13 = self.e13 * self.e13;
-            let e13_e23 = two_e13 * self.e23;
-            let e23_e23 = self.e23 * self.e23;
-            Vector {
-                e1: (s_s + e23_e23 - e12_e12 - e13_e13) * x.e1 + (s_e12 - e13_e23) * x.e2
-                    + (s_e13 + e12_e23) * x.e3,
-                e2: (-s_e12 - e13_e23) * x.e1
-                    + (s_s + e13_e13 - e12_e12 - e23_e23) * x.e2
-                    + (s_e23 - e12_e13) * x.e3,
-                e3: (e12_e23 - s_e13) * x.e1 + (-s_e23 - e12_e13) * x.e2
-                    + (s_s + e12_e12 - e13_e13 - e23_e23) * x.e3,
+            #[cfg(target_arch = "x86_64")]
+            {
+                let v = simd::F32x4::new([self.s, self.e12, self.e13, self.e23]);
+                let xs = simd::F32x4::new([x.e1, x.e2, x.e3, 0.0]);
+                let a1 = v
+                    .swizzle::<{ simd::order(1, 1, 2, 3) }>()
+                    .negate([false, true, true, false]);
+                let b1 = a1 * simd::F32x4::splat(2.0);
+                let a2 = v
+                    .swizzle::<{ simd::order(2, 3, 3, 3) }>()
+                    .negate([false, false, true, false]);
+                let b2 = a2 * simd::F32x4::splat(2.0);
+                let c = a1 * xs.swizzle::<{ simd::order(1, 0, 0, 3) }>()
+                    + a2 * xs.swizzle::<{ simd::order(2, 2, 1, 3) }>();
+                let s = v.swizzle::<{ simd::order(0, 0, 0, 0) }>();
+                let two_s = s + s;
+                let squares = v * v;
+                let pairs = squares + squares.swizzle::<{ simd::order(1, 0, 3, 2) }>();
+                let n = pairs + pairs.swizzle::<{ simd::order(2, 3, 0, 1) }>();
+                let [e1, e2, e3, ..] = ((xs * n + two_s * c)
+                    + (b1 * c.swizzle::<{ simd::order(1, 0, 0, 3) }>()
+                        + b2 * c.swizzle::<{ simd::order(2, 2, 1, 3) }>()))
+                    .to_array();
+                Vector { e1, e2, e3 }
+            }
+            #[cfg(not(target_arch = "x86_64"))]
+            {
+                let c_e1 = self.e12 * x.e2 + self.e13 * x.e3;
+                let c_e2 = self.e23 * x.e3 - self.e12 * x.e1;
+                let c_e3 = -(self.e13 * x.e1 + self.e23 * x.e2);
+                let two_s = self.s + self.s;
+                let two_e12 = self.e12 + self.e12;
+                let two_e13 = self.e13 + self.e13;
+                let two_e23 = self.e23 + self.e23;
+                let n = (self.s * self.s + self.e12 * self.e12)
+                    + (self.e13 * self.e13 + self.e23 * self.e23);
+                Vector {
+                    e1: (n * x.e1 + two_s * c_e1) + (two_e12 * c_e2 + two_e13 * c_e3),
+                    e2: (n * x.e2 + two_s * c_e2) + (two_e23 * c_e3 - two_e12 * c_e1),
+                    e3: (n * x.e3 + two_s * c_e3) - (two_e13 * c_e1 + two_e23 * c_e2),
+                }
             }
         }
     }
     impl Sandwich<Bivector> for Even {
         #[inline]
         fn sandwich(self, x: Bivector) -> Bivector {
-            let two_s = self.s + self.s;
-            let two_e12 = self.e12 + self.e12;
-            let two_e13 = self.e13 + self.e13;
-            let s_s = self.s * self.s;
-            let s_e12 = two_s * self.e12;
-            let s_e13 = two_s * self.e13;
-            let s_e23 = two_s * self.e23;
-            let e12_e12 = self.e12 * self.e12;
-            let e12_e13 = two_e12 * self.e13;
-            let e12_e23 = two_e12 * self.e23;
-            let e13_e13 = self.e13 * self.e13;
-            let e13_e23 = two_e13 * self.e23;
-            let e23_e23 = self.e23 * self.e23;
-            Bivector {
-                e12: (s_s + e12_e12 - e13_e13 - e23_e23) * x.e12
-                    + (s_e23 + e12_e13) * x.e13 + (e12_e23 - s_e13) * x.e23,
-                e13: (e12_e13 - s_e23) * x.e12
-                    + (s_s + e13_e13 - e12_e12 - e23_e23) * x.e13
-                    + (s_e12 + e13_e23) * x.e23,
-                e23: (s_e13 + e12_e23) * x.e12 + (e13_e23 - s_e12) * x.e13
-                    + (s_s + e23_e23 - e12_e12 - e13_e13) * x.e23,
+            #[cfg(target_arch = "x86_64")]
+            {
+                let v = simd::F32x4::new([self.s, self.e12, self.e13, self.e23]);
+                let xs = simd::F32x4::new([x.e12, x.e13, x.e23, 0.0]);
+                let a1 = v
+                    .swizzle::<{ simd::order(2, 3, 1, 3) }>()
+                    .negate([true, true, true, false]);
+                let b1 = a1 * simd::F32x4::splat(2.0);
+                let a2 = v.swizzle::<{ simd::order(3, 1, 2, 3) }>();
+                let b2 = a2 * simd::F32x4::splat(2.0);
+                let c = a1 * xs.swizzle::<{ simd::order(2, 0, 1, 3) }>()
+                    + a2 * xs.swizzle::<{ simd::order(1, 2, 0, 3) }>();
+                let s = v.swizzle::<{ simd::order(0, 0, 0, 0) }>();
+                let two_s = s + s;
+                let squares = v * v;
+                let pairs = squares + squares.swizzle::<{ simd::order(1, 0, 3, 2) }>();
+                let n = pairs + pairs.swizzle::<{ simd::order(2, 3, 0, 1) }>();
+                let [e12, e13, e23, ..] = ((xs * n + two_s * c)
+                    + (b1 * c.swizzle::<{ simd::order(2, 0, 1, 3) }>()
+                        + b2 * c.swizzle::<{ simd::order(1, 2, 0, 3) }>()))
+                    .to_array();
+                Bivector { e12, e13, e23 }
+            }
+            #[cfg(not(target_arch = "x86_64"))]
+            {
+                let c_e12 = self.e23 * x.e13 - self.e13 * x.e23;
+                let c_e13 = self.e12 * x.e23 - self.e23 * x.e12;
+                let c_e23 = self.e13 * x.e12 - self.e12 * x.e13;
+                let two_s = self.s + self.s;
+                let two_e12 = self.e12 + self.e12;
+                let two_e13 = self.e13 + self.e13;
+                let two_e23 = self.e23 + self.e23;
+                let n = (self.s * self.s + self.e12 * self.e12)
+                    + (self.e13 * self.e13 + self.e23 * self.e23);
+                Bivector {
+                    e12: (n * x.e12 + two_s * c_e12)
+                        + (two_e23 * c_e13 - two_e13 * c_e23),
+                    e13: (n * x.e13 + two_s * c_e13)
+                        + (two_e12 * c_e23 - two_e23 * c_e12),
+                    e23: (n * x.e23 + two_s * c_e23)
+                        + (two_e13 * c_e12 - two_e12 * c_e13),
+                }
             }
         }
     }
@@ -8388,6 +8395,165 @@ pub mod g3 {
                     e2: m[1][0] * x.e1 + m[1][1] * x.e2 + m[1][2] * x.e3,
                     e3: m[2][0] * x.e1 + m[2][1] * x.e2 + m[2][2] * x.e3,
                 };
+            }
+        }
+    }
+    /// The rotation by a **unit** even versor (a rotor, `v ~v = 1`), in the cheaper
+    /// form that precondition allows: `x + 2 (s C(x) + C(C(x)))` with
+    /// `C(x) = (Bx - xB) / 2` for `v = s + B`, as glam's `Quat * Vec3` assumes a unit
+    /// quaternion. For a rotor of norm `1 + e` the result is off by about `2e |x|`;
+    /// [`Sandwich::sandwich`] is exact for any versor.
+    pub trait SandwichUnit<X> {
+        /// `v x ~v` for a unit `v`.
+        #[must_use]
+        fn sandwich_unit(self, x: X) -> X;
+    }
+    impl SandwichUnit<Vector> for Even {
+        #[inline]
+        fn sandwich_unit(self, x: Vector) -> Vector {
+            #[cfg(target_arch = "x86_64")]
+            {
+                let v = simd::F32x4::new([self.s, self.e12, self.e13, self.e23]);
+                let xs = simd::F32x4::new([x.e1, x.e2, x.e3, 0.0]);
+                let a1 = v
+                    .swizzle::<{ simd::order(1, 1, 2, 3) }>()
+                    .negate([false, true, true, false]);
+                let b1 = a1 * simd::F32x4::splat(2.0);
+                let a2 = v
+                    .swizzle::<{ simd::order(2, 3, 3, 3) }>()
+                    .negate([false, false, true, false]);
+                let b2 = a2 * simd::F32x4::splat(2.0);
+                let c = a1 * xs.swizzle::<{ simd::order(1, 0, 0, 3) }>()
+                    + a2 * xs.swizzle::<{ simd::order(2, 2, 1, 3) }>();
+                let s = v.swizzle::<{ simd::order(0, 0, 0, 0) }>();
+                let two_s = s + s;
+                let [e1, e2, e3, ..] = ((xs + two_s * c)
+                    + (b1 * c.swizzle::<{ simd::order(1, 0, 0, 3) }>()
+                        + b2 * c.swizzle::<{ simd::order(2, 2, 1, 3) }>()))
+                    .to_array();
+                Vector { e1, e2, e3 }
+            }
+            #[cfg(not(target_arch = "x86_64"))]
+            {
+                let c_e1 = self.e12 * x.e2 + self.e13 * x.e3;
+                let c_e2 = self.e23 * x.e3 - self.e12 * x.e1;
+                let c_e3 = -(self.e13 * x.e1 + self.e23 * x.e2);
+                let two_s = self.s + self.s;
+                let two_e12 = self.e12 + self.e12;
+                let two_e13 = self.e13 + self.e13;
+                let two_e23 = self.e23 + self.e23;
+                Vector {
+                    e1: (x.e1 + two_s * c_e1) + (two_e12 * c_e2 + two_e13 * c_e3),
+                    e2: (x.e2 + two_s * c_e2) + (two_e23 * c_e3 - two_e12 * c_e1),
+                    e3: (x.e3 + two_s * c_e3) - (two_e13 * c_e1 + two_e23 * c_e2),
+                }
+            }
+        }
+    }
+    impl SandwichUnit<Bivector> for Even {
+        #[inline]
+        fn sandwich_unit(self, x: Bivector) -> Bivector {
+            #[cfg(target_arch = "x86_64")]
+            {
+                let v = simd::F32x4::new([self.s, self.e12, self.e13, self.e23]);
+                let xs = simd::F32x4::new([x.e12, x.e13, x.e23, 0.0]);
+                let a1 = v
+                    .swizzle::<{ simd::order(2, 3, 1, 3) }>()
+                    .negate([true, true, true, false]);
+                let b1 = a1 * simd::F32x4::splat(2.0);
+                let a2 = v.swizzle::<{ simd::order(3, 1, 2, 3) }>();
+                let b2 = a2 * simd::F32x4::splat(2.0);
+                let c = a1 * xs.swizzle::<{ simd::order(2, 0, 1, 3) }>()
+                    + a2 * xs.swizzle::<{ simd::order(1, 2, 0, 3) }>();
+                let s = v.swizzle::<{ simd::order(0, 0, 0, 0) }>();
+                let two_s = s + s;
+                let [e12, e13, e23, ..] = ((xs + two_s * c)
+                    + (b1 * c.swizzle::<{ simd::order(2, 0, 1, 3) }>()
+                        + b2 * c.swizzle::<{ simd::order(1, 2, 0, 3) }>()))
+                    .to_array();
+                Bivector { e12, e13, e23 }
+            }
+            #[cfg(not(target_arch = "x86_64"))]
+            {
+                let c_e12 = self.e23 * x.e13 - self.e13 * x.e23;
+                let c_e13 = self.e12 * x.e23 - self.e23 * x.e12;
+                let c_e23 = self.e13 * x.e12 - self.e12 * x.e13;
+                let two_s = self.s + self.s;
+                let two_e12 = self.e12 + self.e12;
+                let two_e13 = self.e13 + self.e13;
+                let two_e23 = self.e23 + self.e23;
+                Bivector {
+                    e12: (x.e12 + two_s * c_e12) + (two_e23 * c_e13 - two_e13 * c_e23),
+                    e13: (x.e13 + two_s * c_e13) + (two_e12 * c_e23 - two_e23 * c_e12),
+                    e23: (x.e23 + two_s * c_e23) + (two_e13 * c_e12 - two_e12 * c_e13),
+                }
+            }
+        }
+    }
+    impl SandwichUnit<Trivector> for Even {
+        #[inline]
+        fn sandwich_unit(self, x: Trivector) -> Trivector {
+            Trivector { e123: x.e123 }
+        }
+    }
+    impl SandwichUnit<Even> for Even {
+        #[inline]
+        fn sandwich_unit(self, x: Even) -> Even {
+            let c_e12 = self.e23 * x.e13 - self.e13 * x.e23;
+            let c_e13 = self.e12 * x.e23 - self.e23 * x.e12;
+            let c_e23 = self.e13 * x.e12 - self.e12 * x.e13;
+            let two_s = self.s + self.s;
+            let two_e12 = self.e12 + self.e12;
+            let two_e13 = self.e13 + self.e13;
+            let two_e23 = self.e23 + self.e23;
+            Even {
+                s: x.s,
+                e12: (x.e12 + two_s * c_e12) + (two_e23 * c_e13 - two_e13 * c_e23),
+                e13: (x.e13 + two_s * c_e13) + (two_e12 * c_e23 - two_e23 * c_e12),
+                e23: (x.e23 + two_s * c_e23) + (two_e13 * c_e12 - two_e12 * c_e13),
+            }
+        }
+    }
+    impl SandwichUnit<Odd> for Even {
+        #[inline]
+        fn sandwich_unit(self, x: Odd) -> Odd {
+            let c_e1 = self.e12 * x.e2 + self.e13 * x.e3;
+            let c_e2 = self.e23 * x.e3 - self.e12 * x.e1;
+            let c_e3 = -(self.e13 * x.e1 + self.e23 * x.e2);
+            let two_s = self.s + self.s;
+            let two_e12 = self.e12 + self.e12;
+            let two_e13 = self.e13 + self.e13;
+            let two_e23 = self.e23 + self.e23;
+            Odd {
+                e1: (x.e1 + two_s * c_e1) + (two_e12 * c_e2 + two_e13 * c_e3),
+                e2: (x.e2 + two_s * c_e2) + (two_e23 * c_e3 - two_e12 * c_e1),
+                e3: (x.e3 + two_s * c_e3) - (two_e13 * c_e1 + two_e23 * c_e2),
+                e123: x.e123,
+            }
+        }
+    }
+    impl SandwichUnit<Multivector> for Even {
+        #[inline]
+        fn sandwich_unit(self, x: Multivector) -> Multivector {
+            let c_e1 = self.e12 * x.e2 + self.e13 * x.e3;
+            let c_e2 = self.e23 * x.e3 - self.e12 * x.e1;
+            let c_e12 = self.e23 * x.e13 - self.e13 * x.e23;
+            let c_e3 = -(self.e13 * x.e1 + self.e23 * x.e2);
+            let c_e13 = self.e12 * x.e23 - self.e23 * x.e12;
+            let c_e23 = self.e13 * x.e12 - self.e12 * x.e13;
+            let two_s = self.s + self.s;
+            let two_e12 = self.e12 + self.e12;
+            let two_e13 = self.e13 + self.e13;
+            let two_e23 = self.e23 + self.e23;
+            Multivector {
+                s: x.s,
+                e1: (x.e1 + two_s * c_e1) + (two_e12 * c_e2 + two_e13 * c_e3),
+                e2: (x.e2 + two_s * c_e2) + (two_e23 * c_e3 - two_e12 * c_e1),
+                e3: (x.e3 + two_s * c_e3) - (two_e13 * c_e1 + two_e23 * c_e2),
+                e12: (x.e12 + two_s * c_e12) + (two_e23 * c_e13 - two_e13 * c_e23),
+                e13: (x.e13 + two_s * c_e13) + (two_e12 * c_e23 - two_e23 * c_e12),
+                e23: (x.e23 + two_s * c_e23) + (two_e13 * c_e12 - two_e12 * c_e13),
+                e123: x.e123,
             }
         }
     }

@@ -13383,8 +13383,9 @@ pub mod g4 {
         }
     }
     /// The versor product: `v x ~v` for even `v`, `v x^ ~v` for odd `v` (x^ the grade
-    /// involution), expanded symbolically with like terms collected. Returns `x`'s own
-    /// type; `v` should be a unit versor (the result is scaled by |v|^2 otherwise).
+    /// involution), in the form the generator's cost model picks (a quadratic form with
+    /// like terms collected, or commutators). Returns `x`'s own type; exact for any
+    /// versor, so the result is scaled by |v|^2 when `v` is not unit.
     pub trait Sandwich<X> {
         /// `v x ~v` (even `v`) or `v x^ ~v` (odd `v`).
         #[must_use]

@@ -8,15 +8,28 @@ use quote::{format_ident, quote};
 use super::expr::{field_ident, signed_sum, type_tokens};
 use crate::algebra::blade_name;
 use crate::plan::lanes::LANES;
-use crate::plan::{LaneProduct, Output, Plan, Side, TypeId};
+use crate::plan::{LaneProduct, Output, PairColumns, Plan, Side, TypeId};
 
-/// Whether any product of the module has a SIMD body, so that the helpers are emitted.
+/// Whether any product or sandwich of the module has a SIMD body, so that the helpers are
+/// emitted.
 pub fn module_uses_lanes(plan: &Plan) -> bool {
-    plan.products.iter().any(|&kind| {
+    let products = plan.products.iter().any(|&kind| {
         super::products::operand_pairs(plan)
             .into_iter()
             .any(|(a, b)| plan.lane_form(kind, a, b).is_some())
-    })
+    });
+    let sandwiches = plan.has(crate::spec::Op::Sandwich)
+        && plan.versors().into_iter().any(|v| {
+            plan.emitted.iter().any(|&x| {
+                [false, true].into_iter().any(|unit| {
+                    matches!(
+                        plan.sandwich_form(v, x, unit),
+                        Some(crate::plan::SandwichForm::Commutator { lanes: Some(_), .. })
+                    )
+                })
+            })
+        });
+    products || sandwiches
 }
 
 /// The `simd` module: an SSE register of four `f32` behind arithmetic operators, a
@@ -178,13 +191,20 @@ pub fn lane_body(
         if let Some(keep) = column.mask(form.gathered_len, form.outputs) {
             factor = quote!(#factor.keep([#(#keep),*]));
         }
-        if let Some(flips) = column.flips(form.outputs) {
-            factor = quote!(#factor.negate([#(#flips),*]));
-        }
         let b = broadcast.0;
         let field = field_ident(blade);
-        lets.extend(quote!(let #name = #factor * simd::F32x4::splat(#b.#field);));
-        let sign = if column.all_negative(form.outputs) { -1 } else { 1 };
+        // The signs go on the broadcast, so that a chain through the gathered operand
+        // (`acc = acc * r`) has no sign flip on its path.
+        let mut splat = quote!(simd::F32x4::splat(#b.#field));
+        if let Some(flips) = column.flips(form.outputs) {
+            splat = quote!(#splat.negate([#(#flips),*]));
+        }
+        lets.extend(quote!(let #name = #factor * #splat;));
+        let sign = if column.all_negative(form.outputs) {
+            -1
+        } else {
+            1
+        };
         summands.push((sign, quote!(#name)));
     }
     let sum = signed_sum(&summands);
@@ -195,6 +215,121 @@ pub fn lane_body(
     quote! {
         #lets
         let [#(#fields,)* #rest] = (#sum).to_array();
+        #name { #(#fields),* }
+    }
+}
+
+/// The sandwich of an even versor `v = s + B` (four components) on an `x` of fewer than
+/// four components in lanes: `c = C(x)`, then `(<v ~v> x + 2s c) + 2C(c)` (`x + ...` for a
+/// unit versor), the factor 2 folded into the versor's lanes. The versor's swizzles are
+/// shared by both commutators.
+pub fn commutator_sandwich_lanes(
+    plan: &Plan,
+    v: TypeId,
+    x: TypeId,
+    lanes: &PairColumns,
+    unit: bool,
+) -> TokenStream {
+    let versor = &plan.types.get(v).blades;
+    let operand = &plan.types.get(x).blades;
+    let pack = |expr: TokenStream, blades: &[u32]| {
+        let lanes = (0..LANES).map(|lane| match blades.get(lane) {
+            Some(&blade) => {
+                let field = field_ident(blade);
+                quote!(#expr.#field)
+            }
+            None => quote!(0.0),
+        });
+        quote!(simd::F32x4::new([#(#lanes),*]))
+    };
+    let order_tokens = |order: [usize; LANES]| {
+        let [l0, l1, l2, l3] = order.map(|l| Literal::i32_unsuffixed(l as i32));
+        quote!(swizzle::<{ simd::order(#l0, #l1, #l2, #l3) }>())
+    };
+    let packed_v = pack(quote!(self), versor);
+    let packed_x = pack(quote!(x), operand);
+    let mut lets = quote! {
+        let v = #packed_v;
+        let xs = #packed_x;
+    };
+    // Each column's versor lanes carry the column's signs, and the second commutator's
+    // carry the factor 2 of `2 C(c)` too: both are fixed before `x` is read, so the path
+    // through `x` is swizzles, multiplies and additions only.
+    let mut names = Vec::new();
+    for (k, column) in lanes.columns.iter().enumerate() {
+        let (a, b) = (format_ident!("a{}", k + 1), format_ident!("b{}", k + 1));
+        let mut value = quote!(v);
+        if column.a_order != [0, 1, 2, 3] {
+            let swizzle = order_tokens(column.a_order);
+            value = quote!(#value.#swizzle);
+        }
+        let signs: [bool; LANES] = std::array::from_fn(|l| column.used[l] && column.negate[l]);
+        if signs.iter().any(|&n| n) {
+            value = quote!(#value.negate([#(#signs),*]));
+        }
+        lets.extend(quote! {
+            let #a = #value;
+            let #b = #a * simd::F32x4::splat(2.0);
+        });
+        names.push((a, b));
+    }
+    let apply = |second: bool, input: TokenStream| {
+        let summands: Vec<(i32, TokenStream)> = lanes
+            .columns
+            .iter()
+            .zip(&names)
+            .map(|(column, (a, b))| {
+                let factor = if second { b } else { a };
+                let operand = if column.b_order == [0, 1, 2, 3] {
+                    input.clone()
+                } else {
+                    let swizzle = order_tokens(column.b_order);
+                    quote!(#input.#swizzle)
+                };
+                (1, quote!(#factor * #operand))
+            })
+            .collect();
+        signed_sum(&summands)
+    };
+    let c = apply(false, quote!(xs));
+    let cc = apply(true, quote!(c));
+    lets.extend(quote! {
+        let c = #c;
+        let s = v.swizzle::<{ simd::order(0, 0, 0, 0) }>();
+        let two_s = s + s;
+    });
+    let y = if unit {
+        quote!((xs + two_s * c) + (#cc))
+    } else {
+        // <v ~v>: each component squared with the sign of its blade times its reverse.
+        let signs: Vec<i32> = versor
+            .iter()
+            .map(|&b| {
+                i32::from(plan.metric.geometric(b, b).0)
+                    * i32::from(crate::algebra::Involution::Reverse.sign(b))
+            })
+            .collect();
+        let mut squares = quote!(v * v);
+        if signs.contains(&0) {
+            let keep = signs.iter().map(|&s| s != 0);
+            squares = quote!((#squares).keep([#(#keep),*]));
+        }
+        if signs.iter().any(|&s| s < 0) {
+            let flips = signs.iter().map(|&s| s < 0);
+            squares = quote!((#squares).negate([#(#flips),*]));
+        }
+        lets.extend(quote! {
+            let squares = #squares;
+            let pairs = squares + squares.swizzle::<{ simd::order(1, 0, 3, 2) }>();
+            let n = pairs + pairs.swizzle::<{ simd::order(2, 3, 0, 1) }>();
+        });
+        quote!((xs * n + two_s * c) + (#cc))
+    };
+    let fields: Vec<_> = operand.iter().map(|&b| field_ident(b)).collect();
+    let name = type_tokens(plan, x);
+    quote! {
+        #lets
+        let [#(#fields,)* ..] = (#y).to_array();
         #name { #(#fields),* }
     }
 }

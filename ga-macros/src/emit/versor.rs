@@ -10,31 +10,49 @@ use super::expr::{
 };
 use super::products::product_value;
 use crate::algebra::{blade_name, Involution, ProductKind};
-use crate::plan::{bilinear, sandwich, Output, Plan, Quadratic, TypeId, TypeKind};
+use crate::plan::sandwich_form::CommutatorTerms;
+use crate::plan::{
+    bilinear, sandwich, Output, PairColumns, Plan, Quadratic, SandwichForm, TypeId, TypeKind,
+};
 
-/// Above this size (|v|^2 |x|) the symbolic expansion is not attempted: it would cost
-/// more multiplies than two chained products anyway (G6 rotors).
-const FUSED_BUDGET: usize = 2048;
-
-/// The `Sandwich` trait and its impls for every versor type on every emitted type.
+/// The `Sandwich` trait and its impls for every versor type on every emitted type, and
+/// `SandwichUnit` where the unit versor has a cheaper form.
 pub fn emit_sandwiches(plan: &Plan) -> TokenStream {
     let mut out = quote! {
         /// The versor product: `v x ~v` for even `v`, `v x^ ~v` for odd `v` (x^ the grade
-        /// involution), expanded symbolically with like terms collected. Returns `x`'s own
-        /// type; `v` should be a unit versor (the result is scaled by |v|^2 otherwise).
+        /// involution), in the form the generator's cost model picks (a quadratic form with
+        /// like terms collected, or commutators). Returns `x`'s own type; exact for any
+        /// versor, so the result is scaled by |v|^2 when `v` is not unit.
         pub trait Sandwich<X> {
             /// `v x ~v` (even `v`) or `v x^ ~v` (odd `v`).
             #[must_use]
             fn sandwich(self, x: X) -> X;
         }
     };
+    let mut unit = TokenStream::new();
     for v in plan.versors() {
         for &x in &plan.emitted {
             out.extend(sandwich_impl(plan, v, x));
+            unit.extend(sandwich_unit_impl(plan, v, x));
         }
         if plan.emitted.contains(&TypeId::grade(1)) {
             out.extend(emit_sandwich_matrix(plan, v));
         }
+    }
+    if !unit.is_empty() {
+        out.extend(quote! {
+            /// The rotation by a **unit** even versor (a rotor, `v ~v = 1`), in the cheaper
+            /// form that precondition allows: `x + 2 (s C(x) + C(C(x)))` with
+            /// `C(x) = (Bx - xB) / 2` for `v = s + B`, as glam's `Quat * Vec3` assumes a unit
+            /// quaternion. For a rotor of norm `1 + e` the result is off by about `2e |x|`;
+            /// [`Sandwich::sandwich`] is exact for any versor.
+            pub trait SandwichUnit<X> {
+                /// `v x ~v` for a unit `v`.
+                #[must_use]
+                fn sandwich_unit(self, x: X) -> X;
+            }
+            #unit
+        });
     }
     out
 }
@@ -45,15 +63,13 @@ fn is_odd(plan: &Plan, v: TypeId) -> bool {
 
 fn sandwich_impl(plan: &Plan, v: TypeId, x: TypeId) -> TokenStream {
     let (v_ty, x_ty) = (type_tokens(plan, v), type_tokens(plan, x));
-    let versor = &plan.types.get(v).blades;
-    let operand = &plan.types.get(x).blades;
     let odd = is_odd(plan, v);
-    let fused = (versor.len() * versor.len() * operand.len() <= FUSED_BUDGET)
-        .then(|| sandwich(&plan.metric, versor, odd, operand))
-        .filter(|q| fused_multiplies(q, operand) <= chained_multiplies(plan, v, x));
-    let body = match fused {
-        Some(q) => fused_body(plan, v, x, &q),
-        None => chained_body(plan, v, x, odd),
+    let body = match plan.sandwich_form(v, x, false) {
+        Some(SandwichForm::Collected(q)) => fused_body(plan, v, x, &q),
+        Some(SandwichForm::Commutator { terms, lanes }) => {
+            commutator_body(plan, v, x, &terms, lanes.as_ref(), false)
+        }
+        Some(SandwichForm::Chained) | None => chained_body(plan, v, x, odd),
     };
     quote! {
         impl Sandwich<#x_ty> for #v_ty {
@@ -65,38 +81,133 @@ fn sandwich_impl(plan: &Plan, v: TypeId, x: TypeId) -> TokenStream {
     }
 }
 
-fn fused_multiplies(q: &Quadratic, operand: &[u32]) -> usize {
-    let mut pairs = BTreeSet::new();
-    let mut entries = 0;
-    for (blade, per_k) in q {
-        if !operand.contains(blade) {
-            continue;
-        }
-        for pairs_k in per_k.values() {
-            entries += 1;
-            pairs.extend(pairs_k.keys().copied());
+fn sandwich_unit_impl(plan: &Plan, v: TypeId, x: TypeId) -> TokenStream {
+    let Some(SandwichForm::Commutator { terms, lanes }) = plan.sandwich_form(v, x, true) else {
+        return TokenStream::new();
+    };
+    let (v_ty, x_ty) = (type_tokens(plan, v), type_tokens(plan, x));
+    let body = commutator_body(plan, v, x, &terms, lanes.as_ref(), true);
+    quote! {
+        impl SandwichUnit<#x_ty> for #v_ty {
+            #[inline]
+            fn sandwich_unit(self, x: #x_ty) -> #x_ty {
+                #body
+            }
         }
     }
-    pairs.len() + entries
 }
 
-fn chained_multiplies(plan: &Plan, v: TypeId, x: TypeId) -> usize {
+/// `<v ~v> x + 2 (s c + C(c))` with `c = C(x)` (or `x + ...` for a unit versor): scalar
+/// code, with a four-lane body beside it where the cost model chose one.
+fn commutator_body(
+    plan: &Plan,
+    v: TypeId,
+    x: TypeId,
+    terms: &CommutatorTerms,
+    lanes: Option<&PairColumns>,
+    unit: bool,
+) -> TokenStream {
+    let scalar = commutator_scalar_body(plan, v, x, terms, unit);
+    match lanes {
+        None => scalar,
+        Some(lanes) => {
+            let simd = super::simd::commutator_sandwich_lanes(plan, v, x, lanes, unit);
+            quote! {
+                #[cfg(target_arch = "x86_64")]
+                {
+                    #simd
+                }
+                #[cfg(not(target_arch = "x86_64"))]
+                {
+                    #scalar
+                }
+            }
+        }
+    }
+}
+
+fn commutator_scalar_body(
+    plan: &Plan,
+    v: TypeId,
+    x: TypeId,
+    terms: &CommutatorTerms,
+    unit: bool,
+) -> TokenStream {
+    let this = Operand::new(quote!(self), v);
+    let arg = Operand::new(quote!(x), x);
     let versor = &plan.types.get(v).blades;
-    let first = bilinear(
-        &plan.metric,
-        ProductKind::Geometric,
-        versor,
-        &plan.types.get(x).blades,
-    );
-    let middle: Vec<u32> = first.keys().copied().collect();
-    let second = bilinear(&plan.metric, ProductKind::Geometric, &middle, versor);
     let operand = &plan.types.get(x).blades;
-    first.values().map(Vec::len).sum::<usize>()
-        + second
+    let local = |prefix: &str, blade: u32| format_ident!("{prefix}_{}", blade_name(blade));
+    let from_x = |k: usize| arg.component(plan, k);
+    let from_c = |k: usize| {
+        let blade = operand[k];
+        if terms.contains_key(&blade) {
+            let c = local("c", blade);
+            quote!(#c)
+        } else {
+            quote!(0.0)
+        }
+    };
+    // The second commutator takes the doubled versor: the factor 2 of `2 C(c)` is folded
+    // into components that do not depend on `x`, one addition fewer on the path through it.
+    let doubled = |i: usize| {
+        let name = local("two", versor[i]);
+        quote!(#name)
+    };
+    let plain = |i: usize| this.component(plan, i);
+    let apply = |factor: &dyn Fn(usize) -> TokenStream,
+                 input: &dyn Fn(usize) -> TokenStream,
+                 blade: u32| {
+        let summands: Vec<(i32, TokenStream)> = terms[&blade]
             .iter()
-            .filter(|(b, _)| operand.contains(b))
-            .map(|(_, t)| t.len())
-            .sum::<usize>()
+            .map(|t| {
+                let (a, b) = (factor(t.lhs), input(t.rhs));
+                (t.sign as i32, quote!(#a * #b))
+            })
+            .collect();
+        summands
+    };
+    let c_lets = terms.keys().map(|&blade| {
+        let name = local("c", blade);
+        let value = signed_sum(&apply(&plain, &from_x, blade));
+        quote!(let #name = #value;)
+    });
+    let used: BTreeSet<usize> = terms.values().flatten().map(|t| t.lhs).collect();
+    let doubling: Vec<usize> = if used.is_empty() {
+        Vec::new()
+    } else {
+        std::iter::once(0).chain(used).collect()
+    };
+    let two_lets = doubling.into_iter().map(|i| {
+        let (name, a) = (doubled(i), this.component(plan, i));
+        quote!(let #name = #a + #a;)
+    });
+    let norm = if unit {
+        quote!()
+    } else {
+        let value = super::expr::quadratic_component(plan, &this, Involution::Reverse, 0);
+        quote!(let n = #value;)
+    };
+    let two_s = doubled(0);
+    let value = construct(plan, Output::Type(x), |blade| {
+        let index = operand.iter().position(|&b| b == blade)?;
+        let xk = arg.component(plan, index);
+        let scaled = if unit { quote!(#xk) } else { quote!(n * #xk) };
+        Some(if terms.contains_key(&blade) {
+            let c = local("c", blade);
+            let mut summands = vec![(1, scaled), (1, quote!(#two_s * #c))];
+            summands.extend(apply(&doubled, &from_c, blade));
+            signed_sum(&summands)
+        } else {
+            scaled
+        })
+    });
+    quote! {
+        #(#c_lets)*
+        #(#two_lets)*
+        #norm
+        #value
+    }
 }
 
 /// The pieces of the expanded sandwich: `let`s for the products of pairs of the versor's

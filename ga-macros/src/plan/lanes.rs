@@ -175,7 +175,7 @@ mod tests {
     fn even3() -> Vec<Blade> {
         canonical_blades(3)
             .into_iter()
-            .filter(|&b| grade(b) % 2 == 0)
+            .filter(|&b| grade(b).is_multiple_of(2))
             .collect()
     }
 

@@ -3,10 +3,12 @@
 
 pub mod cost;
 pub mod lanes;
+pub mod sandwich_form;
 mod terms;
 mod types;
 
 pub use lanes::{LaneProduct, Side};
+pub use sandwich_form::{PairColumns, SandwichForm};
 pub use terms::{bilinear, quadratic_self, sandwich, Quadratic};
 pub use types::{Output, TypeId, TypeKind, Types};
 
