@@ -4945,8 +4945,8 @@ pub mod g2 {
             let two_s = self.s + self.s;
             let two_e12 = self.e12 + self.e12;
             Vector {
-                e1: (x.e1 + two_s * c_e1) + two_e12 * c_e2,
-                e2: (x.e2 + two_s * c_e2) - two_e12 * c_e1,
+                e1: (x.e1 + two_s * c_e1) + (two_e12 * c_e2),
+                e2: (x.e2 + two_s * c_e2) + (-two_e12 * c_e1),
             }
         }
     }
@@ -4970,8 +4970,8 @@ pub mod g2 {
             let two_s = self.s + self.s;
             let two_e12 = self.e12 + self.e12;
             Odd {
-                e1: (x.e1 + two_s * c_e1) + two_e12 * c_e2,
-                e2: (x.e2 + two_s * c_e2) - two_e12 * c_e1,
+                e1: (x.e1 + two_s * c_e1) + (two_e12 * c_e2),
+                e2: (x.e2 + two_s * c_e2) + (-two_e12 * c_e1),
             }
         }
     }
@@ -4984,8 +4984,8 @@ pub mod g2 {
             let two_e12 = self.e12 + self.e12;
             Multivector {
                 s: x.s,
-                e1: (x.e1 + two_s * c_e1) + two_e12 * c_e2,
-                e2: (x.e2 + two_s * c_e2) - two_e12 * c_e1,
+                e1: (x.e1 + two_s * c_e1) + (two_e12 * c_e2),
+                e2: (x.e2 + two_s * c_e2) + (-two_e12 * c_e1),
                 e12: x.e12,
             }
         }

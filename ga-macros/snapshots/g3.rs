@@ -7985,7 +7985,7 @@ pub mod g3 {
             Vector {
                 e1: (x.e1 + two_s * c_e1) + (two_e12 * c_e2 + two_e13 * c_e3),
                 e2: (x.e2 + two_s * c_e2) + (two_e23 * c_e3 - two_e12 * c_e1),
-                e3: (x.e3 + two_s * c_e3) - (two_e13 * c_e1 + two_e23 * c_e2),
+                e3: (x.e3 + two_s * c_e3) + (-(two_e13 * c_e1 + two_e23 * c_e2)),
             }
         }
     }
@@ -8043,7 +8043,7 @@ pub mod g3 {
             Odd {
                 e1: (x.e1 + two_s * c_e1) + (two_e12 * c_e2 + two_e13 * c_e3),
                 e2: (x.e2 + two_s * c_e2) + (two_e23 * c_e3 - two_e12 * c_e1),
-                e3: (x.e3 + two_s * c_e3) - (two_e13 * c_e1 + two_e23 * c_e2),
+                e3: (x.e3 + two_s * c_e3) + (-(two_e13 * c_e1 + two_e23 * c_e2)),
                 e123: x.e123,
             }
         }
@@ -8065,7 +8065,7 @@ pub mod g3 {
                 s: x.s,
                 e1: (x.e1 + two_s * c_e1) + (two_e12 * c_e2 + two_e13 * c_e3),
                 e2: (x.e2 + two_s * c_e2) + (two_e23 * c_e3 - two_e12 * c_e1),
-                e3: (x.e3 + two_s * c_e3) - (two_e13 * c_e1 + two_e23 * c_e2),
+                e3: (x.e3 + two_s * c_e3) + (-(two_e13 * c_e1 + two_e23 * c_e2)),
                 e12: (x.e12 + two_s * c_e12) + (two_e23 * c_e13 - two_e13 * c_e23),
                 e13: (x.e13 + two_s * c_e13) + (two_e12 * c_e23 - two_e23 * c_e12),
                 e23: (x.e23 + two_s * c_e23) + (two_e13 * c_e12 - two_e12 * c_e13),

@@ -1692,7 +1692,7 @@ pub mod g3 {
                     e1: (self.e1 * rhs.s - self.e2 * rhs.e12) - self.e3 * rhs.e13,
                     e2: (self.e1 * rhs.e12 + self.e2 * rhs.s) - self.e3 * rhs.e23,
                     e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23) + self.e3 * rhs.s,
-                    e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12) - self.e2 * rhs.e13,
+                    e123: (self.e1 * rhs.e23 - self.e2 * rhs.e13) + self.e3 * rhs.e12,
                 }
             }
         }
@@ -1716,7 +1716,7 @@ pub mod g3 {
             {
                 Even {
                     s: (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3,
-                    e12: (self.e1 * rhs.e2 + self.e3 * rhs.e123) - self.e2 * rhs.e1,
+                    e12: (self.e1 * rhs.e2 - self.e2 * rhs.e1) + self.e3 * rhs.e123,
                     e13: (self.e1 * rhs.e3 - self.e2 * rhs.e123) - self.e3 * rhs.e1,
                     e23: (self.e1 * rhs.e123 + self.e2 * rhs.e3) - self.e3 * rhs.e2,
                 }
@@ -1805,9 +1805,9 @@ pub mod g3 {
             {
                 Even {
                     s: -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23),
-                    e12: (self.e12 * rhs.s + self.e23 * rhs.e13) - self.e13 * rhs.e23,
+                    e12: (self.e12 * rhs.s - self.e13 * rhs.e23) + self.e23 * rhs.e13,
                     e13: (self.e12 * rhs.e23 + self.e13 * rhs.s) - self.e23 * rhs.e12,
-                    e23: (self.e13 * rhs.e12 + self.e23 * rhs.s) - self.e12 * rhs.e13,
+                    e23: (self.e13 * rhs.e12 - self.e12 * rhs.e13) + self.e23 * rhs.s,
                 }
             }
         }
@@ -1832,9 +1832,9 @@ pub mod g3 {
             {
                 Odd {
                     e1: (self.e12 * rhs.e2 + self.e13 * rhs.e3) - self.e23 * rhs.e123,
-                    e2: (self.e13 * rhs.e123 + self.e23 * rhs.e3) - self.e12 * rhs.e1,
+                    e2: (self.e13 * rhs.e123 - self.e12 * rhs.e1) + self.e23 * rhs.e3,
                     e3: -((self.e12 * rhs.e123 + self.e13 * rhs.e1) + self.e23 * rhs.e2),
-                    e123: (self.e12 * rhs.e3 + self.e23 * rhs.e1) - self.e13 * rhs.e2,
+                    e123: (self.e12 * rhs.e3 - self.e13 * rhs.e2) + self.e23 * rhs.e1,
                 }
             }
         }
@@ -1963,9 +1963,9 @@ pub mod g3 {
             {
                 Odd {
                     e1: (self.s * rhs.e1 + self.e12 * rhs.e2) + self.e13 * rhs.e3,
-                    e2: (self.s * rhs.e2 + self.e23 * rhs.e3) - self.e12 * rhs.e1,
-                    e3: (self.s * rhs.e3 - self.e13 * rhs.e1) - self.e23 * rhs.e2,
-                    e123: (self.e12 * rhs.e3 + self.e23 * rhs.e1) - self.e13 * rhs.e2,
+                    e2: (self.s * rhs.e2 - self.e12 * rhs.e1) + self.e23 * rhs.e3,
+                    e3: self.s * rhs.e3 - (self.e13 * rhs.e1 + self.e23 * rhs.e2),
+                    e123: (self.e23 * rhs.e1 - self.e13 * rhs.e2) + self.e12 * rhs.e3,
                 }
             }
         }
@@ -1991,8 +1991,8 @@ pub mod g3 {
                 Even {
                     s: -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23),
                     e12: (self.s * rhs.e12 + self.e23 * rhs.e13) - self.e13 * rhs.e23,
-                    e13: (self.s * rhs.e13 + self.e12 * rhs.e23) - self.e23 * rhs.e12,
-                    e23: (self.s * rhs.e23 + self.e13 * rhs.e12) - self.e12 * rhs.e13,
+                    e13: (self.s * rhs.e13 - self.e23 * rhs.e12) + self.e12 * rhs.e23,
+                    e23: (self.e13 * rhs.e12 - self.e12 * rhs.e13) + self.s * rhs.e23,
                 }
             }
         }
@@ -2032,12 +2032,12 @@ pub mod g3 {
                 Even {
                     s: (self.s * rhs.s - self.e12 * rhs.e12)
                         - (self.e13 * rhs.e13 + self.e23 * rhs.e23),
-                    e12: (self.s * rhs.e12 + self.e12 * rhs.s)
+                    e12: (self.e12 * rhs.s + self.s * rhs.e12)
                         + (self.e23 * rhs.e13 - self.e13 * rhs.e23),
-                    e13: (self.s * rhs.e13 + self.e12 * rhs.e23)
-                        + (self.e13 * rhs.s - self.e23 * rhs.e12),
-                    e23: (self.s * rhs.e23 + self.e13 * rhs.e12)
-                        + (self.e23 * rhs.s - self.e12 * rhs.e13),
+                    e13: (self.e13 * rhs.s - self.e23 * rhs.e12)
+                        + (self.s * rhs.e13 + self.e12 * rhs.e23),
+                    e23: (self.e23 * rhs.s + self.e13 * rhs.e12)
+                        + (self.s * rhs.e23 - self.e12 * rhs.e13),
                 }
             }
         }
@@ -2066,12 +2066,12 @@ pub mod g3 {
                 Odd {
                     e1: (self.s * rhs.e1 + self.e12 * rhs.e2)
                         + (self.e13 * rhs.e3 - self.e23 * rhs.e123),
-                    e2: (self.s * rhs.e2 + self.e13 * rhs.e123)
-                        + (self.e23 * rhs.e3 - self.e12 * rhs.e1),
+                    e2: (self.s * rhs.e2 - self.e12 * rhs.e1)
+                        + (self.e23 * rhs.e3 + self.e13 * rhs.e123),
                     e3: (self.s * rhs.e3 - self.e12 * rhs.e123)
                         - (self.e13 * rhs.e1 + self.e23 * rhs.e2),
-                    e123: (self.s * rhs.e123 + self.e12 * rhs.e3)
-                        + (self.e23 * rhs.e1 - self.e13 * rhs.e2),
+                    e123: (self.e23 * rhs.e1 - self.e13 * rhs.e2)
+                        + (self.e12 * rhs.e3 + self.s * rhs.e123),
                 }
             }
         }
@@ -2132,9 +2132,9 @@ pub mod g3 {
             {
                 Even {
                     s: (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3,
-                    e12: (self.e1 * rhs.e2 + self.e123 * rhs.e3) - self.e2 * rhs.e1,
-                    e13: (self.e1 * rhs.e3 - self.e3 * rhs.e1) - self.e123 * rhs.e2,
-                    e23: (self.e2 * rhs.e3 + self.e123 * rhs.e1) - self.e3 * rhs.e2,
+                    e12: (self.e1 * rhs.e2 - self.e2 * rhs.e1) + self.e123 * rhs.e3,
+                    e13: self.e1 * rhs.e3 - (self.e3 * rhs.e1 + self.e123 * rhs.e2),
+                    e23: (self.e123 * rhs.e1 - self.e3 * rhs.e2) + self.e2 * rhs.e3,
                 }
             }
         }
@@ -2160,8 +2160,8 @@ pub mod g3 {
                 Odd {
                     e1: -((self.e2 * rhs.e12 + self.e3 * rhs.e13) + self.e123 * rhs.e23),
                     e2: (self.e1 * rhs.e12 + self.e123 * rhs.e13) - self.e3 * rhs.e23,
-                    e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23) - self.e123 * rhs.e12,
-                    e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12) - self.e2 * rhs.e13,
+                    e3: (self.e1 * rhs.e13 - self.e123 * rhs.e12) + self.e2 * rhs.e23,
+                    e123: (self.e3 * rhs.e12 - self.e2 * rhs.e13) + self.e1 * rhs.e23,
                 }
             }
         }
@@ -2201,12 +2201,12 @@ pub mod g3 {
                 Odd {
                     e1: (self.e1 * rhs.s - self.e2 * rhs.e12)
                         - (self.e3 * rhs.e13 + self.e123 * rhs.e23),
-                    e2: (self.e1 * rhs.e12 + self.e2 * rhs.s)
+                    e2: (self.e2 * rhs.s + self.e1 * rhs.e12)
                         + (self.e123 * rhs.e13 - self.e3 * rhs.e23),
-                    e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23)
-                        + (self.e3 * rhs.s - self.e123 * rhs.e12),
-                    e123: (self.e1 * rhs.e23 + self.e3 * rhs.e12)
-                        + (self.e123 * rhs.s - self.e2 * rhs.e13),
+                    e3: (self.e3 * rhs.s - self.e123 * rhs.e12)
+                        + (self.e1 * rhs.e13 + self.e2 * rhs.e23),
+                    e123: (self.e123 * rhs.s + self.e3 * rhs.e12)
+                        + (self.e1 * rhs.e23 - self.e2 * rhs.e13),
                 }
             }
         }
@@ -2235,12 +2235,12 @@ pub mod g3 {
                 Even {
                     s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
                         + (self.e3 * rhs.e3 - self.e123 * rhs.e123),
-                    e12: (self.e1 * rhs.e2 + self.e3 * rhs.e123)
-                        + (self.e123 * rhs.e3 - self.e2 * rhs.e1),
+                    e12: (self.e1 * rhs.e2 - self.e2 * rhs.e1)
+                        + (self.e123 * rhs.e3 + self.e3 * rhs.e123),
                     e13: (self.e1 * rhs.e3 - self.e2 * rhs.e123)
                         - (self.e3 * rhs.e1 + self.e123 * rhs.e2),
-                    e23: (self.e1 * rhs.e123 + self.e2 * rhs.e3)
-                        + (self.e123 * rhs.e1 - self.e3 * rhs.e2),
+                    e23: (self.e123 * rhs.e1 - self.e3 * rhs.e2)
+                        + (self.e2 * rhs.e3 + self.e1 * rhs.e123),
                 }
             }
         }
@@ -3326,8 +3326,8 @@ pub mod g3 {
             {
                 Vector {
                     e1: (self.s * rhs.e1 + self.e12 * rhs.e2) + self.e13 * rhs.e3,
-                    e2: (self.s * rhs.e2 + self.e23 * rhs.e3) - self.e12 * rhs.e1,
-                    e3: (self.s * rhs.e3 - self.e13 * rhs.e1) - self.e23 * rhs.e2,
+                    e2: (self.s * rhs.e2 - self.e12 * rhs.e1) + self.e23 * rhs.e3,
+                    e3: self.s * rhs.e3 - (self.e13 * rhs.e1 + self.e23 * rhs.e2),
                 }
             }
         }
@@ -3396,8 +3396,8 @@ pub mod g3 {
                 Odd {
                     e1: (self.s * rhs.e1 + self.e12 * rhs.e2)
                         + (self.e13 * rhs.e3 - self.e23 * rhs.e123),
-                    e2: (self.s * rhs.e2 + self.e13 * rhs.e123)
-                        + (self.e23 * rhs.e3 - self.e12 * rhs.e1),
+                    e2: (self.s * rhs.e2 - self.e12 * rhs.e1)
+                        + (self.e23 * rhs.e3 + self.e13 * rhs.e123),
                     e3: (self.s * rhs.e3 - self.e12 * rhs.e123)
                         - (self.e13 * rhs.e1 + self.e23 * rhs.e2),
                     e123: self.s * rhs.e123,
@@ -3501,10 +3501,10 @@ pub mod g3 {
                 Odd {
                     e1: (self.e1 * rhs.s - self.e2 * rhs.e12)
                         - (self.e3 * rhs.e13 + self.e123 * rhs.e23),
-                    e2: (self.e1 * rhs.e12 + self.e2 * rhs.s)
+                    e2: (self.e2 * rhs.s + self.e1 * rhs.e12)
                         + (self.e123 * rhs.e13 - self.e3 * rhs.e23),
-                    e3: (self.e1 * rhs.e13 + self.e2 * rhs.e23)
-                        + (self.e3 * rhs.s - self.e123 * rhs.e12),
+                    e3: (self.e3 * rhs.s - self.e123 * rhs.e12)
+                        + (self.e1 * rhs.e13 + self.e2 * rhs.e23),
                     e123: self.e123 * rhs.s,
                 }
             }
@@ -3537,9 +3537,9 @@ pub mod g3 {
                 Even {
                     s: (self.e1 * rhs.e1 + self.e2 * rhs.e2)
                         + (self.e3 * rhs.e3 - self.e123 * rhs.e123),
-                    e12: self.e3 * rhs.e123 + self.e123 * rhs.e3,
-                    e13: -(self.e2 * rhs.e123 + self.e123 * rhs.e2),
-                    e23: self.e1 * rhs.e123 + self.e123 * rhs.e1,
+                    e12: self.e123 * rhs.e3 + self.e3 * rhs.e123,
+                    e13: -(self.e123 * rhs.e2 + self.e2 * rhs.e123),
+                    e23: self.e123 * rhs.e1 + self.e1 * rhs.e123,
                 }
             }
         }
@@ -8005,7 +8005,7 @@ pub mod g3 {
                 Vector {
                     e1: (n * x.e1 + two_s * c_e1) + (two_e12 * c_e2 + two_e13 * c_e3),
                     e2: (n * x.e2 + two_s * c_e2) + (two_e23 * c_e3 - two_e12 * c_e1),
-                    e3: (n * x.e3 + two_s * c_e3) - (two_e13 * c_e1 + two_e23 * c_e2),
+                    e3: (n * x.e3 + two_s * c_e3) + (-(two_e13 * c_e1 + two_e23 * c_e2)),
                 }
             }
         }
@@ -8445,7 +8445,7 @@ pub mod g3 {
                 Vector {
                     e1: (x.e1 + two_s * c_e1) + (two_e12 * c_e2 + two_e13 * c_e3),
                     e2: (x.e2 + two_s * c_e2) + (two_e23 * c_e3 - two_e12 * c_e1),
-                    e3: (x.e3 + two_s * c_e3) - (two_e13 * c_e1 + two_e23 * c_e2),
+                    e3: (x.e3 + two_s * c_e3) + (-(two_e13 * c_e1 + two_e23 * c_e2)),
                 }
             }
         }
@@ -8527,7 +8527,7 @@ pub mod g3 {
             Odd {
                 e1: (x.e1 + two_s * c_e1) + (two_e12 * c_e2 + two_e13 * c_e3),
                 e2: (x.e2 + two_s * c_e2) + (two_e23 * c_e3 - two_e12 * c_e1),
-                e3: (x.e3 + two_s * c_e3) - (two_e13 * c_e1 + two_e23 * c_e2),
+                e3: (x.e3 + two_s * c_e3) + (-(two_e13 * c_e1 + two_e23 * c_e2)),
                 e123: x.e123,
             }
         }
@@ -8549,7 +8549,7 @@ pub mod g3 {
                 s: x.s,
                 e1: (x.e1 + two_s * c_e1) + (two_e12 * c_e2 + two_e13 * c_e3),
                 e2: (x.e2 + two_s * c_e2) + (two_e23 * c_e3 - two_e12 * c_e1),
-                e3: (x.e3 + two_s * c_e3) - (two_e13 * c_e1 + two_e23 * c_e2),
+                e3: (x.e3 + two_s * c_e3) + (-(two_e13 * c_e1 + two_e23 * c_e2)),
                 e12: (x.e12 + two_s * c_e12) + (two_e23 * c_e13 - two_e13 * c_e23),
                 e13: (x.e13 + two_s * c_e13) + (two_e12 * c_e23 - two_e23 * c_e12),
                 e23: (x.e23 + two_s * c_e23) + (two_e13 * c_e12 - two_e12 * c_e13),

@@ -280,3 +280,39 @@ pub fn quadratic_component(
         .unwrap_or_default();
     signed_sum(&terms)
 }
+
+/// A balanced sum over leaves in a fixed order, with the same split as [`signed_sum`]'s
+/// trees, where a missing leaf (`None`) contributes nothing: the scalar mirror of a SIMD
+/// sum whose lanes hold a term in some columns and zero in others. Adding zero is exact,
+/// so the mirror rounds exactly like the SIMD sum. `None` when every leaf is missing.
+pub fn mirrored_sum(leaves: &[Option<(bool, TokenStream)>]) -> Option<TokenStream> {
+    fn tree(leaves: &[Option<(bool, TokenStream)>]) -> Option<(TokenStream, bool, bool)> {
+        // (expression, positive, single term)
+        match leaves {
+            [] => None,
+            [leaf] => leaf.clone().map(|(positive, term)| (term, positive, true)),
+            _ => {
+                let middle = leaves.len().div_ceil(2);
+                match (tree(&leaves[..middle]), tree(&leaves[middle..])) {
+                    (None, None) => None,
+                    (Some(side), None) | (None, Some(side)) => Some(side),
+                    (Some((l, lp, ls)), Some((r, rp, rs))) => {
+                        let l = if ls { l } else { quote!((#l)) };
+                        let r = if rs { r } else { quote!((#r)) };
+                        Some(match (lp, rp) {
+                            (true, true) => (quote!(#l + #r), true, false),
+                            (true, false) => (quote!(#l - #r), true, false),
+                            (false, true) => (quote!(#r - #l), true, false),
+                            (false, false) => (quote!(#l + #r), false, false),
+                        })
+                    }
+                }
+            }
+        }
+    }
+    tree(leaves).map(|(sum, positive, single)| match (positive, single) {
+        (true, _) => sum,
+        (false, true) => quote!(-#sum),
+        (false, false) => quote!(-(#sum)),
+    })
+}

@@ -3,9 +3,9 @@
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 
-use super::expr::{construct, output_type, signed_sum, type_tokens, Operand};
+use super::expr::{construct, mirrored_sum, output_type, signed_sum, type_tokens, Operand};
 use crate::algebra::ProductKind;
-use crate::plan::{bilinear, Output, Plan, TypeId};
+use crate::plan::{bilinear, LaneProduct, Output, Plan, Side, TypeId};
 
 /// The straight-line value of `lhs (kind) rhs`, and its type.
 pub fn product_value(
@@ -23,6 +23,9 @@ pub fn product_value(
     let output = plan
         .types
         .smallest_holding_preferring(terms.keys().copied(), &[lhs.ty, rhs.ty]);
+    if let Some(form) = plan.lane_form(kind, lhs.ty, rhs.ty) {
+        return (mirror_of_lanes(plan, &form, lhs, rhs, output), output);
+    }
     let value = construct(plan, output, |blade| {
         let list = terms.get(&blade)?;
         let summands: Vec<(i32, TokenStream)> = list
@@ -36,6 +39,40 @@ pub fn product_value(
         Some(signed_sum(&summands))
     });
     (value, output)
+}
+
+/// The scalar body of a product that also has a lane form: each component sums its terms
+/// in the lane form's column order and tree, so that the scalar body, the SIMD body and the
+/// batch modules round alike.
+fn mirror_of_lanes(
+    plan: &Plan,
+    form: &LaneProduct,
+    lhs: &Operand,
+    rhs: &Operand,
+    output: Output,
+) -> TokenStream {
+    let Output::Type(id) = output else {
+        unreachable!("a lane form has a non-zero output")
+    };
+    let blades = plan.types.get(id).blades.clone();
+    let order = form.sum_order();
+    construct(plan, output, |blade| {
+        let lane = blades.iter().position(|&b| b == blade)?;
+        let leaves: Vec<_> = order
+            .iter()
+            .map(|&k| {
+                let column = &form.columns[k];
+                let gathered = column.gather[lane]?;
+                let (l, r) = match form.broadcast {
+                    Side::Rhs => (gathered, column.broadcast),
+                    Side::Lhs => (column.broadcast, gathered),
+                };
+                let (a, b) = (lhs.component(plan, l), rhs.component(plan, r));
+                Some((!column.negate[lane], quote!(#a * #b)))
+            })
+            .collect();
+        mirrored_sum(&leaves)
+    })
 }
 
 /// The number of multiply terms of a product: what `TERM_COUNTS` reports.
@@ -121,7 +158,7 @@ fn product_impl(plan: &Plan, kind: ProductKind, a: TypeId, b: TypeId) -> TokenSt
     };
     // The commutator keeps the terms of `ab` whose blades anticommute, where (ab - ba)/2
     // counts them at full weight, so its body needs no halving.
-    let body = match plan.lane_form(kind, a, b) {
+    let body = match plan.lane_form(kind, a, b).filter(|_| plan.emits_simd()) {
         Some(form) => {
             let lanes =
                 super::simd::lane_body(plan, &form, (&quote!(self), a), (&quote!(rhs), b), output);

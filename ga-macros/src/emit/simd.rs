@@ -5,7 +5,7 @@
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
 
-use super::expr::{field_ident, signed_sum, type_tokens};
+use super::expr::{field_ident, mirrored_sum, signed_sum, type_tokens};
 use crate::algebra::blade_name;
 use crate::plan::lanes::LANES;
 use crate::plan::{LaneProduct, Output, PairColumns, Plan, Side, TypeId};
@@ -13,6 +13,9 @@ use crate::plan::{LaneProduct, Output, PairColumns, Plan, Side, TypeId};
 /// Whether any product or sandwich of the module has a SIMD body, so that the helpers are
 /// emitted.
 pub fn module_uses_lanes(plan: &Plan) -> bool {
+    if !plan.emits_simd() {
+        return false;
+    }
     let products = plan.products.iter().any(|&kind| {
         super::products::operand_pairs(plan)
             .into_iter()
@@ -179,7 +182,7 @@ pub fn lane_body(
         None => quote!(0.0),
     });
     let mut lets = quote!(let g = simd::F32x4::new([#(#packed),*]););
-    let mut summands = Vec::new();
+    let mut names = Vec::new();
     for column in &form.columns {
         let blade = broadcast_blades[column.broadcast];
         let name = format_ident!("by_{}", blade_name(blade));
@@ -200,14 +203,14 @@ pub fn lane_body(
             splat = quote!(#splat.negate([#(#flips),*]));
         }
         lets.extend(quote!(let #name = #factor * #splat;));
-        let sign = if column.all_negative(form.outputs) {
-            -1
-        } else {
-            1
-        };
-        summands.push((sign, quote!(#name)));
+        names.push((!column.all_negative(form.outputs), quote!(#name)));
     }
-    let sum = signed_sum(&summands);
+    let leaves: Vec<_> = form
+        .sum_order()
+        .into_iter()
+        .map(|k| Some(names[k].clone()))
+        .collect();
+    let sum = mirrored_sum(&leaves).expect("a lane form has columns");
     let out_blades = &plan.types.get(output).blades;
     let fields: Vec<_> = out_blades.iter().map(|&b| field_ident(b)).collect();
     let rest = (fields.len() < LANES).then(|| quote!(..));

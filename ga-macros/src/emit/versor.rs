@@ -6,7 +6,8 @@ use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 
 use super::expr::{
-    construct, field_ident, float, scalar_type, signed_sum, signed_sum_linear, type_tokens, Operand,
+    construct, field_ident, float, mirrored_sum, scalar_type, signed_sum, signed_sum_linear,
+    type_tokens, Operand,
 };
 use super::products::product_value;
 use crate::algebra::{blade_name, Involution, ProductKind};
@@ -107,8 +108,8 @@ fn commutator_body(
     lanes: Option<&PairColumns>,
     unit: bool,
 ) -> TokenStream {
-    let scalar = commutator_scalar_body(plan, v, x, terms, unit);
-    match lanes {
+    let scalar = commutator_scalar_body(plan, v, x, terms, lanes, unit);
+    match lanes.filter(|_| plan.emits_simd()) {
         None => scalar,
         Some(lanes) => {
             let simd = super::simd::commutator_sandwich_lanes(plan, v, x, lanes, unit);
@@ -126,11 +127,14 @@ fn commutator_body(
     }
 }
 
+/// The scalar form; where a lane form exists, each sum mirrors its columns and trees, so
+/// that scalar, SIMD and batch bodies round alike.
 fn commutator_scalar_body(
     plan: &Plan,
     v: TypeId,
     x: TypeId,
     terms: &CommutatorTerms,
+    lanes: Option<&PairColumns>,
     unit: bool,
 ) -> TokenStream {
     let this = Operand::new(quote!(self), v);
@@ -158,18 +162,40 @@ fn commutator_scalar_body(
     let apply = |factor: &dyn Fn(usize) -> TokenStream,
                  input: &dyn Fn(usize) -> TokenStream,
                  blade: u32| {
-        let summands: Vec<(i32, TokenStream)> = terms[&blade]
-            .iter()
-            .map(|t| {
-                let (a, b) = (factor(t.lhs), input(t.rhs));
-                (t.sign as i32, quote!(#a * #b))
-            })
-            .collect();
-        summands
+        match lanes {
+            Some(lanes) => {
+                let lane = operand
+                    .iter()
+                    .position(|&b| b == blade)
+                    .expect("C(x) stays in x's type");
+                let leaves: Vec<_> = lanes
+                    .columns
+                    .iter()
+                    .map(|column| {
+                        column.used[lane].then(|| {
+                            let (a, b) =
+                                (factor(column.a_order[lane]), input(column.b_order[lane]));
+                            (!column.negate[lane], quote!(#a * #b))
+                        })
+                    })
+                    .collect();
+                mirrored_sum(&leaves).unwrap_or_else(|| quote!(0.0))
+            }
+            None => {
+                let summands: Vec<(i32, TokenStream)> = terms[&blade]
+                    .iter()
+                    .map(|t| {
+                        let (a, b) = (factor(t.lhs), input(t.rhs));
+                        (t.sign as i32, quote!(#a * #b))
+                    })
+                    .collect();
+                signed_sum(&summands)
+            }
+        }
     };
     let c_lets = terms.keys().map(|&blade| {
         let name = local("c", blade);
-        let value = signed_sum(&apply(&plain, &from_x, blade));
+        let value = apply(&plain, &from_x, blade);
         quote!(let #name = #value;)
     });
     let used: BTreeSet<usize> = terms.values().flatten().map(|t| t.lhs).collect();
@@ -184,6 +210,19 @@ fn commutator_scalar_body(
     });
     let norm = if unit {
         quote!()
+    } else if lanes.is_some() {
+        // The lanes sum the signed squares pairwise: (0 + 1) + (2 + 3).
+        let leaves: Vec<_> = versor
+            .iter()
+            .enumerate()
+            .map(|(i, &b)| {
+                let sign = plan.metric.geometric(b, b).0 * Involution::Reverse.sign(b);
+                let a = this.component(plan, i);
+                (sign != 0).then(|| (sign > 0, quote!(#a * #a)))
+            })
+            .collect();
+        let value = mirrored_sum(&leaves).unwrap_or_else(|| quote!(0.0));
+        quote!(let n = #value;)
     } else {
         let value = super::expr::quadratic_component(plan, &this, Involution::Reverse, 0);
         quote!(let n = #value;)
@@ -195,9 +234,8 @@ fn commutator_scalar_body(
         let scaled = if unit { quote!(#xk) } else { quote!(n * #xk) };
         Some(if terms.contains_key(&blade) {
             let c = local("c", blade);
-            let mut summands = vec![(1, scaled), (1, quote!(#two_s * #c))];
-            summands.extend(apply(&doubled, &from_c, blade));
-            signed_sum(&summands)
+            let second = apply(&doubled, &from_c, blade);
+            quote!((#scaled + #two_s * #c) + (#second))
         } else {
             scaled
         })

@@ -141,6 +141,15 @@ impl LaneProduct {
         })
     }
 
+    /// The order in which the columns are summed (columns with mixed or positive signs
+    /// first, then those subtracted whole), shared by the SIMD body and its scalar mirror.
+    pub fn sum_order(&self) -> Vec<usize> {
+        let (mut order, negative): (Vec<usize>, Vec<usize>) =
+            (0..self.columns.len()).partition(|&k| !self.columns[k].all_negative(self.outputs));
+        order.extend(negative);
+        order
+    }
+
     /// Instructions per item: packing the gathered operand when it is not a full
     /// register, a broadcast per column, a swizzle, flip or mask where the column needs
     /// one, a multiply per column, an addition between columns, and unpacking a result

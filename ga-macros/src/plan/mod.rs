@@ -32,6 +32,8 @@ pub struct Plan {
     pub ops: BTreeSet<Op>,
     /// For a batch module: the number of lanes of each scalar (`wide::f32x4` for 4).
     pub lanes: Option<usize>,
+    /// Whether the spec allows SIMD bodies (`simd: false` does not).
+    pub simd: bool,
 }
 
 impl Plan {
@@ -67,6 +69,7 @@ impl Plan {
             products,
             ops,
             lanes: None,
+            simd: spec.simd,
         };
         plan.emitted = plan.needed_types();
         plan
@@ -105,6 +108,7 @@ impl Plan {
             products: self.products.clone(),
             ops,
             lanes: Some(lanes),
+            simd: self.simd,
         };
         batch.emitted = batch.needed_types();
         batch
@@ -260,17 +264,20 @@ impl Plan {
         }
     }
 
+    /// Whether SIMD bodies are written: in one-item modules, not in the batch modules
+    /// (whose scalars are already vectors across items). The batch modules and the scalar
+    /// bodies still follow the SIMD bodies' summation order, so all three agree bit for bit.
+    pub fn emits_simd(&self) -> bool {
+        self.simd && self.lanes.is_none()
+    }
+
     /// The four-lane SIMD form of a product, where one fits and the cost model finds it
     /// cheaper than the scalar form on both port layouts (see [`cost`]). Only `f32` items:
     /// an SSE register holds four of them, and SSE2 is in every x86-64 CPU; in `f64` a
     /// register holds two, and the shuffles between the two halves of a four-component
     /// value cost more than the scalar form saves.
     pub fn lane_form(&self, kind: ProductKind, a: TypeId, b: TypeId) -> Option<LaneProduct> {
-        if self.scalar != Scalar::F32
-            || self.lanes.is_some()
-            || a == TypeId::SCALAR
-            || b == TypeId::SCALAR
-        {
+        if self.scalar != Scalar::F32 || a == TypeId::SCALAR || b == TypeId::SCALAR {
             return None;
         }
         let (lhs, rhs) = (&self.types.get(a).blades, &self.types.get(b).blades);

@@ -328,10 +328,7 @@ impl Plan {
         terms: &CommutatorTerms,
         unit: bool,
     ) -> Option<PairColumns> {
-        if self.scalar != Scalar::F32
-            || self.lanes.is_some()
-            || self.types.get(v).blades.len() != LANES
-        {
+        if self.scalar != Scalar::F32 || self.types.get(v).blades.len() != LANES {
             return None;
         }
         let lanes = PairColumns::new(terms, &self.types.get(x).blades)?;

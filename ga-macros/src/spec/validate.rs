@@ -22,6 +22,9 @@ pub struct Spec {
     pub ops: Option<BTreeSet<Op>>,
     /// Lane counts of the structure-of-arrays batch modules (`x4`, `x8`).
     pub lanes: Vec<usize>,
+    /// Whether SIMD bodies may be written (`simd: false` keeps every body scalar, and the
+    /// module free of `unsafe`).
+    pub simd: bool,
 }
 
 /// The scalar type of the algebra.
@@ -132,7 +135,7 @@ impl Op {
     }
 }
 
-const KEYS: &str = "metric, signature, scalar, types, ops, lanes";
+const KEYS: &str = "metric, signature, scalar, types, ops, lanes, simd";
 
 const GRADE_NAMES: [&str; MAX_DIMENSION] = [
     "Vector",
@@ -160,6 +163,7 @@ pub fn validate(
     let (mut metric, mut signature, mut scalar, mut types, mut ops) =
         (None, None, None, None, None);
     let mut lanes: Option<RawLanes> = None;
+    let mut simd = true;
     for entry in entries {
         let key = entry.key.to_string();
         if seen.contains(&entry.key) {
@@ -205,6 +209,13 @@ pub fn validate(
             "lanes" => match syn::parse2::<RawLanes>(value) {
                 Ok(raw) => lanes = Some(raw),
                 Err(e) => cx.syn_error(e),
+            },
+            "simd" => match syn::parse2::<syn::LitBool>(value.clone()) {
+                Ok(flag) => simd = flag.value,
+                Err(_) => cx.error_spanned_by(
+                    value.clone(),
+                    format!("`simd` takes `true` or `false`, not `{value}`"),
+                ),
             },
             _ => cx.error_spanned_by(
                 &entry.key,
@@ -252,6 +263,7 @@ pub fn validate(
         types,
         ops,
         lanes,
+        simd,
     })
 }
 
