@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::{batch1, batch2, chain, config, conv, group, in_place, BATCH};
+use common::{batch1, batch2, chain, config, conv, group, in_place, kernel2, BATCH};
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use ga_benches::inputs::{cast_all, g3_bivectors, g3_rotors, g3_vectors};
 use ga_benches::peers::{pack, ExpLog, FromBivector3, FromRotor3, FromVector3};
@@ -25,8 +25,9 @@ macro_rules! g3_rotor_benches {
     ) => {
         mod $module {
             use super::*;
-            use ga::Sandwich as _;
+            use ga::{Sandwich as _, SandwichUnit as _};
             use ga_core::$s::g3 as ga;
+            use ga_core::kernels::$s as kernels;
 
             type S = $s;
             const PRECISION: &str = stringify!($s);
@@ -53,6 +54,8 @@ macro_rules! g3_rotor_benches {
 
                 let mut g = group(c, &format!("g3/rotor_mul/{PRECISION}/batch"));
                 batch2(&mut g, "ga-core", &conv(&p, ga::Even::from_array), &conv(&q, ga::Even::from_array), |a, b| a * b);
+                kernel2(&mut g, "ga-core mul_pairs", &conv(&p, ga::Even::from_array), &conv(&q, ga::Even::from_array), ga::Even::ZERO,
+                    |a, b, out| kernels::mul_pairs(a, b, out).expect("equal lengths"));
                 batch2(&mut g, "glam", &conv(&p, <$quat>::from_rotor3), &conv(&q, <$quat>::from_rotor3), |a, b| a * b);
                 batch2(&mut g, "nalgebra", &conv(&p, UnitQuaternion::<S>::from_rotor3), &conv(&q, UnitQuaternion::<S>::from_rotor3), |a, b| a * b);
                 batch2(&mut g, "ultraviolet", &conv(&p, <$rotor>::from_rotor3), &conv(&q, <$rotor>::from_rotor3), |a, b| a * b);
@@ -88,6 +91,9 @@ macro_rules! g3_rotor_benches {
 
                 let mut g = group(c, &format!("g3/sandwich/{PRECISION}/batch"));
                 batch2(&mut g, "ga-core", &conv(&r, ga::Even::from_array), &conv(&v, ga::Vector::from_array), |r, v| r.sandwich(v));
+                batch2(&mut g, "ga-core sandwich_unit", &conv(&r, ga::Even::from_array), &conv(&v, ga::Vector::from_array), |r, v| r.sandwich_unit(v));
+                kernel2(&mut g, "ga-core sandwich_pairs", &conv(&r, ga::Even::from_array), &conv(&v, ga::Vector::from_array), ga::Vector::ZERO,
+                    |r, v, out| kernels::sandwich_pairs(r, v, out).expect("equal lengths"));
                 batch2(&mut g, "glam", &conv(&r, <$quat>::from_rotor3), &conv(&v, <$vec3 as FromVector3<S>>::from_vector3), |r, v| r.mul_vec3(v));
                 batch2(&mut g, "nalgebra", &conv(&r, UnitQuaternion::<S>::from_rotor3), &conv(&v, <Vector3<S> as FromVector3<S>>::from_vector3), |r, v| r * v);
                 batch2(&mut g, "ultraviolet", &conv(&r, <$rotor>::from_rotor3), &conv(&v, <$uvec>::from_vector3), |r, v| r * v);
@@ -108,6 +114,7 @@ macro_rules! g3_rotor_benches {
                 let mut g = group(c, &format!("g3/sandwich/{PRECISION}/chain"));
                 let start = v[0];
                 chain(&mut g, "ga-core", ga::Vector::from_array(start), &conv(&r, ga::Even::from_array), |v, r| r.sandwich(v));
+                chain(&mut g, "ga-core sandwich_unit", ga::Vector::from_array(start), &conv(&r, ga::Even::from_array), |v, r| r.sandwich_unit(v));
                 chain(&mut g, "glam", <$vec3 as FromVector3<S>>::from_vector3(start), &conv(&r, <$quat>::from_rotor3), |v, r| r.mul_vec3(v));
                 chain(&mut g, "nalgebra", <Vector3<S> as FromVector3<S>>::from_vector3(start), &conv(&r, UnitQuaternion::<S>::from_rotor3), |v, r| r * v);
                 chain(&mut g, "ultraviolet", <$uvec>::from_vector3(start), &conv(&r, <$rotor>::from_rotor3), |v, r| r * v);
@@ -132,6 +139,8 @@ macro_rules! g3_rotor_benches {
                 let mut g = group(c, &format!("g3/rotate_batch/{PRECISION}/batch"));
                 batch1(&mut g, "ga-core", &conv(&v, ga::Vector::from_array), |v| ga_r.sandwich(v));
                 in_place(&mut g, "ga-core sandwich_vectors", &mut conv(&v, ga::Vector::from_array), |vs| ga_r.sandwich_vectors(vs));
+                kernel2(&mut g, "ga-core sandwich_all", &conv(&v, ga::Vector::from_array), &[()], ga::Vector::ZERO,
+                    |v, _, out| kernels::sandwich_all(ga_r, v, out).expect("equal lengths"));
                 $(
                     let ga_wide_r = ga::$ga_batch::Even::splat(ga_r);
                     batch1(&mut g, concat!("ga-core x", $ga_lanes),

@@ -94,3 +94,21 @@ pub fn chain<A: Copy, X: Copy>(
         })
     });
 }
+
+/// Throughput of a slice kernel `f(a, b, out)` (one call per batch).
+pub fn kernel2<A, B, O: Clone>(
+    g: &mut BenchmarkGroup<WallTime>,
+    id: &str,
+    a: &[A],
+    b: &[B],
+    zero: O,
+    f: impl Fn(&[A], &[B], &mut [O]),
+) {
+    let mut out = vec![zero; a.len()];
+    g.bench_function(id, |bencher| {
+        bencher.iter(|| {
+            f(black_box(a), black_box(b), &mut out);
+            black_box(&mut out);
+        })
+    });
+}

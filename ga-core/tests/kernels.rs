@@ -1,0 +1,116 @@
+//! The slice kernels compute what the one-item operations compute, item by item, on every
+//! length from 0 to 100 (so every tail of every vector width is covered), on whichever
+//! instruction set this CPU selects; and they refuse slices of different lengths without
+//! writing anything.
+
+use ga_core::kernels::{self, LengthMismatch};
+
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> f64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+    }
+}
+
+macro_rules! kernel_tests {
+    ($module:ident, $scalar:ident, $g3:path) => {
+        mod $module {
+            use super::*;
+            use g3::Sandwich as _;
+            use $g3 as g3;
+
+            fn rotor(rng: &mut Rng) -> g3::Rotor {
+                g3::Rotor::new(
+                    rng.next() as $scalar,
+                    rng.next() as $scalar,
+                    rng.next() as $scalar,
+                    rng.next() as $scalar,
+                )
+            }
+
+            fn vector(rng: &mut Rng) -> g3::Vector {
+                g3::Vector::new(
+                    rng.next() as $scalar,
+                    rng.next() as $scalar,
+                    rng.next() as $scalar,
+                )
+            }
+
+            #[test]
+            fn every_kernel_equals_the_item_loop_for_lengths_0_to_100() {
+                let mut rng = Rng(11);
+                for len in 0..=100 {
+                    let a: Vec<g3::Rotor> = (0..len).map(|_| rotor(&mut rng)).collect();
+                    let b: Vec<g3::Rotor> = (0..len).map(|_| rotor(&mut rng)).collect();
+                    let x: Vec<g3::Vector> = (0..len).map(|_| vector(&mut rng)).collect();
+                    let r = rotor(&mut rng);
+
+                    let mut products = vec![g3::Rotor::ZERO; len];
+                    kernels::$scalar::mul_pairs(&a, &b, &mut products).unwrap();
+                    for i in 0..len {
+                        assert_eq!(
+                            products[i],
+                            a[i] * b[i],
+                            "mul_pairs, length {len}, item {i}"
+                        );
+                    }
+
+                    let mut rotated = vec![g3::Vector::ZERO; len];
+                    kernels::$scalar::sandwich_pairs(&a, &x, &mut rotated).unwrap();
+                    for i in 0..len {
+                        assert_eq!(
+                            rotated[i],
+                            a[i].sandwich(x[i]),
+                            "sandwich_pairs, length {len}, item {i}"
+                        );
+                    }
+
+                    let mut all = vec![g3::Vector::ZERO; len];
+                    kernels::$scalar::sandwich_all(r, &x, &mut all).unwrap();
+                    let mut in_place = x.clone();
+                    r.sandwich_vectors(&mut in_place);
+                    assert_eq!(all, in_place, "sandwich_all, length {len}");
+                    for i in 0..len {
+                        let direct = r.sandwich(x[i]);
+                        assert!(
+                            (all[i] - direct).norm() <= 1e-5 * (1.0 + direct.norm()),
+                            "sandwich_all against sandwich, length {len}, item {i}"
+                        );
+                    }
+                }
+            }
+
+            #[test]
+            fn mismatched_lengths_are_refused_and_nothing_is_written() {
+                let mut rng = Rng(12);
+                let a: Vec<g3::Rotor> = (0..5).map(|_| rotor(&mut rng)).collect();
+                let x: Vec<g3::Vector> = (0..4).map(|_| vector(&mut rng)).collect();
+                let mut out = vec![g3::Rotor::ONE; 5];
+                assert_eq!(
+                    kernels::$scalar::mul_pairs(&a, &a[..4], &mut out),
+                    Err(LengthMismatch { input: 5, other: 4 })
+                );
+                assert!(out.iter().all(|&r| r == g3::Rotor::ONE));
+                let mut vectors = vec![g3::Vector::E1; 5];
+                assert!(kernels::$scalar::sandwich_pairs(&a, &x, &mut vectors).is_err());
+                assert!(kernels::$scalar::sandwich_all(a[0], &x, &mut vectors).is_err());
+                assert!(vectors.iter().all(|&v| v == g3::Vector::E1));
+            }
+        }
+    };
+}
+
+kernel_tests!(single, f32, ga_core::f32::g3);
+kernel_tests!(double, f64, ga_core::f64::g3);
+
+#[test]
+fn the_instruction_set_is_named() {
+    let set = kernels::instruction_set();
+    assert!(["avx512f", "avx2+fma", "baseline"].contains(&set), "{set}");
+    let message = LengthMismatch { input: 3, other: 2 }.to_string();
+    assert!(message.contains('3') && message.contains('2'), "{message}");
+}
