@@ -172,3 +172,198 @@ pub fn check_unary(algebra: &Algebra, cases: &[UnaryCase]) {
         Ok(())
     });
 }
+
+/// Which versor type a sandwich case applies: its values are products of how many
+/// vectors.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Versor {
+    /// `Vector`: one vector, a reflection.
+    Vector,
+    /// `Even`: products of 2, 4, ... vectors.
+    Even,
+    /// `Odd`: products of 1, 3, ... vectors.
+    Odd,
+}
+
+impl Versor {
+    /// How many vectors the versors of this type are built from, in an algebra of
+    /// dimension `dim`: every count of the type's parity up to `dim`, which by the
+    /// Cartan-Dieudonne theorem reaches every versor of the algebra's orthogonal group
+    /// (for non-degenerate metrics; in PGA the products of vectors are still versors).
+    #[must_use]
+    pub fn vector_counts(self, dim: usize) -> Vec<usize> {
+        match self {
+            Versor::Vector => vec![1],
+            Versor::Even => (2..=dim).step_by(2).collect(),
+            Versor::Odd => (1..=dim).step_by(2).collect(),
+        }
+    }
+
+    /// Whether `sandwich` applies the grade involution to its operand: `v x^ ~v` for
+    /// an odd `v`.
+    #[must_use]
+    pub fn is_odd(self) -> bool {
+        matches!(self, Versor::Vector | Versor::Odd)
+    }
+}
+
+/// The product of the grade-1 parts of `factors`, in order: a versor.
+#[must_use]
+pub fn product_of_vectors(algebra: &Algebra, factors: &[Vec<f64>]) -> Vec<f64> {
+    factors.iter().fold(algebra.scalar(1.0), |acc, factor| {
+        algebra.geometric(&acc, &algebra.grade(factor, 1))
+    })
+}
+
+/// The reference versor product, computed from the definition: `v x ~v` for even `v`,
+/// `v x^ ~v` for odd `v` (`x^` the grade involution).
+#[must_use]
+pub fn reference_sandwich(algebra: &Algebra, versor: Versor, v: &[f64], x: &[f64]) -> Vec<f64> {
+    let x = if versor.is_odd() {
+        algebra.grade_involution(x)
+    } else {
+        x.to_vec()
+    };
+    algebra.geometric(&algebra.geometric(v, &x), &algebra.reverse(v))
+}
+
+/// For every output blade, the sum of `|v_i x_k v_j|` over the terms of `v x ~v` that
+/// land on it: the magnitude a sandwich's rounding error is relative to.
+#[must_use]
+pub fn sandwich_magnitude(algebra: &Algebra, v: &[f64], x: &[f64]) -> Vec<f64> {
+    algebra.product_magnitude(&algebra.product_magnitude(v, x), v)
+}
+
+/// One generated `sandwich` of one versor type on one operand type.
+#[derive(Clone, Copy)]
+pub struct SandwichCase {
+    /// The versor type.
+    pub versor: Versor,
+    /// The operand's type name.
+    pub operand: &'static str,
+    /// From a dense versor and a dense multivector: the versor and the operand as the
+    /// generated types hold them, and `versor.sandwich(operand)`, all dense.
+    pub eval: fn(&[f64], &[f64]) -> [Vec<f64>; 3],
+}
+
+/// The random inputs of the sandwich checks: `dim` factors (their grade-1 parts make
+/// the versors) and one operand, each a dense multivector.
+fn sandwich_inputs(size: usize, dim: usize) -> impl Strategy<Value = (Vec<Vec<f64>>, Vec<f64>)> {
+    (prop::collection::vec(dense(size), dim), dense(size))
+}
+
+/// Checks that every case's `sandwich` equals the reference `v x ~v` (`v x^ ~v` for
+/// odd `v`) for versors `v` that are products of 1 to `dim` random vectors, whole:
+/// the result must also have nothing outside the operand's type.
+///
+/// # Panics
+/// On the first disagreement, naming the versor, the operand type, the number of
+/// vectors and the metric.
+pub fn check_sandwiches(algebra: &Algebra, cases: &[SandwichCase], tolerance: f64) {
+    assert!(!cases.is_empty(), "no sandwiches to check");
+    let dim = algebra.dim();
+    run(64, &sandwich_inputs(algebra.size(), dim), |(factors, x)| {
+        for case in cases {
+            for count in case.versor.vector_counts(dim) {
+                let v = product_of_vectors(algebra, &factors[..count]);
+                let [v, x, got] = (case.eval)(&v, &x);
+                let expected = reference_sandwich(algebra, case.versor, &v, &x);
+                prop_assert_close!(
+                    got,
+                    expected,
+                    scale = sandwich_magnitude(algebra, &v, &x),
+                    rel = tolerance,
+                    "for {:?}.sandwich({}), a product of {count} vectors, with metric {:?}",
+                    case.versor,
+                    case.operand,
+                    algebra.metric()
+                );
+            }
+        }
+        Ok(())
+    });
+}
+
+/// What a versor type's `sandwich_matrix` and `sandwich_vectors` give, in the
+/// reference's terms.
+pub struct MatrixEval {
+    /// The versor as the generated type holds it, dense.
+    pub versor: Vec<f64>,
+    /// The blade of each vector component, in `to_array` order (the matrix's row and
+    /// column order).
+    pub vector_blades: Vec<usize>,
+    /// `sandwich_matrix()`, widened to `f64`.
+    pub matrix: Vec<Vec<f64>>,
+    /// The vectors given to `sandwich_vectors` as the generated type holds them, dense.
+    pub inputs: Vec<Vec<f64>>,
+    /// What `sandwich_vectors` left in their place, dense.
+    pub outputs: Vec<Vec<f64>>,
+}
+
+/// One versor type's `sandwich_matrix` and `sandwich_vectors`.
+#[derive(Clone, Copy)]
+pub struct MatrixCase {
+    /// The versor type.
+    pub versor: Versor,
+    /// From a dense versor and dense vectors: what the generated type makes of them.
+    pub eval: fn(&[f64], &[Vec<f64>]) -> MatrixEval,
+}
+
+/// Checks every case's `sandwich_matrix` column by column against the reference
+/// sandwich of each basis vector (the same map as `sandwich`: `v x^ ~v = -v x ~v` for
+/// odd `v`), and `sandwich_vectors` on slices of 0 to 5 random vectors against the
+/// reference sandwich of each, for versors built as in [`check_sandwiches`].
+///
+/// # Panics
+/// On the first disagreement, naming the versor, the entry or vector, and the metric.
+pub fn check_sandwich_matrices(algebra: &Algebra, cases: &[MatrixCase], tolerance: f64) {
+    assert!(!cases.is_empty(), "no sandwich matrices to check");
+    let dim = algebra.dim();
+    let size = algebra.size();
+    let inputs = (
+        prop::collection::vec(dense(size), dim),
+        prop::collection::vec(dense(size), 0..=5),
+    );
+    run(64, &inputs, |(factors, vectors)| {
+        let vectors: Vec<Vec<f64>> = vectors.iter().map(|x| algebra.grade(x, 1)).collect();
+        for case in cases {
+            for count in case.versor.vector_counts(dim) {
+                let v = product_of_vectors(algebra, &factors[..count]);
+                let eval = (case.eval)(&v, &vectors);
+                let v = &eval.versor;
+                prop_assert_eq!(eval.matrix.len(), dim);
+                for (column, &blade) in eval.vector_blades.iter().enumerate() {
+                    let basis = algebra.basis(blade, 1.0);
+                    let image = reference_sandwich(algebra, case.versor, v, &basis);
+                    let scale = sandwich_magnitude(algebra, v, &basis);
+                    let got: Vec<f64> = eval.matrix.iter().map(|row| row[column]).collect();
+                    prop_assert_close!(
+                        got,
+                        algebra.components(&image, &eval.vector_blades),
+                        scale = algebra.components(&scale, &eval.vector_blades),
+                        rel = tolerance,
+                        "column {column} of {:?}::sandwich_matrix, a product of {count} \
+                         vectors, with metric {:?}",
+                        case.versor,
+                        algebra.metric()
+                    );
+                }
+                prop_assert_eq!(eval.outputs.len(), vectors.len());
+                for (k, (x, got)) in eval.inputs.iter().zip(&eval.outputs).enumerate() {
+                    prop_assert_close!(
+                        got,
+                        reference_sandwich(algebra, case.versor, v, x),
+                        scale = sandwich_magnitude(algebra, v, x),
+                        rel = tolerance,
+                        "vector {k} of {} in {:?}::sandwich_vectors, a product of {count} \
+                         vectors, with metric {:?}",
+                        vectors.len(),
+                        case.versor,
+                        algebra.metric()
+                    );
+                }
+            }
+        }
+        Ok(())
+    });
+}

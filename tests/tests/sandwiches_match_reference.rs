@@ -1,0 +1,125 @@
+//! `sandwich` of every versor type (`Vector`, `Even`, `Odd`) on every type, and
+//! `sandwich_matrix` / `sandwich_vectors` of every versor type, agree with the
+//! reference `v x ~v` (even `v`) and `v x^ ~v` (odd `v`, `x^` the grade involution)
+//! in all six algebras and in the `f32` G2, G3 and G4, for versors that are products
+//! of 1 to n random vectors. An odd versor's sandwich is a reflection, which the
+//! rotor tests of `versors.rs` never reach.
+
+use ga_tests::harness::{check_sandwich_matrices, check_sandwiches, MatrixCase, SandwichCase};
+use ga_tests::Algebra;
+
+/// Pushes the case `V.sandwich(X)` (the scalar is not a sandwich operand).
+macro_rules! push_sandwich {
+    (($cases:ident), $v:ident, Scalar) => {};
+    (($cases:ident), $v:ident, $x:ident) => {
+        $cases.push(SandwichCase {
+            versor: Versor::$v,
+            operand: stringify!($x),
+            eval: |v, x| {
+                let v = <$v as Embed<Multivector>>::from_reference(v);
+                let x = <$x as Embed<Multivector>>::from_reference(x);
+                let out: $x = v.sandwich(x);
+                [
+                    <$v as Embed<Multivector>>::to_reference(v),
+                    <$x as Embed<Multivector>>::to_reference(x),
+                    <$x as Embed<Multivector>>::to_reference(out),
+                ]
+            },
+        });
+    };
+}
+
+/// Pushes the case of `V::sandwich_matrix` and `V::sandwich_vectors`.
+macro_rules! push_matrix {
+    ($cases:ident, $v:ident) => {
+        $cases.push(MatrixCase {
+            versor: Versor::$v,
+            eval: |v, xs| {
+                let v = <$v as Embed<Multivector>>::from_reference(v);
+                let mut vectors: Vec<Vector> = xs
+                    .iter()
+                    .map(|x| <Vector as Embed<Multivector>>::from_reference(x))
+                    .collect();
+                let inputs = vectors
+                    .iter()
+                    .map(|&x| <Vector as Embed<Multivector>>::to_reference(x))
+                    .collect();
+                v.sandwich_vectors(&mut vectors);
+                MatrixEval {
+                    versor: <$v as Embed<Multivector>>::to_reference(v),
+                    vector_blades: <Vector as Embed<Multivector>>::blades().to_vec(),
+                    matrix: v
+                        .sandwich_matrix()
+                        .iter()
+                        .map(|row| row.iter().map(|&entry| f64::from(entry)).collect())
+                        .collect(),
+                    inputs,
+                    outputs: vectors
+                        .iter()
+                        .map(|&x| <Vector as Embed<Multivector>>::to_reference(x))
+                        .collect(),
+                }
+            },
+        });
+    };
+}
+
+macro_rules! sandwich_tests {
+    (
+        $alg:ident, $($path:ident)::+,
+        dim = $dim:tt,
+        metric = $metric:tt,
+        types = $types:tt,
+        $($rest:tt)*
+    ) => {
+        sandwich_tests!(@scalar $alg, $($path)::+, PRODUCT_TOLERANCE, $metric, $types);
+    };
+    (@scalar $alg:ident, $($path:ident)::+, $tolerance:ident, $metric:tt, $types:tt) => {
+        mod $alg {
+            use super::{check_sandwich_matrices, check_sandwiches, Algebra};
+            use super::{MatrixCase, SandwichCase};
+            use ga_tests::embed::Embed;
+            use ga_tests::harness::$tolerance as TOLERANCE;
+            use ga_tests::harness::{MatrixEval, Versor};
+            #[allow(clippy::wildcard_imports)] // `Sandwich` is a trait of the module
+            use $($path)::+::*;
+
+            #[test]
+            fn sandwich_of_every_versor_type_on_every_type_matches_the_reference() {
+                let mut cases = Vec::new();
+                ga_tests::cartesian!(push_sandwich!(cases); [Vector, Even, Odd]; $types);
+                check_sandwiches(&Algebra::new(&$metric), &cases, TOLERANCE);
+            }
+
+            #[test]
+            fn sandwich_matrix_and_sandwich_vectors_of_every_versor_type_match_the_reference() {
+                let mut cases = Vec::new();
+                push_matrix!(cases, Vector);
+                push_matrix!(cases, Even);
+                push_matrix!(cases, Odd);
+                check_sandwich_matrices(&Algebra::new(&$metric), &cases, TOLERANCE);
+            }
+        }
+    };
+}
+
+ga_tests::for_each_algebra!(sandwich_tests);
+
+/// The single-precision algebras of `ga_core::f32`, to single-precision tolerance.
+mod single_precision {
+    use super::{check_sandwich_matrices, check_sandwiches, Algebra};
+    use super::{MatrixCase, SandwichCase};
+
+    sandwich_tests!(
+        @scalar g2, ga_core::f32::g2, F32_PRODUCT_TOLERANCE, [1, 1],
+        [Scalar, Vector, Bivector, Even, Odd, Multivector]
+    );
+    sandwich_tests!(
+        @scalar g3, ga_core::f32::g3, F32_PRODUCT_TOLERANCE, [1, 1, 1],
+        [Scalar, Vector, Bivector, Trivector, Even, Odd, Multivector]
+    );
+    sandwich_tests!(
+        @scalar g4, ga_core::f32::g4, F32_PRODUCT_TOLERANCE, [1, 1, 1, 1],
+        [Scalar, Vector, Bivector, Trivector, Quadvector, Even, Odd, Multivector]
+    );
+}
