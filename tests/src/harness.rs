@@ -367,3 +367,58 @@ pub fn check_sandwich_matrices(algebra: &Algebra, cases: &[MatrixCase], toleranc
         Ok(())
     });
 }
+
+/// One generated binary operation on one ordered pair of the structure-of-arrays
+/// batch types (`x4`, `x8`): `lanes` items at once.
+#[derive(Clone, Copy)]
+pub struct LanePairCase {
+    /// The left operand's type name.
+    pub lhs: &'static str,
+    /// The right operand's type name.
+    pub rhs: &'static str,
+    /// From one pair of dense multivectors per lane: for each lane, the two operands
+    /// as the item types hold them and that lane of the batch result, all dense.
+    pub eval: LaneEval,
+}
+
+/// [`LanePairCase::eval`]: per-lane operands in, per-lane `[lhs, rhs, result]` out.
+pub type LaneEval = fn(&[Vec<f64>], &[Vec<f64>]) -> Vec<[Vec<f64>; 3]>;
+
+/// [`check_products`] for batch types: every lane of every case agrees with the
+/// reference on its own random operands. `64 / lanes` cases, so that a batch module
+/// costs as many reference products as an item module.
+///
+/// # Panics
+/// On the first disagreement, naming the product, the types, the lane and the metric.
+pub fn check_lane_products(
+    algebra: &Algebra,
+    product: Product,
+    lanes: usize,
+    cases: &[LanePairCase],
+    tolerance: f64,
+) {
+    assert!(!cases.is_empty(), "no {} products to check", product.name());
+    let size = algebra.size();
+    let operands = prop::collection::vec(dense(size), lanes);
+    let cases_to_run = u32::try_from(64 / lanes).unwrap_or(1).max(1);
+    run(cases_to_run, &(operands.clone(), operands), |(xs, ys)| {
+        for case in cases {
+            for (lane, [a, b, got]) in (case.eval)(&xs, &ys).into_iter().enumerate() {
+                let expected = algebra.product(product, &a, &b);
+                let scale = algebra.product_magnitude(&a, &b);
+                prop_assert_close!(
+                    got,
+                    expected,
+                    scale = scale,
+                    rel = tolerance,
+                    "for lane {lane} of {} {} {} with metric {:?}",
+                    case.lhs,
+                    product.name(),
+                    case.rhs,
+                    algebra.metric()
+                );
+            }
+        }
+        Ok(())
+    });
+}
