@@ -330,42 +330,54 @@ pub fn check_sandwich_matrices(algebra: &Algebra, cases: &[MatrixCase], toleranc
             for count in case.versor.vector_counts(dim) {
                 let v = product_of_vectors(algebra, &factors[..count]);
                 let eval = (case.eval)(&v, &vectors);
-                let v = &eval.versor;
-                prop_assert_eq!(eval.matrix.len(), dim);
-                for (column, &blade) in eval.vector_blades.iter().enumerate() {
-                    let basis = algebra.basis(blade, 1.0);
-                    let image = reference_sandwich(algebra, case.versor, v, &basis);
-                    let scale = sandwich_magnitude(algebra, v, &basis);
-                    let got: Vec<f64> = eval.matrix.iter().map(|row| row[column]).collect();
-                    prop_assert_close!(
-                        got,
-                        algebra.components(&image, &eval.vector_blades),
-                        scale = algebra.components(&scale, &eval.vector_blades),
-                        rel = tolerance,
-                        "column {column} of {:?}::sandwich_matrix, a product of {count} \
-                         vectors, with metric {:?}",
-                        case.versor,
-                        algebra.metric()
-                    );
-                }
-                prop_assert_eq!(eval.outputs.len(), vectors.len());
-                for (k, (x, got)) in eval.inputs.iter().zip(&eval.outputs).enumerate() {
-                    prop_assert_close!(
-                        got,
-                        reference_sandwich(algebra, case.versor, v, x),
-                        scale = sandwich_magnitude(algebra, v, x),
-                        rel = tolerance,
-                        "vector {k} of {} in {:?}::sandwich_vectors, a product of {count} \
-                         vectors, with metric {:?}",
-                        vectors.len(),
-                        case.versor,
-                        algebra.metric()
-                    );
-                }
+                check_matrix_eval(algebra, case.versor, &eval, vectors.len(), tolerance).map_err(
+                    |e| TestCaseError::fail(format!("{e}, a product of {count} vectors")),
+                )?;
             }
         }
         Ok(())
     });
+}
+
+/// Checks one [`MatrixEval`] against the reference (see [`check_sandwich_matrices`]).
+///
+/// # Errors
+/// The first disagreement, naming the versor, the entry or vector, and the metric.
+fn check_matrix_eval(
+    algebra: &Algebra,
+    versor: Versor,
+    eval: &MatrixEval,
+    vectors: usize,
+    tolerance: f64,
+) -> Result<(), TestCaseError> {
+    let v = &eval.versor;
+    prop_assert_eq!(eval.matrix.len(), algebra.dim());
+    for (column, &blade) in eval.vector_blades.iter().enumerate() {
+        let basis = algebra.basis(blade, 1.0);
+        let image = reference_sandwich(algebra, versor, v, &basis);
+        let scale = sandwich_magnitude(algebra, v, &basis);
+        let got: Vec<f64> = eval.matrix.iter().map(|row| row[column]).collect();
+        prop_assert_close!(
+            got,
+            algebra.components(&image, &eval.vector_blades),
+            scale = algebra.components(&scale, &eval.vector_blades),
+            rel = tolerance,
+            "column {column} of {versor:?}::sandwich_matrix with metric {:?}",
+            algebra.metric()
+        );
+    }
+    prop_assert_eq!(eval.outputs.len(), vectors);
+    for (k, (x, got)) in eval.inputs.iter().zip(&eval.outputs).enumerate() {
+        prop_assert_close!(
+            got,
+            reference_sandwich(algebra, versor, v, x),
+            scale = sandwich_magnitude(algebra, v, x),
+            rel = tolerance,
+            "vector {k} of {vectors} in {versor:?}::sandwich_vectors with metric {:?}",
+            algebra.metric()
+        );
+    }
+    Ok(())
 }
 
 /// One generated binary operation on one ordered pair of the structure-of-arrays
@@ -417,6 +429,128 @@ pub fn check_lane_products(
                     case.rhs,
                     algebra.metric()
                 );
+            }
+        }
+        Ok(())
+    });
+}
+
+/// One generated `sandwich` of one versor type of a batch module on one operand type.
+#[derive(Clone, Copy)]
+pub struct LaneSandwichCase {
+    /// The versor type.
+    pub versor: Versor,
+    /// The operand's type name.
+    pub operand: &'static str,
+    /// From one dense versor and one dense multivector per lane: for each lane, the
+    /// versor and the operand as the item types hold them and that lane of
+    /// `versor.sandwich(operand)`, all dense.
+    pub eval: LaneEval,
+}
+
+/// [`check_sandwiches`] for batch types: every lane of every case against the
+/// reference, each lane with its own versor and operand, `64 / lanes` cases.
+///
+/// # Panics
+/// On the first disagreement, naming the versor, the operand type, the lane, the
+/// number of vectors and the metric.
+pub fn check_lane_sandwiches(
+    algebra: &Algebra,
+    lanes: usize,
+    cases: &[LaneSandwichCase],
+    tolerance: f64,
+) {
+    assert!(!cases.is_empty(), "no sandwiches to check");
+    let dim = algebra.dim();
+    let inputs = prop::collection::vec(sandwich_inputs(algebra.size(), dim), lanes);
+    let cases_to_run = u32::try_from(64 / lanes).unwrap_or(1).max(1);
+    run(cases_to_run, &inputs, |per_lane| {
+        let xs: Vec<Vec<f64>> = per_lane.iter().map(|(_, x)| x.clone()).collect();
+        for case in cases {
+            for count in case.versor.vector_counts(dim) {
+                let vs: Vec<Vec<f64>> = per_lane
+                    .iter()
+                    .map(|(factors, _)| product_of_vectors(algebra, &factors[..count]))
+                    .collect();
+                for (lane, [v, x, got]) in (case.eval)(&vs, &xs).into_iter().enumerate() {
+                    let expected = reference_sandwich(algebra, case.versor, &v, &x);
+                    prop_assert_close!(
+                        got,
+                        expected,
+                        scale = sandwich_magnitude(algebra, &v, &x),
+                        rel = tolerance,
+                        "for lane {lane} of {:?}.sandwich({}), a product of {count} vectors, \
+                         with metric {:?}",
+                        case.versor,
+                        case.operand,
+                        algebra.metric()
+                    );
+                }
+            }
+        }
+        Ok(())
+    });
+}
+
+/// One versor type's `sandwich_matrix` and `sandwich_vectors` in a batch module.
+#[derive(Clone, Copy)]
+pub struct LaneMatrixCase {
+    /// The versor type.
+    pub versor: Versor,
+    /// From one dense versor per lane and, per lane, the same number of dense
+    /// vectors (lane `i` of the `j`-th batch vector is `vectors[i][j]`): what the
+    /// batch type makes of them, lane by lane.
+    pub eval: LaneMatrixEval,
+}
+
+/// [`LaneMatrixCase::eval`]: per-lane versors and vectors in, per-lane results out.
+pub type LaneMatrixEval = fn(&[Vec<f64>], &[Vec<Vec<f64>>]) -> Vec<MatrixEval>;
+
+/// [`check_sandwich_matrices`] for batch types: every lane against the reference,
+/// each lane with its own versor and vectors, on slices of 0 to 3 batch vectors,
+/// `64 / lanes` cases.
+///
+/// # Panics
+/// On the first disagreement, naming the versor, the lane, the entry or vector, and
+/// the metric.
+pub fn check_lane_sandwich_matrices(
+    algebra: &Algebra,
+    lanes: usize,
+    cases: &[LaneMatrixCase],
+    tolerance: f64,
+) {
+    assert!(!cases.is_empty(), "no sandwich matrices to check");
+    let dim = algebra.dim();
+    let size = algebra.size();
+    let inputs = (0..=3usize).prop_flat_map(move |len| {
+        prop::collection::vec(
+            (
+                prop::collection::vec(dense(size), dim),
+                prop::collection::vec(dense(size), len),
+            ),
+            lanes,
+        )
+    });
+    let cases_to_run = u32::try_from(64 / lanes).unwrap_or(1).max(1);
+    run(cases_to_run, &inputs, |per_lane| {
+        let vectors: Vec<Vec<Vec<f64>>> = per_lane
+            .iter()
+            .map(|(_, xs)| xs.iter().map(|x| algebra.grade(x, 1)).collect())
+            .collect();
+        let len = vectors[0].len();
+        for case in cases {
+            for count in case.versor.vector_counts(dim) {
+                let vs: Vec<Vec<f64>> = per_lane
+                    .iter()
+                    .map(|(factors, _)| product_of_vectors(algebra, &factors[..count]))
+                    .collect();
+                for (lane, eval) in (case.eval)(&vs, &vectors).iter().enumerate() {
+                    check_matrix_eval(algebra, case.versor, eval, len, tolerance).map_err(|e| {
+                        TestCaseError::fail(format!(
+                            "{e}, lane {lane}, a product of {count} vectors"
+                        ))
+                    })?;
+                }
             }
         }
         Ok(())
