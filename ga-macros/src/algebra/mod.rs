@@ -3,6 +3,8 @@
 
 mod blade;
 mod metric;
+#[cfg(test)]
+mod sign_rule_tests;
 
 pub use blade::{blade_name, canonical_blades, grade, parse_blade, Blade};
 pub use metric::{Involution, Metric, ProductKind};
