@@ -4729,8 +4729,10 @@ pub mod g2 {
         }
     }
     impl Vector {
-        /// The matrix of the vector map `x -> v x ~v` (row = output component, column =
-        /// input component, canonical order): the rotation matrix of a unit rotor.
+        /// The matrix of the vector map of [`Sandwich::sandwich`] (`x -> v x ~v`, or
+        /// `v x^ ~v` for an odd versor; row = output component, column = input
+        /// component, canonical order): the rotation matrix of a unit rotor, a
+        /// reflection's for a unit vector.
         #[inline]
         #[must_use]
         pub fn sandwich_matrix(self) -> [[f64; 2]; 2] {
@@ -4816,8 +4818,10 @@ pub mod g2 {
         }
     }
     impl Even {
-        /// The matrix of the vector map `x -> v x ~v` (row = output component, column =
-        /// input component, canonical order): the rotation matrix of a unit rotor.
+        /// The matrix of the vector map of [`Sandwich::sandwich`] (`x -> v x ~v`, or
+        /// `v x^ ~v` for an odd versor; row = output component, column = input
+        /// component, canonical order): the rotation matrix of a unit rotor, a
+        /// reflection's for a unit vector.
         #[inline]
         #[must_use]
         pub fn sandwich_matrix(self) -> [[f64; 2]; 2] {
@@ -4903,8 +4907,10 @@ pub mod g2 {
         }
     }
     impl Odd {
-        /// The matrix of the vector map `x -> v x ~v` (row = output component, column =
-        /// input component, canonical order): the rotation matrix of a unit rotor.
+        /// The matrix of the vector map of [`Sandwich::sandwich`] (`x -> v x ~v`, or
+        /// `v x^ ~v` for an odd versor; row = output component, column = input
+        /// component, canonical order): the rotation matrix of a unit rotor, a
+        /// reflection's for a unit vector.
         #[inline]
         #[must_use]
         pub fn sandwich_matrix(self) -> [[f64; 2]; 2] {

@@ -7535,8 +7535,10 @@ pub mod g3 {
         }
     }
     impl Vector {
-        /// The matrix of the vector map `x -> v x ~v` (row = output component, column =
-        /// input component, canonical order): the rotation matrix of a unit rotor.
+        /// The matrix of the vector map of [`Sandwich::sandwich`] (`x -> v x ~v`, or
+        /// `v x^ ~v` for an odd versor; row = output component, column = input
+        /// component, canonical order): the rotation matrix of a unit rotor, a
+        /// reflection's for a unit vector.
         #[inline]
         #[must_use]
         pub fn sandwich_matrix(self) -> [[f64; 3]; 3] {
@@ -7727,8 +7729,10 @@ pub mod g3 {
         }
     }
     impl Even {
-        /// The matrix of the vector map `x -> v x ~v` (row = output component, column =
-        /// input component, canonical order): the rotation matrix of a unit rotor.
+        /// The matrix of the vector map of [`Sandwich::sandwich`] (`x -> v x ~v`, or
+        /// `v x^ ~v` for an odd versor; row = output component, column = input
+        /// component, canonical order): the rotation matrix of a unit rotor, a
+        /// reflection's for a unit vector.
         #[inline]
         #[must_use]
         pub fn sandwich_matrix(self) -> [[f64; 3]; 3] {
@@ -7924,8 +7928,10 @@ pub mod g3 {
         }
     }
     impl Odd {
-        /// The matrix of the vector map `x -> v x ~v` (row = output component, column =
-        /// input component, canonical order): the rotation matrix of a unit rotor.
+        /// The matrix of the vector map of [`Sandwich::sandwich`] (`x -> v x ~v`, or
+        /// `v x^ ~v` for an odd versor; row = output component, column = input
+        /// component, canonical order): the rotation matrix of a unit rotor, a
+        /// reflection's for a unit vector.
         #[inline]
         #[must_use]
         pub fn sandwich_matrix(self) -> [[f64; 3]; 3] {

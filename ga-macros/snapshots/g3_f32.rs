@@ -7930,8 +7930,10 @@ pub mod g3 {
         }
     }
     impl Vector {
-        /// The matrix of the vector map `x -> v x ~v` (row = output component, column =
-        /// input component, canonical order): the rotation matrix of a unit rotor.
+        /// The matrix of the vector map of [`Sandwich::sandwich`] (`x -> v x ~v`, or
+        /// `v x^ ~v` for an odd versor; row = output component, column = input
+        /// component, canonical order): the rotation matrix of a unit rotor, a
+        /// reflection's for a unit vector.
         #[inline]
         #[must_use]
         pub fn sandwich_matrix(self) -> [[f32; 3]; 3] {
@@ -8163,8 +8165,10 @@ pub mod g3 {
         }
     }
     impl Even {
-        /// The matrix of the vector map `x -> v x ~v` (row = output component, column =
-        /// input component, canonical order): the rotation matrix of a unit rotor.
+        /// The matrix of the vector map of [`Sandwich::sandwich`] (`x -> v x ~v`, or
+        /// `v x^ ~v` for an odd versor; row = output component, column = input
+        /// component, canonical order): the rotation matrix of a unit rotor, a
+        /// reflection's for a unit vector.
         #[inline]
         #[must_use]
         pub fn sandwich_matrix(self) -> [[f32; 3]; 3] {
@@ -8360,8 +8364,10 @@ pub mod g3 {
         }
     }
     impl Odd {
-        /// The matrix of the vector map `x -> v x ~v` (row = output component, column =
-        /// input component, canonical order): the rotation matrix of a unit rotor.
+        /// The matrix of the vector map of [`Sandwich::sandwich`] (`x -> v x ~v`, or
+        /// `v x^ ~v` for an odd versor; row = output component, column = input
+        /// component, canonical order): the rotation matrix of a unit rotor, a
+        /// reflection's for a unit vector.
         #[inline]
         #[must_use]
         pub fn sandwich_matrix(self) -> [[f32; 3]; 3] {

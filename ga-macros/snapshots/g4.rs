@@ -13615,8 +13615,10 @@ pub mod g4 {
         }
     }
     impl Vector {
-        /// The matrix of the vector map `x -> v x ~v` (row = output component, column =
-        /// input component, canonical order): the rotation matrix of a unit rotor.
+        /// The matrix of the vector map of [`Sandwich::sandwich`] (`x -> v x ~v`, or
+        /// `v x^ ~v` for an odd versor; row = output component, column = input
+        /// component, canonical order): the rotation matrix of a unit rotor, a
+        /// reflection's for a unit vector.
         #[inline]
         #[must_use]
         pub fn sandwich_matrix(self) -> [[f64; 4]; 4] {
@@ -14219,8 +14221,10 @@ pub mod g4 {
         }
     }
     impl Even {
-        /// The matrix of the vector map `x -> v x ~v` (row = output component, column =
-        /// input component, canonical order): the rotation matrix of a unit rotor.
+        /// The matrix of the vector map of [`Sandwich::sandwich`] (`x -> v x ~v`, or
+        /// `v x^ ~v` for an odd versor; row = output component, column = input
+        /// component, canonical order): the rotation matrix of a unit rotor, a
+        /// reflection's for a unit vector.
         #[inline]
         #[must_use]
         pub fn sandwich_matrix(self) -> [[f64; 4]; 4] {
@@ -14873,8 +14877,10 @@ pub mod g4 {
         }
     }
     impl Odd {
-        /// The matrix of the vector map `x -> v x ~v` (row = output component, column =
-        /// input component, canonical order): the rotation matrix of a unit rotor.
+        /// The matrix of the vector map of [`Sandwich::sandwich`] (`x -> v x ~v`, or
+        /// `v x^ ~v` for an odd versor; row = output component, column = input
+        /// component, canonical order): the rotation matrix of a unit rotor, a
+        /// reflection's for a unit vector.
         #[inline]
         #[must_use]
         pub fn sandwich_matrix(self) -> [[f64; 4]; 4] {

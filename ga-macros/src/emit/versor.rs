@@ -392,8 +392,10 @@ pub fn emit_sandwich_matrix(plan: &Plan, v: TypeId) -> TokenStream {
     let n = index(n);
     quote! {
         impl #name {
-            /// The matrix of the vector map `x -> v x ~v` (row = output component, column =
-            /// input component, canonical order): the rotation matrix of a unit rotor.
+            /// The matrix of the vector map of [`Sandwich::sandwich`] (`x -> v x ~v`, or
+            /// `v x^ ~v` for an odd versor; row = output component, column = input
+            /// component, canonical order): the rotation matrix of a unit rotor, a
+            /// reflection's for a unit vector.
             #[inline]
             #[must_use]
             pub fn sandwich_matrix(self) -> [[#s; #n]; #n] {
