@@ -792,3 +792,149 @@ fn inertia_of_bad_scene_fails_the_same_way() {
     assert_eq!(stderr.lines().count(), 1, "{stderr}");
     assert!(stderr.starts_with("body.moments: "), "{stderr}");
 }
+
+/// `simulate ... --out out.csv` in `dir` (a good scene already there), expecting the
+/// refusal contract: status 2, one line starting `--out: ` and containing `rule`.
+fn expect_out_refused(dir: &Path, rule: &str) {
+    let out = run(
+        dir,
+        &[
+            "simulate",
+            "scene.toml",
+            "--method",
+            "exact",
+            "--out",
+            "out.csv",
+        ],
+    );
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(out.stdout.is_empty());
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(stderr.starts_with("--out: "), "{stderr}");
+    assert!(stderr.contains(rule), "expected {rule:?} in {stderr}");
+    let temporaries: Vec<_> = std::fs::read_dir(dir)
+        .unwrap()
+        .filter_map(|e| e.ok())
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|n| n.contains(".tmp-"))
+        .collect();
+    assert!(temporaries.is_empty(), "{temporaries:?}");
+}
+
+fn make_fifo(path: &Path) {
+    let status = Command::new("mkfifo").arg(path).status().unwrap();
+    assert!(status.success(), "mkfifo failed");
+}
+
+#[cfg(unix)]
+#[test]
+fn out_onto_a_fifo_is_refused_and_the_fifo_kept() {
+    use std::os::unix::fs::FileTypeExt as _;
+    let dir = test_dir("out_fifo");
+    write(&dir, "scene.toml", &scene(BODY, INITIAL, RUN));
+    make_fifo(&dir.join("out.csv"));
+    expect_out_refused(&dir, "is a FIFO, not a regular file");
+    let kind = std::fs::symlink_metadata(dir.join("out.csv"))
+        .unwrap()
+        .file_type();
+    assert!(kind.is_fifo(), "the FIFO was replaced");
+}
+
+#[test]
+fn out_onto_a_directory_is_refused() {
+    let dir = test_dir("out_dir");
+    write(&dir, "scene.toml", &scene(BODY, INITIAL, RUN));
+    std::fs::create_dir(dir.join("out.csv")).unwrap();
+    expect_out_refused(&dir, "is a directory");
+    assert!(dir.join("out.csv").is_dir());
+}
+
+#[cfg(unix)]
+#[test]
+fn out_through_a_symlink_to_a_fifo_is_refused() {
+    use std::os::unix::fs::FileTypeExt as _;
+    let dir = test_dir("out_link_fifo");
+    write(&dir, "scene.toml", &scene(BODY, INITIAL, RUN));
+    make_fifo(&dir.join("pipe"));
+    std::os::unix::fs::symlink("pipe", dir.join("out.csv")).unwrap();
+    expect_out_refused(&dir, "is a FIFO");
+    assert!(std::fs::symlink_metadata(dir.join("out.csv"))
+        .unwrap()
+        .file_type()
+        .is_symlink());
+    assert!(std::fs::symlink_metadata(dir.join("pipe"))
+        .unwrap()
+        .file_type()
+        .is_fifo());
+}
+
+#[cfg(unix)]
+#[test]
+fn out_through_a_dangling_symlink_is_refused() {
+    let dir = test_dir("out_link_dangling");
+    write(&dir, "scene.toml", &scene(BODY, INITIAL, RUN));
+    std::os::unix::fs::symlink("nowhere.csv", dir.join("out.csv")).unwrap();
+    expect_out_refused(&dir, "symbolic link to a missing file");
+    assert!(!dir.join("nowhere.csv").exists());
+}
+
+#[cfg(unix)]
+#[test]
+fn out_through_a_symlink_replaces_its_target_and_keeps_the_link() {
+    let dir = test_dir("out_link_file");
+    write(&dir, "scene.toml", &scene(BODY, INITIAL, RUN));
+    std::fs::create_dir(dir.join("data")).unwrap();
+    write(&dir, "data/target.csv", "old contents\n");
+    std::os::unix::fs::symlink("data/target.csv", dir.join("out.csv")).unwrap();
+    let out = run(
+        &dir,
+        &[
+            "simulate",
+            "scene.toml",
+            "--method",
+            "exact",
+            "--out",
+            "out.csv",
+        ],
+    );
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(std::fs::symlink_metadata(dir.join("out.csv"))
+        .unwrap()
+        .file_type()
+        .is_symlink());
+    let text = std::fs::read_to_string(dir.join("data/target.csv")).unwrap();
+    assert!(text.contains("t,r_s,r_e12,r_e13,r_e23,w1,w2,w3,energy,l1,l2,l3\n"));
+    let names: Vec<_> = std::fs::read_dir(dir.join("data"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(names.len(), 1, "temporary file left behind: {names:?}");
+}
+
+#[test]
+fn out_replaces_a_regular_file_and_creates_a_missing_one() {
+    let dir = test_dir("out_regular");
+    write(&dir, "scene.toml", &scene(BODY, INITIAL, RUN));
+    write(&dir, "old.csv", "old contents\n");
+    for name in ["old.csv", "new.csv"] {
+        let out = run(
+            &dir,
+            &["simulate", "scene.toml", "--method", "exact", "--out", name],
+        );
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        assert!(out.stdout.is_empty());
+        let text = std::fs::read_to_string(dir.join(name)).unwrap();
+        assert!(text.contains("t,r_s,r_e12,r_e13,r_e23,w1,w2,w3,energy,l1,l2,l3\n"));
+    }
+}

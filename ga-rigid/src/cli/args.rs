@@ -45,7 +45,9 @@ pub struct SimulateArgs {
     /// The error tolerance, for adaptive methods.
     #[arg(long, value_name = "TOL", allow_negative_numbers = true)]
     pub tol: Option<f64>,
-    /// Write the CSV to this file instead of standard output (created only on success).
+    /// Write the CSV to this regular file instead of standard output, only on success, by
+    /// temporary file and rename; a symbolic link is followed and its target replaced; a
+    /// directory, FIFO, socket or device is refused (use standard output to reach one).
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
 }
@@ -61,7 +63,8 @@ pub struct InertiaArgs {
 /// Arguments of `report`.
 #[derive(Debug, Args)]
 pub struct ReportArgs {
-    /// Write the report to this file instead of standard output (created only on success).
+    /// Write the report to this regular file instead of standard output, only on success,
+    /// with the same rules as `simulate --out`.
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
     /// Three settings per method and one timing run instead of nine and the best of three.

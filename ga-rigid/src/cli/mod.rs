@@ -4,10 +4,13 @@
 //! error naming the field or argument and the rule it broke, no output file, and exit
 //! status 2 for bad input (1 for a failed write or a missing feature). Output is
 //! buffered and written only when the command has succeeded; `--out FILE` is written to
-//! a temporary file in the same directory and renamed into place.
+//! a temporary file in the same directory and renamed into place, and only ever to a
+//! regular file (a symbolic link is followed to one; a directory, FIFO, socket or device
+//! is refused with status 2): see [`output`].
 
 mod args;
 mod inertia_cmd;
+mod output;
 mod simulate;
 
 use std::ffi::OsString;
@@ -193,31 +196,11 @@ pub fn run_report(args: &ReportArgs) -> Result<String, Error> {
     crate::report::report(size)
 }
 
-/// Fail early, before any work, if `out` cannot be created: its directory must exist and
-/// `out` must not be a directory.
+/// Fail early, before any work, if `out` cannot be written (see [`output`]): a
+/// missing directory, or a path that is not a regular file, a missing one or a link to a
+/// regular file.
 fn check_output_path(field: &str, out: &Path) -> Result<(), Error> {
-    if out.is_dir() {
-        return Err(Error::invalid(
-            field,
-            format!("{} is a directory, not a file", out.display()),
-        ));
-    }
-    let dir = parent_dir(out);
-    if !dir.is_dir() {
-        return Err(Error::invalid(
-            field,
-            format!("the directory {} does not exist", dir.display()),
-        ));
-    }
-    Ok(())
-}
-
-/// The directory a file path lives in (`.` for a bare file name).
-fn parent_dir(path: &Path) -> PathBuf {
-    match path.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
-        _ => PathBuf::from("."),
-    }
+    output::output_target(field, out).map(|_| ())
 }
 
 /// Write finished output to standard output, or atomically to `out`: into a temporary
@@ -235,23 +218,5 @@ fn emit(field: &str, out: Option<&Path>, text: &str) -> Result<(), Error> {
                 source,
             });
     };
-    let name = out
-        .file_name()
-        .map_or_else(|| OsString::from("out"), std::ffi::OsStr::to_os_string);
-    let mut tmp_name = OsString::from(".");
-    tmp_name.push(&name);
-    tmp_name.push(format!(".tmp-{}", std::process::id()));
-    let tmp = parent_dir(out).join(tmp_name);
-    let write_err = |source| Error::Write {
-        field: field.to_string(),
-        path: out.to_path_buf(),
-        source,
-    };
-    let result = std::fs::write(&tmp, text).and_then(|()| std::fs::rename(&tmp, out));
-    if let Err(source) = result {
-        // Best effort: the temporary file may not exist if the write failed early.
-        let _ = std::fs::remove_file(&tmp);
-        return Err(write_err(source));
-    }
-    Ok(())
+    output::write_atomically(field, out, text)
 }
