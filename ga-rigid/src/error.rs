@@ -239,18 +239,28 @@ pub(crate) fn finite(field: &str, what: &'static str, value: f64) -> Result<f64,
     }
 }
 
-/// Check that a number is finite and strictly positive.
+/// Check that a number is finite and strictly positive, and not subnormal: a subnormal
+/// mass, moment, density or step has lost its precision already and turns into zero or
+/// infinity in the first product or quotient.
 pub(crate) fn positive(field: &str, what: &'static str, value: f64) -> Result<f64, Error> {
     finite(field, what, value)?;
-    if value > 0.0 {
-        Ok(value)
-    } else {
-        Err(Error::NotPositive {
+    if value <= 0.0 {
+        return Err(Error::NotPositive {
             field: field.to_string(),
             what,
             value,
-        })
+        });
     }
+    if value < f64::MIN_POSITIVE {
+        return Err(Error::invalid(
+            field,
+            format!(
+                "{what} must be at least {:e} (a normal number), got {value:e}",
+                f64::MIN_POSITIVE
+            ),
+        ));
+    }
+    Ok(value)
 }
 
 /// Check that every component of a vector is finite.

@@ -224,15 +224,79 @@ impl Scene {
             }
         };
 
-        Ok(Scene {
+        let scene = Scene {
             body,
             inertia,
             initial: Initial { rotor, omega },
             run: Run { t_end, samples },
             torque,
-        })
+        };
+        scene.check_magnitudes()?;
+        Ok(scene)
+    }
+
+    /// The field the user wrote the body in (`body.moments`, `body.shape`, ...).
+    #[must_use]
+    pub fn body_field(&self) -> &'static str {
+        match self.body {
+            BodySpec::Moments(_) => "body.moments",
+            BodySpec::Shape(_) => "body.shape",
+            BodySpec::Points(_) => "body.points",
+            BodySpec::Mesh { .. } => "body.mesh",
+        }
+    }
+
+    /// Refuse scenes whose numbers overflow or underflow before any step is taken: the
+    /// principal moments outside [`MOMENT_RANGE`], or an initial kinetic energy, squared
+    /// angular momentum or weight that is not finite. A method would otherwise write
+    /// `inf` rows, or fail later with a message about its own internals.
+    fn check_magnitudes(&self) -> Result<(), Error> {
+        let (low, high) = MOMENT_RANGE;
+        let moments = self.inertia.moments();
+        if let Some(&i) = moments.iter().find(|&&i| !(low..=high).contains(&i)) {
+            return Err(Error::invalid(
+                self.body_field(),
+                format!(
+                    "the principal moments must lie between {low:e} and {high:e} \
+                     (rescale the units), got {i:e}"
+                ),
+            ));
+        }
+        let omega = self
+            .inertia
+            .rotor()
+            .reverse()
+            .sandwich(self.initial.omega_bivector());
+        let w = crate::dynamics::omega_to_vector(omega);
+        let momentum = [0, 1, 2].map(|k| moments[k] * w[k]);
+        let energy: f64 = (0..3).map(|k| 0.5 * momentum[k] * w[k]).sum();
+        let squared_momentum: f64 = momentum.iter().map(|l| l * l).sum();
+        if !(energy.is_finite() && squared_momentum.is_finite()) {
+            return Err(Error::invalid(
+                "initial.omega",
+                format!(
+                    "the kinetic energy ({energy:e}) and squared angular momentum \
+                     ({squared_momentum:e}) overflow with these moments; slow the body down"
+                ),
+            ));
+        }
+        if let Some(gravity) = self.torque {
+            let mass = self.inertia.mass().unwrap_or(1.0);
+            let weight = mass * gravity.g.norm() * gravity.com_offset.norm();
+            if !weight.is_finite() {
+                return Err(Error::invalid(
+                    "torque.g",
+                    "the potential energy m |g| |com_offset| overflows; rescale the units",
+                ));
+            }
+        }
+        Ok(())
     }
 }
+
+/// The range the principal moments must lie in: wide enough for any unit system, narrow
+/// enough that products of up to three moments and squared energies stay normal numbers.
+pub const MOMENT_RANGE: (f64, f64) = (1e-100, 1e100);
 
 /// Pick the one body description and compute its inertia.
 fn load_body(body: BodyFile, scene_path: &Path) -> Result<(BodySpec, Inertia), Error> {

@@ -938,3 +938,89 @@ fn out_replaces_a_regular_file_and_creates_a_missing_one() {
         assert!(text.contains("t,r_s,r_e12,r_e13,r_e23,w1,w2,w3,energy,l1,l2,l3\n"));
     }
 }
+
+#[test]
+fn overflowing_energy_is_rejected_for_every_method() {
+    // Issue 12: `exact` and `splitting` wrote `energy = inf` here and exited 0.
+    let s = scene(
+        "[body]\nmoments = [1, 1, 1]\n",
+        "[initial]\nrotor = [1, 0, 0, 0]\nomega = [0, 0, 1e200]\n",
+        RUN,
+    );
+    for (k, method) in [
+        &["--method", "exact"][..],
+        &["--method", "splitting", "--dt", "0.01"][..],
+        &["--method", "closed-form"][..],
+        &["--method", "rk4", "--dt", "0.01"][..],
+        &["--method", "dopri", "--tol", "1e-8"][..],
+    ]
+    .iter()
+    .enumerate()
+    {
+        expect_rejected_with(
+            &format!("overflowing_energy_{k}"),
+            &s,
+            method,
+            "initial.omega: ",
+            "overflow",
+        );
+    }
+}
+
+#[test]
+fn subnormal_moments_mass_and_density_are_rejected_naming_the_field() {
+    let subnormal_moments = scene("[body]\nmoments = [1e-320, 1e-320, 1e-320]\n", INITIAL, RUN);
+    expect_rejected_with(
+        "subnormal_moments",
+        &subnormal_moments,
+        &["--method", "splitting", "--dt", "0.01"],
+        "body.moments: ",
+        "normal number",
+    );
+    let subnormal_mass = scene(
+        "[body]\nshape = { kind = \"box\", mass = 1e-320, size = [1, 2, 3] }\n",
+        INITIAL,
+        RUN,
+    );
+    expect_rejected(
+        "subnormal_mass",
+        &subnormal_mass,
+        "body.shape.mass: ",
+        "normal number",
+    );
+    let subnormal_point = scene(
+        "[body]\npoints = [[1e-320, 1, 0, 0], [1, 0, 1, 0], [1, 0, 0, 1]]\n",
+        INITIAL,
+        RUN,
+    );
+    expect_rejected(
+        "subnormal_point",
+        &subnormal_point,
+        "body.points[0]: ",
+        "normal number",
+    );
+    let s = scene(
+        "[body]\nmesh = \"cube.obj\"\ndensity = 5e-324\n",
+        INITIAL,
+        RUN,
+    );
+    expect_rejected_in(
+        "subnormal_density",
+        &[("scene.toml", &s), ("cube.obj", CUBE_OBJ)],
+        &["--method", "rk4", "--dt", "0.1"],
+        "body.density: ",
+        "normal number",
+    );
+}
+
+#[test]
+fn moments_whose_products_underflow_are_rejected() {
+    let tiny = scene("[body]\nmoments = [1e-200, 1e-200, 1e-200]\n", INITIAL, RUN);
+    expect_rejected("tiny_moments", &tiny, "body.moments: ", "between 1e-100");
+    let tiny_box = scene(
+        "[body]\nshape = { kind = \"box\", mass = 1e-250, size = [1, 2, 3] }\n",
+        INITIAL,
+        RUN,
+    );
+    expect_rejected("tiny_box", &tiny_box, "body.shape: ", "between 1e-100");
+}

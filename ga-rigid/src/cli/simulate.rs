@@ -74,9 +74,27 @@ pub fn run_simulation(scene: &Scene, method: Method, step: Step) -> Result<Vec<R
     for &sample in &times {
         state = integrator.advance(&body, t, state, sample - t)?;
         t = sample;
-        rows.push(row(&body, principal, t, &state));
+        rows.push(finite_row(method, row(&body, principal, t, &state))?);
     }
     Ok(rows)
+}
+
+/// The row unchanged if every number in it is finite; otherwise an error naming the
+/// method, the time and the first column that is not, so that no method can write `inf`
+/// or `NaN` into a CSV and exit 0.
+fn finite_row(method: Method, row: Row) -> Result<Row, Error> {
+    let columns = crate::csv::HEADER.split(',');
+    match columns.zip(row.values()).find(|(_, x)| !x.is_finite()) {
+        None => Ok(row),
+        Some((column, x)) => Err(Error::invalid(
+            method.name(),
+            format!(
+                "{column} is not finite ({x}) at t = {:e}: the scene's numbers are too large \
+                 for this method",
+                row.t
+            ),
+        )),
+    }
 }
 
 fn row(body: &RigidBody, principal: Rotor, t: f64, state: &State) -> Row {
@@ -87,5 +105,37 @@ fn row(body: &RigidBody, principal: Rotor, t: f64, state: &State) -> Row {
         omega: omega_to_vector(principal.sandwich(state.omega)),
         energy: body.total_energy(t, state),
         momentum: momentum.to_array(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_row_with_an_infinite_energy_is_an_error_naming_the_method_and_column() {
+        let good = Row {
+            t: 1.0,
+            rotor: Rotor::ONE,
+            omega: [0.0, 0.0, 1.0],
+            energy: 0.5,
+            momentum: [0.0, 0.0, 1.0],
+        };
+        assert_eq!(finite_row(Method::Exact, good).unwrap(), good);
+        let bad = Row {
+            energy: f64::INFINITY,
+            ..good
+        };
+        let e = finite_row(Method::Splitting, bad).unwrap_err().to_string();
+        assert!(
+            e.starts_with("splitting: energy is not finite (inf) at t = 1e0"),
+            "{e}"
+        );
+        let nan = Row {
+            omega: [0.0, f64::NAN, 1.0],
+            ..good
+        };
+        let e = finite_row(Method::Exact, nan).unwrap_err().to_string();
+        assert!(e.starts_with("exact: w2 is not finite (NaN)"), "{e}");
     }
 }
