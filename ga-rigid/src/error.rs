@@ -12,7 +12,7 @@ use std::path::PathBuf;
 #[derive(Debug, thiserror::Error)]
 pub enum Error {
     /// A number is NaN or infinite.
-    #[error("{field}: {what} must be finite, got {value}")]
+    #[error("{field}: {what} must be finite, got {}", num(*value))]
     NotFinite {
         /// The field or parameter at fault.
         field: String,
@@ -23,7 +23,7 @@ pub enum Error {
     },
 
     /// A number that must be strictly positive is zero or negative.
-    #[error("{field}: {what} must be positive, got {value}")]
+    #[error("{field}: {what} must be positive, got {}", num(*value))]
     NotPositive {
         /// The field or parameter at fault.
         field: String,
@@ -36,7 +36,7 @@ pub enum Error {
     /// Principal moments that no mass distribution can have: i_a + i_b < i_c.
     #[error(
         "{field}: moments must satisfy the triangle inequality i_a + i_b >= i_c, \
-         but {a} + {b} < {c}"
+         but {} + {} < {}", num(*a), num(*b), num(*c)
     )]
     TriangleInequality {
         /// The field or parameter at fault.
@@ -223,6 +223,18 @@ impl Error {
             Error::Write { .. } | Error::NotAvailable { .. } => 1,
             _ => 2,
         }
+    }
+}
+
+/// A number for a message: plain where that is short (`0.25`, `-3`, `1500`), scientific
+/// otherwise (`1e-300`, not three hundred zeros), so that a message stays one short line.
+#[must_use]
+pub fn num(x: f64) -> String {
+    let a = x.abs();
+    if x == 0.0 || !x.is_finite() || (1e-4..1e16).contains(&a) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
     }
 }
 

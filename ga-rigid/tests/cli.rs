@@ -1024,3 +1024,90 @@ fn moments_whose_products_underflow_are_rejected() {
     );
     expect_rejected("tiny_box", &tiny_box, "body.shape: ", "between 1e-100");
 }
+
+/// `expect_rejected_with`, and the line is at most 200 characters.
+fn expect_short_rejection(name: &str, scene: &str, extra: &[&str], field: &str, rule: &str) {
+    expect_rejected_with(name, scene, extra, field, rule);
+    let dir = test_dir(name);
+    write(&dir, "scene.toml", scene);
+    let mut args = vec!["simulate", "scene.toml"];
+    args.extend_from_slice(extra);
+    let out = run(&dir, &args);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.trim_end().chars().count() <= 200,
+        "{name}: {} characters: {stderr}",
+        stderr.trim_end().chars().count()
+    );
+}
+
+#[test]
+fn runs_that_cannot_finish_are_refused_up_front() {
+    // Issue 12: 10^14 steps started and ran for months, printing nothing.
+    let long = scene(BODY, INITIAL, "[run]\nt_end = 1e12\nsamples = 11\n");
+    expect_short_rejection(
+        "long_run",
+        &long,
+        &["--method", "rk4", "--dt", "0.01"],
+        "--dt: ",
+        "above the limit 100000000; raise it with --max-steps",
+    );
+    let s = scene(BODY, INITIAL, RUN);
+    expect_short_rejection(
+        "tiny_dt",
+        &s,
+        &["--method", "splitting", "--dt", "1e-9"],
+        "--dt: ",
+        "--max-steps",
+    );
+    expect_short_rejection(
+        "tiny_dt_300",
+        &s,
+        &["--method", "midpoint", "--dt", "1e-300"],
+        "--dt: ",
+        "--max-steps",
+    );
+    expect_short_rejection(
+        "lowered_limit",
+        &s,
+        &["--method", "rk4", "--dt", "0.001", "--max-steps", "1000"],
+        "--dt: ",
+        "above the limit 1000",
+    );
+    expect_short_rejection(
+        "long_dopri",
+        &long,
+        &["--method", "dopri", "--tol", "1e-10"],
+        "--tol: ",
+        "--max-steps",
+    );
+    let many_rows = scene(BODY, INITIAL, "[run]\nt_end = 1\nsamples = 10000000\n");
+    expect_short_rejection(
+        "big_output",
+        &many_rows,
+        &["--method", "exact"],
+        "run.samples: ",
+        "--max-output-mb",
+    );
+}
+
+#[test]
+fn max_steps_raises_the_limit() {
+    let dir = test_dir("max_steps_raised");
+    write(
+        &dir,
+        "scene.toml",
+        &scene(BODY, INITIAL, "[run]\nt_end = 1\nsamples = 3\n"),
+    );
+    let base = ["simulate", "scene.toml", "--method", "rk4", "--dt", "1e-4"];
+    let refused = run(&dir, &[&base[..], &["--max-steps", "100"]].concat());
+    assert_eq!(refused.status.code(), Some(2));
+    let allowed = run(&dir, &[&base[..], &["--max-steps", "20000"]].concat());
+    assert_eq!(
+        allowed.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&allowed.stderr)
+    );
+    assert_eq!(String::from_utf8_lossy(&allowed.stdout).lines().count(), 4);
+}

@@ -50,6 +50,13 @@ pub struct SimulateArgs {
     /// directory, FIFO, socket or device is refused (use standard output to reach one).
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
+    /// Refuse runs estimated to take more steps than this (t_end / dt plus one per
+    /// sample for fixed steps; a rough estimate for dopri).
+    #[arg(long, value_name = "N", default_value_t = super::simulate::DEFAULT_MAX_STEPS)]
+    pub max_steps: u64,
+    /// Refuse runs whose CSV may be larger than this many megabytes (300 bytes a row).
+    #[arg(long, value_name = "MB", default_value_t = super::simulate::DEFAULT_MAX_OUTPUT_MB)]
+    pub max_output_mb: u64,
 }
 
 /// Arguments of `inertia`.

@@ -11,6 +11,7 @@
 mod args;
 mod inertia_cmd;
 mod output;
+mod progress;
 mod simulate;
 
 use std::ffi::OsString;
@@ -104,8 +105,13 @@ fn simulate(args: &SimulateArgs) -> Result<(), Error> {
         check_output_path("--out", out)?;
     }
     let scene = Scene::load(&args.scene)?;
-    let rows = run_simulation(&scene, args.method, step)?;
-    emit("--out", args.out.as_deref(), &to_csv(&rows))
+    let work = simulate::check_work(&scene, step, args.max_steps, args.max_output_mb)?;
+    let mut progress = progress::Progress::new(scene.run.t_end, work.steps);
+    let rows = simulate::run_simulation_with_progress(&scene, args.method, step, &mut |t| {
+        progress.update(t);
+    });
+    progress.finish();
+    emit("--out", args.out.as_deref(), &to_csv(&rows?))
 }
 
 /// Check `--dt` and `--tol` and match them to the method: fixed-step methods need

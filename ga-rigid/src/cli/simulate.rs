@@ -59,8 +59,123 @@ pub fn principal_body(scene: &Scene) -> Result<RigidBody, Error> {
     })
 }
 
+/// The default limit on the estimated number of steps (`--max-steps`): about a minute of
+/// a fixed-step method in a release build; 10^14 steps would take months.
+pub const DEFAULT_MAX_STEPS: u64 = 100_000_000;
+
+/// The default limit on the estimated CSV size in megabytes (`--max-output-mb`).
+pub const DEFAULT_MAX_OUTPUT_MB: u64 = 1024;
+
+/// The most bytes one CSV row can take: twelve numbers of at most 24 characters
+/// (`-1.2345678901234567e-300`) and their separators.
+pub const MAX_ROW_BYTES: u64 = 12 * 25;
+
+/// What a run will cost, estimated before it starts.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Work {
+    /// The number of steps (or solution evaluations), an upper estimate for fixed steps and
+    /// a rough one for the adaptive method.
+    pub steps: f64,
+    /// The size of the CSV in bytes, an upper bound.
+    pub output_bytes: f64,
+}
+
+/// A bound on the body's angular speed over the run, in radians per unit time: the
+/// angular momentum over the smallest moment (`|w| <= |L| / i_min` for a free body), plus
+/// the speed the potential energy could add under gravity.
+#[must_use]
+pub fn angular_speed_bound(scene: &Scene) -> f64 {
+    let moments = scene.inertia.moments();
+    let smallest = moments.iter().copied().fold(f64::INFINITY, f64::min);
+    let largest = moments.iter().copied().fold(0.0, f64::max);
+    let w = scene.initial.omega;
+    let speed = (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]).sqrt();
+    let mut bound = speed * largest / smallest;
+    if let Some(gravity) = scene.torque {
+        let mass = scene.inertia.mass().unwrap_or(1.0);
+        let potential = mass * gravity.g.norm() * gravity.com_offset.norm();
+        bound += (4.0 * potential / smallest).sqrt();
+    }
+    bound
+}
+
+/// Estimate the steps and output size of a run: `t_end / dt` plus one per sample for
+/// fixed steps; for Dormand-Prince, whose local error grows as `(h |w|)^5`, about
+/// `tol^(-1/5)` steps per radian turned; one evaluation per sample otherwise.
+#[must_use]
+pub fn estimate_work(scene: &Scene, step: Step) -> Work {
+    let samples = scene.run.samples as f64;
+    let steps = match step {
+        Step::Fixed(h) => scene.run.t_end / h + samples,
+        Step::Tolerance(tol) => {
+            let radians = scene.run.t_end * angular_speed_bound(scene);
+            radians * tol.powf(-0.2) + samples
+        }
+        Step::AtSamples => samples,
+    };
+    Work {
+        steps,
+        output_bytes: (samples + 1.0) * MAX_ROW_BYTES as f64,
+    }
+}
+
+/// Refuse a run whose estimated work is above the limits, naming the option that set it.
+pub fn check_work(
+    scene: &Scene,
+    step: Step,
+    max_steps: u64,
+    max_output_mb: u64,
+) -> Result<Work, Error> {
+    use crate::error::num;
+    let work = estimate_work(scene, step);
+    // NaN steps (never expected) count as too many.
+    if work.steps.is_nan() || work.steps > max_steps as f64 {
+        let (field, what) = match step {
+            Step::Fixed(h) => ("--dt", format!("a step of {}", num(h))),
+            Step::Tolerance(tol) => ("--tol", format!("a tolerance of {}", num(tol))),
+            Step::AtSamples => ("run.samples", "one evaluation per sample".to_string()),
+        };
+        return Err(Error::invalid(
+            field,
+            format!(
+                "{what} needs about {} steps to reach t_end = {}, above the limit {}; \
+                 raise it with --max-steps",
+                if work.steps.is_finite() {
+                    format!("{:.1e}", work.steps)
+                } else {
+                    "1e308".to_string()
+                },
+                num(scene.run.t_end),
+                max_steps
+            ),
+        ));
+    }
+    let megabytes = work.output_bytes / 1e6;
+    if megabytes > max_output_mb as f64 {
+        return Err(Error::invalid(
+            "run.samples",
+            format!(
+                "{} rows may take {megabytes:.0} MB of CSV, above the limit {max_output_mb} MB; \
+                 raise it with --max-output-mb",
+                scene.run.samples
+            ),
+        ));
+    }
+    Ok(work)
+}
+
 /// Integrate `scene` with `method` and return one row per sample time.
 pub fn run_simulation(scene: &Scene, method: Method, step: Step) -> Result<Vec<Row>, Error> {
+    run_simulation_with_progress(scene, method, step, &mut |_| {})
+}
+
+/// [`run_simulation`], calling `progress(t)` after each sample (for a progress display).
+pub fn run_simulation_with_progress(
+    scene: &Scene,
+    method: Method,
+    step: Step,
+    progress: &mut dyn FnMut(f64),
+) -> Result<Vec<Row>, Error> {
     let body = principal_body(scene)?;
     let principal = scene.inertia.rotor();
     let mut integrator = integrator_for(method, step)?;
@@ -75,6 +190,7 @@ pub fn run_simulation(scene: &Scene, method: Method, step: Step) -> Result<Vec<R
         state = integrator.advance(&body, t, state, sample - t)?;
         t = sample;
         rows.push(finite_row(method, row(&body, principal, t, &state))?);
+        progress(t);
     }
     Ok(rows)
 }
