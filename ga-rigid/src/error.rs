@@ -85,7 +85,7 @@ pub enum Error {
     },
 
     /// A malformed line in a Wavefront OBJ file.
-    #[error("{field}: {}:{line}: {message}", path.display())]
+    #[error("{field}: {}:{line}: {message}", echo_path(path))]
     Obj {
         /// The field or parameter that named the file.
         field: String,
@@ -98,7 +98,7 @@ pub enum Error {
     },
 
     /// A TOML syntax error (or a duplicated key), which has a position but no field yet.
-    #[error("{}:{line}:{column}: {message}", path.display())]
+    #[error("{}:{line}:{column}: {message}", echo_path(path))]
     Toml {
         /// The scene file.
         path: PathBuf,
@@ -111,7 +111,7 @@ pub enum Error {
     },
 
     /// An input file that could not be read.
-    #[error("{field}: cannot read {}: {source}", path.display())]
+    #[error("{field}: cannot read {}: {source}", echo_path(path))]
     Read {
         /// The field or argument that named the file.
         field: String,
@@ -122,7 +122,7 @@ pub enum Error {
     },
 
     /// An output file or stream that could not be written.
-    #[error("{field}: cannot write {}: {source}", path.display())]
+    #[error("{field}: cannot write {}: {source}", echo_path(path))]
     Write {
         /// The argument that named the output.
         field: String,
@@ -236,6 +236,30 @@ pub fn num(x: f64) -> String {
     } else {
         format!("{x:e}")
     }
+}
+
+/// The most characters of user text (a string value, a path) a message repeats.
+pub const ECHO_LIMIT: usize = 60;
+
+/// User text for a message, cut to [`ECHO_LIMIT`] characters with its length stated, so
+/// that a 100,000-character value does not become a 100,000-character message; line
+/// breaks are shown as `\n` so that the message stays one line.
+#[must_use]
+pub fn echo(text: &str) -> String {
+    let count = text.chars().count();
+    let escape = |s: &str| s.replace('\n', "\\n").replace('\r', "\\r");
+    if count <= ECHO_LIMIT {
+        escape(text)
+    } else {
+        let head: String = text.chars().take(ECHO_LIMIT - 20).collect();
+        format!("{}... ({count} characters)", escape(&head))
+    }
+}
+
+/// A path for a message, cut like [`echo`].
+#[must_use]
+pub fn echo_path(path: &std::path::Path) -> String {
+    echo(&path.display().to_string())
 }
 
 /// Check that a number is finite.

@@ -5,6 +5,7 @@ pub mod dynamics;
 pub mod error;
 pub mod exact_flow;
 pub mod inertia;
+mod input;
 pub mod integrators;
 pub mod report;
 pub mod scene;

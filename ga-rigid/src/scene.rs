@@ -41,6 +41,10 @@ use crate::inertia::{normalize_rotor, Inertia, Mesh, Solid};
 /// memory and two and a half as CSV, so more is a typo rather than a plan.
 pub const MAX_SAMPLES: i64 = 10_000_000;
 
+/// The largest scene file read: 16 MiB holds some 300,000 point masses; more is not a
+/// scene someone wrote, and `/dev/zero` must not be read until memory runs out.
+pub const MAX_SCENE_BYTES: u64 = 16 << 20;
+
 /// A parsed and validated scene.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Scene {
@@ -172,13 +176,10 @@ struct TorqueFile {
 
 impl Scene {
     /// Read and validate a scene file; errors naming the file's own problems use the
-    /// field `SCENE`.
+    /// field `SCENE`. Only a regular file (or a link to one) of at most
+    /// [`MAX_SCENE_BYTES`] is read.
     pub fn load(path: &Path) -> Result<Scene, Error> {
-        let text = std::fs::read_to_string(path).map_err(|source| Error::Read {
-            field: "SCENE".to_string(),
-            path: path.to_path_buf(),
-            source,
-        })?;
+        let text = crate::input::read_text("SCENE", path, MAX_SCENE_BYTES)?;
         Scene::parse(&text, path)
     }
 

@@ -1111,3 +1111,79 @@ fn max_steps_raises_the_limit() {
     );
     assert_eq!(String::from_utf8_lossy(&allowed.stdout).lines().count(), 4);
 }
+
+/// Run with a deadline: a command that blocks on a FIFO or reads without end is killed
+/// and the test fails instead of hanging.
+fn run_with_deadline(dir: &Path, args: &[&str]) -> Output {
+    use std::time::{Duration, Instant};
+    let mut child = Command::new(BIN)
+        .args(args)
+        .current_dir(dir)
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let start = Instant::now();
+    while child.try_wait().unwrap().is_none() {
+        if start.elapsed() > Duration::from_secs(20) {
+            child.kill().unwrap();
+            let _ = child.wait();
+            panic!("{args:?} did not finish in 20 s");
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    child.wait_with_output().unwrap()
+}
+
+fn expect_read_refused(dir: &Path, scene: &str, field: &str, rule: &str) {
+    let out = run_with_deadline(dir, &["simulate", scene, "--method", "exact"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(out.stdout.is_empty());
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(stderr.starts_with(field), "{stderr}");
+    assert!(stderr.contains(rule), "expected {rule:?} in {stderr}");
+}
+
+#[cfg(unix)]
+#[test]
+fn a_fifo_scene_or_mesh_is_refused_without_blocking() {
+    let dir = test_dir("fifo_inputs");
+    make_fifo(&dir.join("scene.toml"));
+    expect_read_refused(&dir, "scene.toml", "SCENE: ", "not a regular file");
+    write(
+        &dir,
+        "mesh.toml",
+        &scene("[body]\nmesh = \"body.obj\"\ndensity = 1\n", INITIAL, RUN),
+    );
+    make_fifo(&dir.join("body.obj"));
+    expect_read_refused(&dir, "mesh.toml", "body.mesh: ", "not a regular file");
+}
+
+#[test]
+fn a_directory_scene_is_refused() {
+    let dir = test_dir("dir_scene");
+    std::fs::create_dir(dir.join("scene.toml")).unwrap();
+    expect_read_refused(&dir, "scene.toml", "SCENE: ", "not a regular file");
+}
+
+#[test]
+fn oversized_scene_and_mesh_files_are_refused_before_reading() {
+    let dir = test_dir("big_inputs");
+    // Sparse files: the size is there, the disk blocks are not.
+    let big_scene = std::fs::File::create(dir.join("scene.toml")).unwrap();
+    big_scene
+        .set_len(ga_rigid::scene::MAX_SCENE_BYTES + 1)
+        .unwrap();
+    expect_read_refused(&dir, "scene.toml", "SCENE: ", "more than the limit");
+    write(
+        &dir,
+        "mesh.toml",
+        &scene("[body]\nmesh = \"body.obj\"\ndensity = 1\n", INITIAL, RUN),
+    );
+    let big_mesh = std::fs::File::create(dir.join("body.obj")).unwrap();
+    big_mesh
+        .set_len(ga_rigid::inertia::MAX_MESH_BYTES + 1)
+        .unwrap();
+    expect_read_refused(&dir, "mesh.toml", "body.mesh: ", "more than the limit");
+}
