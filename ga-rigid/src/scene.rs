@@ -34,7 +34,7 @@ use std::path::{Path, PathBuf};
 use ga_core::f64::g3::*;
 use serde::Deserialize;
 
-use crate::error::{finite3, positive, Error};
+use crate::error::{echo, finite3, positive, Error};
 use crate::inertia::{normalize_rotor, Inertia, Mesh, Solid};
 
 /// The most output rows a scene may ask for: ten million rows are about a gigabyte in
@@ -391,13 +391,21 @@ fn syntax_error(e: &toml::de::Error, text: &str, path: &Path) -> Error {
         }
         None => (0, 0),
     };
-    let message = one_line(e.message());
-    if let Some(field) = duplicated_key(&message, text, e.span().map_or(0, |s| s.start)) {
+    let mut message = one_line(e.message());
+    if message.is_empty() {
+        // The parser gives no message when the text ends where a value should be.
+        message = if e.span().is_some_and(|s| s.start >= text.trim_end().len()) {
+            "the file ends where a value was expected".to_string()
+        } else {
+            "invalid TOML".to_string()
+        };
+    }
+    if let Some(field) = duplicated_key(e.message(), text, e.span().map_or(0, |s| s.start)) {
         return Error::invalid(
-            field,
+            echo(&field),
             format!(
                 "duplicated key (again at {}:{line}); each field may appear once",
-                path.display()
+                crate::error::echo_path(path)
             ),
         );
     }
@@ -458,9 +466,9 @@ fn field_error(e: &toml::de::Error) -> Error {
         .to_string();
     let join = |name: &str| {
         if path.is_empty() {
-            name.to_string()
+            echo(name)
         } else {
-            format!("{path}.{name}")
+            echo(&format!("{path}.{name}"))
         }
     };
     if let Some(rest) = message.strip_prefix("unknown field `") {
@@ -479,18 +487,44 @@ fn field_error(e: &toml::de::Error) -> Error {
     let field = if path.is_empty() {
         "SCENE".to_string()
     } else {
-        path
+        echo(&path)
     };
     Error::invalid(field, one_line(message))
 }
 
+/// A parser or serde message on one line, with every quoted piece of the user's text
+/// (`...` or "...") cut by [`echo`], and the whole at most 180 characters.
 fn one_line(message: &str) -> String {
-    message
+    let joined = message
         .lines()
         .map(str::trim)
         .filter(|l| !l.is_empty())
         .collect::<Vec<_>>()
-        .join("; ")
+        .join("; ");
+    let mut out = String::new();
+    let mut rest = joined.as_str();
+    while let Some(open) = rest.find(['`', '"']) {
+        let quote = rest[open..].chars().next().unwrap_or('`');
+        out.push_str(&rest[..=open]);
+        let after = &rest[open + 1..];
+        match after.find(quote) {
+            Some(close) => {
+                out.push_str(&echo(&after[..close]));
+                out.push(quote);
+                rest = &after[close + 1..];
+            }
+            None => {
+                out.push_str(&echo(after));
+                rest = "";
+            }
+        }
+    }
+    out.push_str(rest);
+    if out.chars().count() > 180 {
+        let head: String = out.chars().take(170).collect();
+        return format!("{head}...");
+    }
+    out
 }
 
 #[cfg(test)]

@@ -1187,3 +1187,121 @@ fn oversized_scene_and_mesh_files_are_refused_before_reading() {
         .unwrap();
     expect_read_refused(&dir, "mesh.toml", "body.mesh: ", "more than the limit");
 }
+
+#[test]
+fn a_value_missing_at_the_end_of_the_file_has_a_message() {
+    // Issue 12: the line was `empty_value.toml:1:5: ` and nothing after.
+    expect_short_rejection(
+        "empty_value",
+        "a = ",
+        &["--method", "exact"],
+        "scene.toml:1:5: ",
+        "the file ends where a value was expected",
+    );
+}
+
+#[test]
+fn a_subnormal_tolerance_blames_tol_not_atol() {
+    let s = scene(BODY, INITIAL, RUN);
+    expect_short_rejection(
+        "subnormal_tol",
+        &s,
+        &["--method", "dopri", "--tol", "5e-324"],
+        "--tol: ",
+        "between 1e-14 and 1, got 5e-324",
+    );
+}
+
+#[test]
+fn negative_infinite_and_exponent_values_reach_our_own_check() {
+    // Issue 12: clap answered "unexpected argument '-i' found".
+    let s = scene(BODY, INITIAL, RUN);
+    expect_short_rejection(
+        "minus_inf_dt",
+        &s,
+        &["--method", "rk4", "--dt", "-inf"],
+        "--dt: ",
+        "positive and finite, got -inf",
+    );
+    expect_short_rejection(
+        "negative_exponent_tol",
+        &s,
+        &["--method", "dopri", "--tol", "-1e-6"],
+        "--tol: ",
+        "positive and finite, got -1e-6",
+    );
+}
+
+#[test]
+fn closed_form_on_a_box_or_mesh_names_what_the_scene_wrote() {
+    let boxed = scene(
+        "[body]\nshape = { kind = \"box\", mass = 2.0, size = [1, 2, 3] }\n",
+        INITIAL,
+        RUN,
+    );
+    expect_short_rejection(
+        "closed_form_box",
+        &boxed,
+        &["--method", "closed-form"],
+        "body.shape: ",
+        "symmetric",
+    );
+    let brick = CUBE_OBJ.replace("v 1 1 1", "v 1 1 2");
+    let meshed = scene("[body]\nmesh = \"brick.obj\"\ndensity = 1\n", INITIAL, RUN);
+    expect_rejected_in(
+        "closed_form_mesh",
+        &[("scene.toml", &meshed), ("brick.obj", &brick)],
+        &["--method", "closed-form"],
+        "body.mesh: ",
+        "symmetric",
+    );
+}
+
+#[test]
+fn long_values_are_echoed_cut() {
+    let long = "a".repeat(100_000);
+    let s = scene(
+        &format!("[body]\nshape = {{ kind = \"{long}\", mass = 2.0, size = [1, 2, 3] }}\n"),
+        INITIAL,
+        RUN,
+    );
+    expect_short_rejection(
+        "long_kind",
+        &s,
+        &["--method", "exact"],
+        "body.shape.kind: ",
+        "(100000 characters)",
+    );
+    let s = scene(&format!("[body]\nmoments = \"{long}\"\n"), INITIAL, RUN);
+    expect_short_rejection(
+        "long_string",
+        &s,
+        &["--method", "exact"],
+        "body.moments: ",
+        "(100000 characters)",
+    );
+    let s = scene(
+        &format!("[body]\nmoments = [1, 2, 2.5]\n{long} = 1\n"),
+        INITIAL,
+        RUN,
+    );
+    expect_short_rejection(
+        "long_key",
+        &s,
+        &["--method", "exact"],
+        "body.aaaa",
+        "unknown field",
+    );
+    let s = scene(
+        &format!("[body]\nmesh = \"{long}.obj\"\ndensity = 1\n"),
+        INITIAL,
+        RUN,
+    );
+    expect_short_rejection(
+        "long_mesh_path",
+        &s,
+        &["--method", "exact"],
+        "body.mesh: ",
+        "characters)",
+    );
+}

@@ -34,16 +34,17 @@ pub struct SimulateArgs {
     #[arg(long, value_enum)]
     pub method: Method,
     /// The fixed step size, for fixed-step methods.
-    // Negative numbers must reach our own check (with its message), not be taken for flags.
+    // Negative numbers (`-1e-6`, `-inf`) must reach our own check (with its message), not
+    // be taken for flags: clap's negative-number test misses exponents and `inf`.
     #[arg(
         long,
         value_name = "DT",
-        allow_negative_numbers = true,
+        allow_hyphen_values = true,
         conflicts_with = "tol"
     )]
     pub dt: Option<f64>,
-    /// The error tolerance, for adaptive methods.
-    #[arg(long, value_name = "TOL", allow_negative_numbers = true)]
+    /// The relative error tolerance, for adaptive methods: between 1e-14 and 1.
+    #[arg(long, value_name = "TOL", allow_hyphen_values = true)]
     pub tol: Option<f64>,
     /// Write the CSV to this regular file instead of standard output, only on success, by
     /// temporary file and rename; a symbolic link is followed and its target replaced; a

@@ -128,7 +128,10 @@ pub fn step_control(method: Method, dt: Option<f64>, tol: Option<f64>) -> Result
         if !(dt.is_finite() && dt > 0.0) {
             return Err(Error::invalid(
                 "--dt",
-                format!("the step size must be positive and finite, got {dt}"),
+                format!(
+                    "the step size must be positive and finite, got {}",
+                    crate::error::num(dt)
+                ),
             ));
         }
     }
@@ -136,7 +139,21 @@ pub fn step_control(method: Method, dt: Option<f64>, tol: Option<f64>) -> Result
         if !(tol.is_finite() && tol > 0.0) {
             return Err(Error::invalid(
                 "--tol",
-                format!("the tolerance must be positive and finite, got {tol}"),
+                format!(
+                    "the tolerance must be positive and finite, got {}",
+                    crate::error::num(tol)
+                ),
+            ));
+        }
+        // Below about 1e-14 the rounding error of a step exceeds the tolerance and the
+        // step size shrinks without end; above 1 a "relative" tolerance means nothing.
+        if !(1e-14..=1.0).contains(&tol) {
+            return Err(Error::invalid(
+                "--tol",
+                format!(
+                    "the tolerance must be between 1e-14 and 1, got {}",
+                    crate::error::num(tol)
+                ),
             ));
         }
     }

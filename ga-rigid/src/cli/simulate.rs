@@ -186,8 +186,19 @@ pub fn run_simulation_with_progress(
     let times = scene.run.times();
     let mut rows = Vec::with_capacity(times.len());
     let mut t = 0.0;
+    // The dynamics name the principal moments `body.moments`; a scene may have written
+    // its body as a shape, points or a mesh, and the message should name what it wrote.
+    let body_field = |e: Error| {
+        if e.field() == Some("body.moments") {
+            e.at(scene.body_field())
+        } else {
+            e
+        }
+    };
     for &sample in &times {
-        state = integrator.advance(&body, t, state, sample - t)?;
+        state = integrator
+            .advance(&body, t, state, sample - t)
+            .map_err(body_field)?;
         t = sample;
         rows.push(finite_row(method, row(&body, principal, t, &state))?);
         progress(t);
