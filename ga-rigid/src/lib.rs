@@ -9,4 +9,5 @@ mod input;
 pub mod integrators;
 pub mod report;
 pub mod scene;
+pub mod simulation;
 pub mod special;

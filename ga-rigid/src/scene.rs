@@ -78,6 +78,30 @@ pub enum BodySpec {
     },
 }
 
+impl BodySpec {
+    /// The inertia the description gives, about the centre of mass; errors name the
+    /// scene field (`body.moments`, `body.shape.mass`, `body.points[2]`, `body.mesh`).
+    /// Moments must satisfy the triangle inequality (for those that do not, build the
+    /// inertia with [`Inertia::from_principal_unphysical`] and use
+    /// [`Scene::with_inertia`]); a mesh path is read as given.
+    pub fn inertia(&self) -> Result<Inertia, Error> {
+        match self {
+            BodySpec::Moments(moments) => {
+                Inertia::from_principal(*moments).map_err(|e| e.within("body"))
+            }
+            BodySpec::Shape(solid) => solid.inertia().map_err(|e| e.within("body.shape")),
+            BodySpec::Points(points) => {
+                Inertia::from_point_masses(points).map_err(|e| e.within("body"))
+            }
+            BodySpec::Mesh { path, density } => {
+                positive("body.density", "density", *density)?;
+                let mesh = Mesh::read_obj(path).map_err(|e| e.within("body"))?;
+                Inertia::from_mesh(&mesh, *density).map_err(|e| e.within("body"))
+            }
+        }
+    }
+}
+
 /// The `[initial]` section.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Initial {
@@ -192,11 +216,11 @@ impl Scene {
             .map_err(|e: toml::de::Error| field_error(&e))?;
 
         let (body, inertia) = load_body(file.body, path)?;
-
-        let rotor = normalize_rotor("initial.rotor", file.initial.rotor)?;
-        let omega = finite3("initial.omega", "angular velocity", file.initial.omega)?;
-
-        let t_end = positive("run.t_end", "t_end", file.run.t_end)?;
+        let [s, e12, e13, e23] = file.initial.rotor;
+        let initial = Initial {
+            rotor: Rotor::new(s, e12, e13, e23),
+            omega: file.initial.omega,
+        };
         let samples = file.run.samples;
         if samples < 2 {
             return Err(Error::invalid(
@@ -204,20 +228,78 @@ impl Scene {
                 format!("samples must be at least 2, got {samples}"),
             ));
         }
-        if samples > MAX_SAMPLES {
+        let run = Run {
+            t_end: file.run.t_end,
+            // Out of range only above usize::MAX, which `with_inertia` then refuses.
+            samples: usize::try_from(samples).unwrap_or(usize::MAX),
+        };
+        let torque = file.torque.map(|t| Gravity {
+            g: Vector::new(t.g[0], t.g[1], t.g[2]),
+            com_offset: Vector::new(t.com_offset[0], t.com_offset[1], t.com_offset[2]),
+        });
+        Scene::with_inertia(body, inertia, initial, run, torque)
+    }
+
+    /// A scene built in code rather than read from TOML: the inertia is computed from
+    /// `body` (see [`BodySpec::inertia`]), and every part checked as the loader checks a
+    /// file, with errors naming the scene field (`initial.omega`, `run.samples`, ...).
+    ///
+    /// ```
+    /// use ga_core::f64::g3::Rotor;
+    /// use ga_rigid::scene::{BodySpec, Initial, Run, Scene};
+    ///
+    /// let scene = Scene::new(
+    ///     BodySpec::Moments([2.0, 2.0, 1.0]),
+    ///     Initial { rotor: Rotor::ONE, omega: [0.3, 0.0, 5.0] },
+    ///     Run { t_end: 10.0, samples: 101 },
+    ///     None,
+    /// )?;
+    /// assert_eq!(scene.inertia.moments(), [2.0, 2.0, 1.0]);
+    /// # Ok::<(), ga_rigid::error::Error>(())
+    /// ```
+    pub fn new(
+        body: BodySpec,
+        initial: Initial,
+        run: Run,
+        torque: Option<Gravity>,
+    ) -> Result<Scene, Error> {
+        let inertia = body.inertia()?;
+        Scene::with_inertia(body, inertia, initial, run, torque)
+    }
+
+    /// [`Scene::new`] with an inertia computed by the caller (for instance
+    /// [`Inertia::from_principal_unphysical`] for the literature's test bodies); `body`
+    /// only records how it was described. The rotor is normalised.
+    pub fn with_inertia(
+        body: BodySpec,
+        inertia: Inertia,
+        initial: Initial,
+        run: Run,
+        torque: Option<Gravity>,
+    ) -> Result<Scene, Error> {
+        let rotor = normalize_rotor("initial.rotor", initial.rotor.to_array())?;
+        let omega = finite3("initial.omega", "angular velocity", initial.omega)?;
+
+        let t_end = positive("run.t_end", "t_end", run.t_end)?;
+        let samples = run.samples;
+        if samples < 2 {
+            return Err(Error::invalid(
+                "run.samples",
+                format!("samples must be at least 2, got {samples}"),
+            ));
+        }
+        if samples as u64 > MAX_SAMPLES as u64 {
             return Err(Error::invalid(
                 "run.samples",
                 format!("samples must be at most {MAX_SAMPLES}, got {samples}"),
             ));
         }
-        // In range 2..=MAX_SAMPLES, so the conversion cannot fail.
-        let samples = usize::try_from(samples).unwrap_or(2);
 
-        let torque = match file.torque {
+        let torque = match torque {
             None => None,
             Some(t) => {
-                let [gx, gy, gz] = finite3("torque.g", "gravity", t.g)?;
-                let [cx, cy, cz] = finite3("torque.com_offset", "offset", t.com_offset)?;
+                let [gx, gy, gz] = finite3("torque.g", "gravity", t.g.to_array())?;
+                let [cx, cy, cz] = finite3("torque.com_offset", "offset", t.com_offset.to_array())?;
                 Some(Gravity {
                     g: Vector::new(gx, gy, gz),
                     com_offset: Vector::new(cx, cy, cz),

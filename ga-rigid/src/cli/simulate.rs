@@ -15,6 +15,7 @@ use crate::integrators::{
     ClosedForm, DormandPrince, ExactFreeBody, ImplicitMidpoint, Integrator, LieRk4, Rk4, Splitting,
 };
 use crate::scene::Scene;
+use crate::simulation::{Sample, Simulation};
 
 /// The absolute tolerance paired with `--tol` (the relative one) for Dormand-Prince.
 const DOPRI_ABSOLUTE_TOLERANCE_RATIO: f64 = 1e-3;
@@ -178,14 +179,11 @@ pub fn run_simulation_with_progress(
 ) -> Result<Vec<Row>, Error> {
     let body = principal_body(scene)?;
     let principal = scene.inertia.rotor();
-    let mut integrator = integrator_for(method, step)?;
-    let mut state = State {
+    let integrator = integrator_for(method, step)?;
+    let state = State {
         rotor: scene.initial.rotor * principal,
         omega: principal.reverse().sandwich(scene.initial.omega_bivector()),
     };
-    let times = scene.run.times();
-    let mut rows = Vec::with_capacity(times.len());
-    let mut t = 0.0;
     // The dynamics name the principal moments `body.moments`; a scene may have written
     // its body as a shape, points or a mesh, and the message should name what it wrote.
     let body_field = |e: Error| {
@@ -195,13 +193,12 @@ pub fn run_simulation_with_progress(
             e
         }
     };
-    for &sample in &times {
-        state = integrator
-            .advance(&body, t, state, sample - t)
-            .map_err(body_field)?;
-        t = sample;
-        rows.push(finite_row(method, row(&body, principal, t, &state))?);
-        progress(t);
+    let mut simulation = Simulation::new(body, state, integrator);
+    let mut rows = Vec::with_capacity(scene.run.samples);
+    for sample in simulation.samples(scene.run.t_end, scene.run.samples) {
+        let sample = sample.map_err(body_field)?;
+        rows.push(finite_row(method, row(principal, &sample))?);
+        progress(sample.t);
     }
     Ok(rows)
 }
@@ -224,14 +221,15 @@ fn finite_row(method: Method, row: Row) -> Result<Row, Error> {
     }
 }
 
-fn row(body: &RigidBody, principal: Rotor, t: f64, state: &State) -> Row {
-    let momentum = body.space_momentum(state).undual();
+/// A sample of the principal-frame simulation as a row in the scene's frame.
+fn row(principal: Rotor, sample: &Sample) -> Row {
+    let state = &sample.state;
     Row {
-        t,
+        t: sample.t,
         rotor: state.rotor * principal.reverse(),
         omega: omega_to_vector(principal.sandwich(state.omega)),
-        energy: body.total_energy(t, state),
-        momentum: momentum.to_array(),
+        energy: sample.energy,
+        momentum: sample.momentum.undual().to_array(),
     }
 }
 
