@@ -1305,3 +1305,48 @@ fn long_values_are_echoed_cut() {
         "characters)",
     );
 }
+
+#[test]
+fn csv_numbers_are_plain_decimal_without_exponent_shorthand() {
+    // Issue 9: `0e0`, `-0e0` and `1e1` were written for 0, -0 and 10.
+    let dir = test_dir("csv_format");
+    write(
+        &dir,
+        "scene.toml",
+        &scene(
+            BODY,
+            "[initial]\nrotor = [1, 0, 0, 0]\nomega = [0, 0, -1]\n",
+            RUN,
+        ),
+    );
+    let out = run(&dir, &["simulate", "scene.toml", "--method", "exact"]);
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8(out.stdout).unwrap();
+    let mut lines = text.lines().filter(|l| !l.starts_with('#'));
+    assert_eq!(
+        lines.next(),
+        Some("t,r_s,r_e12,r_e13,r_e23,w1,w2,w3,energy,l1,l2,l3")
+    );
+    let rows: Vec<&str> = lines.collect();
+    assert_eq!(rows.len(), 11);
+    for row in &rows {
+        for value in row.split(',') {
+            assert!(!value.contains('e'), "{value} in {row}");
+            assert!(!value.starts_with("-0.000000"), "{value} in {row}");
+            let digits = value.chars().filter(char::is_ascii_digit).count();
+            let leading = value
+                .trim_start_matches('-')
+                .chars()
+                .take_while(|c| *c == '0' || *c == '.')
+                .filter(|c| *c == '0')
+                .count();
+            let significant = if value.trim_start_matches(['-', '0', '.']).is_empty() {
+                digits
+            } else {
+                digits - leading
+            };
+            assert_eq!(significant, 17, "{value} in {row}");
+        }
+    }
+    assert!(rows[10].starts_with("10.000000000000000,"), "{}", rows[10]);
+}
