@@ -607,13 +607,6 @@ fn dt_and_tol_are_exclusive() {
 fn fixed_step_method_needs_dt() {
     let s = scene(BODY, INITIAL, RUN);
     expect_rejected_with(
-        "rk4_without_dt",
-        &s,
-        &["--method", "rk4"],
-        "--dt: ",
-        "give --dt",
-    );
-    expect_rejected_with(
         "rk4_with_tol",
         &s,
         &["--method", "lie-rk4", "--tol", "1e-9"],
@@ -625,13 +618,6 @@ fn fixed_step_method_needs_dt() {
 #[test]
 fn adaptive_method_needs_tol() {
     let s = scene(BODY, INITIAL, RUN);
-    expect_rejected_with(
-        "dopri_without_tol",
-        &s,
-        &["--method", "dopri"],
-        "--tol: ",
-        "give --tol",
-    );
     expect_rejected_with(
         "dopri_with_dt",
         &s,
@@ -1349,4 +1335,96 @@ fn csv_numbers_are_plain_decimal_without_exponent_shorthand() {
         }
     }
     assert!(rows[10].starts_with("10.000000000000000,"), "{}", rows[10]);
+}
+
+/// The sidecar JSON of `simulate ... --out out.csv`, as (key, raw value) pairs.
+fn sidecar(dir: &Path) -> Vec<(String, String)> {
+    let text = std::fs::read_to_string(dir.join("out.csv.json")).unwrap();
+    text.lines()
+        .filter_map(|l| l.trim().trim_end_matches(',').split_once(": "))
+        .map(|(k, v)| (k.trim_matches('"').to_string(), v.to_string()))
+        .collect()
+}
+
+fn value<'a>(pairs: &'a [(String, String)], key: &str) -> &'a str {
+    pairs
+        .iter()
+        .find(|(k, _)| k == key)
+        .map(|(_, v)| v.as_str())
+        .unwrap_or_else(|| panic!("no {key} in {pairs:?}"))
+}
+
+#[test]
+fn default_dt_is_a_two_hundredth_of_the_fastest_period_and_recorded() {
+    let dir = test_dir("default_dt");
+    // Moments (1, 2, 2.5), w = (0, 0, 2): |w|max = |L| / i_min = 2.5 * 2 / 1 = 5.
+    write(
+        &dir,
+        "scene.toml",
+        &scene(
+            BODY,
+            "[initial]\nrotor = [1, 0, 0, 0]\nomega = [0, 0, 2]\n",
+            RUN,
+        ),
+    );
+    let out = run(
+        &dir,
+        &[
+            "simulate",
+            "scene.toml",
+            "--method",
+            "rk4",
+            "--out",
+            "out.csv",
+        ],
+    );
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(out.stderr.is_empty());
+    let record = sidecar(&dir);
+    let dt: f64 = value(&record, "dt").parse().unwrap();
+    let expected = 2.0 * std::f64::consts::PI / 5.0 / 200.0;
+    assert!((dt - expected).abs() < 1e-15, "{dt} vs {expected}");
+    assert_eq!(value(&record, "method"), "\"rk4\"");
+    assert_eq!(value(&record, "scene"), "\"scene.toml\"");
+    assert_eq!(value(&record, "csv"), "\"out.csv\"");
+    assert_eq!(value(&record, "tol"), "null");
+    assert!(value(&record, "step_source").contains("period"));
+
+    // On standard output the CSV stays alone; the choice is a note on standard error.
+    let out = run(&dir, &["simulate", "scene.toml", "--method", "dopri"]);
+    assert_eq!(out.status.code(), Some(0));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(stderr.starts_with("note: --tol 1e-9"), "{stderr}");
+    assert!(String::from_utf8_lossy(&out.stdout).starts_with("t,r_s,"));
+}
+
+#[test]
+fn given_step_and_method_are_recorded_beside_the_csv() {
+    let dir = test_dir("sidecar_given");
+    write(&dir, "scene.toml", &scene(BODY, INITIAL, RUN));
+    let out = run(
+        &dir,
+        &[
+            "simulate",
+            "scene.toml",
+            "--method",
+            "splitting",
+            "--dt",
+            "0.01",
+            "--out",
+            "out.csv",
+        ],
+    );
+    assert_eq!(out.status.code(), Some(0));
+    let record = sidecar(&dir);
+    assert_eq!(value(&record, "dt"), "0.01");
+    assert_eq!(value(&record, "method"), "\"splitting\"");
+    assert_eq!(value(&record, "step_source"), "\"given\"");
+    assert_eq!(value(&record, "samples"), "11");
 }

@@ -33,7 +33,8 @@ pub struct SimulateArgs {
     /// The integration method.
     #[arg(long, value_enum)]
     pub method: Method,
-    /// The fixed step size, for fixed-step methods.
+    /// The fixed step size, for fixed-step methods; by default 1/200 of the period
+    /// 2 pi / |w|max of the fastest rotation the scene's body can reach.
     // Negative numbers (`-1e-6`, `-inf`) must reach our own check (with its message), not
     // be taken for flags: clap's negative-number test misses exponents and `inf`.
     #[arg(
@@ -43,7 +44,8 @@ pub struct SimulateArgs {
         conflicts_with = "tol"
     )]
     pub dt: Option<f64>,
-    /// The relative error tolerance, for adaptive methods: between 1e-14 and 1.
+    /// The relative error tolerance, for adaptive methods: between 1e-14 and 1; by
+    /// default 1e-9.
     #[arg(long, value_name = "TOL", allow_hyphen_values = true)]
     pub tol: Option<f64>,
     /// Write the CSV to this regular file instead of standard output, only on success, by

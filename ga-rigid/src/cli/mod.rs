@@ -100,18 +100,50 @@ fn clap_exit(e: &clap::Error) -> u8 {
 /// `simulate`: validate the step control and the output path, load the scene, run the
 /// method, write the CSV.
 fn simulate(args: &SimulateArgs) -> Result<(), Error> {
-    let step = step_control(args.method, args.dt, args.tol)?;
-    if let Some(out) = &args.out {
-        check_output_path("--out", out)?;
+    // Without --dt or --tol the step control comes from the scene (see `default_step`).
+    let given = match (args.method.step_kind(), args.dt, args.tol) {
+        (StepKind::Fixed | StepKind::Adaptive, None, None) => None,
+        _ => Some(step_control(args.method, args.dt, args.tol)?),
+    };
+    let sidecar = args.out.as_deref().map(simulate::sidecar_path);
+    for path in [args.out.as_deref(), sidecar.as_deref()]
+        .into_iter()
+        .flatten()
+    {
+        check_output_path("--out", path)?;
     }
     let scene = Scene::load(&args.scene)?;
+    let (step, source) = match given {
+        Some(step) => (step, simulate::StepSource::Given),
+        None => simulate::default_step(&scene, args.method),
+    };
     let work = simulate::check_work(&scene, step, args.max_steps, args.max_output_mb)?;
     let mut progress = progress::Progress::new(scene.run.t_end, work.steps);
     let rows = simulate::run_simulation_with_progress(&scene, args.method, step, &mut |t| {
         progress.update(t);
     });
     progress.finish();
-    emit("--out", args.out.as_deref(), &to_csv(&rows?))
+    let csv = to_csv(&rows?);
+    let record = simulate::Record {
+        scene: &args.scene,
+        method: args.method,
+        step,
+        source,
+        run: scene.run,
+    };
+    match (&args.out, &sidecar) {
+        (Some(out), Some(sidecar)) => {
+            emit("--out", Some(sidecar), &record.to_json(out))?;
+            emit("--out", Some(out), &csv)
+        }
+        _ => {
+            if let simulate::StepSource::Default(_) = source {
+                // Standard output carries only the CSV; say what was chosen on stderr.
+                eprintln!("note: {}", record.describe_step());
+            }
+            emit("--out", None, &csv)
+        }
+    }
 }
 
 /// Check `--dt` and `--tol` and match them to the method: fixed-step methods need

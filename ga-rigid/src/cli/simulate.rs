@@ -7,7 +7,7 @@
 
 use ga_core::f64::g3::{Rotor, Sandwich};
 
-use super::args::{Method, Step};
+use super::args::{Method, Step, StepKind};
 use crate::csv::Row;
 use crate::dynamics::{omega_to_vector, Gravity, RigidBody, State};
 use crate::error::Error;
@@ -163,6 +163,134 @@ pub fn check_work(
         ));
     }
     Ok(work)
+}
+
+/// Fixed steps per period of the fastest rotation when `--dt` is not given: RK4's error
+/// per period is then about (2 pi / 200)^4 ~ 1e-6 relative, the splitting's a few 1e-4.
+pub const DEFAULT_STEPS_PER_PERIOD: f64 = 200.0;
+
+/// The relative tolerance of `dopri` when `--tol` is not given.
+pub const DEFAULT_TOLERANCE: f64 = 1e-9;
+
+/// Where the step control of a run came from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum StepSource {
+    /// `--dt` or `--tol` on the command line (or no step control at all).
+    Given,
+    /// Chosen from the scene; the text says how.
+    Default(&'static str),
+}
+
+/// The step control when none is given: `dt = period / 200` with the period `2 pi / w`
+/// of the fastest rotation the body can reach ([`angular_speed_bound`]), or `t_end / 200`
+/// for a body at rest; [`DEFAULT_TOLERANCE`] for `dopri`.
+#[must_use]
+pub fn default_step(scene: &Scene, method: Method) -> (Step, StepSource) {
+    match method.step_kind() {
+        StepKind::Fixed => {
+            let speed = angular_speed_bound(scene);
+            let period = std::f64::consts::TAU / speed;
+            if period.is_finite() && period > 0.0 {
+                (
+                    Step::Fixed(period / DEFAULT_STEPS_PER_PERIOD),
+                    StepSource::Default("the period 2 pi / |w|max over 200"),
+                )
+            } else {
+                (
+                    Step::Fixed(scene.run.t_end / DEFAULT_STEPS_PER_PERIOD),
+                    StepSource::Default("t_end / 200 for a body at rest"),
+                )
+            }
+        }
+        StepKind::Adaptive => (
+            Step::Tolerance(DEFAULT_TOLERANCE),
+            StepSource::Default("the default relative tolerance"),
+        ),
+        StepKind::AtSamples => (Step::AtSamples, StepSource::Given),
+    }
+}
+
+/// The sidecar record of a CSV written with `--out FILE`: `FILE.json`.
+#[must_use]
+pub fn sidecar_path(out: &std::path::Path) -> std::path::PathBuf {
+    let mut name = out.as_os_str().to_os_string();
+    name.push(".json");
+    std::path::PathBuf::from(name)
+}
+
+/// What produced a CSV: the scene file, the method, the step control and where it came
+/// from, the run.
+#[derive(Clone, Copy, Debug)]
+pub struct Record<'a> {
+    /// The scene file as given on the command line.
+    pub scene: &'a std::path::Path,
+    /// The method.
+    pub method: Method,
+    /// The step control used.
+    pub step: Step,
+    /// Where the step control came from.
+    pub source: StepSource,
+    /// The run length and sampling.
+    pub run: crate::scene::Run,
+}
+
+impl Record<'_> {
+    /// One sentence on the step control, for the note on standard error.
+    #[must_use]
+    pub fn describe_step(&self) -> String {
+        let reason = match self.source {
+            StepSource::Given => "as given",
+            StepSource::Default(reason) => reason,
+        };
+        match self.step {
+            Step::Fixed(h) => format!("--dt {} ({reason})", crate::error::num(h)),
+            Step::Tolerance(tol) => format!("--tol {} ({reason})", crate::error::num(tol)),
+            Step::AtSamples => "no step: the solution is evaluated at the samples".to_string(),
+        }
+    }
+
+    /// The record as a JSON object, `csv` naming the file it describes.
+    #[must_use]
+    pub fn to_json(self, csv: &std::path::Path) -> String {
+        let (dt, tol) = match self.step {
+            Step::Fixed(h) => (format!("{h:?}"), "null".to_string()),
+            Step::Tolerance(tol) => ("null".to_string(), format!("{tol:?}")),
+            Step::AtSamples => ("null".to_string(), "null".to_string()),
+        };
+        let source = match self.source {
+            StepSource::Given => "given",
+            StepSource::Default(reason) => reason,
+        };
+        format!(
+            "{{\n  \"csv\": {},\n  \"scene\": {},\n  \"method\": {},\n  \"dt\": {dt},\n  \
+             \"tol\": {tol},\n  \"step_source\": {},\n  \"t_end\": {:?},\n  \"samples\": {},\n  \
+             \"ga_rigid_version\": {}\n}}\n",
+            json_string(&csv.display().to_string()),
+            json_string(&self.scene.display().to_string()),
+            json_string(self.method.name()),
+            json_string(source),
+            self.run.t_end,
+            self.run.samples,
+            json_string(env!("CARGO_PKG_VERSION")),
+        )
+    }
+}
+
+/// A JSON string literal (RFC 8259, section 7).
+fn json_string(text: &str) -> String {
+    let mut out = String::with_capacity(text.len() + 2);
+    out.push('"');
+    for c in text.chars() {
+        match c {
+            '"' => out.push_str("\\\""),
+            '\\' => out.push_str("\\\\"),
+            '\n' => out.push_str("\\n"),
+            c if (c as u32) < 0x20 => out.push_str(&format!("\\u{:04x}", c as u32)),
+            c => out.push(c),
+        }
+    }
+    out.push('"');
+    out
 }
 
 /// Integrate `scene` with `method` and return one row per sample time.
