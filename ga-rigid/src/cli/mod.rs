@@ -89,12 +89,30 @@ fn clap_exit(e: &clap::Error) -> u8 {
             let line = if first.is_empty() {
                 "error: invalid arguments".to_string()
             } else {
-                first.join(" ")
+                cut_quoted(&first.join(" "))
             };
             eprintln!("{line}");
             2
         }
     }
+}
+
+/// clap's message with each '...'-quoted piece of the user's text cut by
+/// [`crate::error::echo`], so that a long argument does not make a long line.
+fn cut_quoted(line: &str) -> String {
+    let mut out = String::new();
+    for (k, piece) in line.split('\'').enumerate() {
+        if k > 0 {
+            out.push('\'');
+        }
+        // Odd pieces are inside quotes.
+        if k % 2 == 1 {
+            out.push_str(&crate::error::echo(piece));
+        } else {
+            out.push_str(piece);
+        }
+    }
+    out
 }
 
 /// `simulate`: validate the step control and the output path, load the scene, run the
