@@ -6,7 +6,7 @@
 //! buffered and written only when the command has succeeded; `--out FILE` is written to
 //! a temporary file in the same directory and renamed into place, and only ever to a
 //! regular file (a symbolic link is followed to one; a directory, FIFO, socket or device
-//! is refused with status 2): see [`output`].
+//! is refused with status 2; see the README).
 
 mod args;
 mod inertia_cmd;
