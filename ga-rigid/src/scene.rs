@@ -61,6 +61,8 @@ pub struct Scene {
 }
 
 /// The `[body]` section: one of the four ways to describe a body.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 #[derive(Clone, Debug, PartialEq)]
 pub enum BodySpec {
     /// `moments = [i1, i2, i3]`: principal moments about e1, e2, e3 of the body frame.
@@ -103,9 +105,11 @@ impl BodySpec {
 }
 
 /// The `[initial]` section.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Initial {
     /// The initial attitude (body to space: `y = R x ~R`), normalised.
+    #[cfg_attr(feature = "serde", serde(with = "serde_arrays::rotor"))]
     pub rotor: Rotor,
     /// The initial body angular velocity `[w1, w2, w3]`.
     pub omega: [f64; 3],
@@ -120,6 +124,7 @@ impl Initial {
 }
 
 /// The `[run]` section.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Run {
     /// The end time (positive); the run starts at t = 0.
@@ -148,12 +153,51 @@ impl Run {
 }
 
 /// The `[torque]` section: uniform gravity acting at the centre of mass.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Gravity {
     /// The gravitational acceleration in the space frame.
+    #[cfg_attr(feature = "serde", serde(with = "serde_arrays::vector"))]
     pub g: Vector,
     /// The centre of mass relative to the fixed point, in the body frame.
+    #[cfg_attr(feature = "serde", serde(with = "serde_arrays::vector"))]
     pub com_offset: Vector,
+}
+
+/// The scene's parts as plain arrays for serde: ga-core's types have no serde support,
+/// and arrays in the TOML file's own component order (`[s, e12, e13, e23]`, `[x, y, z]`)
+/// read the same in any format.
+#[cfg(feature = "serde")]
+mod serde_arrays {
+    /// A rotor as `[s, e12, e13, e23]`.
+    pub mod rotor {
+        use ga_core::f64::g3::Rotor;
+        use serde::{Deserialize, Deserializer, Serialize, Serializer};
+
+        pub fn serialize<S: Serializer>(r: &Rotor, s: S) -> Result<S::Ok, S::Error> {
+            r.to_array().serialize(s)
+        }
+
+        pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Rotor, D::Error> {
+            let [s, e12, e13, e23] = <[f64; 4]>::deserialize(d)?;
+            Ok(Rotor::new(s, e12, e13, e23))
+        }
+    }
+
+    /// A vector as `[x, y, z]`.
+    pub mod vector {
+        use ga_core::f64::g3::Vector;
+        use serde::{Deserialize, Deserializer, Serialize, Serializer};
+
+        pub fn serialize<S: Serializer>(v: &Vector, s: S) -> Result<S::Ok, S::Error> {
+            v.to_array().serialize(s)
+        }
+
+        pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Vector, D::Error> {
+            let [x, y, z] = <[f64; 3]>::deserialize(d)?;
+            Ok(Vector::new(x, y, z))
+        }
+    }
 }
 
 #[derive(Deserialize)]

@@ -177,3 +177,46 @@ fn a_scene_built_in_code_is_checked_like_a_file() {
     });
     assert!(Scene::new(solid, initial, run, None).is_ok());
 }
+
+#[cfg(feature = "serde")]
+#[test]
+fn scene_parts_survive_a_serde_round_trip_and_build_the_same_scene() {
+    #[derive(serde::Serialize, serde::Deserialize, PartialEq, Debug)]
+    struct Parts {
+        body: BodySpec,
+        initial: Initial,
+        run: Run,
+        torque: Option<ga_rigid::scene::Gravity>,
+    }
+    let parts = Parts {
+        body: BodySpec::Shape(Solid::Box {
+            mass: 2.0,
+            size: [1.0, 2.0, 3.0],
+        }),
+        initial: Initial {
+            rotor: Rotor::new(0.5, 0.5, -0.5, 0.5),
+            omega: [0.1, 1.0, 0.2],
+        },
+        run: Run {
+            t_end: 10.0,
+            samples: 11,
+        },
+        torque: Some(ga_rigid::scene::Gravity {
+            g: ga_core::f64::g3::Vector::new(0.0, 0.0, -9.81),
+            com_offset: ga_core::f64::g3::Vector::new(0.0, 0.0, 0.1),
+        }),
+    };
+    let text = toml::to_string(&parts).unwrap();
+    assert!(text.contains("rotor = [0.5, 0.5, -0.5, 0.5]"), "{text}");
+    let back: Parts = toml::from_str(&text).unwrap();
+    assert_eq!(back, parts);
+    let scene = Scene::new(back.body, back.initial, back.run, back.torque).unwrap();
+    assert_eq!(scene.inertia.mass(), Some(2.0));
+    let points = BodySpec::Points(vec![(1.0, [1.0, 0.0, 0.0]), (2.0, [0.0, 1.0, 0.0])]);
+    let text = toml::to_string(&Parts {
+        body: points.clone(),
+        ..parts
+    })
+    .unwrap();
+    assert_eq!(toml::from_str::<Parts>(&text).unwrap().body, points);
+}
