@@ -152,7 +152,10 @@ fn simulate(args: &SimulateArgs) -> Result<(), Error> {
     match (&args.out, &sidecar) {
         (Some(out), Some(sidecar)) => {
             emit("--out", Some(sidecar), &record.to_json(out))?;
-            emit("--out", Some(out), &csv)
+            // A record without its CSV would describe nothing.
+            emit("--out", Some(out), &csv).inspect_err(|_| {
+                let _ = std::fs::remove_file(sidecar);
+            })
         }
         _ => {
             if let simulate::StepSource::Default(_) = source {
