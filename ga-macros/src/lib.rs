@@ -64,3 +64,6 @@ mod snapshot_tests;
 
 #[cfg(test)]
 mod restriction_tests;
+
+#[cfg(test)]
+mod fuzz_tests;

@@ -1,10 +1,10 @@
 //! The CSV output of the `simulate` command.
 //!
-//! One header line, then one line per sample. Numbers are written with `{:e}`, Rust's
-//! shortest representation that parses back to the same `f64` (round-trip exact), in
-//! scientific notation so that tiny and huge values stay short.
-
-use std::fmt::Write as _;
+//! One header line, then one line per sample. Every number has 17 significant digits,
+//! enough to read back the very same `f64`, written in plain decimal (`0.10000000000000001`,
+//! `-2.5000000000000000`, `0.0000000000000000`) when its decimal exponent is between -5
+//! and 15, and in scientific notation (`1.2345678901234567e-7`) only outside that range.
+//! Negative zero is written as zero.
 
 use ga_core::f64::g3::*;
 
@@ -57,10 +57,48 @@ pub fn write_row(out: &mut String, row: &Row) {
         if k > 0 {
             out.push(',');
         }
-        // Writing to a String cannot fail.
-        let _ = write!(out, "{x:e}");
+        write_number(out, *x);
     }
     out.push('\n');
+}
+
+/// The number of significant digits of every number: the fewest that always give back
+/// the same `f64` when read.
+pub const SIGNIFICANT_DIGITS: usize = 17;
+
+/// Append one number in the format of the module documentation.
+pub fn write_number(out: &mut String, x: f64) {
+    // `-0` would read as a negative value to a person; it is the same number as `0`.
+    let x = if x == 0.0 { 0.0 } else { x };
+    let scientific = format!("{x:.*e}", SIGNIFICANT_DIGITS - 1);
+    let Some((mantissa, exponent)) = scientific.split_once('e') else {
+        // NaN and infinities have no exponent; rows are checked finite before writing.
+        out.push_str(&scientific);
+        return;
+    };
+    let exponent: i32 = exponent.parse().unwrap_or(0);
+    if !(-5..=15).contains(&exponent) {
+        out.push_str(&scientific);
+        return;
+    }
+    let (sign, mantissa) = match mantissa.strip_prefix('-') {
+        Some(m) => ("-", m),
+        None => ("", mantissa),
+    };
+    let digits: String = mantissa.chars().filter(char::is_ascii_digit).collect();
+    out.push_str(sign);
+    if exponent >= 0 {
+        let split = exponent as usize + 1;
+        out.push_str(&digits[..split]);
+        out.push('.');
+        out.push_str(&digits[split..]);
+    } else {
+        out.push_str("0.");
+        for _ in 1..-exponent {
+            out.push('0');
+        }
+        out.push_str(&digits);
+    }
 }
 
 /// The whole CSV document: the header and every row, each line ending in `\n`.
@@ -79,8 +117,29 @@ pub fn to_csv(rows: &[Row]) -> String {
 mod tests {
     use super::*;
 
+    fn number(x: f64) -> String {
+        let mut out = String::new();
+        write_number(&mut out, x);
+        out
+    }
+
     #[test]
-    fn numbers_round_trip_exactly() {
+    fn numbers_are_plain_decimal_with_17_significant_digits() {
+        assert_eq!(number(10.0), "10.000000000000000");
+        assert_eq!(number(0.0), "0.0000000000000000");
+        assert_eq!(number(-0.0), "0.0000000000000000");
+        assert_eq!(number(0.1), "0.10000000000000001");
+        assert_eq!(number(-2.5), "-2.5000000000000000");
+        assert_eq!(number(1.5e-5), "0.000015000000000000000");
+        assert_eq!(number(1234567.0), "1234567.0000000000");
+        assert_eq!(number(1e15), "1000000000000000.0");
+        assert_eq!(number(1e16), "1.0000000000000000e16");
+        assert_eq!(number(-(2f64.powi(-23))), "-1.1920928955078125e-7");
+        assert_eq!(number(f64::MIN_POSITIVE), "2.2250738585072014e-308");
+    }
+
+    #[test]
+    fn numbers_read_back_to_the_same_f64() {
         let row = Row {
             t: 0.1,
             rotor: Rotor::new(std::f64::consts::FRAC_1_SQRT_2, -1e-300, 0.0, -0.7),
@@ -99,6 +158,8 @@ mod tests {
             .collect();
         assert_eq!(parsed.len(), 12);
         for (a, b) in parsed.iter().zip(row.values()) {
+            // Bit for bit, except that negative zero is written as zero.
+            let b = if b == 0.0 { 0.0 } else { b };
             assert_eq!(a.to_bits(), b.to_bits());
         }
     }

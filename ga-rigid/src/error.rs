@@ -12,7 +12,7 @@ use std::path::PathBuf;
 #[derive(Debug, thiserror::Error)]
 pub enum Error {
     /// A number is NaN or infinite.
-    #[error("{field}: {what} must be finite, got {value}")]
+    #[error("{field}: {what} must be finite, got {}", num(*value))]
     NotFinite {
         /// The field or parameter at fault.
         field: String,
@@ -23,7 +23,7 @@ pub enum Error {
     },
 
     /// A number that must be strictly positive is zero or negative.
-    #[error("{field}: {what} must be positive, got {value}")]
+    #[error("{field}: {what} must be positive, got {}", num(*value))]
     NotPositive {
         /// The field or parameter at fault.
         field: String,
@@ -36,7 +36,7 @@ pub enum Error {
     /// Principal moments that no mass distribution can have: i_a + i_b < i_c.
     #[error(
         "{field}: moments must satisfy the triangle inequality i_a + i_b >= i_c, \
-         but {a} + {b} < {c}"
+         but {} + {} < {}", num(*a), num(*b), num(*c)
     )]
     TriangleInequality {
         /// The field or parameter at fault.
@@ -85,7 +85,7 @@ pub enum Error {
     },
 
     /// A malformed line in a Wavefront OBJ file.
-    #[error("{field}: {}:{line}: {message}", path.display())]
+    #[error("{field}: {}:{line}: {message}", echo_path(path))]
     Obj {
         /// The field or parameter that named the file.
         field: String,
@@ -98,7 +98,7 @@ pub enum Error {
     },
 
     /// A TOML syntax error (or a duplicated key), which has a position but no field yet.
-    #[error("{}:{line}:{column}: {message}", path.display())]
+    #[error("{}:{line}:{column}: {message}", echo_path(path))]
     Toml {
         /// The scene file.
         path: PathBuf,
@@ -111,7 +111,7 @@ pub enum Error {
     },
 
     /// An input file that could not be read.
-    #[error("{field}: cannot read {}: {source}", path.display())]
+    #[error("{field}: cannot read {}: {source}", echo_path(path))]
     Read {
         /// The field or argument that named the file.
         field: String,
@@ -122,7 +122,7 @@ pub enum Error {
     },
 
     /// An output file or stream that could not be written.
-    #[error("{field}: cannot write {}: {source}", path.display())]
+    #[error("{field}: cannot write {}: {source}", echo_path(path))]
     Write {
         /// The argument that named the output.
         field: String,
@@ -226,6 +226,42 @@ impl Error {
     }
 }
 
+/// A number for a message: plain where that is short (`0.25`, `-3`, `1500`), scientific
+/// otherwise (`1e-300`, not three hundred zeros), so that a message stays one short line.
+#[must_use]
+pub fn num(x: f64) -> String {
+    let a = x.abs();
+    if x == 0.0 || !x.is_finite() || (1e-4..1e16).contains(&a) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
+}
+
+/// The most characters of user text (a string value, a path) a message repeats.
+pub const ECHO_LIMIT: usize = 60;
+
+/// User text for a message, cut to [`ECHO_LIMIT`] characters with its length stated, so
+/// that a 100,000-character value does not become a 100,000-character message; line
+/// breaks are shown as `\n` so that the message stays one line.
+#[must_use]
+pub fn echo(text: &str) -> String {
+    let count = text.chars().count();
+    let escape = |s: &str| s.replace('\n', "\\n").replace('\r', "\\r");
+    if count <= ECHO_LIMIT {
+        escape(text)
+    } else {
+        let head: String = text.chars().take(ECHO_LIMIT - 20).collect();
+        format!("{}... ({count} characters)", escape(&head))
+    }
+}
+
+/// A path for a message, cut like [`echo`].
+#[must_use]
+pub fn echo_path(path: &std::path::Path) -> String {
+    echo(&path.display().to_string())
+}
+
 /// Check that a number is finite.
 pub(crate) fn finite(field: &str, what: &'static str, value: f64) -> Result<f64, Error> {
     if value.is_finite() {
@@ -239,18 +275,28 @@ pub(crate) fn finite(field: &str, what: &'static str, value: f64) -> Result<f64,
     }
 }
 
-/// Check that a number is finite and strictly positive.
+/// Check that a number is finite and strictly positive, and not subnormal: a subnormal
+/// mass, moment, density or step has lost its precision already and turns into zero or
+/// infinity in the first product or quotient.
 pub(crate) fn positive(field: &str, what: &'static str, value: f64) -> Result<f64, Error> {
     finite(field, what, value)?;
-    if value > 0.0 {
-        Ok(value)
-    } else {
-        Err(Error::NotPositive {
+    if value <= 0.0 {
+        return Err(Error::NotPositive {
             field: field.to_string(),
             what,
             value,
-        })
+        });
     }
+    if value < f64::MIN_POSITIVE {
+        return Err(Error::invalid(
+            field,
+            format!(
+                "{what} must be at least {:e} (a normal number), got {value:e}",
+                f64::MIN_POSITIVE
+            ),
+        ));
+    }
+    Ok(value)
 }
 
 /// Check that every component of a vector is finite.

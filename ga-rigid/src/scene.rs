@@ -34,12 +34,16 @@ use std::path::{Path, PathBuf};
 use ga_core::f64::g3::*;
 use serde::Deserialize;
 
-use crate::error::{finite3, positive, Error};
+use crate::error::{echo, finite3, positive, Error};
 use crate::inertia::{normalize_rotor, Inertia, Mesh, Solid};
 
 /// The most output rows a scene may ask for: ten million rows are about a gigabyte in
 /// memory and two and a half as CSV, so more is a typo rather than a plan.
 pub const MAX_SAMPLES: i64 = 10_000_000;
+
+/// The largest scene file read: 16 MiB holds some 300,000 point masses; more is not a
+/// scene someone wrote, and `/dev/zero` must not be read until memory runs out.
+pub const MAX_SCENE_BYTES: u64 = 16 << 20;
 
 /// A parsed and validated scene.
 #[derive(Clone, Debug, PartialEq)]
@@ -57,6 +61,8 @@ pub struct Scene {
 }
 
 /// The `[body]` section: one of the four ways to describe a body.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 #[derive(Clone, Debug, PartialEq)]
 pub enum BodySpec {
     /// `moments = [i1, i2, i3]`: principal moments about e1, e2, e3 of the body frame.
@@ -74,10 +80,36 @@ pub enum BodySpec {
     },
 }
 
+impl BodySpec {
+    /// The inertia the description gives, about the centre of mass; errors name the
+    /// scene field (`body.moments`, `body.shape.mass`, `body.points[2]`, `body.mesh`).
+    /// Moments must satisfy the triangle inequality (for those that do not, build the
+    /// inertia with [`Inertia::from_principal_unphysical`] and use
+    /// [`Scene::with_inertia`]); a mesh path is read as given.
+    pub fn inertia(&self) -> Result<Inertia, Error> {
+        match self {
+            BodySpec::Moments(moments) => {
+                Inertia::from_principal(*moments).map_err(|e| e.within("body"))
+            }
+            BodySpec::Shape(solid) => solid.inertia().map_err(|e| e.within("body.shape")),
+            BodySpec::Points(points) => {
+                Inertia::from_point_masses(points).map_err(|e| e.within("body"))
+            }
+            BodySpec::Mesh { path, density } => {
+                positive("body.density", "density", *density)?;
+                let mesh = Mesh::read_obj(path).map_err(|e| e.within("body"))?;
+                Inertia::from_mesh(&mesh, *density).map_err(|e| e.within("body"))
+            }
+        }
+    }
+}
+
 /// The `[initial]` section.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Initial {
     /// The initial attitude (body to space: `y = R x ~R`), normalised.
+    #[cfg_attr(feature = "serde", serde(with = "serde_arrays::rotor"))]
     pub rotor: Rotor,
     /// The initial body angular velocity `[w1, w2, w3]`.
     pub omega: [f64; 3],
@@ -92,6 +124,7 @@ impl Initial {
 }
 
 /// The `[run]` section.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Run {
     /// The end time (positive); the run starts at t = 0.
@@ -120,12 +153,51 @@ impl Run {
 }
 
 /// The `[torque]` section: uniform gravity acting at the centre of mass.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Gravity {
     /// The gravitational acceleration in the space frame.
+    #[cfg_attr(feature = "serde", serde(with = "serde_arrays::vector"))]
     pub g: Vector,
     /// The centre of mass relative to the fixed point, in the body frame.
+    #[cfg_attr(feature = "serde", serde(with = "serde_arrays::vector"))]
     pub com_offset: Vector,
+}
+
+/// The scene's parts as plain arrays for serde: ga-core's types have no serde support,
+/// and arrays in the TOML file's own component order (`[s, e12, e13, e23]`, `[x, y, z]`)
+/// read the same in any format.
+#[cfg(feature = "serde")]
+mod serde_arrays {
+    /// A rotor as `[s, e12, e13, e23]`.
+    pub mod rotor {
+        use ga_core::f64::g3::Rotor;
+        use serde::{Deserialize, Deserializer, Serialize, Serializer};
+
+        pub fn serialize<S: Serializer>(r: &Rotor, s: S) -> Result<S::Ok, S::Error> {
+            r.to_array().serialize(s)
+        }
+
+        pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Rotor, D::Error> {
+            let [s, e12, e13, e23] = <[f64; 4]>::deserialize(d)?;
+            Ok(Rotor::new(s, e12, e13, e23))
+        }
+    }
+
+    /// A vector as `[x, y, z]`.
+    pub mod vector {
+        use ga_core::f64::g3::Vector;
+        use serde::{Deserialize, Deserializer, Serialize, Serializer};
+
+        pub fn serialize<S: Serializer>(v: &Vector, s: S) -> Result<S::Ok, S::Error> {
+            v.to_array().serialize(s)
+        }
+
+        pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Vector, D::Error> {
+            let [x, y, z] = <[f64; 3]>::deserialize(d)?;
+            Ok(Vector::new(x, y, z))
+        }
+    }
 }
 
 #[derive(Deserialize)]
@@ -172,13 +244,10 @@ struct TorqueFile {
 
 impl Scene {
     /// Read and validate a scene file; errors naming the file's own problems use the
-    /// field `SCENE`.
+    /// field `SCENE`. Only a regular file (or a link to one) of at most
+    /// [`MAX_SCENE_BYTES`] is read.
     pub fn load(path: &Path) -> Result<Scene, Error> {
-        let text = std::fs::read_to_string(path).map_err(|source| Error::Read {
-            field: "SCENE".to_string(),
-            path: path.to_path_buf(),
-            source,
-        })?;
+        let text = crate::input::read_text("SCENE", path, MAX_SCENE_BYTES)?;
         Scene::parse(&text, path)
     }
 
@@ -191,11 +260,11 @@ impl Scene {
             .map_err(|e: toml::de::Error| field_error(&e))?;
 
         let (body, inertia) = load_body(file.body, path)?;
-
-        let rotor = normalize_rotor("initial.rotor", file.initial.rotor)?;
-        let omega = finite3("initial.omega", "angular velocity", file.initial.omega)?;
-
-        let t_end = positive("run.t_end", "t_end", file.run.t_end)?;
+        let [s, e12, e13, e23] = file.initial.rotor;
+        let initial = Initial {
+            rotor: Rotor::new(s, e12, e13, e23),
+            omega: file.initial.omega,
+        };
         let samples = file.run.samples;
         if samples < 2 {
             return Err(Error::invalid(
@@ -203,20 +272,78 @@ impl Scene {
                 format!("samples must be at least 2, got {samples}"),
             ));
         }
-        if samples > MAX_SAMPLES {
+        let run = Run {
+            t_end: file.run.t_end,
+            // Out of range only above usize::MAX, which `with_inertia` then refuses.
+            samples: usize::try_from(samples).unwrap_or(usize::MAX),
+        };
+        let torque = file.torque.map(|t| Gravity {
+            g: Vector::new(t.g[0], t.g[1], t.g[2]),
+            com_offset: Vector::new(t.com_offset[0], t.com_offset[1], t.com_offset[2]),
+        });
+        Scene::with_inertia(body, inertia, initial, run, torque)
+    }
+
+    /// A scene built in code rather than read from TOML: the inertia is computed from
+    /// `body` (see [`BodySpec::inertia`]), and every part checked as the loader checks a
+    /// file, with errors naming the scene field (`initial.omega`, `run.samples`, ...).
+    ///
+    /// ```
+    /// use ga_core::f64::g3::Rotor;
+    /// use ga_rigid::scene::{BodySpec, Initial, Run, Scene};
+    ///
+    /// let scene = Scene::new(
+    ///     BodySpec::Moments([2.0, 2.0, 1.0]),
+    ///     Initial { rotor: Rotor::ONE, omega: [0.3, 0.0, 5.0] },
+    ///     Run { t_end: 10.0, samples: 101 },
+    ///     None,
+    /// )?;
+    /// assert_eq!(scene.inertia.moments(), [2.0, 2.0, 1.0]);
+    /// # Ok::<(), ga_rigid::error::Error>(())
+    /// ```
+    pub fn new(
+        body: BodySpec,
+        initial: Initial,
+        run: Run,
+        torque: Option<Gravity>,
+    ) -> Result<Scene, Error> {
+        let inertia = body.inertia()?;
+        Scene::with_inertia(body, inertia, initial, run, torque)
+    }
+
+    /// [`Scene::new`] with an inertia computed by the caller (for instance
+    /// [`Inertia::from_principal_unphysical`] for the literature's test bodies); `body`
+    /// only records how it was described. The rotor is normalised.
+    pub fn with_inertia(
+        body: BodySpec,
+        inertia: Inertia,
+        initial: Initial,
+        run: Run,
+        torque: Option<Gravity>,
+    ) -> Result<Scene, Error> {
+        let rotor = normalize_rotor("initial.rotor", initial.rotor.to_array())?;
+        let omega = finite3("initial.omega", "angular velocity", initial.omega)?;
+
+        let t_end = positive("run.t_end", "t_end", run.t_end)?;
+        let samples = run.samples;
+        if samples < 2 {
+            return Err(Error::invalid(
+                "run.samples",
+                format!("samples must be at least 2, got {samples}"),
+            ));
+        }
+        if samples as u64 > MAX_SAMPLES as u64 {
             return Err(Error::invalid(
                 "run.samples",
                 format!("samples must be at most {MAX_SAMPLES}, got {samples}"),
             ));
         }
-        // In range 2..=MAX_SAMPLES, so the conversion cannot fail.
-        let samples = usize::try_from(samples).unwrap_or(2);
 
-        let torque = match file.torque {
+        let torque = match torque {
             None => None,
             Some(t) => {
-                let [gx, gy, gz] = finite3("torque.g", "gravity", t.g)?;
-                let [cx, cy, cz] = finite3("torque.com_offset", "offset", t.com_offset)?;
+                let [gx, gy, gz] = finite3("torque.g", "gravity", t.g.to_array())?;
+                let [cx, cy, cz] = finite3("torque.com_offset", "offset", t.com_offset.to_array())?;
                 Some(Gravity {
                     g: Vector::new(gx, gy, gz),
                     com_offset: Vector::new(cx, cy, cz),
@@ -224,15 +351,79 @@ impl Scene {
             }
         };
 
-        Ok(Scene {
+        let scene = Scene {
             body,
             inertia,
             initial: Initial { rotor, omega },
             run: Run { t_end, samples },
             torque,
-        })
+        };
+        scene.check_magnitudes()?;
+        Ok(scene)
+    }
+
+    /// The field the user wrote the body in (`body.moments`, `body.shape`, ...).
+    #[must_use]
+    pub fn body_field(&self) -> &'static str {
+        match self.body {
+            BodySpec::Moments(_) => "body.moments",
+            BodySpec::Shape(_) => "body.shape",
+            BodySpec::Points(_) => "body.points",
+            BodySpec::Mesh { .. } => "body.mesh",
+        }
+    }
+
+    /// Refuse scenes whose numbers overflow or underflow before any step is taken: the
+    /// principal moments outside [`MOMENT_RANGE`], or an initial kinetic energy, squared
+    /// angular momentum or weight that is not finite. A method would otherwise write
+    /// `inf` rows, or fail later with a message about its own internals.
+    fn check_magnitudes(&self) -> Result<(), Error> {
+        let (low, high) = MOMENT_RANGE;
+        let moments = self.inertia.moments();
+        if let Some(&i) = moments.iter().find(|&&i| !(low..=high).contains(&i)) {
+            return Err(Error::invalid(
+                self.body_field(),
+                format!(
+                    "the principal moments must lie between {low:e} and {high:e} \
+                     (rescale the units), got {i:e}"
+                ),
+            ));
+        }
+        let omega = self
+            .inertia
+            .rotor()
+            .reverse()
+            .sandwich(self.initial.omega_bivector());
+        let w = crate::dynamics::omega_to_vector(omega);
+        let momentum = [0, 1, 2].map(|k| moments[k] * w[k]);
+        let energy: f64 = (0..3).map(|k| 0.5 * momentum[k] * w[k]).sum();
+        let squared_momentum: f64 = momentum.iter().map(|l| l * l).sum();
+        if !(energy.is_finite() && squared_momentum.is_finite()) {
+            return Err(Error::invalid(
+                "initial.omega",
+                format!(
+                    "the kinetic energy ({energy:e}) and squared angular momentum \
+                     ({squared_momentum:e}) overflow with these moments; slow the body down"
+                ),
+            ));
+        }
+        if let Some(gravity) = self.torque {
+            let mass = self.inertia.mass().unwrap_or(1.0);
+            let weight = mass * gravity.g.norm() * gravity.com_offset.norm();
+            if !weight.is_finite() {
+                return Err(Error::invalid(
+                    "torque.g",
+                    "the potential energy m |g| |com_offset| overflows; rescale the units",
+                ));
+            }
+        }
+        Ok(())
     }
 }
+
+/// The range the principal moments must lie in: wide enough for any unit system, narrow
+/// enough that products of up to three moments and squared energies stay normal numbers.
+pub const MOMENT_RANGE: (f64, f64) = (1e-100, 1e100);
 
 /// Pick the one body description and compute its inertia.
 fn load_body(body: BodyFile, scene_path: &Path) -> Result<(BodySpec, Inertia), Error> {
@@ -326,13 +517,21 @@ fn syntax_error(e: &toml::de::Error, text: &str, path: &Path) -> Error {
         }
         None => (0, 0),
     };
-    let message = one_line(e.message());
-    if let Some(field) = duplicated_key(&message, text, e.span().map_or(0, |s| s.start)) {
+    let mut message = one_line(e.message());
+    if message.is_empty() {
+        // The parser gives no message when the text ends where a value should be.
+        message = if e.span().is_some_and(|s| s.start >= text.trim_end().len()) {
+            "the file ends where a value was expected".to_string()
+        } else {
+            "invalid TOML".to_string()
+        };
+    }
+    if let Some(field) = duplicated_key(e.message(), text, e.span().map_or(0, |s| s.start)) {
         return Error::invalid(
-            field,
+            echo(&field),
             format!(
                 "duplicated key (again at {}:{line}); each field may appear once",
-                path.display()
+                crate::error::echo_path(path)
             ),
         );
     }
@@ -393,9 +592,9 @@ fn field_error(e: &toml::de::Error) -> Error {
         .to_string();
     let join = |name: &str| {
         if path.is_empty() {
-            name.to_string()
+            echo(name)
         } else {
-            format!("{path}.{name}")
+            echo(&format!("{path}.{name}"))
         }
     };
     if let Some(rest) = message.strip_prefix("unknown field `") {
@@ -414,18 +613,44 @@ fn field_error(e: &toml::de::Error) -> Error {
     let field = if path.is_empty() {
         "SCENE".to_string()
     } else {
-        path
+        echo(&path)
     };
     Error::invalid(field, one_line(message))
 }
 
+/// A parser or serde message on one line, with every quoted piece of the user's text
+/// (`...` or "...") cut by [`echo`], and the whole at most 180 characters.
 fn one_line(message: &str) -> String {
-    message
+    let joined = message
         .lines()
         .map(str::trim)
         .filter(|l| !l.is_empty())
         .collect::<Vec<_>>()
-        .join("; ")
+        .join("; ");
+    let mut out = String::new();
+    let mut rest = joined.as_str();
+    while let Some(open) = rest.find(['`', '"']) {
+        let quote = rest[open..].chars().next().unwrap_or('`');
+        out.push_str(&rest[..=open]);
+        let after = &rest[open + 1..];
+        match after.find(quote) {
+            Some(close) => {
+                out.push_str(&echo(&after[..close]));
+                out.push(quote);
+                rest = &after[close + 1..];
+            }
+            None => {
+                out.push_str(&echo(after));
+                rest = "";
+            }
+        }
+    }
+    out.push_str(rest);
+    if out.chars().count() > 180 {
+        let head: String = out.chars().take(170).collect();
+        return format!("{head}...");
+    }
+    out
 }
 
 #[cfg(test)]

@@ -607,13 +607,6 @@ fn dt_and_tol_are_exclusive() {
 fn fixed_step_method_needs_dt() {
     let s = scene(BODY, INITIAL, RUN);
     expect_rejected_with(
-        "rk4_without_dt",
-        &s,
-        &["--method", "rk4"],
-        "--dt: ",
-        "give --dt",
-    );
-    expect_rejected_with(
         "rk4_with_tol",
         &s,
         &["--method", "lie-rk4", "--tol", "1e-9"],
@@ -625,13 +618,6 @@ fn fixed_step_method_needs_dt() {
 #[test]
 fn adaptive_method_needs_tol() {
     let s = scene(BODY, INITIAL, RUN);
-    expect_rejected_with(
-        "dopri_without_tol",
-        &s,
-        &["--method", "dopri"],
-        "--tol: ",
-        "give --tol",
-    );
     expect_rejected_with(
         "dopri_with_dt",
         &s,
@@ -791,4 +777,654 @@ fn inertia_of_bad_scene_fails_the_same_way() {
     assert!(out.stdout.is_empty());
     assert_eq!(stderr.lines().count(), 1, "{stderr}");
     assert!(stderr.starts_with("body.moments: "), "{stderr}");
+}
+
+/// `simulate ... --out out.csv` in `dir` (a good scene already there), expecting the
+/// refusal contract: status 2, one line starting `--out: ` and containing `rule`.
+fn expect_out_refused(dir: &Path, rule: &str) {
+    let out = run(
+        dir,
+        &[
+            "simulate",
+            "scene.toml",
+            "--method",
+            "exact",
+            "--out",
+            "out.csv",
+        ],
+    );
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(out.stdout.is_empty());
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(stderr.starts_with("--out: "), "{stderr}");
+    assert!(stderr.contains(rule), "expected {rule:?} in {stderr}");
+    let temporaries: Vec<_> = std::fs::read_dir(dir)
+        .unwrap()
+        .filter_map(|e| e.ok())
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|n| n.contains(".tmp-"))
+        .collect();
+    assert!(temporaries.is_empty(), "{temporaries:?}");
+}
+
+fn make_fifo(path: &Path) {
+    let status = Command::new("mkfifo").arg(path).status().unwrap();
+    assert!(status.success(), "mkfifo failed");
+}
+
+#[cfg(unix)]
+#[test]
+fn out_onto_a_fifo_is_refused_and_the_fifo_kept() {
+    use std::os::unix::fs::FileTypeExt as _;
+    let dir = test_dir("out_fifo");
+    write(&dir, "scene.toml", &scene(BODY, INITIAL, RUN));
+    make_fifo(&dir.join("out.csv"));
+    expect_out_refused(&dir, "is a FIFO, not a regular file");
+    let kind = std::fs::symlink_metadata(dir.join("out.csv"))
+        .unwrap()
+        .file_type();
+    assert!(kind.is_fifo(), "the FIFO was replaced");
+}
+
+#[test]
+fn out_onto_a_directory_is_refused() {
+    let dir = test_dir("out_dir");
+    write(&dir, "scene.toml", &scene(BODY, INITIAL, RUN));
+    std::fs::create_dir(dir.join("out.csv")).unwrap();
+    expect_out_refused(&dir, "is a directory");
+    assert!(dir.join("out.csv").is_dir());
+}
+
+#[cfg(unix)]
+#[test]
+fn out_through_a_symlink_to_a_fifo_is_refused() {
+    use std::os::unix::fs::FileTypeExt as _;
+    let dir = test_dir("out_link_fifo");
+    write(&dir, "scene.toml", &scene(BODY, INITIAL, RUN));
+    make_fifo(&dir.join("pipe"));
+    std::os::unix::fs::symlink("pipe", dir.join("out.csv")).unwrap();
+    expect_out_refused(&dir, "is a FIFO");
+    assert!(std::fs::symlink_metadata(dir.join("out.csv"))
+        .unwrap()
+        .file_type()
+        .is_symlink());
+    assert!(std::fs::symlink_metadata(dir.join("pipe"))
+        .unwrap()
+        .file_type()
+        .is_fifo());
+}
+
+#[cfg(unix)]
+#[test]
+fn out_through_a_dangling_symlink_is_refused() {
+    let dir = test_dir("out_link_dangling");
+    write(&dir, "scene.toml", &scene(BODY, INITIAL, RUN));
+    std::os::unix::fs::symlink("nowhere.csv", dir.join("out.csv")).unwrap();
+    expect_out_refused(&dir, "symbolic link to a missing file");
+    assert!(!dir.join("nowhere.csv").exists());
+}
+
+#[cfg(unix)]
+#[test]
+fn out_through_a_symlink_replaces_its_target_and_keeps_the_link() {
+    let dir = test_dir("out_link_file");
+    write(&dir, "scene.toml", &scene(BODY, INITIAL, RUN));
+    std::fs::create_dir(dir.join("data")).unwrap();
+    write(&dir, "data/target.csv", "old contents\n");
+    std::os::unix::fs::symlink("data/target.csv", dir.join("out.csv")).unwrap();
+    let out = run(
+        &dir,
+        &[
+            "simulate",
+            "scene.toml",
+            "--method",
+            "exact",
+            "--out",
+            "out.csv",
+        ],
+    );
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(std::fs::symlink_metadata(dir.join("out.csv"))
+        .unwrap()
+        .file_type()
+        .is_symlink());
+    let text = std::fs::read_to_string(dir.join("data/target.csv")).unwrap();
+    assert!(text.contains("t,r_s,r_e12,r_e13,r_e23,w1,w2,w3,energy,l1,l2,l3\n"));
+    let names: Vec<_> = std::fs::read_dir(dir.join("data"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(names.len(), 1, "temporary file left behind: {names:?}");
+}
+
+#[test]
+fn out_replaces_a_regular_file_and_creates_a_missing_one() {
+    let dir = test_dir("out_regular");
+    write(&dir, "scene.toml", &scene(BODY, INITIAL, RUN));
+    write(&dir, "old.csv", "old contents\n");
+    for name in ["old.csv", "new.csv"] {
+        let out = run(
+            &dir,
+            &["simulate", "scene.toml", "--method", "exact", "--out", name],
+        );
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        assert!(out.stdout.is_empty());
+        let text = std::fs::read_to_string(dir.join(name)).unwrap();
+        assert!(text.contains("t,r_s,r_e12,r_e13,r_e23,w1,w2,w3,energy,l1,l2,l3\n"));
+    }
+}
+
+#[test]
+fn overflowing_energy_is_rejected_for_every_method() {
+    // Issue 12: `exact` and `splitting` wrote `energy = inf` here and exited 0.
+    let s = scene(
+        "[body]\nmoments = [1, 1, 1]\n",
+        "[initial]\nrotor = [1, 0, 0, 0]\nomega = [0, 0, 1e200]\n",
+        RUN,
+    );
+    for (k, method) in [
+        &["--method", "exact"][..],
+        &["--method", "splitting", "--dt", "0.01"][..],
+        &["--method", "closed-form"][..],
+        &["--method", "rk4", "--dt", "0.01"][..],
+        &["--method", "dopri", "--tol", "1e-8"][..],
+    ]
+    .iter()
+    .enumerate()
+    {
+        expect_rejected_with(
+            &format!("overflowing_energy_{k}"),
+            &s,
+            method,
+            "initial.omega: ",
+            "overflow",
+        );
+    }
+}
+
+#[test]
+fn subnormal_moments_mass_and_density_are_rejected_naming_the_field() {
+    let subnormal_moments = scene("[body]\nmoments = [1e-320, 1e-320, 1e-320]\n", INITIAL, RUN);
+    expect_rejected_with(
+        "subnormal_moments",
+        &subnormal_moments,
+        &["--method", "splitting", "--dt", "0.01"],
+        "body.moments: ",
+        "normal number",
+    );
+    let subnormal_mass = scene(
+        "[body]\nshape = { kind = \"box\", mass = 1e-320, size = [1, 2, 3] }\n",
+        INITIAL,
+        RUN,
+    );
+    expect_rejected(
+        "subnormal_mass",
+        &subnormal_mass,
+        "body.shape.mass: ",
+        "normal number",
+    );
+    let subnormal_point = scene(
+        "[body]\npoints = [[1e-320, 1, 0, 0], [1, 0, 1, 0], [1, 0, 0, 1]]\n",
+        INITIAL,
+        RUN,
+    );
+    expect_rejected(
+        "subnormal_point",
+        &subnormal_point,
+        "body.points[0]: ",
+        "normal number",
+    );
+    let s = scene(
+        "[body]\nmesh = \"cube.obj\"\ndensity = 5e-324\n",
+        INITIAL,
+        RUN,
+    );
+    expect_rejected_in(
+        "subnormal_density",
+        &[("scene.toml", &s), ("cube.obj", CUBE_OBJ)],
+        &["--method", "rk4", "--dt", "0.1"],
+        "body.density: ",
+        "normal number",
+    );
+}
+
+#[test]
+fn moments_whose_products_underflow_are_rejected() {
+    let tiny = scene("[body]\nmoments = [1e-200, 1e-200, 1e-200]\n", INITIAL, RUN);
+    expect_rejected("tiny_moments", &tiny, "body.moments: ", "between 1e-100");
+    let tiny_box = scene(
+        "[body]\nshape = { kind = \"box\", mass = 1e-250, size = [1, 2, 3] }\n",
+        INITIAL,
+        RUN,
+    );
+    expect_rejected("tiny_box", &tiny_box, "body.shape: ", "between 1e-100");
+}
+
+/// `expect_rejected_with`, and the line is at most 200 characters.
+fn expect_short_rejection(name: &str, scene: &str, extra: &[&str], field: &str, rule: &str) {
+    expect_rejected_with(name, scene, extra, field, rule);
+    let dir = test_dir(name);
+    write(&dir, "scene.toml", scene);
+    let mut args = vec!["simulate", "scene.toml"];
+    args.extend_from_slice(extra);
+    let out = run(&dir, &args);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.trim_end().chars().count() <= 200,
+        "{name}: {} characters: {stderr}",
+        stderr.trim_end().chars().count()
+    );
+}
+
+#[test]
+fn runs_that_cannot_finish_are_refused_up_front() {
+    // Issue 12: 10^14 steps started and ran for months, printing nothing.
+    let long = scene(BODY, INITIAL, "[run]\nt_end = 1e12\nsamples = 11\n");
+    expect_short_rejection(
+        "long_run",
+        &long,
+        &["--method", "rk4", "--dt", "0.01"],
+        "--dt: ",
+        "above the limit 100000000; raise it with --max-steps",
+    );
+    let s = scene(BODY, INITIAL, RUN);
+    expect_short_rejection(
+        "tiny_dt",
+        &s,
+        &["--method", "splitting", "--dt", "1e-9"],
+        "--dt: ",
+        "--max-steps",
+    );
+    expect_short_rejection(
+        "tiny_dt_300",
+        &s,
+        &["--method", "midpoint", "--dt", "1e-300"],
+        "--dt: ",
+        "--max-steps",
+    );
+    expect_short_rejection(
+        "lowered_limit",
+        &s,
+        &["--method", "rk4", "--dt", "0.001", "--max-steps", "1000"],
+        "--dt: ",
+        "above the limit 1000",
+    );
+    expect_short_rejection(
+        "long_dopri",
+        &long,
+        &["--method", "dopri", "--tol", "1e-10"],
+        "--tol: ",
+        "--max-steps",
+    );
+    let many_rows = scene(BODY, INITIAL, "[run]\nt_end = 1\nsamples = 10000000\n");
+    expect_short_rejection(
+        "big_output",
+        &many_rows,
+        &["--method", "exact"],
+        "run.samples: ",
+        "--max-output-mb",
+    );
+}
+
+#[test]
+fn max_steps_raises_the_limit() {
+    let dir = test_dir("max_steps_raised");
+    write(
+        &dir,
+        "scene.toml",
+        &scene(BODY, INITIAL, "[run]\nt_end = 1\nsamples = 3\n"),
+    );
+    let base = ["simulate", "scene.toml", "--method", "rk4", "--dt", "1e-4"];
+    let refused = run(&dir, &[&base[..], &["--max-steps", "100"]].concat());
+    assert_eq!(refused.status.code(), Some(2));
+    let allowed = run(&dir, &[&base[..], &["--max-steps", "20000"]].concat());
+    assert_eq!(
+        allowed.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&allowed.stderr)
+    );
+    assert_eq!(String::from_utf8_lossy(&allowed.stdout).lines().count(), 4);
+}
+
+/// Run with a deadline: a command that blocks on a FIFO or reads without end is killed
+/// and the test fails instead of hanging.
+fn run_with_deadline(dir: &Path, args: &[&str]) -> Output {
+    use std::time::{Duration, Instant};
+    let mut child = Command::new(BIN)
+        .args(args)
+        .current_dir(dir)
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let start = Instant::now();
+    while child.try_wait().unwrap().is_none() {
+        if start.elapsed() > Duration::from_secs(20) {
+            child.kill().unwrap();
+            let _ = child.wait();
+            panic!("{args:?} did not finish in 20 s");
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    child.wait_with_output().unwrap()
+}
+
+fn expect_read_refused(dir: &Path, scene: &str, field: &str, rule: &str) {
+    let out = run_with_deadline(dir, &["simulate", scene, "--method", "exact"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(out.stdout.is_empty());
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(stderr.starts_with(field), "{stderr}");
+    assert!(stderr.contains(rule), "expected {rule:?} in {stderr}");
+}
+
+#[cfg(unix)]
+#[test]
+fn a_fifo_scene_or_mesh_is_refused_without_blocking() {
+    let dir = test_dir("fifo_inputs");
+    make_fifo(&dir.join("scene.toml"));
+    expect_read_refused(&dir, "scene.toml", "SCENE: ", "not a regular file");
+    write(
+        &dir,
+        "mesh.toml",
+        &scene("[body]\nmesh = \"body.obj\"\ndensity = 1\n", INITIAL, RUN),
+    );
+    make_fifo(&dir.join("body.obj"));
+    expect_read_refused(&dir, "mesh.toml", "body.mesh: ", "not a regular file");
+}
+
+#[test]
+fn a_directory_scene_is_refused() {
+    let dir = test_dir("dir_scene");
+    std::fs::create_dir(dir.join("scene.toml")).unwrap();
+    expect_read_refused(&dir, "scene.toml", "SCENE: ", "not a regular file");
+}
+
+#[test]
+fn oversized_scene_and_mesh_files_are_refused_before_reading() {
+    let dir = test_dir("big_inputs");
+    // Sparse files: the size is there, the disk blocks are not.
+    let big_scene = std::fs::File::create(dir.join("scene.toml")).unwrap();
+    big_scene
+        .set_len(ga_rigid::scene::MAX_SCENE_BYTES + 1)
+        .unwrap();
+    expect_read_refused(&dir, "scene.toml", "SCENE: ", "more than the limit");
+    write(
+        &dir,
+        "mesh.toml",
+        &scene("[body]\nmesh = \"body.obj\"\ndensity = 1\n", INITIAL, RUN),
+    );
+    let big_mesh = std::fs::File::create(dir.join("body.obj")).unwrap();
+    big_mesh
+        .set_len(ga_rigid::inertia::MAX_MESH_BYTES + 1)
+        .unwrap();
+    expect_read_refused(&dir, "mesh.toml", "body.mesh: ", "more than the limit");
+}
+
+#[test]
+fn a_value_missing_at_the_end_of_the_file_has_a_message() {
+    // Issue 12: the line was `empty_value.toml:1:5: ` and nothing after.
+    expect_short_rejection(
+        "empty_value",
+        "a = ",
+        &["--method", "exact"],
+        "scene.toml:1:5: ",
+        "the file ends where a value was expected",
+    );
+}
+
+#[test]
+fn a_subnormal_tolerance_blames_tol_not_atol() {
+    let s = scene(BODY, INITIAL, RUN);
+    expect_short_rejection(
+        "subnormal_tol",
+        &s,
+        &["--method", "dopri", "--tol", "5e-324"],
+        "--tol: ",
+        "between 1e-14 and 1, got 5e-324",
+    );
+}
+
+#[test]
+fn negative_infinite_and_exponent_values_reach_our_own_check() {
+    // Issue 12: clap answered "unexpected argument '-i' found".
+    let s = scene(BODY, INITIAL, RUN);
+    expect_short_rejection(
+        "minus_inf_dt",
+        &s,
+        &["--method", "rk4", "--dt", "-inf"],
+        "--dt: ",
+        "positive and finite, got -inf",
+    );
+    expect_short_rejection(
+        "negative_exponent_tol",
+        &s,
+        &["--method", "dopri", "--tol", "-1e-6"],
+        "--tol: ",
+        "positive and finite, got -1e-6",
+    );
+}
+
+#[test]
+fn closed_form_on_a_box_or_mesh_names_what_the_scene_wrote() {
+    let boxed = scene(
+        "[body]\nshape = { kind = \"box\", mass = 2.0, size = [1, 2, 3] }\n",
+        INITIAL,
+        RUN,
+    );
+    expect_short_rejection(
+        "closed_form_box",
+        &boxed,
+        &["--method", "closed-form"],
+        "body.shape: ",
+        "symmetric",
+    );
+    let brick = CUBE_OBJ.replace("v 1 1 1", "v 1 1 2");
+    let meshed = scene("[body]\nmesh = \"brick.obj\"\ndensity = 1\n", INITIAL, RUN);
+    expect_rejected_in(
+        "closed_form_mesh",
+        &[("scene.toml", &meshed), ("brick.obj", &brick)],
+        &["--method", "closed-form"],
+        "body.mesh: ",
+        "symmetric",
+    );
+}
+
+#[test]
+fn long_values_are_echoed_cut() {
+    let long = "a".repeat(100_000);
+    let s = scene(
+        &format!("[body]\nshape = {{ kind = \"{long}\", mass = 2.0, size = [1, 2, 3] }}\n"),
+        INITIAL,
+        RUN,
+    );
+    expect_short_rejection(
+        "long_kind",
+        &s,
+        &["--method", "exact"],
+        "body.shape.kind: ",
+        "(100000 characters)",
+    );
+    let s = scene(&format!("[body]\nmoments = \"{long}\"\n"), INITIAL, RUN);
+    expect_short_rejection(
+        "long_string",
+        &s,
+        &["--method", "exact"],
+        "body.moments: ",
+        "(100000 characters)",
+    );
+    let s = scene(
+        &format!("[body]\nmoments = [1, 2, 2.5]\n{long} = 1\n"),
+        INITIAL,
+        RUN,
+    );
+    expect_short_rejection(
+        "long_key",
+        &s,
+        &["--method", "exact"],
+        "body.aaaa",
+        "unknown field",
+    );
+    let s = scene(
+        &format!("[body]\nmesh = \"{long}.obj\"\ndensity = 1\n"),
+        INITIAL,
+        RUN,
+    );
+    expect_short_rejection(
+        "long_mesh_path",
+        &s,
+        &["--method", "exact"],
+        "body.mesh: ",
+        "characters)",
+    );
+}
+
+#[test]
+fn csv_numbers_are_plain_decimal_without_exponent_shorthand() {
+    // Issue 9: `0e0`, `-0e0` and `1e1` were written for 0, -0 and 10.
+    let dir = test_dir("csv_format");
+    write(
+        &dir,
+        "scene.toml",
+        &scene(
+            BODY,
+            "[initial]\nrotor = [1, 0, 0, 0]\nomega = [0, 0, -1]\n",
+            RUN,
+        ),
+    );
+    let out = run(&dir, &["simulate", "scene.toml", "--method", "exact"]);
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8(out.stdout).unwrap();
+    let mut lines = text.lines().filter(|l| !l.starts_with('#'));
+    assert_eq!(
+        lines.next(),
+        Some("t,r_s,r_e12,r_e13,r_e23,w1,w2,w3,energy,l1,l2,l3")
+    );
+    let rows: Vec<&str> = lines.collect();
+    assert_eq!(rows.len(), 11);
+    for row in &rows {
+        for value in row.split(',') {
+            assert!(!value.contains('e'), "{value} in {row}");
+            assert!(!value.starts_with("-0.000000"), "{value} in {row}");
+            let digits = value.chars().filter(char::is_ascii_digit).count();
+            let leading = value
+                .trim_start_matches('-')
+                .chars()
+                .take_while(|c| *c == '0' || *c == '.')
+                .filter(|c| *c == '0')
+                .count();
+            let significant = if value.trim_start_matches(['-', '0', '.']).is_empty() {
+                digits
+            } else {
+                digits - leading
+            };
+            assert_eq!(significant, 17, "{value} in {row}");
+        }
+    }
+    assert!(rows[10].starts_with("10.000000000000000,"), "{}", rows[10]);
+}
+
+/// The sidecar JSON of `simulate ... --out out.csv`, as (key, raw value) pairs.
+fn sidecar(dir: &Path) -> Vec<(String, String)> {
+    let text = std::fs::read_to_string(dir.join("out.csv.json")).unwrap();
+    text.lines()
+        .filter_map(|l| l.trim().trim_end_matches(',').split_once(": "))
+        .map(|(k, v)| (k.trim_matches('"').to_string(), v.to_string()))
+        .collect()
+}
+
+fn value<'a>(pairs: &'a [(String, String)], key: &str) -> &'a str {
+    pairs
+        .iter()
+        .find(|(k, _)| k == key)
+        .map(|(_, v)| v.as_str())
+        .unwrap_or_else(|| panic!("no {key} in {pairs:?}"))
+}
+
+#[test]
+fn default_dt_is_a_two_hundredth_of_the_fastest_period_and_recorded() {
+    let dir = test_dir("default_dt");
+    // Moments (1, 2, 2.5), w = (0, 0, 2): |w|max = |L| / i_min = 2.5 * 2 / 1 = 5.
+    write(
+        &dir,
+        "scene.toml",
+        &scene(
+            BODY,
+            "[initial]\nrotor = [1, 0, 0, 0]\nomega = [0, 0, 2]\n",
+            RUN,
+        ),
+    );
+    let out = run(
+        &dir,
+        &[
+            "simulate",
+            "scene.toml",
+            "--method",
+            "rk4",
+            "--out",
+            "out.csv",
+        ],
+    );
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(out.stderr.is_empty());
+    let record = sidecar(&dir);
+    let dt: f64 = value(&record, "dt").parse().unwrap();
+    let expected = 2.0 * std::f64::consts::PI / 5.0 / 200.0;
+    assert!((dt - expected).abs() < 1e-15, "{dt} vs {expected}");
+    assert_eq!(value(&record, "method"), "\"rk4\"");
+    assert_eq!(value(&record, "scene"), "\"scene.toml\"");
+    assert_eq!(value(&record, "csv"), "\"out.csv\"");
+    assert_eq!(value(&record, "tol"), "null");
+    assert!(value(&record, "step_source").contains("period"));
+
+    // On standard output the CSV stays alone; the choice is a note on standard error.
+    let out = run(&dir, &["simulate", "scene.toml", "--method", "dopri"]);
+    assert_eq!(out.status.code(), Some(0));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(stderr.starts_with("note: --tol 1e-9"), "{stderr}");
+    assert!(String::from_utf8_lossy(&out.stdout).starts_with("t,r_s,"));
+}
+
+#[test]
+fn given_step_and_method_are_recorded_beside_the_csv() {
+    let dir = test_dir("sidecar_given");
+    write(&dir, "scene.toml", &scene(BODY, INITIAL, RUN));
+    let out = run(
+        &dir,
+        &[
+            "simulate",
+            "scene.toml",
+            "--method",
+            "splitting",
+            "--dt",
+            "0.01",
+            "--out",
+            "out.csv",
+        ],
+    );
+    assert_eq!(out.status.code(), Some(0));
+    let record = sidecar(&dir);
+    assert_eq!(value(&record, "dt"), "0.01");
+    assert_eq!(value(&record, "method"), "\"splitting\"");
+    assert_eq!(value(&record, "step_source"), "\"given\"");
+    assert_eq!(value(&record, "samples"), "11");
 }

@@ -33,21 +33,33 @@ pub struct SimulateArgs {
     /// The integration method.
     #[arg(long, value_enum)]
     pub method: Method,
-    /// The fixed step size, for fixed-step methods.
-    // Negative numbers must reach our own check (with its message), not be taken for flags.
+    /// The fixed step size, for fixed-step methods; by default 1/200 of the period
+    /// 2 pi / |w|max of the fastest rotation the scene's body can reach.
+    // Negative numbers (`-1e-6`, `-inf`) must reach our own check (with its message), not
+    // be taken for flags: clap's negative-number test misses exponents and `inf`.
     #[arg(
         long,
         value_name = "DT",
-        allow_negative_numbers = true,
+        allow_hyphen_values = true,
         conflicts_with = "tol"
     )]
     pub dt: Option<f64>,
-    /// The error tolerance, for adaptive methods.
-    #[arg(long, value_name = "TOL", allow_negative_numbers = true)]
+    /// The relative error tolerance, for adaptive methods: between 1e-14 and 1; by
+    /// default 1e-9.
+    #[arg(long, value_name = "TOL", allow_hyphen_values = true)]
     pub tol: Option<f64>,
-    /// Write the CSV to this file instead of standard output (created only on success).
+    /// Write the CSV to this regular file instead of standard output, only on success, by
+    /// temporary file and rename; a symbolic link is followed and its target replaced; a
+    /// directory, FIFO, socket or device is refused (use standard output to reach one).
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
+    /// Refuse runs estimated to take more steps than this (t_end / dt plus one per
+    /// sample for fixed steps; a rough estimate for dopri).
+    #[arg(long, value_name = "N", default_value_t = super::simulate::DEFAULT_MAX_STEPS)]
+    pub max_steps: u64,
+    /// Refuse runs whose CSV may be larger than this many megabytes (300 bytes a row).
+    #[arg(long, value_name = "MB", default_value_t = super::simulate::DEFAULT_MAX_OUTPUT_MB)]
+    pub max_output_mb: u64,
 }
 
 /// Arguments of `inertia`.
@@ -61,7 +73,8 @@ pub struct InertiaArgs {
 /// Arguments of `report`.
 #[derive(Debug, Args)]
 pub struct ReportArgs {
-    /// Write the report to this file instead of standard output (created only on success).
+    /// Write the report to this regular file instead of standard output, only on success,
+    /// with the same rules as `simulate --out`.
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
     /// Three settings per method and one timing run instead of nine and the best of three.

@@ -4,10 +4,14 @@
 //! error naming the field or argument and the rule it broke, no output file, and exit
 //! status 2 for bad input (1 for a failed write or a missing feature). Output is
 //! buffered and written only when the command has succeeded; `--out FILE` is written to
-//! a temporary file in the same directory and renamed into place.
+//! a temporary file in the same directory and renamed into place, and only ever to a
+//! regular file (a symbolic link is followed to one; a directory, FIFO, socket or device
+//! is refused with status 2; see the README).
 
 mod args;
 mod inertia_cmd;
+mod output;
+mod progress;
 mod simulate;
 
 use std::ffi::OsString;
@@ -85,7 +89,7 @@ fn clap_exit(e: &clap::Error) -> u8 {
             let line = if first.is_empty() {
                 "error: invalid arguments".to_string()
             } else {
-                first.join(" ")
+                cut_quoted(&first.join(" "))
             };
             eprintln!("{line}");
             2
@@ -93,16 +97,74 @@ fn clap_exit(e: &clap::Error) -> u8 {
     }
 }
 
+/// clap's message with each '...'-quoted piece of the user's text cut by
+/// [`crate::error::echo`], so that a long argument does not make a long line.
+fn cut_quoted(line: &str) -> String {
+    let mut out = String::new();
+    for (k, piece) in line.split('\'').enumerate() {
+        if k > 0 {
+            out.push('\'');
+        }
+        // Odd pieces are inside quotes.
+        if k % 2 == 1 {
+            out.push_str(&crate::error::echo(piece));
+        } else {
+            out.push_str(piece);
+        }
+    }
+    out
+}
+
 /// `simulate`: validate the step control and the output path, load the scene, run the
 /// method, write the CSV.
 fn simulate(args: &SimulateArgs) -> Result<(), Error> {
-    let step = step_control(args.method, args.dt, args.tol)?;
-    if let Some(out) = &args.out {
-        check_output_path("--out", out)?;
+    // Without --dt or --tol the step control comes from the scene (see `default_step`).
+    let given = match (args.method.step_kind(), args.dt, args.tol) {
+        (StepKind::Fixed | StepKind::Adaptive, None, None) => None,
+        _ => Some(step_control(args.method, args.dt, args.tol)?),
+    };
+    let sidecar = args.out.as_deref().map(simulate::sidecar_path);
+    for path in [args.out.as_deref(), sidecar.as_deref()]
+        .into_iter()
+        .flatten()
+    {
+        check_output_path("--out", path)?;
     }
     let scene = Scene::load(&args.scene)?;
-    let rows = run_simulation(&scene, args.method, step)?;
-    emit("--out", args.out.as_deref(), &to_csv(&rows))
+    let (step, source) = match given {
+        Some(step) => (step, simulate::StepSource::Given),
+        None => simulate::default_step(&scene, args.method),
+    };
+    let work = simulate::check_work(&scene, step, args.max_steps, args.max_output_mb)?;
+    let mut progress = progress::Progress::new(scene.run.t_end, work.steps);
+    let rows = simulate::run_simulation_with_progress(&scene, args.method, step, &mut |t| {
+        progress.update(t);
+    });
+    progress.finish();
+    let csv = to_csv(&rows?);
+    let record = simulate::Record {
+        scene: &args.scene,
+        method: args.method,
+        step,
+        source,
+        run: scene.run,
+    };
+    match (&args.out, &sidecar) {
+        (Some(out), Some(sidecar)) => {
+            emit("--out", Some(sidecar), &record.to_json(out))?;
+            // A record without its CSV would describe nothing.
+            emit("--out", Some(out), &csv).inspect_err(|_| {
+                let _ = std::fs::remove_file(sidecar);
+            })
+        }
+        _ => {
+            if let simulate::StepSource::Default(_) = source {
+                // Standard output carries only the CSV; say what was chosen on stderr.
+                eprintln!("note: {}", record.describe_step());
+            }
+            emit("--out", None, &csv)
+        }
+    }
 }
 
 /// Check `--dt` and `--tol` and match them to the method: fixed-step methods need
@@ -119,7 +181,10 @@ pub fn step_control(method: Method, dt: Option<f64>, tol: Option<f64>) -> Result
         if !(dt.is_finite() && dt > 0.0) {
             return Err(Error::invalid(
                 "--dt",
-                format!("the step size must be positive and finite, got {dt}"),
+                format!(
+                    "the step size must be positive and finite, got {}",
+                    crate::error::num(dt)
+                ),
             ));
         }
     }
@@ -127,7 +192,21 @@ pub fn step_control(method: Method, dt: Option<f64>, tol: Option<f64>) -> Result
         if !(tol.is_finite() && tol > 0.0) {
             return Err(Error::invalid(
                 "--tol",
-                format!("the tolerance must be positive and finite, got {tol}"),
+                format!(
+                    "the tolerance must be positive and finite, got {}",
+                    crate::error::num(tol)
+                ),
+            ));
+        }
+        // Below about 1e-14 the rounding error of a step exceeds the tolerance and the
+        // step size shrinks without end; above 1 a "relative" tolerance means nothing.
+        if !(1e-14..=1.0).contains(&tol) {
+            return Err(Error::invalid(
+                "--tol",
+                format!(
+                    "the tolerance must be between 1e-14 and 1, got {}",
+                    crate::error::num(tol)
+                ),
             ));
         }
     }
@@ -193,31 +272,11 @@ pub fn run_report(args: &ReportArgs) -> Result<String, Error> {
     crate::report::report(size)
 }
 
-/// Fail early, before any work, if `out` cannot be created: its directory must exist and
-/// `out` must not be a directory.
+/// Fail early, before any work, if `out` cannot be written (see [`output`]): a
+/// missing directory, or a path that is not a regular file, a missing one or a link to a
+/// regular file.
 fn check_output_path(field: &str, out: &Path) -> Result<(), Error> {
-    if out.is_dir() {
-        return Err(Error::invalid(
-            field,
-            format!("{} is a directory, not a file", out.display()),
-        ));
-    }
-    let dir = parent_dir(out);
-    if !dir.is_dir() {
-        return Err(Error::invalid(
-            field,
-            format!("the directory {} does not exist", dir.display()),
-        ));
-    }
-    Ok(())
-}
-
-/// The directory a file path lives in (`.` for a bare file name).
-fn parent_dir(path: &Path) -> PathBuf {
-    match path.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
-        _ => PathBuf::from("."),
-    }
+    output::output_target(field, out).map(|_| ())
 }
 
 /// Write finished output to standard output, or atomically to `out`: into a temporary
@@ -235,23 +294,5 @@ fn emit(field: &str, out: Option<&Path>, text: &str) -> Result<(), Error> {
                 source,
             });
     };
-    let name = out
-        .file_name()
-        .map_or_else(|| OsString::from("out"), std::ffi::OsStr::to_os_string);
-    let mut tmp_name = OsString::from(".");
-    tmp_name.push(&name);
-    tmp_name.push(format!(".tmp-{}", std::process::id()));
-    let tmp = parent_dir(out).join(tmp_name);
-    let write_err = |source| Error::Write {
-        field: field.to_string(),
-        path: out.to_path_buf(),
-        source,
-    };
-    let result = std::fs::write(&tmp, text).and_then(|()| std::fs::rename(&tmp, out));
-    if let Err(source) = result {
-        // Best effort: the temporary file may not exist if the write failed early.
-        let _ = std::fs::remove_file(&tmp);
-        return Err(write_err(source));
-    }
-    Ok(())
+    output::write_atomically(field, out, text)
 }

@@ -7,7 +7,7 @@
 
 use ga_core::f64::g3::{Rotor, Sandwich};
 
-use super::args::{Method, Step};
+use super::args::{Method, Step, StepKind};
 use crate::csv::Row;
 use crate::dynamics::{omega_to_vector, Gravity, RigidBody, State};
 use crate::error::Error;
@@ -15,6 +15,7 @@ use crate::integrators::{
     ClosedForm, DormandPrince, ExactFreeBody, ImplicitMidpoint, Integrator, LieRk4, Rk4, Splitting,
 };
 use crate::scene::Scene;
+use crate::simulation::{Sample, Simulation};
 
 /// The absolute tolerance paired with `--tol` (the relative one) for Dormand-Prince.
 const DOPRI_ABSOLUTE_TOLERANCE_RATIO: f64 = 1e-3;
@@ -59,33 +60,335 @@ pub fn principal_body(scene: &Scene) -> Result<RigidBody, Error> {
     })
 }
 
+/// The default limit on the estimated number of steps (`--max-steps`): about a minute of
+/// a fixed-step method in a release build; 10^14 steps would take months.
+pub const DEFAULT_MAX_STEPS: u64 = 100_000_000;
+
+/// The default limit on the estimated CSV size in megabytes (`--max-output-mb`).
+pub const DEFAULT_MAX_OUTPUT_MB: u64 = 1024;
+
+/// The most bytes one CSV row can take: twelve numbers of at most 24 characters
+/// (`-1.2345678901234567e-300`) and their separators.
+pub const MAX_ROW_BYTES: u64 = 12 * 25;
+
+/// What a run will cost, estimated before it starts.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Work {
+    /// The number of steps (or solution evaluations), an upper estimate for fixed steps and
+    /// a rough one for the adaptive method.
+    pub steps: f64,
+    /// The size of the CSV in bytes, an upper bound.
+    pub output_bytes: f64,
+}
+
+/// A bound on the body's angular speed over the run, in radians per unit time: the
+/// angular momentum over the smallest moment (`|w| <= |L| / i_min` for a free body), plus
+/// the speed the potential energy could add under gravity.
+#[must_use]
+pub fn angular_speed_bound(scene: &Scene) -> f64 {
+    let moments = scene.inertia.moments();
+    let smallest = moments.iter().copied().fold(f64::INFINITY, f64::min);
+    let largest = moments.iter().copied().fold(0.0, f64::max);
+    let w = scene.initial.omega;
+    let speed = (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]).sqrt();
+    let mut bound = speed * largest / smallest;
+    if let Some(gravity) = scene.torque {
+        let mass = scene.inertia.mass().unwrap_or(1.0);
+        let potential = mass * gravity.g.norm() * gravity.com_offset.norm();
+        bound += (4.0 * potential / smallest).sqrt();
+    }
+    bound
+}
+
+/// Estimate the steps and output size of a run: `t_end / dt` plus one per sample for
+/// fixed steps; for Dormand-Prince, whose local error grows as `(h |w|)^5`, about
+/// `tol^(-1/5)` steps per radian turned; one evaluation per sample otherwise.
+#[must_use]
+pub fn estimate_work(scene: &Scene, step: Step) -> Work {
+    let samples = scene.run.samples as f64;
+    let steps = match step {
+        Step::Fixed(h) => scene.run.t_end / h + samples,
+        Step::Tolerance(tol) => {
+            let radians = scene.run.t_end * angular_speed_bound(scene);
+            radians * tol.powf(-0.2) + samples
+        }
+        Step::AtSamples => samples,
+    };
+    Work {
+        steps,
+        output_bytes: (samples + 1.0) * MAX_ROW_BYTES as f64,
+    }
+}
+
+/// Refuse a run whose estimated work is above the limits, naming the option that set it.
+pub fn check_work(
+    scene: &Scene,
+    step: Step,
+    max_steps: u64,
+    max_output_mb: u64,
+) -> Result<Work, Error> {
+    use crate::error::num;
+    let work = estimate_work(scene, step);
+    // NaN steps (never expected) count as too many.
+    if work.steps.is_nan() || work.steps > max_steps as f64 {
+        let (field, what) = match step {
+            Step::Fixed(h) => ("--dt", format!("a step of {}", num(h))),
+            Step::Tolerance(tol) => ("--tol", format!("a tolerance of {}", num(tol))),
+            Step::AtSamples => ("run.samples", "one evaluation per sample".to_string()),
+        };
+        return Err(Error::invalid(
+            field,
+            format!(
+                "{what} needs about {} steps to reach t_end = {}, above the limit {}; \
+                 raise it with --max-steps",
+                if work.steps.is_finite() {
+                    format!("{:.1e}", work.steps)
+                } else {
+                    "1e308".to_string()
+                },
+                num(scene.run.t_end),
+                max_steps
+            ),
+        ));
+    }
+    let megabytes = work.output_bytes / 1e6;
+    if megabytes > max_output_mb as f64 {
+        return Err(Error::invalid(
+            "run.samples",
+            format!(
+                "{} rows may take {megabytes:.0} MB of CSV, above the limit {max_output_mb} MB; \
+                 raise it with --max-output-mb",
+                scene.run.samples
+            ),
+        ));
+    }
+    Ok(work)
+}
+
+/// Fixed steps per period of the fastest rotation when `--dt` is not given: RK4's error
+/// per period is then about (2 pi / 200)^4 ~ 1e-6 relative, the splitting's a few 1e-4.
+pub const DEFAULT_STEPS_PER_PERIOD: f64 = 200.0;
+
+/// The relative tolerance of `dopri` when `--tol` is not given.
+pub const DEFAULT_TOLERANCE: f64 = 1e-9;
+
+/// Where the step control of a run came from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum StepSource {
+    /// `--dt` or `--tol` on the command line (or no step control at all).
+    Given,
+    /// Chosen from the scene; the text says how.
+    Default(&'static str),
+}
+
+/// The step control when none is given: `dt = period / 200` with the period `2 pi / w`
+/// of the fastest rotation the body can reach ([`angular_speed_bound`]), or `t_end / 200`
+/// for a body at rest; [`DEFAULT_TOLERANCE`] for `dopri`.
+#[must_use]
+pub fn default_step(scene: &Scene, method: Method) -> (Step, StepSource) {
+    match method.step_kind() {
+        StepKind::Fixed => {
+            let speed = angular_speed_bound(scene);
+            let period = std::f64::consts::TAU / speed;
+            if period.is_finite() && period > 0.0 {
+                (
+                    Step::Fixed(period / DEFAULT_STEPS_PER_PERIOD),
+                    StepSource::Default("the period 2 pi / |w|max over 200"),
+                )
+            } else {
+                (
+                    Step::Fixed(scene.run.t_end / DEFAULT_STEPS_PER_PERIOD),
+                    StepSource::Default("t_end / 200 for a body at rest"),
+                )
+            }
+        }
+        StepKind::Adaptive => (
+            Step::Tolerance(DEFAULT_TOLERANCE),
+            StepSource::Default("the default relative tolerance"),
+        ),
+        StepKind::AtSamples => (Step::AtSamples, StepSource::Given),
+    }
+}
+
+/// The sidecar record of a CSV written with `--out FILE`: `FILE.json`.
+#[must_use]
+pub fn sidecar_path(out: &std::path::Path) -> std::path::PathBuf {
+    let mut name = out.as_os_str().to_os_string();
+    name.push(".json");
+    std::path::PathBuf::from(name)
+}
+
+/// What produced a CSV: the scene file, the method, the step control and where it came
+/// from, the run.
+#[derive(Clone, Copy, Debug)]
+pub struct Record<'a> {
+    /// The scene file as given on the command line.
+    pub scene: &'a std::path::Path,
+    /// The method.
+    pub method: Method,
+    /// The step control used.
+    pub step: Step,
+    /// Where the step control came from.
+    pub source: StepSource,
+    /// The run length and sampling.
+    pub run: crate::scene::Run,
+}
+
+impl Record<'_> {
+    /// One sentence on the step control, for the note on standard error.
+    #[must_use]
+    pub fn describe_step(&self) -> String {
+        let reason = match self.source {
+            StepSource::Given => "as given",
+            StepSource::Default(reason) => reason,
+        };
+        match self.step {
+            Step::Fixed(h) => format!("--dt {} ({reason})", crate::error::num(h)),
+            Step::Tolerance(tol) => format!("--tol {} ({reason})", crate::error::num(tol)),
+            Step::AtSamples => "no step: the solution is evaluated at the samples".to_string(),
+        }
+    }
+
+    /// The record as a JSON object, `csv` naming the file it describes.
+    #[must_use]
+    pub fn to_json(self, csv: &std::path::Path) -> String {
+        let (dt, tol) = match self.step {
+            Step::Fixed(h) => (format!("{h:?}"), "null".to_string()),
+            Step::Tolerance(tol) => ("null".to_string(), format!("{tol:?}")),
+            Step::AtSamples => ("null".to_string(), "null".to_string()),
+        };
+        let source = match self.source {
+            StepSource::Given => "given",
+            StepSource::Default(reason) => reason,
+        };
+        format!(
+            "{{\n  \"csv\": {},\n  \"scene\": {},\n  \"method\": {},\n  \"dt\": {dt},\n  \
+             \"tol\": {tol},\n  \"step_source\": {},\n  \"t_end\": {:?},\n  \"samples\": {},\n  \
+             \"ga_rigid_version\": {}\n}}\n",
+            json_string(&csv.display().to_string()),
+            json_string(&self.scene.display().to_string()),
+            json_string(self.method.name()),
+            json_string(source),
+            self.run.t_end,
+            self.run.samples,
+            json_string(env!("CARGO_PKG_VERSION")),
+        )
+    }
+}
+
+/// A JSON string literal (RFC 8259, section 7).
+fn json_string(text: &str) -> String {
+    let mut out = String::with_capacity(text.len() + 2);
+    out.push('"');
+    for c in text.chars() {
+        match c {
+            '"' => out.push_str("\\\""),
+            '\\' => out.push_str("\\\\"),
+            '\n' => out.push_str("\\n"),
+            c if (c as u32) < 0x20 => out.push_str(&format!("\\u{:04x}", c as u32)),
+            c => out.push(c),
+        }
+    }
+    out.push('"');
+    out
+}
+
 /// Integrate `scene` with `method` and return one row per sample time.
 pub fn run_simulation(scene: &Scene, method: Method, step: Step) -> Result<Vec<Row>, Error> {
+    run_simulation_with_progress(scene, method, step, &mut |_| {})
+}
+
+/// [`run_simulation`], calling `progress(t)` after each sample (for a progress display).
+pub fn run_simulation_with_progress(
+    scene: &Scene,
+    method: Method,
+    step: Step,
+    progress: &mut dyn FnMut(f64),
+) -> Result<Vec<Row>, Error> {
     let body = principal_body(scene)?;
     let principal = scene.inertia.rotor();
-    let mut integrator = integrator_for(method, step)?;
-    let mut state = State {
+    let integrator = integrator_for(method, step)?;
+    let state = State {
         rotor: scene.initial.rotor * principal,
         omega: principal.reverse().sandwich(scene.initial.omega_bivector()),
     };
-    let times = scene.run.times();
-    let mut rows = Vec::with_capacity(times.len());
-    let mut t = 0.0;
-    for &sample in &times {
-        state = integrator.advance(&body, t, state, sample - t)?;
-        t = sample;
-        rows.push(row(&body, principal, t, &state));
+    // The dynamics name the principal moments `body.moments`; a scene may have written
+    // its body as a shape, points or a mesh, and the message should name what it wrote.
+    let body_field = |e: Error| {
+        if e.field() == Some("body.moments") {
+            e.at(scene.body_field())
+        } else {
+            e
+        }
+    };
+    let mut simulation = Simulation::new(body, state, integrator);
+    let mut rows = Vec::with_capacity(scene.run.samples);
+    for sample in simulation.samples(scene.run.t_end, scene.run.samples) {
+        let sample = sample.map_err(body_field)?;
+        rows.push(finite_row(method, row(principal, &sample))?);
+        progress(sample.t);
     }
     Ok(rows)
 }
 
-fn row(body: &RigidBody, principal: Rotor, t: f64, state: &State) -> Row {
-    let momentum = body.space_momentum(state).undual();
+/// The row unchanged if every number in it is finite; otherwise an error naming the
+/// method, the time and the first column that is not, so that no method can write `inf`
+/// or `NaN` into a CSV and exit 0.
+fn finite_row(method: Method, row: Row) -> Result<Row, Error> {
+    let columns = crate::csv::HEADER.split(',');
+    match columns.zip(row.values()).find(|(_, x)| !x.is_finite()) {
+        None => Ok(row),
+        Some((column, x)) => Err(Error::invalid(
+            method.name(),
+            format!(
+                "{column} is not finite ({x}) at t = {:e}: the scene's numbers are too large \
+                 for this method",
+                row.t
+            ),
+        )),
+    }
+}
+
+/// A sample of the principal-frame simulation as a row in the scene's frame.
+fn row(principal: Rotor, sample: &Sample) -> Row {
+    let state = &sample.state;
     Row {
-        t,
+        t: sample.t,
         rotor: state.rotor * principal.reverse(),
         omega: omega_to_vector(principal.sandwich(state.omega)),
-        energy: body.total_energy(t, state),
-        momentum: momentum.to_array(),
+        energy: sample.energy,
+        momentum: sample.momentum.undual().to_array(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_row_with_an_infinite_energy_is_an_error_naming_the_method_and_column() {
+        let good = Row {
+            t: 1.0,
+            rotor: Rotor::ONE,
+            omega: [0.0, 0.0, 1.0],
+            energy: 0.5,
+            momentum: [0.0, 0.0, 1.0],
+        };
+        assert_eq!(finite_row(Method::Exact, good).unwrap(), good);
+        let bad = Row {
+            energy: f64::INFINITY,
+            ..good
+        };
+        let e = finite_row(Method::Splitting, bad).unwrap_err().to_string();
+        assert!(
+            e.starts_with("splitting: energy is not finite (inf) at t = 1e0"),
+            "{e}"
+        );
+        let nan = Row {
+            omega: [0.0, f64::NAN, 1.0],
+            ..good
+        };
+        let e = finite_row(Method::Exact, nan).unwrap_err().to_string();
+        assert!(e.starts_with("exact: w2 is not finite (NaN)"), "{e}");
     }
 }

@@ -3,6 +3,7 @@ use ga_core::f64::g3::{Bivector, Commutator, Rotor, Sandwich};
 use super::state::State;
 use super::torque::Torque;
 use crate::error::Error;
+use crate::inertia::Inertia;
 
 /// A rigid body in its principal frame: the moments `i1, i2, i3` about the body axes
 /// e1, e2, e3 (so `I(I e_k) = i_k I e_k`), and an optional applied torque.
@@ -160,5 +161,39 @@ impl RigidBody {
         } else {
             None
         }
+    }
+}
+
+/// The torque-free body in the inertia's principal frame: its principal moments. The
+/// principal rotor, mass and centre of mass are not part of a [`RigidBody`]; turn states
+/// into the principal frame with [`Inertia::rotor`] (as the `simulate` command does).
+impl From<&Inertia> for RigidBody {
+    fn from(inertia: &Inertia) -> Self {
+        // An `Inertia` holds finite positive moments, so no check can fail here.
+        let moments = inertia.moments();
+        RigidBody {
+            moments,
+            inverse_moments: moments.map(|i| 1.0 / i),
+            torque: None,
+        }
+    }
+}
+
+impl From<Inertia> for RigidBody {
+    fn from(inertia: Inertia) -> Self {
+        RigidBody::from(&inertia)
+    }
+}
+
+/// The body's inertia: its moments in its own (principal) frame, with no mass recorded
+/// and the centre of mass at the origin; a torque is not part of an inertia.
+impl From<&RigidBody> for Inertia {
+    fn from(body: &RigidBody) -> Self {
+        Inertia::new_unchecked(
+            body.moments,
+            Rotor::ONE,
+            None,
+            ga_core::f64::g3::Vector::ZERO,
+        )
     }
 }

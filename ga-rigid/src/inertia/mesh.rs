@@ -19,6 +19,9 @@ use super::eigen::Matrix3;
 use super::inertia::Inertia;
 use crate::error::{positive, Error};
 
+/// The largest OBJ file read: 256 MiB is some five million triangles.
+pub const MAX_MESH_BYTES: u64 = 256 << 20;
+
 /// A triangle mesh: vertex positions and triangles as 0-based vertex indices, wound
 /// counter-clockwise when seen from outside.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -140,13 +143,10 @@ impl Mesh {
         Ok(mesh)
     }
 
-    /// Read and parse an OBJ file (see [`Mesh::parse_obj`]).
+    /// Read and parse an OBJ file (see [`Mesh::parse_obj`]): only a regular file (or a
+    /// link to one) of at most [`MAX_MESH_BYTES`].
     pub fn read_obj(path: &Path) -> Result<Mesh, Error> {
-        let text = std::fs::read_to_string(path).map_err(|source| Error::Read {
-            field: "mesh".to_string(),
-            path: path.to_path_buf(),
-            source,
-        })?;
+        let text = crate::input::read_text("mesh", path, MAX_MESH_BYTES)?;
         Mesh::parse_obj(&text, path)
     }
 

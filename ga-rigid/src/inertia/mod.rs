@@ -14,5 +14,5 @@ pub use eigen::{
 };
 pub(crate) use inertia::normalize_rotor;
 pub use inertia::Inertia;
-pub use mesh::{Mesh, MeshMoments};
+pub use mesh::{Mesh, MeshMoments, MAX_MESH_BYTES};
 pub use solids::Solid;

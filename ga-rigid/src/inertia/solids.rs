@@ -8,13 +8,13 @@
 //! about the apex.
 
 use ga_core::f64::g3::*;
-use serde::Deserialize;
+use serde::{Deserialize, Serialize};
 
 use super::inertia::Inertia;
 use crate::error::{positive, Error};
 
 /// A homogeneous solid with its mass, as written in a scene's `shape = { kind = ... }`.
-#[derive(Clone, Copy, Debug, PartialEq, Deserialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Deserialize, Serialize)]
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
 pub enum Solid {
     /// A rectangular box with edge lengths `size = [a, b, c]` along e1, e2, e3.

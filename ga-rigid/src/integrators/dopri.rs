@@ -242,7 +242,7 @@ impl Integrator for DormandPrince {
             if 0.1 * h <= f64::EPSILON * t.abs() || !h.is_finite() {
                 return Err(Error::invalid(
                     "dopri5",
-                    format!("step size underflow ({h:e}) at t = {t}"),
+                    format!("step size underflow ({h:e}) at t = {}", error::num(t)),
                 ));
             }
             // Land on t_end exactly; the proposal survives for the next call.

@@ -35,7 +35,11 @@ pub(crate) fn substeps(h: f64, dt: f64) -> Result<(u64, f64), Error> {
     if n > u64::MAX as f64 {
         return Err(Error::invalid(
             "dt",
-            format!("{dt} needs more than 2^64 sub-steps of {h}"),
+            format!(
+                "{} needs more than 2^64 sub-steps of {}",
+                error::num(dt),
+                error::num(h)
+            ),
         ));
     }
     // `as` saturates and `n` is a positive whole number below 2^64 here.

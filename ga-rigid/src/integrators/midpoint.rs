@@ -104,9 +104,11 @@ impl ImplicitMidpoint {
         Err(Error::invalid(
             "midpoint",
             format!(
-                "Newton's method found no midpoint in {MAX_ITERATIONS} iterations at t = {t} \
-                 with step {h} (h |w| = {}); take a smaller step",
-                h.abs() * omega0.norm()
+                "Newton's method found no midpoint in {MAX_ITERATIONS} iterations at t = {} \
+                 with step {} (h |w| = {}); take a smaller step",
+                crate::error::num(t),
+                crate::error::num(h),
+                crate::error::num(h.abs() * omega0.norm())
             ),
         ))
     }

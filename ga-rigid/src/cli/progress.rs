@@ -1,0 +1,54 @@
+//! A progress line on standard error for long runs, only when standard error is a
+//! terminal: pipes and log files get nothing, so the one-line error rule still holds there.
+
+use std::io::{IsTerminal as _, Write as _};
+use std::time::{Duration, Instant};
+
+/// Runs estimated at fewer steps than this finish in about a second; no progress for them.
+const LONG_RUN_STEPS: f64 = 1e7;
+
+/// How often the line is redrawn.
+const INTERVAL: Duration = Duration::from_millis(250);
+
+/// The progress display of one run; inactive unless the run is long and stderr a terminal.
+pub struct Progress {
+    t_end: f64,
+    active: bool,
+    last: Instant,
+    drawn: bool,
+}
+
+impl Progress {
+    /// A display for a run to `t_end` of about `steps` steps.
+    pub fn new(t_end: f64, steps: f64) -> Self {
+        Progress {
+            t_end,
+            active: steps >= LONG_RUN_STEPS && std::io::stderr().is_terminal(),
+            last: Instant::now(),
+            drawn: false,
+        }
+    }
+
+    /// Redraw the line for time `t` if the interval has passed.
+    pub fn update(&mut self, t: f64) {
+        if !self.active || self.last.elapsed() < INTERVAL {
+            return;
+        }
+        self.last = Instant::now();
+        self.drawn = true;
+        let percent = 100.0 * t / self.t_end;
+        let _ = write!(
+            std::io::stderr(),
+            "\r\x1b[Ksimulate: t = {} of {} ({percent:.1}%)",
+            crate::error::num(t),
+            crate::error::num(self.t_end)
+        );
+    }
+
+    /// Erase the line, leaving the terminal as it was.
+    pub fn finish(&mut self) {
+        if self.drawn {
+            let _ = write!(std::io::stderr(), "\r\x1b[K");
+        }
+    }
+}
