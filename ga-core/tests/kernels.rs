@@ -73,11 +73,17 @@ macro_rules! kernel_tests {
                     kernels::$scalar::sandwich_all(r, &x, &mut all).unwrap();
                     let mut in_place = x.clone();
                     r.sandwich_vectors(&mut in_place);
-                    assert_eq!(all, in_place, "sandwich_all, length {len}");
+                    // Fused multiply-adds round once where the item loop rounds twice.
+                    let tolerance = 8.0 * <$scalar>::EPSILON;
                     for i in 0..len {
+                        let scale = r.norm_squared() * (1.0 + x[i].norm());
+                        assert!(
+                            (all[i] - in_place[i]).norm() <= tolerance * scale,
+                            "sandwich_all against sandwich_vectors, length {len}, item {i}"
+                        );
                         let direct = r.sandwich(x[i]);
                         assert!(
-                            (all[i] - direct).norm() <= 1e-5 * (1.0 + direct.norm()),
+                            (all[i] - direct).norm() <= tolerance * scale,
                             "sandwich_all against sandwich, length {len}, item {i}"
                         );
                     }
