@@ -617,7 +617,7 @@ fn dopri_gives_up_after_its_step_budget() {
         .unwrap_err();
     assert_eq!(
         e.to_string(),
-        "dopri5: more than 10 steps needed before t = 10"
+        "dopri: more than 10 steps needed before t = 10"
     );
 }
 

@@ -17,9 +17,10 @@ use std::process::ExitCode;
 
 use clap::Parser;
 
-pub use args::{Cli, Command, InertiaArgs, Method, ReportArgs, SimulateArgs, Step, StepKind};
+pub use crate::integrators::{Method, Step, StepKind};
+pub use args::{Cli, Command, InertiaArgs, ReportArgs, SimulateArgs};
 pub use inertia_cmd::describe as describe_inertia;
-pub use simulate::{integrator_for, principal_body, run_simulation};
+pub use simulate::{principal_body, run_simulation};
 
 use crate::csv::to_csv;
 use crate::error::Error;
@@ -51,8 +52,18 @@ where
         Ok(()) => 0,
         Err(e) => {
             eprintln!("{e}");
-            e.exit_code()
+            exit_code(&e)
         }
+    }
+}
+
+/// The process exit status for an error: 2 for bad input (the user can fix the command
+/// line or the files), 1 for failures of the environment or of the program.
+#[must_use]
+pub fn exit_code(error: &Error) -> u8 {
+    match error {
+        Error::Write { .. } | Error::NotAvailable { .. } => 1,
+        _ => 2,
     }
 }
 

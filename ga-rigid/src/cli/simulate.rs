@@ -7,40 +7,11 @@
 
 use ga_core::f64::g3::{Rotor, Sandwich};
 
-use super::args::{Method, Step};
 use crate::csv::Row;
 use crate::dynamics::{omega_to_vector, Gravity, RigidBody, State};
 use crate::error::Error;
-use crate::integrators::{
-    ClosedForm, DormandPrince, ExactFreeBody, ImplicitMidpoint, Integrator, LieRk4, Rk4, Splitting,
-};
+use crate::integrators::{Method, Step};
 use crate::scene::Scene;
-
-/// The absolute tolerance paired with `--tol` (the relative one) for Dormand-Prince.
-const DOPRI_ABSOLUTE_TOLERANCE_RATIO: f64 = 1e-3;
-
-/// The integrator for a method and its validated step control.
-pub fn integrator_for(method: Method, step: Step) -> Result<Box<dyn Integrator>, Error> {
-    let fixed = |what: &str| match step {
-        Step::Fixed(h) => Ok(h),
-        _ => Err(Error::invalid("--dt", format!("{what} needs --dt"))),
-    };
-    Ok(match method {
-        Method::ClosedForm => Box::new(ClosedForm::new()),
-        Method::Exact => Box::new(ExactFreeBody::new()),
-        Method::Rk4 => Box::new(Rk4::new(fixed("rk4")?)?),
-        Method::LieRk4 => Box::new(LieRk4::new(fixed("lie-rk4")?)?),
-        Method::Midpoint => Box::new(ImplicitMidpoint::new(fixed("midpoint")?)?),
-        Method::Splitting => Box::new(Splitting::new(fixed("splitting")?)?),
-        Method::Dopri => match step {
-            Step::Tolerance(tol) => Box::new(DormandPrince::new(
-                tol,
-                tol * DOPRI_ABSOLUTE_TOLERANCE_RATIO,
-            )?),
-            _ => return Err(Error::invalid("--tol", "dopri needs --tol")),
-        },
-    })
-}
 
 /// The body of a scene in its principal frame, with gravity when the scene has it.
 pub fn principal_body(scene: &Scene) -> Result<RigidBody, Error> {
@@ -63,7 +34,7 @@ pub fn principal_body(scene: &Scene) -> Result<RigidBody, Error> {
 pub fn run_simulation(scene: &Scene, method: Method, step: Step) -> Result<Vec<Row>, Error> {
     let body = principal_body(scene)?;
     let principal = scene.inertia.rotor();
-    let mut integrator = integrator_for(method, step)?;
+    let mut integrator = method.integrator(step)?;
     let mut state = State {
         rotor: scene.initial.rotor * principal,
         omega: principal.reverse().sandwich(scene.initial.omega_bivector()),

@@ -2,10 +2,10 @@ use std::time::{Duration, Instant};
 
 use ga_core::f64::g3::Rotor;
 
-use crate::cli::{integrator_for, Method, Step};
 use crate::dynamics::State;
 use crate::error::Error;
 use crate::integrators::{DormandPrince, ExactFreeBody, Integrator};
+use crate::integrators::{Method, Step};
 
 use super::scenes::TestScene;
 
@@ -29,7 +29,7 @@ pub fn run(scene: &TestScene, method: Method, step: Step, repeats: u32) -> Resul
     let mut best = Duration::MAX;
     let mut end = Err(Error::invalid("report", "no run"));
     for _ in 0..repeats.max(1) {
-        let mut integrator = integrator_for(method, step)?;
+        let mut integrator = method.integrator(step)?;
         let start = Instant::now();
         let result = integrator.advance(&scene.body, 0.0, scene.initial, scene.t_end);
         best = best.min(start.elapsed());

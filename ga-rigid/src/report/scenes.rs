@@ -1,8 +1,8 @@
 use ga_core::f64::g3::{Rotor, Vector};
 
-use crate::cli::Method;
 use crate::dynamics::{omega_from_vector, Gravity, RigidBody, State};
 use crate::error::Error;
+use crate::integrators::Method;
 
 /// A test model: a body, a start and an end time, and the step sizes that make sense for it.
 pub struct TestScene {
@@ -48,15 +48,7 @@ impl TestScene {
     pub fn methods(&self) -> (Vec<Method>, Vec<(Method, &'static str)>) {
         let mut run = Vec::new();
         let mut left_out = Vec::new();
-        for method in [
-            Method::ClosedForm,
-            Method::Exact,
-            Method::Rk4,
-            Method::LieRk4,
-            Method::Midpoint,
-            Method::Splitting,
-            Method::Dopri,
-        ] {
+        for method in Method::ALL {
             match method {
                 Method::ClosedForm if self.body.has_torque() => {
                     left_out.push((method, "a torque acts"))

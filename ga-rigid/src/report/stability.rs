@@ -2,8 +2,8 @@
 
 use std::fmt::Write as _;
 
-use crate::cli::{Step, StepKind};
 use crate::error::Error;
+use crate::integrators::{Step, StepKind};
 
 use super::measure::{attitude_error, energy_drift, momentum_error, reference, run};
 use super::scenes::TestScene;
