@@ -792,3 +792,54 @@ fn inertia_of_bad_scene_fails_the_same_way() {
     assert_eq!(stderr.lines().count(), 1, "{stderr}");
     assert!(stderr.starts_with("body.moments: "), "{stderr}");
 }
+
+#[test]
+fn report_out_that_is_a_file_is_rejected() {
+    let dir = test_dir("report_out_file");
+    write(&dir, "taken", "x");
+    let out = run(&dir, &["report", "--quick", "--out", "taken"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(out.stdout.is_empty());
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(stderr.starts_with("--out: "), "{stderr}");
+    assert_eq!(std::fs::read_to_string(dir.join("taken")).unwrap(), "x");
+}
+
+#[test]
+fn report_scenes_without_toml_files_are_rejected() {
+    let dir = test_dir("report_no_scenes");
+    std::fs::create_dir(dir.join("empty")).unwrap();
+    let out = run(
+        &dir,
+        &["report", "--quick", "--out", "r", "--scenes", "empty"],
+    );
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(stderr.starts_with("--scenes: "), "{stderr}");
+    assert!(!dir.join("r").join("results.csv").exists());
+}
+
+#[test]
+fn report_scene_with_a_bad_field_is_named() {
+    let dir = test_dir("report_bad_scene");
+    std::fs::create_dir(dir.join("mine")).unwrap();
+    write(
+        &dir.join("mine"),
+        "bad.toml",
+        &scene("[body]\nmoments = [1.0, -2.0, 2.5]\n", INITIAL, RUN),
+    );
+    let out = run(
+        &dir,
+        &["report", "--quick", "--out", "r", "--scenes", "mine"],
+    );
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(stderr.starts_with("--scenes: "), "{stderr}");
+    assert!(
+        stderr.contains("bad.toml") && stderr.contains("body.moments"),
+        "{stderr}"
+    );
+}

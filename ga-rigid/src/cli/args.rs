@@ -64,12 +64,16 @@ pub struct InertiaArgs {
 /// Arguments of `report`.
 #[derive(Debug, Args)]
 pub struct ReportArgs {
-    /// Write the report to this file instead of standard output (created only on success).
-    #[arg(long, value_name = "FILE")]
-    pub out: Option<PathBuf>,
-    /// Three settings per method and one timing run instead of nine and the best of three.
+    /// The directory to write results.csv, one SVG per scene and index.html into
+    /// (created if missing; files are replaced only when complete).
+    #[arg(long, value_name = "DIR", default_value = "report")]
+    pub out: PathBuf,
+    /// Fewer steps and tolerances per method: well under a minute.
     #[arg(long)]
     pub quick: bool,
+    /// Add every `*.toml` scene (the `simulate` format) in this directory to the suite.
+    #[arg(long, value_name = "DIR")]
+    pub scenes: Option<PathBuf>,
 }
 
 // clap learns the method names from the library's registry: one table, one name each.

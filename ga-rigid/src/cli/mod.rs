@@ -8,6 +8,7 @@
 
 mod args;
 mod inertia_cmd;
+mod report_cmd;
 mod simulate;
 
 use std::ffi::OsString;
@@ -185,23 +186,9 @@ fn inertia(args: &InertiaArgs) -> Result<(), Error> {
     emit("--out", None, &describe_inertia(&scene))
 }
 
-/// `report`: produce the report and write it.
+/// `report`: run the suite and write its files.
 fn report(args: &ReportArgs) -> Result<(), Error> {
-    if let Some(out) = &args.out {
-        check_output_path("--out", out)?;
-    }
-    let text = run_report(args)?;
-    emit("--out", args.out.as_deref(), &text)
-}
-
-/// The report text: every method on the reference scenes, then the stability cases.
-pub fn run_report(args: &ReportArgs) -> Result<String, Error> {
-    let size = if args.quick {
-        crate::report::Size::Quick
-    } else {
-        crate::report::Size::Full
-    };
-    crate::report::report(size)
+    report_cmd::run(args)
 }
 
 /// Fail early, before any work, if `out` cannot be created: its directory must exist and

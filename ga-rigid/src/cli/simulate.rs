@@ -8,26 +8,14 @@
 use ga_core::f64::g3::{Rotor, Sandwich};
 
 use crate::csv::Row;
-use crate::dynamics::{omega_to_vector, Gravity, RigidBody, State};
+use crate::dynamics::{omega_to_vector, RigidBody, State};
 use crate::error::Error;
 use crate::integrators::{Method, Step};
 use crate::scene::Scene;
 
 /// The body of a scene in its principal frame, with gravity when the scene has it.
 pub fn principal_body(scene: &Scene) -> Result<RigidBody, Error> {
-    let body = RigidBody::new_unphysical(scene.inertia.moments())?;
-    Ok(match scene.torque {
-        None => body,
-        Some(gravity) => {
-            let principal = scene.inertia.rotor();
-            body.with_torque(Gravity {
-                // A `moments` body has no mass: its `g` is the weight m g.
-                mass: scene.inertia.mass().unwrap_or(1.0),
-                g: gravity.g,
-                com_offset: principal.reverse().sandwich(gravity.com_offset),
-            })
-        }
-    })
+    scene.principal_body()
 }
 
 /// Integrate `scene` with `method` and return one row per sample time.
@@ -35,10 +23,7 @@ pub fn run_simulation(scene: &Scene, method: Method, step: Step) -> Result<Vec<R
     let body = principal_body(scene)?;
     let principal = scene.inertia.rotor();
     let mut integrator = method.integrator(step)?;
-    let mut state = State {
-        rotor: scene.initial.rotor * principal,
-        omega: principal.reverse().sandwich(scene.initial.omega_bivector()),
-    };
+    let mut state = scene.principal_state();
     let times = scene.run.times();
     let mut rows = Vec::with_capacity(times.len());
     let mut t = 0.0;

@@ -1,0 +1,132 @@
+//! One work-precision diagram per scene, as SVG text: the largest attitude error over the
+//! run against the median run time, log-log, one line per method with its points
+//! labelled by step or tolerance, the legend in its own panel beside the plot.
+
+use plotters::prelude::*;
+
+use crate::error::Error;
+use crate::integrators::Method;
+
+use super::SceneResult;
+
+/// Errors below this are drawn at it: a log axis has no zero.
+const ERROR_FLOOR: f64 = 1e-17;
+
+/// Each method's colour, the same in every diagram (by the method's place in
+/// [`Method::ALL`]; a method added later takes the next colour of the palette).
+#[must_use]
+pub fn method_colour(method: Method) -> RGBColor {
+    const PALETTE: [RGBColor; 10] = [
+        RGBColor(140, 86, 75),   // brown
+        RGBColor(0, 0, 0),       // black
+        RGBColor(214, 39, 40),   // red
+        RGBColor(255, 127, 14),  // orange
+        RGBColor(44, 160, 44),   // green
+        RGBColor(31, 119, 180),  // blue
+        RGBColor(148, 103, 189), // purple
+        RGBColor(227, 119, 194), // pink
+        RGBColor(23, 190, 207),  // cyan
+        RGBColor(188, 189, 34),  // olive
+    ];
+    let index = Method::ALL.iter().position(|&m| m == method).unwrap_or(0);
+    PALETTE[index % PALETTE.len()]
+}
+
+/// The scene's work-precision diagram as an SVG document.
+pub fn svg(scene: &SceneResult) -> Result<String, Error> {
+    let mut text = String::new();
+    draw(scene, &mut text).map_err(|e| Error::invalid("plot", e.to_string()))?;
+    Ok(text)
+}
+
+type DrawResult = Result<(), Box<dyn std::error::Error>>;
+
+fn draw(scene: &SceneResult, text: &mut String) -> DrawResult {
+    let mut methods: Vec<Method> = scene.rows.iter().map(|r| r.method).collect();
+    methods.dedup();
+    let points = |method: Method| -> Vec<(f64, f64, String)> {
+        scene
+            .rows
+            .iter()
+            .filter(|r| r.method == method)
+            .filter_map(|r| {
+                let e = r.errors?.attitude_max.max(ERROR_FLOOR);
+                Some((r.time_us()?, e, r.label()))
+            })
+            .filter(|(t, e, _)| t.is_finite() && e.is_finite() && *t > 0.0)
+            .collect()
+    };
+    let all: Vec<(f64, f64, String)> = methods.iter().flat_map(|&m| points(m)).collect();
+    let (mut t_lo, mut t_hi, mut e_lo, mut e_hi) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+    for (t, e, _) in &all {
+        t_lo = t_lo.min(*t);
+        t_hi = t_hi.max(*t);
+        e_lo = e_lo.min(*e);
+        e_hi = e_hi.max(*e);
+    }
+    if all.is_empty() {
+        (t_lo, t_hi, e_lo, e_hi) = (1.0, 10.0, 1e-10, 1.0);
+    }
+    // Room around the points, and for the labels to the right of the last ones.
+    let x_range = (t_lo / 2.0)..(t_hi * 6.0);
+    let y_range = (e_lo / 5.0)..(e_hi * 5.0);
+
+    let root = SVGBackend::with_string(text, (960, 560)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let (plot_area, legend_area) = root.split_horizontally(760);
+    let mut chart = ChartBuilder::on(&plot_area)
+        .caption(&scene.name, ("sans-serif", 20))
+        .margin(12)
+        .x_label_area_size(48)
+        .y_label_area_size(80)
+        .build_cartesian_2d(x_range.log_scale(), y_range.log_scale())?;
+    chart
+        .configure_mesh()
+        .x_desc("run time, median of repeated runs (µs)")
+        .y_desc("largest attitude error over the run (rad)")
+        .x_label_formatter(&|x| format!("{x:.0e}"))
+        .y_label_formatter(&|y| format!("{y:.0e}"))
+        .label_style(("sans-serif", 13))
+        .axis_desc_style(("sans-serif", 15))
+        .light_line_style(RGBColor(235, 235, 235))
+        .draw()?;
+    for &method in &methods {
+        let colour = method_colour(method);
+        let pts = points(method);
+        chart.draw_series(LineSeries::new(
+            pts.iter().map(|(t, e, _)| (*t, *e)),
+            colour.stroke_width(2),
+        ))?;
+        chart.draw_series(pts.iter().map(|(t, e, label)| {
+            EmptyElement::at((*t, *e))
+                + Circle::new((0, 0), 4, colour.filled())
+                + Text::new(
+                    label.clone(),
+                    (6, -12),
+                    ("sans-serif", 11).into_font().color(&colour),
+                )
+        }))?;
+    }
+
+    legend_area.fill(&WHITE)?;
+    let font = ("sans-serif", 15).into_font();
+    legend_area.draw(&Text::new("method", (10, 40), font.clone()))?;
+    for (i, &method) in methods.iter().enumerate() {
+        let y = 70 + 26 * i as i32;
+        let colour = method_colour(method);
+        legend_area.draw(&Rectangle::new([(10, y), (34, y + 4)], colour.filled()))?;
+        let failed = scene
+            .rows
+            .iter()
+            .filter(|r| r.method == method && r.failure.is_some())
+            .count();
+        let name = if failed > 0 {
+            format!("{} ({failed} failed)", method.name())
+        } else {
+            method.name().to_string()
+        };
+        legend_area.draw(&Text::new(name, (42, y - 6), font.clone()))?;
+    }
+    root.present()?;
+    Ok(())
+}
