@@ -843,3 +843,60 @@ fn report_scene_with_a_bad_field_is_named() {
         "{stderr}"
     );
 }
+
+#[test]
+fn simulate_plot_writes_an_svg_of_omega_and_energy_drift() {
+    let dir = test_dir("simulate_plot");
+    write(&dir, "scene.toml", &scene(BODY, INITIAL, RUN));
+    let out = run(
+        &dir,
+        &[
+            "simulate",
+            "scene.toml",
+            "--method",
+            "rk4",
+            "--dt",
+            "0.01",
+            "--out",
+            "out.csv",
+            "--plot",
+            "plot.svg",
+        ],
+    );
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let svg = std::fs::read_to_string(dir.join("plot.svg")).unwrap();
+    assert!(svg.starts_with("<svg"), "{}", &svg[..svg.len().min(80)]);
+    assert!(svg.contains("body angular velocity (rad/s)"));
+    assert!(svg.contains("relative energy drift"));
+    assert!(dir.join("out.csv").is_file());
+}
+
+#[test]
+fn simulate_plot_into_a_missing_directory_is_rejected() {
+    let dir = test_dir("simulate_plot_missing_dir");
+    write(&dir, "scene.toml", &scene(BODY, INITIAL, RUN));
+    let out = run(
+        &dir,
+        &[
+            "simulate",
+            "scene.toml",
+            "--method",
+            "rk4",
+            "--dt",
+            "0.01",
+            "--out",
+            "out.csv",
+            "--plot",
+            "nowhere/plot.svg",
+        ],
+    );
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(stderr.starts_with("--plot: "), "{stderr}");
+    assert!(!dir.join("out.csv").exists());
+}

@@ -51,6 +51,10 @@ pub struct SimulateArgs {
     /// Write the CSV to this file instead of standard output (created only on success).
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
+    /// Also draw the body angular velocity and the relative energy drift against time
+    /// into this SVG file.
+    #[arg(long, value_name = "FILE.svg")]
+    pub plot: Option<PathBuf>,
 }
 
 /// Arguments of `inertia`.

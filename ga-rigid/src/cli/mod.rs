@@ -112,8 +112,19 @@ fn simulate(args: &SimulateArgs) -> Result<(), Error> {
     if let Some(out) = &args.out {
         check_output_path("--out", out)?;
     }
+    if let Some(plot) = &args.plot {
+        check_output_path("--plot", plot)?;
+    }
     let scene = Scene::load(&args.scene)?;
     let rows = run_simulation(&scene, args.method, step)?;
+    if let Some(plot) = &args.plot {
+        let title = format!("{}: {}", args.scene.display(), args.method.name());
+        emit(
+            "--plot",
+            Some(plot),
+            &crate::report::simulation_svg(&rows, &title)?,
+        )?;
+    }
     emit("--out", args.out.as_deref(), &to_csv(&rows))
 }
 

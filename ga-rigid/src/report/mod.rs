@@ -18,7 +18,7 @@ pub use measure::{
     MIN_REPEATS, MIN_TOTAL_TIME, TIGHTEST_TOL,
 };
 pub use page::{html, svg_name};
-pub use plot::{method_colour, svg};
+pub use plot::{method_colour, simulation_svg, svg};
 pub use results::{csv, CSV_HEADER};
 pub use scenes::{reference_scenes, stability_scenes, suite, Sweep, TestScene, SAMPLES};
 

@@ -4,6 +4,7 @@
 
 use plotters::prelude::*;
 
+use crate::csv::Row;
 use crate::error::Error;
 use crate::integrators::Method;
 
@@ -127,6 +128,107 @@ fn draw(scene: &SceneResult, text: &mut String) -> DrawResult {
         };
         legend_area.draw(&Text::new(name, (42, y - 6), font.clone()))?;
     }
+    root.present()?;
+    Ok(())
+}
+
+/// A tick label: zero as `0` (not a rounding residue like -2.2e-16), plain decimals for
+/// moderate sizes, scientific otherwise.
+fn tick(y: f64, span: f64) -> String {
+    if y.abs() <= 1e-9 * span {
+        "0".to_string()
+    } else if (1e-2..1e4).contains(&y.abs()) {
+        format!("{y:.3}")
+    } else {
+        format!("{y:.2e}")
+    }
+}
+
+/// A quick look at one `simulate` run as an SVG document: the body angular velocity
+/// components against time above, the relative energy drift `(E - E0) / |E0|` below.
+pub fn simulation_svg(rows: &[Row], title: &str) -> Result<String, Error> {
+    let mut text = String::new();
+    draw_simulation(rows, title, &mut text).map_err(|e| Error::invalid("plot", e.to_string()))?;
+    Ok(text)
+}
+
+fn draw_simulation(rows: &[Row], title: &str, text: &mut String) -> DrawResult {
+    let t_end = rows.last().map_or(1.0, |r| r.t).max(f64::MIN_POSITIVE);
+    let e0 = rows.first().map_or(1.0, |r| r.energy);
+    let scale = if e0 == 0.0 { 1.0 } else { e0.abs() };
+    let drift: Vec<(f64, f64)> = rows
+        .iter()
+        .map(|r| (r.t, (r.energy - e0) / scale))
+        .collect();
+    let bounds = |values: &mut dyn Iterator<Item = f64>| {
+        let (lo, hi) = values.fold((f64::MAX, f64::MIN), |(a, b), x| (a.min(x), b.max(x)));
+        // Room above and below; a constant gets a band around it.
+        let pad = if hi > lo {
+            0.05 * (hi - lo)
+        } else {
+            lo.abs().max(1e-300) * 0.1 + 1e-300
+        };
+        (lo - pad)..(hi + pad)
+    };
+    let w_range = bounds(&mut rows.iter().flat_map(|r| r.omega));
+    // Head room for the legend, so that it covers no curve.
+    let w_range = w_range.start..(w_range.end + 0.3 * (w_range.end - w_range.start));
+    let w_span = w_range.end - w_range.start;
+    let d_range = bounds(&mut drift.iter().map(|d| d.1));
+
+    let root = SVGBackend::with_string(text, (960, 720)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let root = root.titled(title, ("sans-serif", 20))?;
+    let (upper, lower) = root.split_vertically(400);
+    let mut chart = ChartBuilder::on(&upper)
+        .margin(12)
+        .x_label_area_size(40)
+        .y_label_area_size(80)
+        .build_cartesian_2d(0.0..t_end, w_range)?;
+    chart
+        .configure_mesh()
+        .x_desc("time t (s)")
+        .y_desc("body angular velocity (rad/s)")
+        .y_label_formatter(&|y| tick(*y, w_span))
+        .label_style(("sans-serif", 13))
+        .axis_desc_style(("sans-serif", 15))
+        .draw()?;
+    let colours = [
+        RGBColor(214, 39, 40),
+        RGBColor(44, 160, 44),
+        RGBColor(31, 119, 180),
+    ];
+    for (k, &colour) in colours.iter().enumerate() {
+        chart
+            .draw_series(LineSeries::new(
+                rows.iter().map(|r| (r.t, r.omega[k])),
+                colour.stroke_width(2),
+            ))?
+            .label(format!("w{}", k + 1))
+            .legend(move |(x, y)| Rectangle::new([(x, y - 2), (x + 20, y + 2)], colour.filled()));
+    }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperRight)
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font(("sans-serif", 14))
+        .draw()?;
+
+    let mut chart = ChartBuilder::on(&lower)
+        .margin(12)
+        .x_label_area_size(40)
+        .y_label_area_size(80)
+        .build_cartesian_2d(0.0..t_end, d_range)?;
+    chart
+        .configure_mesh()
+        .x_desc("time t (s)")
+        .y_desc("relative energy drift (E - E0) / |E0|")
+        .y_label_formatter(&|y| format!("{y:.1e}"))
+        .label_style(("sans-serif", 13))
+        .axis_desc_style(("sans-serif", 15))
+        .draw()?;
+    chart.draw_series(LineSeries::new(drift, BLACK.stroke_width(2)))?;
     root.present()?;
     Ok(())
 }
