@@ -1,5 +1,5 @@
 //! Every integrator against the matrix reference (tests/support), on the scenes of
-//! REFERENCES.md: accuracy, measured convergence orders, the invariants each method
+//! docs/references.md: accuracy, measured convergence orders, the invariants each method
 //! promises, the needle, torque, and the errors.
 
 mod support;

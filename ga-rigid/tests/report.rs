@@ -122,7 +122,7 @@ fn no_method_is_measured_against_itself() {
         );
     }
     // The exact flow is checked against Dormand-Prince at its tightest tolerance, and
-    // agrees (docs/references.md: the exact flow is good to about 1e-13 here).
+    // agrees (docs/references.md, "What the report's own reference check measured").
     assert!(scene.check.secondary.contains("dopri"));
     assert!(scene.check.errors.attitude_max < 1e-11, "{:?}", scene.check);
     assert!(scene.check.errors.momentum_max < 1e-11, "{:?}", scene.check);

@@ -13,7 +13,7 @@
 //! `Z`, solved by Newton's method with the exact Jacobian of the gyroscopic term
 //! `J^-1 ((J z) x z)`; a torque enters the residual but not the Jacobian (a quasi-Newton
 //! iteration, fixed-point in the torque). Newton, unlike a plain fixed-point iteration,
-//! does not stop converging near `h |w| ~ 1` (REFERENCES.md: fixed point diverges at 1.9);
+//! does not stop converging near `h |w| ~ 1` (docs/references.md: fixed point diverges at 1.9);
 //! it converges on the needle at `h |w| = 16.7` and on near-symmetric bodies far beyond.
 //! For a strongly asymmetric body at `h |w|` of some tens the midpoint equation can have
 //! no solution near `Omega(t)` (the residual has a local minimum instead of a root): the
