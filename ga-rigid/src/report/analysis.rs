@@ -104,7 +104,8 @@ pub fn verdict(scene: &SceneResult, method: Method) -> String {
         );
     }
     let failed = bad.iter().filter(|r| r.failure.is_some()).count();
-    let worst = bad.iter().map(|r| hw(r)).fold(f64::NAN, f64::min);
+    let least_bad = bad.iter().map(|r| hw(r)).fold(f64::NAN, f64::min);
+    let most_bad = bad.iter().map(|r| hw(r)).fold(f64::NAN, f64::max);
     let what = if failed == bad.len() {
         "fails"
     } else if failed == 0 {
@@ -113,8 +114,12 @@ pub fn verdict(scene: &SceneResult, method: Method) -> String {
         "fails or loses the solution"
     };
     if coarsest_good.is_nan() {
-        format!("{what} at every step tried (from h|w| = {worst:.3})")
+        if least_bad == most_bad {
+            format!("{what} at the one step tried (h|w| = {least_bad:.3})")
+        } else {
+            format!("{what} at every step tried (h|w| from {least_bad:.3} to {most_bad:.3})")
+        }
     } else {
-        format!("{what} from h|w| = {worst:.3}; keeps it up to h|w| = {coarsest_good:.3}")
+        format!("{what} from h|w| = {least_bad:.3}; keeps it up to h|w| = {coarsest_good:.3}")
     }
 }

@@ -68,9 +68,16 @@ fn draw(scene: &SceneResult, text: &mut String) -> DrawResult {
     if all.is_empty() {
         (t_lo, t_hi, e_lo, e_hi) = (1.0, 10.0, 1e-10, 1.0);
     }
-    // Room around the points, and for the labels to the right of the last ones.
-    let x_range = (t_lo / 2.0)..(t_hi * 6.0);
-    let y_range = (e_lo / 5.0)..(e_hi * 5.0);
+    // Room around the points, and for the labels to the right of the last ones; at
+    // least two decades each way, so that a log axis gets a few whole-decade ticks
+    // rather than a crowd of labels inside one decade.
+    let widen = |lo: f64, hi: f64| {
+        let mid = (lo * hi).sqrt();
+        let half = (hi / lo).sqrt().max(10.0);
+        (mid / half)..(mid * half)
+    };
+    let x_range = widen(t_lo / 2.0, t_hi * 6.0);
+    let y_range = widen(e_lo / 5.0, e_hi * 5.0);
 
     let root = SVGBackend::with_string(text, (960, 560)).into_drawing_area();
     root.fill(&WHITE)?;
@@ -91,9 +98,12 @@ fn draw(scene: &SceneResult, text: &mut String) -> DrawResult {
         .axis_desc_style(("sans-serif", 15))
         .light_line_style(RGBColor(235, 235, 235))
         .draw()?;
-    for &method in &methods {
+    for (i, &method) in methods.iter().enumerate() {
         let colour = method_colour(method);
         let pts = points(method);
+        // Labels above the points for every other method, below for the rest: lines that
+        // run close together keep their labels apart.
+        let label_dy = if i % 2 == 0 { -13 } else { 5 };
         chart.draw_series(LineSeries::new(
             pts.iter().map(|(t, e, _)| (*t, *e)),
             colour.stroke_width(2),
@@ -103,7 +113,7 @@ fn draw(scene: &SceneResult, text: &mut String) -> DrawResult {
                 + Circle::new((0, 0), 4, colour.filled())
                 + Text::new(
                     label.clone(),
-                    (6, -12),
+                    (6, label_dy),
                     ("sans-serif", 11).into_font().color(&colour),
                 )
         }))?;
