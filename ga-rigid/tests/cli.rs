@@ -900,3 +900,27 @@ fn simulate_plot_into_a_missing_directory_is_rejected() {
     assert!(stderr.starts_with("--plot: "), "{stderr}");
     assert!(!dir.join("out.csv").exists());
 }
+
+#[test]
+fn every_registry_name_is_a_method_on_the_command_line() {
+    use ga_rigid::integrators::{Method, StepKind};
+    let dir = test_dir("registry_names");
+    // A symmetric body, so that the closed form applies too.
+    write(
+        &dir,
+        "scene.toml",
+        &scene("[body]\nmoments = [1.0, 1.0, 1.5]\n", INITIAL, RUN),
+    );
+    for method in Method::ALL {
+        let mut args = vec!["simulate", "scene.toml", "--method", method.name()];
+        match method.step_kind() {
+            StepKind::Fixed => args.extend_from_slice(&["--dt", "0.01"]),
+            StepKind::Adaptive => args.extend_from_slice(&["--tol", "1e-8"]),
+            StepKind::AtSamples => {}
+        }
+        let out = run(&dir, &args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(0), "{}: {stderr}", method.name());
+        assert_eq!(String::from_utf8_lossy(&out.stdout).lines().count(), 12);
+    }
+}

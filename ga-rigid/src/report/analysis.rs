@@ -30,7 +30,7 @@ pub fn fastest_at(scene: &SceneResult, level: f64) -> Option<&Measurement> {
 }
 
 /// The least-squares slope of log(largest attitude error) against log(mean step) over a
-/// method's runs whose error lies between rounding and [`LOST`]; `None` with fewer than
+/// method's runs whose error lies between rounding (1e-12) and 0.1; `None` with fewer than
 /// two such runs.
 #[must_use]
 pub fn observed_order(scene: &SceneResult, method: Method) -> Option<f64> {
