@@ -1,4 +1,4 @@
-//! Rigid-body bench support: the test bodies of `REFERENCES.md`, Euler's equations in
+//! Rigid-body bench support: the test bodies of `docs/references.md`, Euler's equations in
 //! matrix form for ode_solvers' Dop853 (the peer in the work-precision race), the attitude
 //! error of a rotation matrix, and the searches that find each method's cheapest setting
 //! for a target error, run once before anything is timed.
@@ -37,7 +37,7 @@ pub const RACE_T_END: f64 = 10.0;
 /// Hairer-Lubich-Wanner's body (*Geometric Numerical Integration*): moments (2, 1, 2/3).
 pub const HLW_MOMENTS: [f64; 3] = [2.0, 1.0, 2.0 / 3.0];
 /// Hairer-Lubich-Wanner's `R(10)` from `R(0) = 1`, `[s, e12, e13, e23]` with `s >= 0`
-/// (REFERENCES.md; twelve decimals).
+/// (docs/references.md; twelve decimals).
 pub const HLW_ROTOR_AT_10: [f64; 4] = [
     0.765_111_030_829,
     -0.513_722_699_054,

@@ -215,15 +215,6 @@ impl Error {
             Error::Toml { .. } | Error::NotAvailable { .. } => None,
         }
     }
-
-    /// The process exit status for this error: 2 for bad input (the user can fix the
-    /// command line or the files), 1 for failures of the environment or of the program.
-    pub fn exit_code(&self) -> u8 {
-        match self {
-            Error::Write { .. } | Error::NotAvailable { .. } => 1,
-            _ => 2,
-        }
-    }
 }
 
 /// A number for a message: plain where that is short (`0.25`, `-3`, `1500`), scientific

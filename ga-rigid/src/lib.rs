@@ -1,4 +1,5 @@
 //! Rigid-body dynamics in geometric algebra.
+#[cfg(feature = "cli")]
 pub mod cli;
 pub mod csv;
 pub mod dynamics;

@@ -424,6 +424,38 @@ impl Scene {
 /// The range the principal moments must lie in: wide enough for any unit system, narrow
 /// enough that products of up to three moments and squared energies stay normal numbers.
 pub const MOMENT_RANGE: (f64, f64) = (1e-100, 1e100);
+/// The scene's body and start in its principal frame, where the equations run. A scene's
+/// `rotor` and `omega` describe its own (mesh or point-cloud) frame, related by the
+/// principal rotor `P` (principal to scene frame): the principal attitude is `R P`, the
+/// principal angular velocity `~P Omega P`.
+impl Scene {
+    /// The body in its principal frame, with gravity when the scene has it.
+    pub fn principal_body(&self) -> Result<crate::dynamics::RigidBody, Error> {
+        let body = crate::dynamics::RigidBody::new_unphysical(self.inertia.moments())?;
+        Ok(match self.torque {
+            None => body,
+            Some(gravity) => {
+                let principal = self.inertia.rotor();
+                body.with_torque(crate::dynamics::Gravity {
+                    // A `moments` body has no mass: its `g` is the weight m g.
+                    mass: self.inertia.mass().unwrap_or(1.0),
+                    g: gravity.g,
+                    com_offset: principal.reverse().sandwich(gravity.com_offset),
+                })
+            }
+        })
+    }
+
+    /// The initial state in the principal frame.
+    #[must_use]
+    pub fn principal_state(&self) -> crate::dynamics::State {
+        let principal = self.inertia.rotor();
+        crate::dynamics::State {
+            rotor: self.initial.rotor * principal,
+            omega: principal.reverse().sandwich(self.initial.omega_bivector()),
+        }
+    }
+}
 
 /// Pick the one body description and compute its inertia.
 fn load_body(body: BodyFile, scene_path: &Path) -> Result<(BodySpec, Inertia), Error> {

@@ -1428,3 +1428,129 @@ fn given_step_and_method_are_recorded_beside_the_csv() {
     assert_eq!(value(&record, "step_source"), "\"given\"");
     assert_eq!(value(&record, "samples"), "11");
 }
+
+fn report_out_that_is_a_file_is_rejected() {
+    let dir = test_dir("report_out_file");
+    write(&dir, "taken", "x");
+    let out = run(&dir, &["report", "--quick", "--out", "taken"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(out.stdout.is_empty());
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(stderr.starts_with("--out: "), "{stderr}");
+    assert_eq!(std::fs::read_to_string(dir.join("taken")).unwrap(), "x");
+}
+
+fn report_scenes_without_toml_files_are_rejected() {
+    let dir = test_dir("report_no_scenes");
+    std::fs::create_dir(dir.join("empty")).unwrap();
+    let out = run(
+        &dir,
+        &["report", "--quick", "--out", "r", "--scenes", "empty"],
+    );
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(stderr.starts_with("--scenes: "), "{stderr}");
+    assert!(!dir.join("r").join("results.csv").exists());
+}
+
+fn report_scene_with_a_bad_field_is_named() {
+    let dir = test_dir("report_bad_scene");
+    std::fs::create_dir(dir.join("mine")).unwrap();
+    write(
+        &dir.join("mine"),
+        "bad.toml",
+        &scene("[body]\nmoments = [1.0, -2.0, 2.5]\n", INITIAL, RUN),
+    );
+    let out = run(
+        &dir,
+        &["report", "--quick", "--out", "r", "--scenes", "mine"],
+    );
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(stderr.starts_with("--scenes: "), "{stderr}");
+    assert!(
+        stderr.contains("bad.toml") && stderr.contains("body.moments"),
+        "{stderr}"
+    );
+}
+
+fn simulate_plot_writes_an_svg_of_omega_and_energy_drift() {
+    let dir = test_dir("simulate_plot");
+    write(&dir, "scene.toml", &scene(BODY, INITIAL, RUN));
+    let out = run(
+        &dir,
+        &[
+            "simulate",
+            "scene.toml",
+            "--method",
+            "rk4",
+            "--dt",
+            "0.01",
+            "--out",
+            "out.csv",
+            "--plot",
+            "plot.svg",
+        ],
+    );
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let svg = std::fs::read_to_string(dir.join("plot.svg")).unwrap();
+    assert!(svg.starts_with("<svg"), "{}", &svg[..svg.len().min(80)]);
+    assert!(svg.contains("body angular velocity (rad/s)"));
+    assert!(svg.contains("relative energy drift"));
+    assert!(dir.join("out.csv").is_file());
+}
+
+fn simulate_plot_into_a_missing_directory_is_rejected() {
+    let dir = test_dir("simulate_plot_missing_dir");
+    write(&dir, "scene.toml", &scene(BODY, INITIAL, RUN));
+    let out = run(
+        &dir,
+        &[
+            "simulate",
+            "scene.toml",
+            "--method",
+            "rk4",
+            "--dt",
+            "0.01",
+            "--out",
+            "out.csv",
+            "--plot",
+            "nowhere/plot.svg",
+        ],
+    );
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(stderr.starts_with("--plot: "), "{stderr}");
+    assert!(!dir.join("out.csv").exists());
+}
+
+fn every_registry_name_is_a_method_on_the_command_line() {
+    use ga_rigid::integrators::{Method, StepKind};
+    let dir = test_dir("registry_names");
+    // A symmetric body, so that the closed form applies too.
+    write(
+        &dir,
+        "scene.toml",
+        &scene("[body]\nmoments = [1.0, 1.0, 1.5]\n", INITIAL, RUN),
+    );
+    for method in Method::ALL {
+        let mut args = vec!["simulate", "scene.toml", "--method", method.name()];
+        match method.step_kind() {
+            StepKind::Fixed => args.extend_from_slice(&["--dt", "0.01"]),
+            StepKind::Adaptive => args.extend_from_slice(&["--tol", "1e-8"]),
+            StepKind::AtSamples => {}
+        }
+        let out = run(&dir, &args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(0), "{}: {stderr}", method.name());
+        assert_eq!(String::from_utf8_lossy(&out.stdout).lines().count(), 12);
+    }
+}

@@ -1,7 +1,7 @@
 //! Jacobi elliptic functions, elliptic integrals and Carlson's integrals against
 //! published values (Abramowitz & Stegun, Carlson 1995), values from mpmath 1.3.0 at 40
 //! digits (`mpmath.ellipfun`, `ellipk`, `ellipf`, `ellippi`, `elliprf/rd/rj`), the
-//! end-to-end values of /work/shared/REFERENCES.md, limits and identities.
+//! end-to-end values of docs/references.md, limits and identities.
 
 use ga_rigid::special::elliptic::{
     carlson_rd, carlson_rf, carlson_rj, ellip_f, ellip_k, ellip_pi, ellip_pi_jacobi, jacobi,
@@ -36,7 +36,7 @@ fn close3(got: (f64, f64, f64), want: (f64, f64, f64), tol: f64) {
 
 #[test]
 fn jacobi_matches_reference_spot_values() {
-    // REFERENCES.md, 10 digits.
+    // docs/references.md, 10 digits.
     close3(
         jacobi(0.75, 0.5, 0.5),
         (0.6585147441, 0.7525678254, 0.8849741046),

@@ -3,7 +3,7 @@
 //! Gragg-Bulirsch-Stoer extrapolation (fixed macro steps, order 16) and cross-checked
 //! with a classical RK4 at tiny steps. The rotor is turned into a matrix by a small
 //! geometric product written in this file, so the reference shares no code with
-//! `exact_flow.rs`. Scene values are those of /work/shared/REFERENCES.md.
+//! `exact_flow.rs`. Scene values are those of docs/references.md.
 
 use ga_rigid::exact_flow::{exact_free_body, free_body_orbit};
 

@@ -8,10 +8,37 @@ use std::path::Path;
 
 use ga_core::f64::g3::*;
 use ga_rigid::error::Error;
-use ga_rigid::inertia::{
-    determinant, matrix_from_rotor, mul_vec, multiply, rotor_from_matrix, symmetric_eigen,
-    transpose, Inertia, Matrix3, Mesh,
-};
+use ga_rigid::inertia::{matrix_from_rotor, rotor_from_matrix, symmetric_eigen, Inertia, Mesh};
+use glam::{DMat3, DVec3};
+
+/// A row-major 3x3 matrix, as the library returns them; the products below go through
+/// glam, a matrix library that shares no code with ga-rigid.
+type Matrix3 = [[f64; 3]; 3];
+
+fn to_glam(a: &Matrix3) -> DMat3 {
+    // glam is column-major: the rows of `a` are the columns of the transpose.
+    DMat3::from_cols_array_2d(a).transpose()
+}
+
+fn from_glam(m: DMat3) -> Matrix3 {
+    m.transpose().to_cols_array_2d()
+}
+
+fn multiply(a: &Matrix3, b: &Matrix3) -> Matrix3 {
+    from_glam(to_glam(a) * to_glam(b))
+}
+
+fn transpose(a: &Matrix3) -> Matrix3 {
+    from_glam(to_glam(a).transpose())
+}
+
+fn mul_vec(a: &Matrix3, x: [f64; 3]) -> [f64; 3] {
+    (to_glam(a) * DVec3::from_array(x)).to_array()
+}
+
+fn determinant(a: &Matrix3) -> f64 {
+    to_glam(a).determinant()
+}
 
 /// xorshift64*: a seeded generator, so failures reproduce (ga-rigid has no proptest).
 struct Rng(u64);

@@ -1,5 +1,5 @@
 //! Every integrator against the matrix reference (tests/support), on the scenes of
-//! REFERENCES.md: accuracy, measured convergence orders, the invariants each method
+//! docs/references.md: accuracy, measured convergence orders, the invariants each method
 //! promises, the needle, torque, and the errors.
 
 mod support;
@@ -617,7 +617,7 @@ fn dopri_gives_up_after_its_step_budget() {
         .unwrap_err();
     assert_eq!(
         e.to_string(),
-        "dopri5: more than 10 steps needed before t = 10"
+        "dopri: more than 10 steps needed before t = 10"
     );
 }
 

@@ -4,7 +4,6 @@
 use std::path::Path;
 
 use ga_rigid::cli::{run_simulation, Method, Step};
-use ga_rigid::report::{report, Size};
 use ga_rigid::scene::Scene;
 
 fn scene(text: &str) -> Scene {
@@ -115,23 +114,4 @@ fn exact_refuses_a_torque_and_closed_form_an_asymmetric_body() {
         drift < 1e-9,
         "the heavy top's total energy drifts by {drift}"
     );
-}
-
-#[test]
-fn the_report_leaves_out_what_a_scene_does_not_need() {
-    let text = report(Size::Quick).unwrap();
-    let section = |name: &str| {
-        let start = text.find(&format!("## {name}")).expect(name);
-        let rest = &text[start + 3..];
-        rest[..rest.find("\n## ").unwrap_or(rest.len())].to_string()
-    };
-    let hlw = section("Hairer-Lubich-Wanner body");
-    assert!(hlw.contains("Left out: closed-form (the body is not symmetric)."));
-    assert!(hlw.contains("| exact |"));
-    let top = section("symmetric short fat top");
-    assert!(!top.contains("Left out"));
-    assert!(top.contains("| closed-form |"));
-    let heavy = section("heavy top");
-    assert!(heavy.contains("Left out: exact (a torque acts)."));
-    assert!(!heavy.contains("| exact |"));
 }

@@ -2,7 +2,10 @@
 
 use std::path::PathBuf;
 
+use clap::builder::PossibleValue;
 use clap::{Args, Parser, Subcommand, ValueEnum};
+
+use crate::integrators::Method;
 
 /// Rigid-body dynamics in geometric algebra.
 #[derive(Debug, Parser)]
@@ -60,6 +63,10 @@ pub struct SimulateArgs {
     /// Refuse runs whose CSV may be larger than this many megabytes (300 bytes a row).
     #[arg(long, value_name = "MB", default_value_t = super::simulate::DEFAULT_MAX_OUTPUT_MB)]
     pub max_output_mb: u64,
+    /// Also draw the body angular velocity and the relative energy drift against time
+    /// into this SVG file.
+    #[arg(long, value_name = "FILE.svg")]
+    pub plot: Option<PathBuf>,
 }
 
 /// Arguments of `inertia`.
@@ -73,78 +80,25 @@ pub struct InertiaArgs {
 /// Arguments of `report`.
 #[derive(Debug, Args)]
 pub struct ReportArgs {
-    /// Write the report to this regular file instead of standard output, only on success,
-    /// with the same rules as `simulate --out`.
-    #[arg(long, value_name = "FILE")]
-    pub out: Option<PathBuf>,
-    /// Three settings per method and one timing run instead of nine and the best of three.
+    /// The directory to write results.csv, one SVG per scene and index.html into
+    /// (created if missing; files are replaced only when complete).
+    #[arg(long, value_name = "DIR", default_value = "report")]
+    pub out: PathBuf,
+    /// Fewer steps and tolerances per method: well under a minute.
     #[arg(long)]
     pub quick: bool,
+    /// Add every `*.toml` scene (the `simulate` format) in this directory to the suite.
+    #[arg(long, value_name = "DIR")]
+    pub scenes: Option<PathBuf>,
 }
 
-/// The integration methods `simulate` offers.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, ValueEnum)]
-pub enum Method {
-    /// The closed-form solution (symmetric top).
-    ClosedForm,
-    /// Classical fourth-order Runge–Kutta on the rotor and angular velocity.
-    Rk4,
-    /// Fourth-order Runge–Kutta on the rotor group (a Lie group method).
-    LieRk4,
-    /// The midpoint rule.
-    Midpoint,
-    /// Splitting into exact rotations (Dullweber–Leimkuhler–McLachlan).
-    Splitting,
-    /// Adaptive Dormand–Prince 5(4).
-    Dopri,
-    /// The exact flow through Jacobi elliptic functions.
-    Exact,
-}
-
-/// What step control a method takes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum StepKind {
-    /// A fixed step size: `--dt`.
-    Fixed,
-    /// An error tolerance: `--tol`.
-    Adaptive,
-    /// Neither: the solution is evaluated at the sample times.
-    AtSamples,
-}
-
-impl Method {
-    /// The name on the command line.
-    #[must_use]
-    pub fn name(self) -> &'static str {
-        match self {
-            Method::ClosedForm => "closed-form",
-            Method::Rk4 => "rk4",
-            Method::LieRk4 => "lie-rk4",
-            Method::Midpoint => "midpoint",
-            Method::Splitting => "splitting",
-            Method::Dopri => "dopri",
-            Method::Exact => "exact",
-        }
+// clap learns the method names from the library's registry: one table, one name each.
+impl ValueEnum for Method {
+    fn value_variants<'a>() -> &'a [Self] {
+        &Method::ALL
     }
 
-    /// The step control the method takes.
-    #[must_use]
-    pub fn step_kind(self) -> StepKind {
-        match self {
-            Method::Rk4 | Method::LieRk4 | Method::Midpoint | Method::Splitting => StepKind::Fixed,
-            Method::Dopri => StepKind::Adaptive,
-            Method::ClosedForm | Method::Exact => StepKind::AtSamples,
-        }
+    fn to_possible_value(&self) -> Option<PossibleValue> {
+        Some(PossibleValue::new(self.name()).help(self.info().summary))
     }
-}
-
-/// The validated step control handed to a simulation.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Step {
-    /// A fixed step size, finite and positive.
-    Fixed(f64),
-    /// An error tolerance, finite and positive.
-    Tolerance(f64),
-    /// No step control: the method evaluates its solution at the sample times.
-    AtSamples,
 }

@@ -12,6 +12,7 @@ mod args;
 mod inertia_cmd;
 mod output;
 mod progress;
+mod report_cmd;
 mod simulate;
 
 use std::ffi::OsString;
@@ -21,9 +22,10 @@ use std::process::ExitCode;
 
 use clap::Parser;
 
-pub use args::{Cli, Command, InertiaArgs, Method, ReportArgs, SimulateArgs, Step, StepKind};
+pub use crate::integrators::{Method, Step, StepKind};
+pub use args::{Cli, Command, InertiaArgs, ReportArgs, SimulateArgs};
 pub use inertia_cmd::describe as describe_inertia;
-pub use simulate::{integrator_for, principal_body, run_simulation};
+pub use simulate::{principal_body, run_simulation};
 
 use crate::csv::to_csv;
 use crate::error::Error;
@@ -55,8 +57,18 @@ where
         Ok(()) => 0,
         Err(e) => {
             eprintln!("{e}");
-            e.exit_code()
+            exit_code(&e)
         }
+    }
+}
+
+/// The process exit status for an error: 2 for bad input (the user can fix the command
+/// line or the files), 1 for failures of the environment or of the program.
+#[must_use]
+pub fn exit_code(error: &Error) -> u8 {
+    match error {
+        Error::Write { .. } | Error::NotAvailable { .. } => 1,
+        _ => 2,
     }
 }
 
@@ -130,6 +142,9 @@ fn simulate(args: &SimulateArgs) -> Result<(), Error> {
     {
         check_output_path("--out", path)?;
     }
+    if let Some(plot) = &args.plot {
+        check_output_path("--plot", plot)?;
+    }
     let scene = Scene::load(&args.scene)?;
     let (step, source) = match given {
         Some(step) => (step, simulate::StepSource::Given),
@@ -141,7 +156,16 @@ fn simulate(args: &SimulateArgs) -> Result<(), Error> {
         progress.update(t);
     });
     progress.finish();
-    let csv = to_csv(&rows?);
+    let rows = rows?;
+    if let Some(plot) = &args.plot {
+        let title = format!("{}: {}", args.scene.display(), args.method.name());
+        emit(
+            "--plot",
+            Some(plot),
+            &crate::report::simulation_svg(&rows, &title)?,
+        )?;
+    }
+    let csv = to_csv(&rows);
     let record = simulate::Record {
         scene: &args.scene,
         method: args.method,
@@ -253,23 +277,9 @@ fn inertia(args: &InertiaArgs) -> Result<(), Error> {
     emit("--out", None, &describe_inertia(&scene))
 }
 
-/// `report`: produce the report and write it.
+/// `report`: run the suite and write its files.
 fn report(args: &ReportArgs) -> Result<(), Error> {
-    if let Some(out) = &args.out {
-        check_output_path("--out", out)?;
-    }
-    let text = run_report(args)?;
-    emit("--out", args.out.as_deref(), &text)
-}
-
-/// The report text: every method on the reference scenes, then the stability cases.
-pub fn run_report(args: &ReportArgs) -> Result<String, Error> {
-    let size = if args.quick {
-        crate::report::Size::Quick
-    } else {
-        crate::report::Size::Full
-    };
-    crate::report::report(size)
+    report_cmd::run(args)
 }
 
 /// Fail early, before any work, if `out` cannot be written (see [`output`]): a

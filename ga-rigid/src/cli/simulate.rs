@@ -7,57 +7,16 @@
 
 use ga_core::f64::g3::{Rotor, Sandwich};
 
-use super::args::{Method, Step, StepKind};
 use crate::csv::Row;
-use crate::dynamics::{omega_to_vector, Gravity, RigidBody, State};
+use crate::dynamics::{omega_to_vector, RigidBody};
 use crate::error::Error;
-use crate::integrators::{
-    ClosedForm, DormandPrince, ExactFreeBody, ImplicitMidpoint, Integrator, LieRk4, Rk4, Splitting,
-};
+use crate::integrators::{Method, Step, StepKind};
 use crate::scene::Scene;
 use crate::simulation::{Sample, Simulation};
 
-/// The absolute tolerance paired with `--tol` (the relative one) for Dormand-Prince.
-const DOPRI_ABSOLUTE_TOLERANCE_RATIO: f64 = 1e-3;
-
-/// The integrator for a method and its validated step control.
-pub fn integrator_for(method: Method, step: Step) -> Result<Box<dyn Integrator>, Error> {
-    let fixed = |what: &str| match step {
-        Step::Fixed(h) => Ok(h),
-        _ => Err(Error::invalid("--dt", format!("{what} needs --dt"))),
-    };
-    Ok(match method {
-        Method::ClosedForm => Box::new(ClosedForm::new()),
-        Method::Exact => Box::new(ExactFreeBody::new()),
-        Method::Rk4 => Box::new(Rk4::new(fixed("rk4")?)?),
-        Method::LieRk4 => Box::new(LieRk4::new(fixed("lie-rk4")?)?),
-        Method::Midpoint => Box::new(ImplicitMidpoint::new(fixed("midpoint")?)?),
-        Method::Splitting => Box::new(Splitting::new(fixed("splitting")?)?),
-        Method::Dopri => match step {
-            Step::Tolerance(tol) => Box::new(DormandPrince::new(
-                tol,
-                tol * DOPRI_ABSOLUTE_TOLERANCE_RATIO,
-            )?),
-            _ => return Err(Error::invalid("--tol", "dopri needs --tol")),
-        },
-    })
-}
-
 /// The body of a scene in its principal frame, with gravity when the scene has it.
 pub fn principal_body(scene: &Scene) -> Result<RigidBody, Error> {
-    let body = RigidBody::new_unphysical(scene.inertia.moments())?;
-    Ok(match scene.torque {
-        None => body,
-        Some(gravity) => {
-            let principal = scene.inertia.rotor();
-            body.with_torque(Gravity {
-                // A `moments` body has no mass: its `g` is the weight m g.
-                mass: scene.inertia.mass().unwrap_or(1.0),
-                g: gravity.g,
-                com_offset: principal.reverse().sandwich(gravity.com_offset),
-            })
-        }
-    })
+    scene.principal_body()
 }
 
 /// The default limit on the estimated number of steps (`--max-steps`): about a minute of
@@ -307,11 +266,8 @@ pub fn run_simulation_with_progress(
 ) -> Result<Vec<Row>, Error> {
     let body = principal_body(scene)?;
     let principal = scene.inertia.rotor();
-    let integrator = integrator_for(method, step)?;
-    let state = State {
-        rotor: scene.initial.rotor * principal,
-        omega: principal.reverse().sandwich(scene.initial.omega_bivector()),
-    };
+    let integrator = method.integrator(step)?;
+    let state = scene.principal_state();
     // The dynamics name the principal moments `body.moments`; a scene may have written
     // its body as a shape, points or a mesh, and the message should name what it wrote.
     let body_field = |e: Error| {

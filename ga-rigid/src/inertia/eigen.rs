@@ -16,7 +16,7 @@
 use ga_core::f64::g3::Rotor;
 
 /// A 3x3 matrix, `m[row][column]`.
-pub type Matrix3 = [[f64; 3]; 3];
+pub(crate) type Matrix3 = [[f64; 3]; 3];
 
 /// Eigenvalues and eigenvectors of a symmetric 3x3 matrix.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -129,13 +129,13 @@ fn rotate(m: &mut Matrix3, v: &mut Matrix3, p: usize, q: usize, c: f64, s: f64) 
 
 /// The 3x3 identity matrix.
 #[must_use]
-pub fn identity() -> Matrix3 {
+pub(crate) fn identity() -> Matrix3 {
     [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
 }
 
 /// The matrix product `a b`.
 #[must_use]
-pub fn multiply(a: &Matrix3, b: &Matrix3) -> Matrix3 {
+pub(crate) fn multiply(a: &Matrix3, b: &Matrix3) -> Matrix3 {
     let mut c = [[0.0; 3]; 3];
     for (i, row) in c.iter_mut().enumerate() {
         for (j, x) in row.iter_mut().enumerate() {
@@ -147,7 +147,7 @@ pub fn multiply(a: &Matrix3, b: &Matrix3) -> Matrix3 {
 
 /// The transpose of `a`.
 #[must_use]
-pub fn transpose(a: &Matrix3) -> Matrix3 {
+pub(crate) fn transpose(a: &Matrix3) -> Matrix3 {
     let mut t = [[0.0; 3]; 3];
     for (i, row) in t.iter_mut().enumerate() {
         for (j, x) in row.iter_mut().enumerate() {
@@ -157,19 +157,9 @@ pub fn transpose(a: &Matrix3) -> Matrix3 {
     t
 }
 
-/// The matrix-vector product `a x`.
-#[must_use]
-pub fn mul_vec(a: &Matrix3, x: [f64; 3]) -> [f64; 3] {
-    [
-        a[0][0] * x[0] + a[0][1] * x[1] + a[0][2] * x[2],
-        a[1][0] * x[0] + a[1][1] * x[1] + a[1][2] * x[2],
-        a[2][0] * x[0] + a[2][1] * x[1] + a[2][2] * x[2],
-    ]
-}
-
 /// The determinant of `a`.
 #[must_use]
-pub fn determinant(a: &Matrix3) -> f64 {
+pub(crate) fn determinant(a: &Matrix3) -> f64 {
     a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1])
         - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0])
         + a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0])

@@ -8,10 +8,7 @@ mod mesh;
 mod point_masses;
 mod solids;
 
-pub use eigen::{
-    determinant, identity, matrix_from_rotor, mul_vec, multiply, rotor_from_matrix,
-    symmetric_eigen, transpose, Matrix3, SymmetricEigen,
-};
+pub use eigen::{matrix_from_rotor, rotor_from_matrix, symmetric_eigen, SymmetricEigen};
 pub(crate) use inertia::normalize_rotor;
 pub use inertia::Inertia;
 pub use mesh::{Mesh, MeshMoments, MAX_MESH_BYTES};

@@ -204,7 +204,7 @@ fn combine(y: &Y, h: f64, a: &[f64], k: &[Y; 7]) -> Y {
 
 impl Integrator for DormandPrince {
     fn name(&self) -> &'static str {
-        "dopri5"
+        "dopri"
     }
 
     fn advance(&mut self, body: &RigidBody, t: f64, state: State, dt: f64) -> Result<State, Error> {
@@ -232,7 +232,7 @@ impl Integrator for DormandPrince {
             steps += 1;
             if steps > self.max_steps {
                 return Err(Error::invalid(
-                    "dopri5",
+                    "dopri",
                     format!(
                         "more than {} steps needed before t = {t_end}",
                         self.max_steps
@@ -241,7 +241,7 @@ impl Integrator for DormandPrince {
             }
             if 0.1 * h <= f64::EPSILON * t.abs() || !h.is_finite() {
                 return Err(Error::invalid(
-                    "dopri5",
+                    "dopri",
                     format!("step size underflow ({h:e}) at t = {}", error::num(t)),
                 ));
             }

@@ -46,6 +46,24 @@ pub(crate) fn substeps(h: f64, dt: f64) -> Result<(u64, f64), Error> {
     Ok((n as u64, dt / n))
 }
 
+/// The one fixed-step loop: cover `dt` from `t` with equal sub-steps of at most `h`,
+/// each taken by `step(t_i, state, h_i)`, and check the end state is finite.
+#[inline]
+pub(crate) fn fixed_steps(
+    method: &'static str,
+    h: f64,
+    t: f64,
+    mut state: State,
+    dt: f64,
+    mut step: impl FnMut(f64, State, f64) -> Result<State, Error>,
+) -> Result<State, Error> {
+    let (n, h) = substeps(h, dt)?;
+    for i in 0..n {
+        state = step(t + i as f64 * h, state, h)?;
+    }
+    check_finite(method, state)
+}
+
 /// An error naming the method unless every component of `state` is finite.
 pub(crate) fn check_finite(method: &'static str, state: State) -> Result<State, Error> {
     let Rotor { s, e12, e13, e23 } = state.rotor;

@@ -25,7 +25,7 @@ use ga_core::f64::g3::{Bivector, Commutator, Rotor};
 use crate::dynamics::{RigidBody, State};
 use crate::error::Error;
 
-use super::integrator::{check_finite, check_step, substeps, Integrator};
+use super::integrator::{check_step, fixed_steps, Integrator};
 
 /// Runge-Kutta-Munthe-Kaas of order four with fixed step `h`; the rotor stays unit by
 /// construction.
@@ -77,17 +77,9 @@ impl Integrator for LieRk4 {
         "lie-rk4"
     }
 
-    fn advance(
-        &mut self,
-        body: &RigidBody,
-        t: f64,
-        mut state: State,
-        dt: f64,
-    ) -> Result<State, Error> {
-        let (n, h) = substeps(self.step, dt)?;
-        for i in 0..n {
-            state = Self::step_once(body, t + i as f64 * h, state, h);
-        }
-        check_finite(self.name(), state)
+    fn advance(&mut self, body: &RigidBody, t: f64, state: State, dt: f64) -> Result<State, Error> {
+        fixed_steps(self.name(), self.step, t, state, dt, |t, state, h| {
+            Ok(Self::step_once(body, t, state, h))
+        })
     }
 }

@@ -13,18 +13,19 @@
 //! `Z`, solved by Newton's method with the exact Jacobian of the gyroscopic term
 //! `J^-1 ((J z) x z)`; a torque enters the residual but not the Jacobian (a quasi-Newton
 //! iteration, fixed-point in the torque). Newton, unlike a plain fixed-point iteration,
-//! does not stop converging near `h |w| ~ 1` (REFERENCES.md: fixed point diverges at 1.9);
+//! does not stop converging near `h |w| ~ 1` (docs/references.md: fixed point diverges at 1.9);
 //! it converges on the needle at `h |w| = 16.7` and on near-symmetric bodies far beyond.
 //! For a strongly asymmetric body at `h |w|` of some tens the midpoint equation can have
 //! no solution near `Omega(t)` (the residual has a local minimum instead of a root): the
 //! step then fails with an error rather than returning a wrong state.
 
 use ga_core::f64::g3::{Bivector, Rotor};
+use glam::{DMat3, DVec3};
 
 use crate::dynamics::{omega_from_vector, omega_to_vector, RigidBody, State};
 use crate::error::Error;
 
-use super::integrator::{check_finite, check_step, substeps, Integrator};
+use super::integrator::{check_step, fixed_steps, Integrator};
 
 /// The most Newton iterations per step before the step is reported as failed.
 const MAX_ITERATIONS: usize = 50;
@@ -143,22 +144,13 @@ fn newton_correction(moments: [f64; 3], z: Bivector, h: f64, residual: Bivector)
     omega_from_vector(solve3(a, omega_to_vector(residual)))
 }
 
-/// `A^-1 b` by Cramer's rule (the 3x3 systems here are well conditioned: `1 - h/2 D` with
-/// `D` a gyroscopic, nearly skew, matrix).
+/// `A^-1 b` for a row-major `A` (the 3x3 systems here are well conditioned: `1 - h/2 D`
+/// with `D` a gyroscopic, nearly skew, matrix).
 #[inline]
 fn solve3(a: [[f64; 3]; 3], b: [f64; 3]) -> [f64; 3] {
-    let det3 = |c0: [f64; 3], c1: [f64; 3], c2: [f64; 3]| {
-        c0[0] * (c1[1] * c2[2] - c1[2] * c2[1]) - c1[0] * (c0[1] * c2[2] - c0[2] * c2[1])
-            + c2[0] * (c0[1] * c1[2] - c0[2] * c1[1])
-    };
-    let col = |j: usize| [a[0][j], a[1][j], a[2][j]];
-    let (c0, c1, c2) = (col(0), col(1), col(2));
-    let det = det3(c0, c1, c2);
-    [
-        det3(b, c1, c2) / det,
-        det3(c0, b, c2) / det,
-        det3(c0, c1, b) / det,
-    ]
+    // glam is column-major: the rows of `a` are the columns of its transpose.
+    let a = DMat3::from_cols_array_2d(&a).transpose();
+    (a.inverse() * DVec3::from_array(b)).to_array()
 }
 
 impl Integrator for ImplicitMidpoint {
@@ -166,19 +158,12 @@ impl Integrator for ImplicitMidpoint {
         "midpoint"
     }
 
-    fn advance(
-        &mut self,
-        body: &RigidBody,
-        t: f64,
-        mut state: State,
-        dt: f64,
-    ) -> Result<State, Error> {
-        let (n, h) = substeps(self.step, dt)?;
-        for i in 0..n {
-            let (next, iterations) = Self::step_once(body, t + i as f64 * h, state, h)?;
-            self.iterations += iterations as u64;
-            state = next;
-        }
-        check_finite(self.name(), state)
+    fn advance(&mut self, body: &RigidBody, t: f64, state: State, dt: f64) -> Result<State, Error> {
+        let iterations = &mut self.iterations;
+        fixed_steps("midpoint", self.step, t, state, dt, |t, state, h| {
+            let (next, taken) = Self::step_once(body, t, state, h)?;
+            *iterations += taken as u64;
+            Ok(next)
+        })
     }
 }

@@ -9,7 +9,7 @@ use ga_core::f64::g3::{Bivector, Rotor};
 use crate::dynamics::{RigidBody, State};
 use crate::error::Error;
 
-use super::integrator::{check_finite, check_step, substeps, unit, Integrator};
+use super::integrator::{check_step, fixed_steps, unit, Integrator};
 
 /// Classical explicit RK4 with fixed step `h` and rotor renormalisation.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -57,17 +57,9 @@ impl Integrator for Rk4 {
         "rk4"
     }
 
-    fn advance(
-        &mut self,
-        body: &RigidBody,
-        t: f64,
-        mut state: State,
-        dt: f64,
-    ) -> Result<State, Error> {
-        let (n, h) = substeps(self.step, dt)?;
-        for i in 0..n {
-            state = Self::step_once(body, t + i as f64 * h, state, h);
-        }
-        check_finite(self.name(), state)
+    fn advance(&mut self, body: &RigidBody, t: f64, state: State, dt: f64) -> Result<State, Error> {
+        fixed_steps(self.name(), self.step, t, state, dt, |t, state, h| {
+            Ok(Self::step_once(body, t, state, h))
+        })
     }
 }

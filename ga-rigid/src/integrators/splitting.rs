@@ -8,7 +8,7 @@
 //! angle `-theta` with `theta = h m_k / i_k`, and turns the body with it:
 //! `R <- R exp(-theta/2 I e_k)`. Each sub-flow is exact, so the space momentum
 //! `L = R m ~R` and `|m|` are kept to rounding, `R` stays unit, and a step is stable at
-//! any `h |w|` (REFERENCES.md: the needle case). The symmetric Strang composition
+//! any `h |w|` (docs/references.md: the needle case). The symmetric Strang composition
 //!
 //! ```text
 //! outer(h/2) middle(h/2) centre(h) middle(h/2) outer(h/2)

@@ -1,4 +1,4 @@
-//! Shared by the integrator and symmetric-top tests: the scenes of REFERENCES.md as test
+//! Shared by the integrator and symmetric-top tests: the scenes of docs/references.md as test
 //! models, error measures, and the MATRIX REFERENCE, an independent solution of Euler's
 //! equations that shares no code with the library.
 //!
@@ -13,7 +13,7 @@
 //! coefficients follow from Cauchy products (`y_{k+1} = (1/(k+1)) sum_j B(y_j, y_{k-j})`),
 //! and a series of order 30 with the step of Jorba and Zou (Experiment. Math. 14, 2005)
 //! reaches rounding-level accuracy per step. Its conventions are checked against the
-//! published values of REFERENCES.md in `tests/integrators.rs`.
+//! published values of docs/references.md in `tests/integrators.rs`.
 
 // Each test binary uses a different part of this module.
 #![allow(dead_code)]
@@ -29,7 +29,7 @@ pub type Matrix = [[f64; 3]; 3];
 /// A free rigid body and its initial body momentum, with `R(0) = 1`.
 #[derive(Clone, Copy, Debug)]
 pub struct Scene {
-    /// The scene's name in REFERENCES.md.
+    /// The scene's name in docs/references.md.
     pub name: &'static str,
     /// Principal moments.
     pub moments: [f64; 3],
@@ -74,27 +74,27 @@ pub const NEEDLE: Scene = Scene {
     m0: [0.01, 0.0, 1.0],
 };
 
-/// REFERENCES.md: HLW m(10).
+/// docs/references.md: HLW m(10).
 pub const HLW_M10: [f64; 3] = [0.407_066_136_588, 0.283_007_426_813, 0.868_449_167_662];
-/// REFERENCES.md: HLW R(10) as [s, e12, e13, e23].
+/// docs/references.md: HLW R(10) as [s, e12, e13, e23].
 pub const HLW_R10: [f64; 4] = [
     0.765_111_030_829,
     -0.513_722_699_054,
     0.102_854_131_455,
     -0.374_319_551_483,
 ];
-/// REFERENCES.md: Hairer-Vilmart m(10).
+/// docs/references.md: Hairer-Vilmart m(10).
 pub const HV_M10: [f64; 3] = [1.765_962_508_518, -0.695_464_197_033, 0.779_554_981_482];
-/// REFERENCES.md: Hairer-Vilmart R(10).
+/// docs/references.md: Hairer-Vilmart R(10).
 pub const HV_R10: [f64; 4] = [
     0.736_061_364_161,
     -0.206_839_086_105,
     0.299_388_571_831,
     -0.570_786_951_240,
 ];
-/// REFERENCES.md: EULR m(20).
+/// docs/references.md: EULR m(20).
 pub const EULR_M20: [f64; 3] = [0.303_101_926_982, 1.257_494_420_900, 2.422_155_445_727];
-/// REFERENCES.md: Dzhanibekov m(100).
+/// docs/references.md: Dzhanibekov m(100).
 pub const DZHANIBEKOV_M100: [f64; 3] = [0.209_094_262_834, 1.972_485_481_093, 0.256_282_297_721];
 
 /// A scene the library can run, and how its attitude relates to the original's.

@@ -1,0 +1,329 @@
+//! The method registry: every method's one name, the step control it takes and how to
+//! build it, held in one table ([`METHODS`]). The command line, scene files, the report
+//! and the CSV all read names from here, so a method is spelt the same everywhere.
+//!
+//! To add a method: a variant of [`Method`], one row in [`METHODS`], one arm in
+//! [`Method::integrator`].
+
+use std::fmt;
+use std::str::FromStr;
+
+use crate::error::{self, Error};
+
+use super::{
+    ClosedForm, DormandPrince, ExactFreeBody, ImplicitMidpoint, Integrator, LieRk4, Rk4, Splitting,
+};
+
+/// The absolute tolerance paired with a relative tolerance `tol` for Dormand-Prince, as a
+/// fraction of `tol`.
+pub const DOPRI_ABSOLUTE_TOLERANCE_RATIO: f64 = 1e-3;
+
+/// A time-stepping (or solution-evaluating) method for the rigid body.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Method {
+    /// The closed-form solution of the torque-free symmetric top.
+    ClosedForm,
+    /// Classical fourth-order Runge-Kutta on the rotor and angular velocity.
+    Rk4,
+    /// Fourth-order Runge-Kutta-Munthe-Kaas on the rotor group.
+    LieRk4,
+    /// The implicit midpoint rule.
+    Midpoint,
+    /// Splitting into exact rotations (Dullweber-Leimkuhler-McLachlan).
+    Splitting,
+    /// Adaptive Dormand-Prince 5(4).
+    Dopri,
+    /// The exact flow of the free body through Jacobi elliptic functions.
+    Exact,
+}
+
+/// The kind of step control a method takes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum StepKind {
+    /// A fixed step size `dt`.
+    Fixed,
+    /// An error tolerance `tol`: the method chooses its own steps.
+    Adaptive,
+    /// Neither: the method evaluates an exact solution at the sample times.
+    AtSamples,
+}
+
+/// A step control, validated against the method it is for by [`Method::step`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Step {
+    /// A fixed step size, finite and positive.
+    Fixed(f64),
+    /// An error tolerance, finite and positive.
+    Tolerance(f64),
+    /// No step control: the method evaluates its solution at the sample times.
+    AtSamples,
+}
+
+/// One row of the registry.
+#[derive(Clone, Copy, Debug)]
+pub struct MethodInfo {
+    /// The method.
+    pub method: Method,
+    /// Its one name: on the command line, in scene files, the report and the CSV.
+    pub name: &'static str,
+    /// The step control it takes.
+    pub kind: StepKind,
+    /// One line for `--help` and the report.
+    pub summary: &'static str,
+}
+
+/// The registry: one row per method, in the order tables list them.
+pub const METHODS: [MethodInfo; 7] = [
+    MethodInfo {
+        method: Method::ClosedForm,
+        name: "closed-form",
+        kind: StepKind::AtSamples,
+        summary: "the closed-form solution (torque-free symmetric top)",
+    },
+    MethodInfo {
+        method: Method::Exact,
+        name: "exact",
+        kind: StepKind::AtSamples,
+        summary: "the exact flow of the free body (Jacobi elliptic functions)",
+    },
+    MethodInfo {
+        method: Method::Rk4,
+        name: "rk4",
+        kind: StepKind::Fixed,
+        summary: "classical fourth-order Runge-Kutta, rotor renormalised",
+    },
+    MethodInfo {
+        method: Method::LieRk4,
+        name: "lie-rk4",
+        kind: StepKind::Fixed,
+        summary: "fourth-order Runge-Kutta-Munthe-Kaas on the rotor group",
+    },
+    MethodInfo {
+        method: Method::Midpoint,
+        name: "midpoint",
+        kind: StepKind::Fixed,
+        summary: "the implicit midpoint rule (symplectic, order two)",
+    },
+    MethodInfo {
+        method: Method::Splitting,
+        name: "splitting",
+        kind: StepKind::Fixed,
+        summary: "splitting into exact axis rotations (Dullweber-Leimkuhler-McLachlan)",
+    },
+    MethodInfo {
+        method: Method::Dopri,
+        name: "dopri",
+        kind: StepKind::Adaptive,
+        summary: "adaptive Dormand-Prince 5(4)",
+    },
+];
+
+impl Method {
+    /// Every method, in the registry's order.
+    pub const ALL: [Method; METHODS.len()] = {
+        let mut all = [Method::ClosedForm; METHODS.len()];
+        let mut i = 0;
+        while i < METHODS.len() {
+            all[i] = METHODS[i].method;
+            i += 1;
+        }
+        all
+    };
+
+    /// The method's row in the registry.
+    #[must_use]
+    pub fn info(self) -> &'static MethodInfo {
+        // Every variant has a row: `registry_is_complete` checks it.
+        METHODS
+            .iter()
+            .find(|row| row.method == self)
+            .unwrap_or(&METHODS[0])
+    }
+
+    /// The method's one name.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        self.info().name
+    }
+
+    /// The step control the method takes.
+    #[must_use]
+    pub fn step_kind(self) -> StepKind {
+        self.info().kind
+    }
+
+    /// The method with this name, if there is one.
+    #[must_use]
+    pub fn from_name(name: &str) -> Option<Method> {
+        METHODS
+            .iter()
+            .find(|row| row.name == name)
+            .map(|r| r.method)
+    }
+
+    /// Match a step size `dt` or a tolerance `tol` to the method: fixed-step methods need
+    /// `dt`, adaptive ones `tol`, and methods evaluated at the sample times take neither.
+    /// Both must be finite and positive; at most one may be given.
+    pub fn step(self, dt: Option<f64>, tol: Option<f64>) -> Result<Step, Error> {
+        let name = self.name();
+        if dt.is_some() && tol.is_some() {
+            return Err(Error::invalid("dt", "dt and tol are mutually exclusive"));
+        }
+        if let Some(dt) = dt {
+            error::positive("dt", "the step size", dt)?;
+        }
+        if let Some(tol) = tol {
+            error::positive("tol", "the tolerance", tol)?;
+        }
+        match (self.step_kind(), dt, tol) {
+            (StepKind::Fixed, Some(dt), None) => Ok(Step::Fixed(dt)),
+            (StepKind::Fixed, _, _) => Err(Error::invalid(
+                "dt",
+                format!("method {name} takes a fixed step dt"),
+            )),
+            (StepKind::Adaptive, None, Some(tol)) => Ok(Step::Tolerance(tol)),
+            (StepKind::Adaptive, _, _) => Err(Error::invalid(
+                "tol",
+                format!("method {name} is adaptive and takes a tolerance tol"),
+            )),
+            (StepKind::AtSamples, None, None) => Ok(Step::AtSamples),
+            (StepKind::AtSamples, Some(_), _) => Err(Error::invalid(
+                "dt",
+                format!("method {name} is evaluated at the sample times and takes no dt"),
+            )),
+            (StepKind::AtSamples, None, Some(_)) => Err(Error::invalid(
+                "tol",
+                format!("method {name} is evaluated at the sample times and takes no tol"),
+            )),
+        }
+    }
+
+    /// The integrator for this method and a step control of its kind (see
+    /// [`Method::step`]); an error naming `dt` or `tol` if the step does not fit.
+    pub fn integrator(self, step: Step) -> Result<Box<dyn Integrator>, Error> {
+        let name = self.name();
+        let fixed = || match step {
+            Step::Fixed(h) => Ok(h),
+            _ => Err(Error::invalid(
+                "dt",
+                format!("method {name} takes a fixed step dt"),
+            )),
+        };
+        Ok(match self {
+            Method::ClosedForm => Box::new(ClosedForm::new()),
+            Method::Exact => Box::new(ExactFreeBody::new()),
+            Method::Rk4 => Box::new(Rk4::new(fixed()?).map_err(|e| e.at("dt"))?),
+            Method::LieRk4 => Box::new(LieRk4::new(fixed()?).map_err(|e| e.at("dt"))?),
+            Method::Midpoint => Box::new(ImplicitMidpoint::new(fixed()?).map_err(|e| e.at("dt"))?),
+            Method::Splitting => Box::new(Splitting::new(fixed()?).map_err(|e| e.at("dt"))?),
+            Method::Dopri => match step {
+                Step::Tolerance(tol) => Box::new(
+                    DormandPrince::new(tol, tol * DOPRI_ABSOLUTE_TOLERANCE_RATIO)
+                        .map_err(|e| e.at("tol"))?,
+                ),
+                _ => {
+                    return Err(Error::invalid(
+                        "tol",
+                        format!("method {name} is adaptive and takes a tolerance tol"),
+                    ))
+                }
+            },
+        })
+    }
+}
+
+impl fmt::Display for Method {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for Method {
+    type Err = Error;
+
+    fn from_str(s: &str) -> Result<Method, Error> {
+        Method::from_name(s).ok_or_else(|| {
+            let names: Vec<&str> = METHODS.iter().map(|r| r.name).collect();
+            Error::invalid(
+                "method",
+                format!("unknown method {s:?}; one of {}", names.join(", ")),
+            )
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn registry_is_complete() {
+        // A match without a wildcard: adding a variant breaks this until it has a row.
+        for method in Method::ALL {
+            match method {
+                Method::ClosedForm
+                | Method::Rk4
+                | Method::LieRk4
+                | Method::Midpoint
+                | Method::Splitting
+                | Method::Dopri
+                | Method::Exact => {}
+            }
+        }
+        let count = |m: Method| METHODS.iter().filter(|r| r.method == m).count();
+        for m in [
+            Method::ClosedForm,
+            Method::Rk4,
+            Method::LieRk4,
+            Method::Midpoint,
+            Method::Splitting,
+            Method::Dopri,
+            Method::Exact,
+        ] {
+            assert_eq!(count(m), 1, "{m:?} must have exactly one row");
+            assert!(Method::ALL.contains(&m));
+        }
+    }
+
+    #[test]
+    fn every_name_round_trips_and_is_unique() {
+        for method in Method::ALL {
+            assert_eq!(Method::from_name(method.name()), Some(method));
+            assert_eq!(method.name().parse::<Method>().unwrap(), method);
+            assert_eq!(method.to_string(), method.name());
+            let same = METHODS.iter().filter(|r| r.name == method.name()).count();
+            assert_eq!(same, 1, "{} is not unique", method.name());
+        }
+        assert!("euler".parse::<Method>().is_err());
+    }
+
+    #[test]
+    fn integrator_names_match_the_registry() {
+        for method in Method::ALL {
+            let step = match method.step_kind() {
+                StepKind::Fixed => Step::Fixed(0.1),
+                StepKind::Adaptive => Step::Tolerance(1e-6),
+                StepKind::AtSamples => Step::AtSamples,
+            };
+            assert_eq!(method.integrator(step).unwrap().name(), method.name());
+        }
+    }
+
+    #[test]
+    fn step_errors_name_dt_and_tol_not_flags() {
+        let e = Method::Rk4.step(None, None).unwrap_err().to_string();
+        assert!(e.starts_with("dt: "), "{e}");
+        let e = Method::Dopri.step(Some(0.1), None).unwrap_err().to_string();
+        assert!(e.starts_with("tol: "), "{e}");
+        let e = Method::Rk4.step(Some(-1.0), None).unwrap_err().to_string();
+        assert!(e.starts_with("dt: ") && !e.contains("--"), "{e}");
+        let e = Method::Exact
+            .step(None, Some(1e-3))
+            .unwrap_err()
+            .to_string();
+        assert!(e.starts_with("tol: "), "{e}");
+        assert_eq!(Method::Exact.step(None, None).unwrap(), Step::AtSamples);
+        assert!(Method::Rk4.integrator(Step::Tolerance(1.0)).is_err());
+        assert!(Method::Dopri.integrator(Step::Tolerance(0.0)).is_err());
+    }
+}

@@ -1,0 +1,197 @@
+//! `index.html`: the plots, and per scene the reference check, the fastest method at each
+//! error level, each method's observed order, cost per step and stability verdict.
+
+use std::fmt::Write as _;
+
+use crate::integrators::{Method, METHODS};
+
+use super::analysis::{cost_per_step_ns, fastest_at, observed_order, verdict, ERROR_LEVELS};
+use super::measure::{MIN_REPEATS, MIN_TOTAL_TIME};
+use super::{Report, SceneResult, Size};
+
+/// The file name of scene `index`'s diagram: `NN-name.svg`, lowercase letters, digits and
+/// dashes only (so it is safe in any directory and URL).
+#[must_use]
+pub fn svg_name(index: usize, name: &str) -> String {
+    let mut slug = String::new();
+    for c in name.chars() {
+        if c.is_ascii_alphanumeric() {
+            slug.push(c.to_ascii_lowercase());
+        } else if !slug.ends_with('-') {
+            slug.push('-');
+        }
+    }
+    format!("{:02}-{}.svg", index + 1, slug.trim_matches('-'))
+}
+
+/// Text made safe for HTML.
+fn esc(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
+}
+
+const STYLE: &str = "body{font-family:sans-serif;max-width:1000px;margin:2em auto;padding:0 1em;\
+color:#222;line-height:1.4}table{border-collapse:collapse;margin:.5em 0 1em}\
+td,th{border:1px solid #ccc;padding:.2em .6em;text-align:left;font-size:.92em}\
+th{background:#f3f3f3}td.num{text-align:right;font-variant-numeric:tabular-nums}\
+img{max-width:100%;border:1px solid #ddd}section{margin-bottom:3em}\
+.swatch{display:inline-block;width:1.4em;height:.5em;margin-right:.4em;vertical-align:middle}\
+.note{color:#555;font-size:.92em}";
+
+/// The page; `svg_names[i]` is the diagram file of `report.scenes[i]`.
+#[must_use]
+pub fn html(report: &Report, svg_names: &[String]) -> String {
+    let mut out = String::new();
+    let size = match report.size {
+        Size::Quick => "quick",
+        Size::Full => "full",
+    };
+    let _ = write!(
+        out,
+        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\
+         <title>ga-rigid report</title><style>{STYLE}</style></head><body>\n\
+         <h1>ga-rigid: which method buys how much accuracy per microsecond</h1>\n"
+    );
+    let _ = write!(
+        out,
+        "<p>Every method on every scene ({size} run), measured at {samples} evenly spaced \
+         times against a reference that is never the method itself. <b>Error</b> is the \
+         angle of <code>~R_ref R</code> in rad, the largest over the run; the body \
+         momentum's and energy's relative errors are in <a href=\"results.csv\">results.csv</a> \
+         (one row per scene, method and step or tolerance).</p>\n\
+         <p><b>Timing.</b> Each run is done once to warm up, then repeated until the \
+         repetitions add up to at least {ms} ms and number at least {reps}; the plots \
+         show the median, the CSV also the minimum. Wall-clock time of one thread \
+         (<code>std::time::Instant</code>), on <b>{cpu}</b>, while other processes may \
+         share the machine.</p>\n",
+        samples = super::SAMPLES,
+        ms = MIN_TOTAL_TIME.as_millis(),
+        reps = MIN_REPEATS,
+        cpu = esc(&report.cpu),
+    );
+    out.push_str("<p>Colours, the same in every plot: ");
+    for row in METHODS {
+        let c = super::method_colour(row.method);
+        let _ = write!(
+            out,
+            "<span style=\"white-space:nowrap;margin-right:1em\"><span class=\"swatch\" \
+             style=\"background:rgb({},{},{})\"></span>{}</span> ",
+            c.0, c.1, c.2, row.name
+        );
+    }
+    out.push_str("</p>\n<p>Scenes: ");
+    for (i, scene) in report.scenes.iter().enumerate() {
+        let _ = write!(
+            out,
+            "{}<a href=\"#s{i}\">{}</a>",
+            if i > 0 { " · " } else { "" },
+            esc(&scene.name)
+        );
+    }
+    out.push_str("</p>\n");
+    for (i, scene) in report.scenes.iter().enumerate() {
+        let name = svg_names.get(i).map_or("", String::as_str);
+        section(&mut out, i, scene, name);
+    }
+    out.push_str("</body></html>\n");
+    out
+}
+
+fn section(out: &mut String, index: usize, scene: &SceneResult, svg_name: &str) {
+    let _ = write!(
+        out,
+        "<section id=\"s{index}\"><h2>{}</h2>\n<p>{}; t_end = {:e}, |w(0)| = {:.3e} rad/s.</p>\n\
+         <img src=\"{}\" alt=\"work-precision diagram of {}\">\n",
+        esc(&scene.name),
+        esc(&scene.source),
+        scene.t_end,
+        scene.rate,
+        esc(svg_name),
+        esc(&scene.name),
+    );
+    let c = &scene.check;
+    let _ = writeln!(
+        out,
+        "<p><b>Reference:</b> {} (runs of that method itself are measured against {}). \
+         <b>Check:</b> the two agree to {:.1e} rad in attitude and {:.1e} in relative body \
+         momentum (largest over the samples), so errors below about that level are not \
+         resolved.</p>",
+        esc(&c.primary),
+        esc(&c.secondary),
+        c.errors.attitude_max,
+        c.errors.momentum_max,
+    );
+    out.push_str(
+        "<table><tr><th>largest attitude error</th><th>fastest method</th><th>setting</th>\
+         <th>median time (µs)</th></tr>\n",
+    );
+    for level in ERROR_LEVELS {
+        match fastest_at(scene, level) {
+            Some(row) => {
+                let _ = writeln!(
+                    out,
+                    "<tr><td>≤ {level:.0e}</td><td>{}</td><td>{}</td><td class=\"num\">{:.1}</td></tr>",
+                    row.method.name(),
+                    esc(&row.label()),
+                    row.time_us().unwrap_or(f64::NAN)
+                );
+            }
+            None => {
+                let _ = writeln!(
+                    out,
+                    "<tr><td>≤ {level:.0e}</td><td colspan=\"3\">no run reached it</td></tr>"
+                );
+            }
+        }
+    }
+    out.push_str(
+        "</table>\n<table><tr><th>method</th><th>observed order</th><th>cost per step (ns)</th>\
+         <th>energy drift at the finest setting</th><th>stability</th></tr>\n",
+    );
+    let mut methods: Vec<Method> = scene.rows.iter().map(|r| r.method).collect();
+    methods.dedup();
+    for method in methods {
+        let order = observed_order(scene, method).map_or("–".to_string(), |p| format!("{p:.2}"));
+        let cost = cost_per_step_ns(scene, method).map_or("–".to_string(), |c| format!("{c:.0}"));
+        // The last row of a method is its finest step or tightest tolerance.
+        let drift = scene
+            .rows
+            .iter()
+            .rfind(|r| r.method == method)
+            .and_then(|r| r.errors)
+            .map_or("–".to_string(), |e| format!("{:.1e}", e.energy_max));
+        let _ = writeln!(
+            out,
+            "<tr><td>{}</td><td class=\"num\">{order}</td><td class=\"num\">{cost}</td>\
+             <td class=\"num\">{drift}</td><td>{}</td></tr>",
+            method.name(),
+            esc(&verdict(scene, method))
+        );
+    }
+    out.push_str("</table>\n<p class=\"note\">Observed order: slope of log error against log mean step, over runs whose error lies between 1e-12 and 0.1. Cost per step: median time over steps (evaluations for methods without steps), median over settings. Energy drift: the largest relative drift over the run. Stability: a run keeps the solution while its attitude and relative momentum errors stay below 0.1 over the whole run; h|w| is the (mean) step times the initial rate.</p>\n");
+    for (what, why) in &scene.left_out {
+        let _ = writeln!(
+            out,
+            "<p class=\"note\">Left out: <b>{}</b>: {}.</p>",
+            esc(what),
+            esc(why)
+        );
+    }
+    let failures: Vec<_> = scene
+        .rows
+        .iter()
+        .filter_map(|r| Some((r, r.failure.as_ref()?)))
+        .collect();
+    for (row, why) in failures {
+        let _ = writeln!(
+            out,
+            "<p class=\"note\">Failed: <b>{}</b> at {}: {}</p>",
+            row.method.name(),
+            esc(&row.label()),
+            esc(why)
+        );
+    }
+    out.push_str("</section>\n");
+}

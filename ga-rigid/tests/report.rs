@@ -1,0 +1,183 @@
+//! The report's outputs on a few cheap scenes: the CSV's header and finite values, one SVG
+//! per scene, the page that shows them; no method measured against itself; the methods a
+//! scene does not need left out and named.
+
+use std::path::{Path, PathBuf};
+
+use ga_rigid::integrators::{Method, StepKind};
+use ga_rigid::report::{self, reference_scenes, Size, TestScene, CSV_HEADER};
+use ga_rigid::scene::Scene;
+
+/// A fresh directory for one test, under cargo's per-target temporary directory.
+fn test_dir(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join("ga-rigid-report")
+        .join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// The Hairer-Lubich-Wanner body, the heavy top and a user scene: a free asymmetric body,
+/// a torque, and the `simulate` format.
+fn cheap_scenes() -> Vec<TestScene> {
+    let mut scenes: Vec<TestScene> = reference_scenes()
+        .unwrap()
+        .into_iter()
+        .filter(|s| s.name.starts_with("Hairer-Lubich") || s.name == "heavy top")
+        .collect();
+    let user = Scene::parse(
+        "[body]\nmoments = [1.0, 2.0, 2.5]\n[initial]\nrotor = [1, 0, 0, 0]\n\
+         omega = [0.1, 1.0, 0.2]\n[run]\nt_end = 5.0\nsamples = 11\n",
+        Path::new("mine.toml"),
+    )
+    .unwrap();
+    scenes.push(TestScene::from_scene("mine", &user).unwrap());
+    assert_eq!(scenes.len(), 3);
+    scenes
+}
+
+#[test]
+fn a_quick_report_writes_csv_plots_and_page() {
+    let scenes = cheap_scenes();
+    let mut heard = 0;
+    let report = report::run(&scenes, Size::Quick, &mut |_, _| heard += 1).unwrap();
+    assert_eq!(heard, report::job_count(&scenes, Size::Quick));
+
+    let dir = test_dir("quick");
+    let csv = report::csv(&report);
+    std::fs::write(dir.join("results.csv"), &csv).unwrap();
+    let mut lines = csv.lines();
+    assert_eq!(lines.next(), Some(CSV_HEADER));
+    let header: Vec<&str> = CSV_HEADER.split(',').collect();
+    for column in [
+        "scene",
+        "method",
+        "param_kind",
+        "param",
+        "steps",
+        "time_median_us",
+        "time_min_us",
+        "err_attitude_end",
+        "err_attitude_max",
+        "err_momentum_rel_end",
+        "err_momentum_rel_max",
+        "energy_drift_rel",
+    ] {
+        assert!(header.contains(&column), "{column} missing");
+    }
+    let mut rows = 0;
+    for line in lines {
+        let cells: Vec<&str> = line.split(',').collect();
+        assert_eq!(cells.len(), header.len(), "{line}");
+        assert_eq!(cells[header.len() - 1], "ok", "{line}");
+        for (name, cell) in header.iter().zip(&cells).skip(3).take(12) {
+            let x: f64 = cell.parse().unwrap_or_else(|_| panic!("{name}: {cell}"));
+            assert!(x.is_finite() && x >= 0.0, "{name} = {x} in {line}");
+        }
+        rows += 1;
+    }
+    let expected: usize = report.scenes.iter().map(|s| s.rows.len()).sum();
+    assert_eq!(rows, expected);
+
+    let mut names = Vec::new();
+    for (i, scene) in report.scenes.iter().enumerate() {
+        let svg = report::svg(scene).unwrap();
+        assert!(svg.contains("<svg"), "not an SVG");
+        assert!(svg.contains("run time, median of repeated runs (µs)"));
+        assert!(svg.contains("largest attitude error over the run (rad)"));
+        for row in &scene.rows {
+            assert!(
+                svg.contains(row.method.name()),
+                "{} not in the legend",
+                row.method
+            );
+        }
+        let name = report::svg_name(i, &scene.name);
+        std::fs::write(dir.join(&name), &svg).unwrap();
+        names.push(name);
+    }
+    let html = report::html(&report, &names);
+    std::fs::write(dir.join("index.html"), &html).unwrap();
+    for name in &names {
+        assert!(html.contains(&format!("<img src=\"{name}\"")), "{name}");
+    }
+    assert!(html.contains("Check:") && html.contains("observed order"));
+    assert!(html.contains(&report.cpu));
+    assert!(dir.join("results.csv").is_file() && dir.join("index.html").is_file());
+}
+
+#[test]
+fn no_method_is_measured_against_itself() {
+    let scenes = cheap_scenes();
+    let report = report::run(&scenes[..1], Size::Quick, &mut |_, _| {}).unwrap();
+    let scene = &report.scenes[0];
+    for row in &scene.rows {
+        assert_ne!(
+            row.reference,
+            row.method,
+            "{} at {}",
+            row.method,
+            row.label()
+        );
+    }
+    // The exact flow is checked against Dormand-Prince at its tightest tolerance, and
+    // agrees (docs/references.md, "What the report's own reference check measured").
+    assert!(scene.check.secondary.contains("dopri"));
+    assert!(scene.check.errors.attitude_max < 1e-11, "{:?}", scene.check);
+    assert!(scene.check.errors.momentum_max < 1e-11, "{:?}", scene.check);
+}
+
+#[test]
+fn fourth_order_methods_show_order_four() {
+    let scenes = cheap_scenes();
+    let report = report::run(&scenes[..1], Size::Quick, &mut |_, _| {}).unwrap();
+    let scene = &report.scenes[0];
+    for method in [Method::Rk4, Method::LieRk4] {
+        let p = report::observed_order(scene, method).unwrap();
+        assert!((p - 4.0).abs() < 0.3, "{method}: order {p}");
+    }
+    let p = report::observed_order(scene, Method::Splitting).unwrap();
+    assert!((p - 2.0).abs() < 0.3, "splitting: order {p}");
+}
+
+#[test]
+fn the_report_leaves_out_what_a_scene_does_not_need() {
+    let scenes = reference_scenes().unwrap();
+    let find = |name: &str| scenes.iter().find(|s| s.name.starts_with(name)).unwrap();
+    let (run, left) = find("Hairer-Lubich").methods();
+    assert_eq!(left.len(), 1);
+    assert_eq!(left[0].0, Method::ClosedForm);
+    assert!(left[0].1.contains("not symmetric"));
+    assert!(run.contains(&Method::Exact));
+    let (run, left) = find("symmetric short fat top").methods();
+    assert!(left.is_empty());
+    assert!(run.contains(&Method::ClosedForm));
+    let (run, left) = find("heavy top").methods();
+    assert!(left
+        .iter()
+        .any(|(m, why)| *m == Method::Exact && why.contains("torque")));
+    assert!(!run.contains(&Method::Exact) && !run.contains(&Method::ClosedForm));
+}
+
+#[test]
+fn every_method_runs_somewhere_in_the_suite() {
+    let scenes = report::suite().unwrap();
+    for method in Method::ALL {
+        assert!(
+            scenes.iter().any(|s| s.methods().0.contains(&method)),
+            "{method} runs on no scene"
+        );
+    }
+    // Fixed-step counts fall on the sample times.
+    for scene in &scenes {
+        assert_eq!(scene.coarsest_steps % report::SAMPLES, 0, "{}", scene.name);
+        for method in scene.methods().0 {
+            let settings = scene.settings(method, Size::Quick);
+            assert!(!settings.is_empty());
+            if method.step_kind() == StepKind::Fixed {
+                assert!(settings.windows(2).all(|w| w[1] < w[0]), "{}", scene.name);
+            }
+        }
+    }
+}
