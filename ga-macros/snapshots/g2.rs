@@ -42,7 +42,7 @@ pub mod g2 {
             }
         }
     }
-    /// The floating-point functions beyond `core` that this algebra calls, in one place.
+    ///The floating-point functions beyond `core` that this algebra calls, in one place (the `math:` key of `algebra!` chooses `std` or `libm`).
     #[allow(dead_code)]
     mod math {
         #[inline]

@@ -22,7 +22,7 @@ pub fn module_items(spec: &Spec, plan: &Plan) -> TokenStream {
     let n = plan.metric.dimension();
     let mut items = types::emit_support_items(plan);
     if plan.lanes.is_none() {
-        items.extend(math::emit_math(plan));
+        items.extend(math::emit_math(plan, &spec.math));
     }
     for &t in &plan.emitted {
         items.extend(types::emit_struct(plan, t));
