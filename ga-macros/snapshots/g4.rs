@@ -16335,15 +16335,12 @@ pub mod g4 {
             1.0 / c
         }
     }
-    /// For a four-dimensional rotor c0 + P + c4 I with P^2 = p0 + p4 I and I^2 = iota:
-    /// the weights (g0, g4) with log = g0 P + g4 P I.
+    /// For a four-dimensional rotor c0 + P + c4 I with P^2 = p0 + p4 I and I^2 = iota
+    /// (-1 or 0; +1 is taken by channels in `Even::log`): the weights (g0, g4) with
+    /// log = g0 P + g4 P I.
     #[allow(dead_code)]
     fn log_weights_4d(c0: f64, c4: f64, p0: f64, p4: f64, iota: f64) -> [f64; 2] {
-        if iota > 0.0 {
-            let plus = log_weight_of_square(c0 + c4, p0 + p4);
-            let minus = log_weight_of_square(c0 - c4, p0 - p4);
-            [(plus + minus) / 2.0, (plus - minus) / 2.0]
-        } else if iota < 0.0 {
+        if iota < 0.0 {
             let modulus = math::hypot(p0, p4);
             if modulus == 0.0 {
                 return [1.0, 0.0];

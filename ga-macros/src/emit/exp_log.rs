@@ -491,16 +491,12 @@ pub fn emit_scalar_functions(plan: &Plan) -> TokenStream {
             }
         }
 
-        /// For a four-dimensional rotor c0 + P + c4 I with P^2 = p0 + p4 I and I^2 = iota:
-        /// the weights (g0, g4) with log = g0 P + g4 P I.
+        /// For a four-dimensional rotor c0 + P + c4 I with P^2 = p0 + p4 I and I^2 = iota
+        /// (-1 or 0; +1 is taken by channels in `Even::log`): the weights (g0, g4) with
+        /// log = g0 P + g4 P I.
         #[allow(dead_code)]
         fn log_weights_4d(c0: #s, c4: #s, p0: #s, p4: #s, iota: #s) -> [#s; 2] {
-            if iota > 0.0 {
-                // Two real channels, I -> +1 and I -> -1.
-                let plus = log_weight_of_square(c0 + c4, p0 + p4);
-                let minus = log_weight_of_square(c0 - c4, p0 - p4);
-                [(plus + minus) / 2.0, (plus - minus) / 2.0]
-            } else if iota < 0.0 {
+            if iota < 0.0 {
                 // One complex channel, I -> i: g = y / sinh y with cosh y = c, sinh^2 y = p;
                 // y = log1p(u) with u = c - 1 + sqrt p and c - 1 = p / (c + 1).
                 let modulus = math::hypot(p0, p4);
