@@ -333,7 +333,7 @@ mod tests {
             let exp = ga::Bivector::from_array(biv).exp();
             assert!(close(&exp.to_array(), &t.extract(&b.even, &t.exp(&tb))));
             assert!(close(
-                &gp.log().to_array(),
+                &gp.log().expect("a unit rotor has a log").to_array(),
                 &t.extract(&b.bivector, &t.log(&tp))
             ));
             let wv = ga::Vector::from_array(v) * ga::Vector::from_array(g3_vectors(1, 10)[0]);

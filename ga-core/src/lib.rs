@@ -14,6 +14,11 @@
 //! inner product (lowest grade, |r - s|); contractions and the commutator are trait
 //! methods (`use ga_core::f64::g3::*`).
 #![deny(missing_docs)]
+#![cfg_attr(not(feature = "std"), no_std)]
+
+/// The `libm` this crate calls without its `std` feature: a `no_std` crate can name it in
+/// its own algebras with `math: libm(::ga_core::libm)`.
+pub use libm;
 
 #[cfg(feature = "glam")]
 mod glam_interop;
@@ -23,15 +28,15 @@ pub mod kernels;
 pub mod f64 {
     ga_macros::algebra! {
         /// The Euclidean plane, G(2, 0, 0), in `f64`.
-        pub mod g2 { metric: [1, 1], scalar: f64 }
+        pub mod g2 { metric: [1, 1], scalar: f64, math: auto }
     }
     ga_macros::algebra! {
         /// Euclidean space, G(3, 0, 0), in `f64`.
-        pub mod g3 { metric: [1, 1, 1], scalar: f64, lanes: [4] }
+        pub mod g3 { metric: [1, 1, 1], scalar: f64, lanes: [4], math: auto }
     }
     ga_macros::algebra! {
         /// Euclidean four-space, G(4, 0, 0), in `f64`.
-        pub mod g4 { metric: [1, 1, 1, 1], scalar: f64 }
+        pub mod g4 { metric: [1, 1, 1, 1], scalar: f64, math: auto }
     }
 }
 
@@ -39,15 +44,15 @@ pub mod f64 {
 pub mod f32 {
     ga_macros::algebra! {
         /// The Euclidean plane, G(2, 0, 0), in `f32`.
-        pub mod g2 { metric: [1, 1], scalar: f32 }
+        pub mod g2 { metric: [1, 1], scalar: f32, math: auto }
     }
     ga_macros::algebra! {
         /// Euclidean space, G(3, 0, 0), in `f32`.
-        pub mod g3 { metric: [1, 1, 1], scalar: f32, lanes: [4, 8] }
+        pub mod g3 { metric: [1, 1, 1], scalar: f32, lanes: [4, 8], math: auto }
     }
     ga_macros::algebra! {
         /// Euclidean four-space, G(4, 0, 0), in `f32`.
-        pub mod g4 { metric: [1, 1, 1, 1], scalar: f32, lanes: [4] }
+        pub mod g4 { metric: [1, 1, 1, 1], scalar: f32, lanes: [4], math: auto }
     }
 }
 

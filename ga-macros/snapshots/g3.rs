@@ -42,6 +42,59 @@ pub mod g3 {
             }
         }
     }
+    ///The floating-point functions beyond `core` that this algebra calls, in one place (the `math:` key of `algebra!` chooses `std` or `libm`).
+    #[allow(dead_code)]
+    mod math {
+        #[inline]
+        pub(super) fn sqrt(x: f64) -> f64 {
+            x.sqrt()
+        }
+        #[inline]
+        pub(super) fn sin(x: f64) -> f64 {
+            x.sin()
+        }
+        #[inline]
+        pub(super) fn cos(x: f64) -> f64 {
+            x.cos()
+        }
+        #[inline]
+        pub(super) fn cosh(x: f64) -> f64 {
+            x.cosh()
+        }
+        #[inline]
+        pub(super) fn sinh(x: f64) -> f64 {
+            x.sinh()
+        }
+        #[inline]
+        pub(super) fn asinh(x: f64) -> f64 {
+            x.asinh()
+        }
+        #[inline]
+        pub(super) fn ln_1p(x: f64) -> f64 {
+            x.ln_1p()
+        }
+        #[inline]
+        pub(super) fn sin_cos(x: f64) -> (f64, f64) {
+            x.sin_cos()
+        }
+        #[inline]
+        pub(super) fn atan2(y: f64, x: f64) -> f64 {
+            y.atan2(x)
+        }
+        #[inline]
+        pub(super) fn hypot(x: f64, y: f64) -> f64 {
+            x.hypot(y)
+        }
+    }
+    /// A sum of squares at least this large lost nothing that matters to underflow: a
+    /// square in the subnormal range is off by at most half its spacing,
+    /// `MIN_POSITIVE * EPSILON / 2`, below `EPSILON^2` relative to this bound.
+    #[allow(dead_code)]
+    const SQUARE_MIN: f64 = f64::MIN_POSITIVE / f64::EPSILON;
+    /// A sum of squares at most this large had no square overflow, and its reciprocal
+    /// (and that of its square root) is a normal number.
+    #[allow(dead_code)]
+    const SQUARE_MAX: f64 = f64::EPSILON / f64::MIN_POSITIVE;
     ///A vector: components e1, e2, e3.
     #[derive(Clone, Copy, Debug, PartialEq, Default)]
     #[repr(C)]
@@ -157,42 +210,92 @@ pub mod g3 {
             }
         }
         /// `<A ~A>_0`: the squared norm (negative or zero for some elements of
-        /// non-Euclidean metrics).
+        /// non-Euclidean metrics). Computed as it stands, so it overflows once a component
+        /// passes the square root of the largest float; `norm` does not.
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f64 {
             (self.e1 * self.e1 + self.e2 * self.e2) + self.e3 * self.e3
         }
-        /// `sqrt(|<A ~A>_0|)`.
+        /// `sqrt(|<A ~A>_0|)`, right to a few ulps for every finite `A` whose norm is
+        /// finite: when the squares could have overflowed or underflowed, the components
+        /// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
         #[inline]
         #[must_use]
         pub fn norm(self) -> f64 {
-            self.norm_squared().abs().sqrt()
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return math::sqrt(squared);
+            }
+            let largest: f64 = self.e1.abs().max(self.e2.abs()).max(self.e3.abs());
+            if !(largest > 0.0 && largest < f64::INFINITY) {
+                return if largest == f64::INFINITY {
+                    largest
+                } else {
+                    math::sqrt(squared)
+                };
+            }
+            let descaled = Vector {
+                e1: self.e1 / largest,
+                e2: self.e2 / largest,
+                e3: self.e3 / largest,
+            };
+            math::sqrt(descaled.norm_squared().abs()) * largest
         }
-        /// `self / self.norm()`: non-finite when the norm is zero (see `try_normalized`).
+        /// `self / self.norm()`, scaled like `norm` so that it is a unit value for every
+        /// finite non-null `A`; non-finite when the norm is zero or not finite (see
+        /// `try_normalized`).
         #[inline]
         #[must_use]
         pub fn normalized(self) -> Self {
-            self * (1.0 / self.norm())
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return self * (1.0 / math::sqrt(squared));
+            }
+            let largest: f64 = self.e1.abs().max(self.e2.abs()).max(self.e3.abs());
+            let descaled = Vector {
+                e1: self.e1 / largest,
+                e2: self.e2 / largest,
+                e3: self.e3 / largest,
+            };
+            descaled * (1.0 / math::sqrt(descaled.norm_squared().abs()))
         }
-        /// `self / self.norm()`, or `None` when the norm is zero or not finite.
+        /// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
+        /// not finite.
         #[inline]
         #[must_use]
         pub fn try_normalized(self) -> Option<Self> {
-            let norm = self.norm();
-            if norm > 0.0 && norm.is_finite() { Some(self * (1.0 / norm)) } else { None }
+            let normalized = self.normalized();
+            if normalized.to_array().iter().all(|c| c.is_finite()) {
+                Some(normalized)
+            } else {
+                None
+            }
         }
         /// The inverse `~A / (A ~A)` (here `A ~A` is a scalar for every `A`), or `None`
-        /// when `A ~A` is zero or the result is not finite.
+        /// when `A ~A` is zero or the result is not finite. Right to a few ulps
+        /// relative whenever the inverse is a normal number: when `A ~A` could have
+        /// overflowed or underflowed, `A` is first divided by its largest component.
         #[inline]
         #[must_use]
         pub fn inverse(self) -> Option<Vector> {
-            let denominator = (self.e1 * self.e1 + self.e2 * self.e2)
+            let denominator: f64 = (self.e1 * self.e1 + self.e2 * self.e2)
                 + self.e3 * self.e3;
-            if denominator == 0.0 {
-                return None;
-            }
-            let inverse = self.reverse() * (1.0 / denominator);
+            let inverse = if denominator.abs() >= SQUARE_MIN
+                && denominator.abs() <= SQUARE_MAX
+            {
+                self.reverse() * (1.0 / denominator)
+            } else {
+                let largest: f64 = self.e1.abs().max(self.e2.abs()).max(self.e3.abs());
+                let descaled = Vector {
+                    e1: self.e1 / largest,
+                    e2: self.e2 / largest,
+                    e3: self.e3 / largest,
+                };
+                let denominator: f64 = (descaled.e1 * descaled.e1
+                    + descaled.e2 * descaled.e2) + descaled.e3 * descaled.e3;
+                descaled.reverse() * ((1.0 / denominator) / largest)
+            };
             if inverse.to_array().iter().all(|c| c.is_finite()) {
                 Some(inverse.into())
             } else {
@@ -225,11 +328,19 @@ pub mod g3 {
         /// induction. `None` when this is not a blade (to rounding) or a factor is null.
         #[must_use]
         pub fn factor(self) -> Option<[Vector; 1usize]> {
-            let blade = Multivector::from(self);
-            let size = blade.to_array().iter().map(|c| c * c).sum::<f64>().sqrt();
-            if !(size > 0.0) || !size.is_finite() {
+            if !self.to_array().iter().all(|c| c.is_finite()) {
                 return None;
             }
+            let largest = self.to_array().iter().fold(0.0 as f64, |m, c| m.max(c.abs()));
+            if !(largest > 0.0) {
+                return None;
+            }
+            let blade = Multivector::from(Vector {
+                e1: self.e1 / largest,
+                e2: self.e2 / largest,
+                e3: self.e3 / largest,
+            });
+            let size = math::sqrt(blade.to_array().iter().map(|c| c * c).sum::<f64>());
             let mut rest = blade;
             let mut factors = [Vector::ZERO; 1usize];
             for slot in factors.iter_mut().take(1usize - 1) {
@@ -276,14 +387,19 @@ pub mod g3 {
                 .iter()
                 .zip(blade.to_array())
                 .map(|(p, b)| (p - b) * (p - b))
-                .sum::<f64>()
-                .sqrt();
+                .sum::<f64>();
+            let error = math::sqrt(error);
             let scale = factors
                 .iter()
-                .map(|f| f.to_array().iter().map(|c| c * c).sum::<f64>().sqrt())
+                .map(|f| math::sqrt(f.to_array().iter().map(|c| c * c).sum::<f64>()))
                 .product::<f64>()
                 .max(size);
-            if error <= 1024.0 * f64::EPSILON * scale { Some(factors) } else { None }
+            if error <= 1024.0 * f64::EPSILON * scale {
+                factors[0] = factors[0] * largest;
+                Some(factors)
+            } else {
+                None
+            }
         }
     }
     ///A grade-2 multivector: components e12, e13, e23.
@@ -401,42 +517,96 @@ pub mod g3 {
             }
         }
         /// `<A ~A>_0`: the squared norm (negative or zero for some elements of
-        /// non-Euclidean metrics).
+        /// non-Euclidean metrics). Computed as it stands, so it overflows once a component
+        /// passes the square root of the largest float; `norm` does not.
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f64 {
             (self.e12 * self.e12 + self.e13 * self.e13) + self.e23 * self.e23
         }
-        /// `sqrt(|<A ~A>_0|)`.
+        /// `sqrt(|<A ~A>_0|)`, right to a few ulps for every finite `A` whose norm is
+        /// finite: when the squares could have overflowed or underflowed, the components
+        /// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
         #[inline]
         #[must_use]
         pub fn norm(self) -> f64 {
-            self.norm_squared().abs().sqrt()
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return math::sqrt(squared);
+            }
+            let largest: f64 = self.e12.abs().max(self.e13.abs()).max(self.e23.abs());
+            if !(largest > 0.0 && largest < f64::INFINITY) {
+                return if largest == f64::INFINITY {
+                    largest
+                } else {
+                    math::sqrt(squared)
+                };
+            }
+            let descaled = Bivector {
+                e12: self.e12 / largest,
+                e13: self.e13 / largest,
+                e23: self.e23 / largest,
+            };
+            math::sqrt(descaled.norm_squared().abs()) * largest
         }
-        /// `self / self.norm()`: non-finite when the norm is zero (see `try_normalized`).
+        /// `self / self.norm()`, scaled like `norm` so that it is a unit value for every
+        /// finite non-null `A`; non-finite when the norm is zero or not finite (see
+        /// `try_normalized`).
         #[inline]
         #[must_use]
         pub fn normalized(self) -> Self {
-            self * (1.0 / self.norm())
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return self * (1.0 / math::sqrt(squared));
+            }
+            let largest: f64 = self.e12.abs().max(self.e13.abs()).max(self.e23.abs());
+            let descaled = Bivector {
+                e12: self.e12 / largest,
+                e13: self.e13 / largest,
+                e23: self.e23 / largest,
+            };
+            descaled * (1.0 / math::sqrt(descaled.norm_squared().abs()))
         }
-        /// `self / self.norm()`, or `None` when the norm is zero or not finite.
+        /// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
+        /// not finite.
         #[inline]
         #[must_use]
         pub fn try_normalized(self) -> Option<Self> {
-            let norm = self.norm();
-            if norm > 0.0 && norm.is_finite() { Some(self * (1.0 / norm)) } else { None }
+            let normalized = self.normalized();
+            if normalized.to_array().iter().all(|c| c.is_finite()) {
+                Some(normalized)
+            } else {
+                None
+            }
         }
         /// The inverse `~A / (A ~A)` (here `A ~A` is a scalar for every `A`), or `None`
-        /// when `A ~A` is zero or the result is not finite.
+        /// when `A ~A` is zero or the result is not finite. Right to a few ulps
+        /// relative whenever the inverse is a normal number: when `A ~A` could have
+        /// overflowed or underflowed, `A` is first divided by its largest component.
         #[inline]
         #[must_use]
         pub fn inverse(self) -> Option<Bivector> {
-            let denominator = (self.e12 * self.e12 + self.e13 * self.e13)
+            let denominator: f64 = (self.e12 * self.e12 + self.e13 * self.e13)
                 + self.e23 * self.e23;
-            if denominator == 0.0 {
-                return None;
-            }
-            let inverse = self.reverse() * (1.0 / denominator);
+            let inverse = if denominator.abs() >= SQUARE_MIN
+                && denominator.abs() <= SQUARE_MAX
+            {
+                self.reverse() * (1.0 / denominator)
+            } else {
+                let largest: f64 = self
+                    .e12
+                    .abs()
+                    .max(self.e13.abs())
+                    .max(self.e23.abs());
+                let descaled = Bivector {
+                    e12: self.e12 / largest,
+                    e13: self.e13 / largest,
+                    e23: self.e23 / largest,
+                };
+                let denominator: f64 = (descaled.e12 * descaled.e12
+                    + descaled.e13 * descaled.e13) + descaled.e23 * descaled.e23;
+                descaled.reverse() * ((1.0 / denominator) / largest)
+            };
             if inverse.to_array().iter().all(|c| c.is_finite()) {
                 Some(inverse.into())
             } else {
@@ -475,11 +645,19 @@ pub mod g3 {
         /// induction. `None` when this is not a blade (to rounding) or a factor is null.
         #[must_use]
         pub fn factor(self) -> Option<[Vector; 2usize]> {
-            let blade = Multivector::from(self);
-            let size = blade.to_array().iter().map(|c| c * c).sum::<f64>().sqrt();
-            if !(size > 0.0) || !size.is_finite() {
+            if !self.to_array().iter().all(|c| c.is_finite()) {
                 return None;
             }
+            let largest = self.to_array().iter().fold(0.0 as f64, |m, c| m.max(c.abs()));
+            if !(largest > 0.0) {
+                return None;
+            }
+            let blade = Multivector::from(Bivector {
+                e12: self.e12 / largest,
+                e13: self.e13 / largest,
+                e23: self.e23 / largest,
+            });
+            let size = math::sqrt(blade.to_array().iter().map(|c| c * c).sum::<f64>());
             let mut rest = blade;
             let mut factors = [Vector::ZERO; 2usize];
             for slot in factors.iter_mut().take(2usize - 1) {
@@ -526,14 +704,19 @@ pub mod g3 {
                 .iter()
                 .zip(blade.to_array())
                 .map(|(p, b)| (p - b) * (p - b))
-                .sum::<f64>()
-                .sqrt();
+                .sum::<f64>();
+            let error = math::sqrt(error);
             let scale = factors
                 .iter()
-                .map(|f| f.to_array().iter().map(|c| c * c).sum::<f64>().sqrt())
+                .map(|f| math::sqrt(f.to_array().iter().map(|c| c * c).sum::<f64>()))
                 .product::<f64>()
                 .max(size);
-            if error <= 1024.0 * f64::EPSILON * scale { Some(factors) } else { None }
+            if error <= 1024.0 * f64::EPSILON * scale {
+                factors[0] = factors[0] * largest;
+                Some(factors)
+            } else {
+                None
+            }
         }
     }
     ///A grade-3 multivector: components e123.
@@ -617,41 +800,84 @@ pub mod g3 {
             self.e123
         }
         /// `<A ~A>_0`: the squared norm (negative or zero for some elements of
-        /// non-Euclidean metrics).
+        /// non-Euclidean metrics). Computed as it stands, so it overflows once a component
+        /// passes the square root of the largest float; `norm` does not.
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f64 {
             self.e123 * self.e123
         }
-        /// `sqrt(|<A ~A>_0|)`.
+        /// `sqrt(|<A ~A>_0|)`, right to a few ulps for every finite `A` whose norm is
+        /// finite: when the squares could have overflowed or underflowed, the components
+        /// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
         #[inline]
         #[must_use]
         pub fn norm(self) -> f64 {
-            self.norm_squared().abs().sqrt()
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return math::sqrt(squared);
+            }
+            let largest: f64 = self.e123.abs();
+            if !(largest > 0.0 && largest < f64::INFINITY) {
+                return if largest == f64::INFINITY {
+                    largest
+                } else {
+                    math::sqrt(squared)
+                };
+            }
+            let descaled = Trivector {
+                e123: self.e123 / largest,
+            };
+            math::sqrt(descaled.norm_squared().abs()) * largest
         }
-        /// `self / self.norm()`: non-finite when the norm is zero (see `try_normalized`).
+        /// `self / self.norm()`, scaled like `norm` so that it is a unit value for every
+        /// finite non-null `A`; non-finite when the norm is zero or not finite (see
+        /// `try_normalized`).
         #[inline]
         #[must_use]
         pub fn normalized(self) -> Self {
-            self * (1.0 / self.norm())
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return self * (1.0 / math::sqrt(squared));
+            }
+            let largest: f64 = self.e123.abs();
+            let descaled = Trivector {
+                e123: self.e123 / largest,
+            };
+            descaled * (1.0 / math::sqrt(descaled.norm_squared().abs()))
         }
-        /// `self / self.norm()`, or `None` when the norm is zero or not finite.
+        /// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
+        /// not finite.
         #[inline]
         #[must_use]
         pub fn try_normalized(self) -> Option<Self> {
-            let norm = self.norm();
-            if norm > 0.0 && norm.is_finite() { Some(self * (1.0 / norm)) } else { None }
+            let normalized = self.normalized();
+            if normalized.to_array().iter().all(|c| c.is_finite()) {
+                Some(normalized)
+            } else {
+                None
+            }
         }
         /// The inverse `~A / (A ~A)` (here `A ~A` is a scalar for every `A`), or `None`
-        /// when `A ~A` is zero or the result is not finite.
+        /// when `A ~A` is zero or the result is not finite. Right to a few ulps
+        /// relative whenever the inverse is a normal number: when `A ~A` could have
+        /// overflowed or underflowed, `A` is first divided by its largest component.
         #[inline]
         #[must_use]
         pub fn inverse(self) -> Option<Trivector> {
-            let denominator = self.e123 * self.e123;
-            if denominator == 0.0 {
-                return None;
-            }
-            let inverse = self.reverse() * (1.0 / denominator);
+            let denominator: f64 = self.e123 * self.e123;
+            let inverse = if denominator.abs() >= SQUARE_MIN
+                && denominator.abs() <= SQUARE_MAX
+            {
+                self.reverse() * (1.0 / denominator)
+            } else {
+                let largest: f64 = self.e123.abs();
+                let descaled = Trivector {
+                    e123: self.e123 / largest,
+                };
+                let denominator: f64 = descaled.e123 * descaled.e123;
+                descaled.reverse() * ((1.0 / denominator) / largest)
+            };
             if inverse.to_array().iter().all(|c| c.is_finite()) {
                 Some(inverse.into())
             } else {
@@ -680,11 +906,17 @@ pub mod g3 {
         /// induction. `None` when this is not a blade (to rounding) or a factor is null.
         #[must_use]
         pub fn factor(self) -> Option<[Vector; 3usize]> {
-            let blade = Multivector::from(self);
-            let size = blade.to_array().iter().map(|c| c * c).sum::<f64>().sqrt();
-            if !(size > 0.0) || !size.is_finite() {
+            if !self.to_array().iter().all(|c| c.is_finite()) {
                 return None;
             }
+            let largest = self.to_array().iter().fold(0.0 as f64, |m, c| m.max(c.abs()));
+            if !(largest > 0.0) {
+                return None;
+            }
+            let blade = Multivector::from(Trivector {
+                e123: self.e123 / largest,
+            });
+            let size = math::sqrt(blade.to_array().iter().map(|c| c * c).sum::<f64>());
             let mut rest = blade;
             let mut factors = [Vector::ZERO; 3usize];
             for slot in factors.iter_mut().take(3usize - 1) {
@@ -731,14 +963,19 @@ pub mod g3 {
                 .iter()
                 .zip(blade.to_array())
                 .map(|(p, b)| (p - b) * (p - b))
-                .sum::<f64>()
-                .sqrt();
+                .sum::<f64>();
+            let error = math::sqrt(error);
             let scale = factors
                 .iter()
-                .map(|f| f.to_array().iter().map(|c| c * c).sum::<f64>().sqrt())
+                .map(|f| math::sqrt(f.to_array().iter().map(|c| c * c).sum::<f64>()))
                 .product::<f64>()
                 .max(size);
-            if error <= 1024.0 * f64::EPSILON * scale { Some(factors) } else { None }
+            if error <= 1024.0 * f64::EPSILON * scale {
+                factors[0] = factors[0] * largest;
+                Some(factors)
+            } else {
+                None
+            }
         }
     }
     ///An even multivector (a rotor when unit): components s, e12, e13, e23.
@@ -867,43 +1104,112 @@ pub mod g3 {
             }
         }
         /// `<A ~A>_0`: the squared norm (negative or zero for some elements of
-        /// non-Euclidean metrics).
+        /// non-Euclidean metrics). Computed as it stands, so it overflows once a component
+        /// passes the square root of the largest float; `norm` does not.
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f64 {
             (self.s * self.s + self.e12 * self.e12)
                 + (self.e13 * self.e13 + self.e23 * self.e23)
         }
-        /// `sqrt(|<A ~A>_0|)`.
+        /// `sqrt(|<A ~A>_0|)`, right to a few ulps for every finite `A` whose norm is
+        /// finite: when the squares could have overflowed or underflowed, the components
+        /// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
         #[inline]
         #[must_use]
         pub fn norm(self) -> f64 {
-            self.norm_squared().abs().sqrt()
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return math::sqrt(squared);
+            }
+            let largest: f64 = self
+                .s
+                .abs()
+                .max(self.e12.abs())
+                .max(self.e13.abs())
+                .max(self.e23.abs());
+            if !(largest > 0.0 && largest < f64::INFINITY) {
+                return if largest == f64::INFINITY {
+                    largest
+                } else {
+                    math::sqrt(squared)
+                };
+            }
+            let descaled = Even {
+                s: self.s / largest,
+                e12: self.e12 / largest,
+                e13: self.e13 / largest,
+                e23: self.e23 / largest,
+            };
+            math::sqrt(descaled.norm_squared().abs()) * largest
         }
-        /// `self / self.norm()`: non-finite when the norm is zero (see `try_normalized`).
+        /// `self / self.norm()`, scaled like `norm` so that it is a unit value for every
+        /// finite non-null `A`; non-finite when the norm is zero or not finite (see
+        /// `try_normalized`).
         #[inline]
         #[must_use]
         pub fn normalized(self) -> Self {
-            self * (1.0 / self.norm())
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return self * (1.0 / math::sqrt(squared));
+            }
+            let largest: f64 = self
+                .s
+                .abs()
+                .max(self.e12.abs())
+                .max(self.e13.abs())
+                .max(self.e23.abs());
+            let descaled = Even {
+                s: self.s / largest,
+                e12: self.e12 / largest,
+                e13: self.e13 / largest,
+                e23: self.e23 / largest,
+            };
+            descaled * (1.0 / math::sqrt(descaled.norm_squared().abs()))
         }
-        /// `self / self.norm()`, or `None` when the norm is zero or not finite.
+        /// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
+        /// not finite.
         #[inline]
         #[must_use]
         pub fn try_normalized(self) -> Option<Self> {
-            let norm = self.norm();
-            if norm > 0.0 && norm.is_finite() { Some(self * (1.0 / norm)) } else { None }
+            let normalized = self.normalized();
+            if normalized.to_array().iter().all(|c| c.is_finite()) {
+                Some(normalized)
+            } else {
+                None
+            }
         }
         /// The inverse `~A / (A ~A)` (here `A ~A` is a scalar for every `A`), or `None`
-        /// when `A ~A` is zero or the result is not finite.
+        /// when `A ~A` is zero or the result is not finite. Right to a few ulps
+        /// relative whenever the inverse is a normal number: when `A ~A` could have
+        /// overflowed or underflowed, `A` is first divided by its largest component.
         #[inline]
         #[must_use]
         pub fn inverse(self) -> Option<Even> {
-            let denominator = (self.s * self.s + self.e12 * self.e12)
+            let denominator: f64 = (self.s * self.s + self.e12 * self.e12)
                 + (self.e13 * self.e13 + self.e23 * self.e23);
-            if denominator == 0.0 {
-                return None;
-            }
-            let inverse = self.reverse() * (1.0 / denominator);
+            let inverse = if denominator.abs() >= SQUARE_MIN
+                && denominator.abs() <= SQUARE_MAX
+            {
+                self.reverse() * (1.0 / denominator)
+            } else {
+                let largest: f64 = self
+                    .s
+                    .abs()
+                    .max(self.e12.abs())
+                    .max(self.e13.abs())
+                    .max(self.e23.abs());
+                let descaled = Even {
+                    s: self.s / largest,
+                    e12: self.e12 / largest,
+                    e13: self.e13 / largest,
+                    e23: self.e23 / largest,
+                };
+                let denominator: f64 = (descaled.s * descaled.s
+                    + descaled.e12 * descaled.e12)
+                    + (descaled.e13 * descaled.e13 + descaled.e23 * descaled.e23);
+                descaled.reverse() * ((1.0 / denominator) / largest)
+            };
             if inverse.to_array().iter().all(|c| c.is_finite()) {
                 Some(inverse.into())
             } else {
@@ -1062,43 +1368,112 @@ pub mod g3 {
             }
         }
         /// `<A ~A>_0`: the squared norm (negative or zero for some elements of
-        /// non-Euclidean metrics).
+        /// non-Euclidean metrics). Computed as it stands, so it overflows once a component
+        /// passes the square root of the largest float; `norm` does not.
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f64 {
             (self.e1 * self.e1 + self.e2 * self.e2)
                 + (self.e3 * self.e3 + self.e123 * self.e123)
         }
-        /// `sqrt(|<A ~A>_0|)`.
+        /// `sqrt(|<A ~A>_0|)`, right to a few ulps for every finite `A` whose norm is
+        /// finite: when the squares could have overflowed or underflowed, the components
+        /// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
         #[inline]
         #[must_use]
         pub fn norm(self) -> f64 {
-            self.norm_squared().abs().sqrt()
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return math::sqrt(squared);
+            }
+            let largest: f64 = self
+                .e1
+                .abs()
+                .max(self.e2.abs())
+                .max(self.e3.abs())
+                .max(self.e123.abs());
+            if !(largest > 0.0 && largest < f64::INFINITY) {
+                return if largest == f64::INFINITY {
+                    largest
+                } else {
+                    math::sqrt(squared)
+                };
+            }
+            let descaled = Odd {
+                e1: self.e1 / largest,
+                e2: self.e2 / largest,
+                e3: self.e3 / largest,
+                e123: self.e123 / largest,
+            };
+            math::sqrt(descaled.norm_squared().abs()) * largest
         }
-        /// `self / self.norm()`: non-finite when the norm is zero (see `try_normalized`).
+        /// `self / self.norm()`, scaled like `norm` so that it is a unit value for every
+        /// finite non-null `A`; non-finite when the norm is zero or not finite (see
+        /// `try_normalized`).
         #[inline]
         #[must_use]
         pub fn normalized(self) -> Self {
-            self * (1.0 / self.norm())
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return self * (1.0 / math::sqrt(squared));
+            }
+            let largest: f64 = self
+                .e1
+                .abs()
+                .max(self.e2.abs())
+                .max(self.e3.abs())
+                .max(self.e123.abs());
+            let descaled = Odd {
+                e1: self.e1 / largest,
+                e2: self.e2 / largest,
+                e3: self.e3 / largest,
+                e123: self.e123 / largest,
+            };
+            descaled * (1.0 / math::sqrt(descaled.norm_squared().abs()))
         }
-        /// `self / self.norm()`, or `None` when the norm is zero or not finite.
+        /// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
+        /// not finite.
         #[inline]
         #[must_use]
         pub fn try_normalized(self) -> Option<Self> {
-            let norm = self.norm();
-            if norm > 0.0 && norm.is_finite() { Some(self * (1.0 / norm)) } else { None }
+            let normalized = self.normalized();
+            if normalized.to_array().iter().all(|c| c.is_finite()) {
+                Some(normalized)
+            } else {
+                None
+            }
         }
         /// The inverse `~A / (A ~A)` (here `A ~A` is a scalar for every `A`), or `None`
-        /// when `A ~A` is zero or the result is not finite.
+        /// when `A ~A` is zero or the result is not finite. Right to a few ulps
+        /// relative whenever the inverse is a normal number: when `A ~A` could have
+        /// overflowed or underflowed, `A` is first divided by its largest component.
         #[inline]
         #[must_use]
         pub fn inverse(self) -> Option<Odd> {
-            let denominator = (self.e1 * self.e1 + self.e2 * self.e2)
+            let denominator: f64 = (self.e1 * self.e1 + self.e2 * self.e2)
                 + (self.e3 * self.e3 + self.e123 * self.e123);
-            if denominator == 0.0 {
-                return None;
-            }
-            let inverse = self.reverse() * (1.0 / denominator);
+            let inverse = if denominator.abs() >= SQUARE_MIN
+                && denominator.abs() <= SQUARE_MAX
+            {
+                self.reverse() * (1.0 / denominator)
+            } else {
+                let largest: f64 = self
+                    .e1
+                    .abs()
+                    .max(self.e2.abs())
+                    .max(self.e3.abs())
+                    .max(self.e123.abs());
+                let descaled = Odd {
+                    e1: self.e1 / largest,
+                    e2: self.e2 / largest,
+                    e3: self.e3 / largest,
+                    e123: self.e123 / largest,
+                };
+                let denominator: f64 = (descaled.e1 * descaled.e1
+                    + descaled.e2 * descaled.e2)
+                    + (descaled.e3 * descaled.e3 + descaled.e123 * descaled.e123);
+                descaled.reverse() * ((1.0 / denominator) / largest)
+            };
             if inverse.to_array().iter().all(|c| c.is_finite()) {
                 Some(inverse.into())
             } else {
@@ -1303,7 +1678,8 @@ pub mod g3 {
             }
         }
         /// `<A ~A>_0`: the squared norm (negative or zero for some elements of
-        /// non-Euclidean metrics).
+        /// non-Euclidean metrics). Computed as it stands, so it overflows once a component
+        /// passes the square root of the largest float; `norm` does not.
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f64 {
@@ -1312,24 +1688,88 @@ pub mod g3 {
                 + ((self.e12 * self.e12 + self.e13 * self.e13)
                     + (self.e23 * self.e23 + self.e123 * self.e123))
         }
-        /// `sqrt(|<A ~A>_0|)`.
+        /// `sqrt(|<A ~A>_0|)`, right to a few ulps for every finite `A` whose norm is
+        /// finite: when the squares could have overflowed or underflowed, the components
+        /// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
         #[inline]
         #[must_use]
         pub fn norm(self) -> f64 {
-            self.norm_squared().abs().sqrt()
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return math::sqrt(squared);
+            }
+            let largest: f64 = self
+                .s
+                .abs()
+                .max(self.e1.abs())
+                .max(self.e2.abs())
+                .max(self.e3.abs())
+                .max(self.e12.abs())
+                .max(self.e13.abs())
+                .max(self.e23.abs())
+                .max(self.e123.abs());
+            if !(largest > 0.0 && largest < f64::INFINITY) {
+                return if largest == f64::INFINITY {
+                    largest
+                } else {
+                    math::sqrt(squared)
+                };
+            }
+            let descaled = Multivector {
+                s: self.s / largest,
+                e1: self.e1 / largest,
+                e2: self.e2 / largest,
+                e3: self.e3 / largest,
+                e12: self.e12 / largest,
+                e13: self.e13 / largest,
+                e23: self.e23 / largest,
+                e123: self.e123 / largest,
+            };
+            math::sqrt(descaled.norm_squared().abs()) * largest
         }
-        /// `self / self.norm()`: non-finite when the norm is zero (see `try_normalized`).
+        /// `self / self.norm()`, scaled like `norm` so that it is a unit value for every
+        /// finite non-null `A`; non-finite when the norm is zero or not finite (see
+        /// `try_normalized`).
         #[inline]
         #[must_use]
         pub fn normalized(self) -> Self {
-            self * (1.0 / self.norm())
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return self * (1.0 / math::sqrt(squared));
+            }
+            let largest: f64 = self
+                .s
+                .abs()
+                .max(self.e1.abs())
+                .max(self.e2.abs())
+                .max(self.e3.abs())
+                .max(self.e12.abs())
+                .max(self.e13.abs())
+                .max(self.e23.abs())
+                .max(self.e123.abs());
+            let descaled = Multivector {
+                s: self.s / largest,
+                e1: self.e1 / largest,
+                e2: self.e2 / largest,
+                e3: self.e3 / largest,
+                e12: self.e12 / largest,
+                e13: self.e13 / largest,
+                e23: self.e23 / largest,
+                e123: self.e123 / largest,
+            };
+            descaled * (1.0 / math::sqrt(descaled.norm_squared().abs()))
         }
-        /// `self / self.norm()`, or `None` when the norm is zero or not finite.
+        /// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
+        /// not finite.
         #[inline]
         #[must_use]
         pub fn try_normalized(self) -> Option<Self> {
-            let norm = self.norm();
-            if norm > 0.0 && norm.is_finite() { Some(self * (1.0 / norm)) } else { None }
+            let normalized = self.normalized();
+            if normalized.to_array().iter().all(|c| c.is_finite()) {
+                Some(normalized)
+            } else {
+                None
+            }
         }
         /// The inverse, by solving `A X = 1` (`A ~A` is not a scalar for this type), or
         /// `None` when `A` is singular.
@@ -8169,20 +8609,19 @@ pub mod g3 {
     #[allow(dead_code)]
     fn multivector_inverse(a: Multivector) -> Option<Multivector> {
         let a = a.to_array();
-        let mut m = [[0.0 as f64; 8usize]; 8usize];
-        let mut largest: f64 = 0.0;
-        for (i, &ai) in a.iter().enumerate() {
-            for (j, &(k, sign)) in LEFT[i].iter().enumerate() {
-                m[k][j] += f64::from(sign) * ai;
-            }
-            largest = largest.max(ai.abs());
-        }
+        let largest = a.iter().fold(0.0 as f64, |m, x| m.max(x.abs()));
         if !(largest > 0.0) || !largest.is_finite() {
             return None;
         }
+        let mut m = [[0.0 as f64; 8usize]; 8usize];
+        for (i, &ai) in a.iter().enumerate() {
+            for (j, &(k, sign)) in LEFT[i].iter().enumerate() {
+                m[k][j] += f64::from(sign) * (ai / largest);
+            }
+        }
         let mut rhs = [0.0 as f64; 8usize];
         rhs[0] = 1.0;
-        let tolerance = largest * f64::EPSILON * (8usize as f64);
+        let tolerance = f64::EPSILON * (8usize as f64);
         for col in 0..8usize {
             let mut pivot = col;
             for row in col + 1..8usize {
@@ -8213,6 +8652,7 @@ pub mod g3 {
             }
             x[row] = sum / m[row][row];
         }
+        let x = x.map(|v| v / largest);
         if x.iter().all(|v| v.is_finite()) {
             Some(Multivector::from_array(x))
         } else {
@@ -8277,13 +8717,12 @@ pub mod g3 {
         }
     }
     impl Bivector {
-        ///`exp(B)` in closed form for every bivector and every metric: cos/sin, cosh/sinh or 1 + B per invariant plane (see docs/derivations/exp-log.md).
+        ///`exp(B)` in closed form for every bivector and every metric: cos/sin, cosh/sinh or 1 + B per invariant plane (see docs/derivations/exp-log.md). Angles are reduced modulo 2 pi by `sin`/`cos` themselves, and `B` is scaled before squaring, so a rotation bivector of any finite size gives a unit rotor.
         #[inline]
         #[must_use]
         pub fn exp(self) -> Even {
-            let x: f64 = -((self.e12 * self.e12 + self.e13 * self.e13)
-                + self.e23 * self.e23);
-            let [even, weight] = cosh_sinhc_sqrt(x);
+            let [x, root] = square_and_root(self);
+            let [even, weight] = cosh_sinhc(x, root);
             Even {
                 s: even,
                 e12: weight * self.e12,
@@ -8294,42 +8733,77 @@ pub mod g3 {
     }
     impl Even {
         /// The bivector `B` with `B.exp() == self` on the principal range (rotation
-        /// angles below pi per plane); `self` must be a unit rotor.
+        /// angles below pi per plane, or their sum below pi in four dimensions), or
+        /// `None` when `self` is not a rotor: `<R ~R>_0` further from 1 than the
+        /// square root of the machine epsilon, or a result that is not finite. Where
+        /// the logarithm is not unique it is chosen: `log(-1)` is `pi e12`, a full turn
+        /// in the first plane that squares to -1, and in four dimensions a channel at
+        /// -1 (`log(+-e1234)` in G4) turns by pi in `(e12 -+ e34) / 2`. See
+        /// docs/derivations/exp-log.md.
         #[inline]
         #[must_use]
-        pub fn log(self) -> Bivector {
-            let p = Bivector {
-                e12: self.e12,
-                e13: self.e13,
-                e23: self.e23,
-            };
-            let p2: f64 = -((p.e12 * p.e12 + p.e13 * p.e13) + p.e23 * p.e23);
-            let weight = log_weight(self.s, p2);
-            Bivector {
-                e12: weight * p.e12,
-                e13: weight * p.e13,
-                e23: weight * p.e23,
+        pub fn log(self) -> Option<Bivector> {
+            let norm_squared: f64 = (self.s * self.s + self.e12 * self.e12)
+                + (self.e13 * self.e13 + self.e23 * self.e23);
+            if !((norm_squared - 1.0).abs() <= 0.000000014901161193847656) {
+                return None;
             }
+            let log = {
+                let p = Bivector {
+                    e12: self.e12,
+                    e13: self.e13,
+                    e23: self.e23,
+                };
+                let [x, root] = square_and_root(p);
+                let [weight, turn] = log_weight(self.s, x, root, p == Bivector::ZERO);
+                Bivector {
+                    e12: weight * p.e12 + turn,
+                    e13: weight * p.e13,
+                    e23: weight * p.e23,
+                }
+            };
+            if log.to_array().iter().all(|c| c.is_finite()) { Some(log) } else { None }
         }
+    }
+    /// `[x, sqrt |x|]` for `x = <B B>_0`, the root right to a few ulps at every
+    /// magnitude: when the squares could overflow or underflow, `B` is first divided
+    /// by its largest component, and `x` then carries only the sign of `<B B>_0`.
+    #[allow(dead_code)]
+    #[inline]
+    fn square_and_root(b: Bivector) -> [f64; 2] {
+        let x: f64 = -((b.e12 * b.e12 + b.e13 * b.e13) + b.e23 * b.e23);
+        if x.abs() >= SQUARE_MIN && x.abs() <= SQUARE_MAX {
+            return [x, math::sqrt(x.abs())];
+        }
+        let largest: f64 = b.e12.abs().max(b.e13.abs()).max(b.e23.abs());
+        if !(largest > 0.0 && largest < f64::INFINITY) {
+            return [x, math::sqrt(x.abs())];
+        }
+        let u = Bivector {
+            e12: b.e12 / largest,
+            e13: b.e13 / largest,
+            e23: b.e23 / largest,
+        };
+        let x: f64 = -((u.e12 * u.e12 + u.e13 * u.e13) + u.e23 * u.e23);
+        [x, math::sqrt(x.abs()) * largest]
     }
     /// cosh(sqrt x) for x >= 0 and cos(sqrt -x) for x < 0: entire in x.
     #[allow(dead_code)]
     #[inline]
     fn cosh_sqrt(x: f64) -> f64 {
-        if x >= 0.0 { x.sqrt().cosh() } else { (-x).sqrt().cos() }
+        if x >= 0.0 { math::cosh(math::sqrt(x)) } else { math::cos(math::sqrt(-x)) }
     }
-    /// `[cosh(sqrt x), sinh(sqrt x)/sqrt x]` with one square root and one `sin_cos`
-    /// (x < 0: cos and sin of sqrt -x); the ratio by its series where the root is tiny.
+    /// `[cosh r, sinh(r)/r]` for `x > 0` and `[cos r, sin(r)/r]` for `x < 0`, where
+    /// `r = sqrt |x|` is given (only the sign of `x` is read); the ratio by its series
+    /// where `r` is tiny. `sin_cos` reduces any finite angle modulo 2 pi exactly.
     #[allow(dead_code)]
     #[inline]
-    fn cosh_sinhc_sqrt(x: f64) -> [f64; 2] {
+    fn cosh_sinhc(x: f64, r: f64) -> [f64; 2] {
         if x < 0.0 {
-            let r = (-x).sqrt();
-            let (sin, cos) = r.sin_cos();
-            [cos, if r < 1e-4 { 1.0 + x / 6.0 } else { sin / r }]
+            let (sin, cos) = math::sin_cos(r);
+            [cos, if r < 1e-4 { 1.0 - r * r / 6.0 } else { sin / r }]
         } else if x > 0.0 {
-            let r = x.sqrt();
-            [r.cosh(), if r < 1e-4 { 1.0 + x / 6.0 } else { r.sinh() / r }]
+            [math::cosh(r), if r < 1e-4 { 1.0 + r * r / 6.0 } else { math::sinh(r) / r }]
         } else {
             [1.0, 1.0]
         }
@@ -8341,11 +8815,11 @@ pub mod g3 {
         if x.abs() < 1e-3 {
             1.0 + x * (1.0 / 6.0 + x * (1.0 / 120.0 + x * (1.0 / 5040.0)))
         } else if x > 0.0 {
-            let r = x.sqrt();
-            r.sinh() / r
+            let r = math::sqrt(x);
+            math::sinh(r) / r
         } else {
-            let r = (-x).sqrt();
-            r.sin() / r
+            let r = math::sqrt(-x);
+            math::sin(r) / r
         }
     }
     /// The derivative of `sinhc_sqrt`, (cosh_sqrt - sinhc_sqrt) / 2x, by its series near 0.
@@ -8360,7 +8834,7 @@ pub mod g3 {
     /// cosh(sqrt z) and sinh(sqrt z)/sqrt z for complex z = (re, im).
     #[allow(dead_code)]
     fn complex_cosh_sinhc_sqrt(re: f64, im: f64) -> [f64; 4] {
-        let modulus = re.hypot(im);
+        let modulus = math::hypot(re, im);
         if modulus < 1e-3 {
             let (z2r, z2i) = (re * re - im * im, 2.0 * re * im);
             return [
@@ -8370,9 +8844,10 @@ pub mod g3 {
                 im / 6.0 + z2i / 120.0,
             ];
         }
-        let a = ((modulus + re) / 2.0).sqrt();
-        let b = ((modulus - re) / 2.0).sqrt().copysign(im);
-        let (ch, sh, c, s) = (a.cosh(), a.sinh(), b.cos(), b.sin());
+        let a = math::sqrt((modulus + re) / 2.0);
+        let b = math::sqrt((modulus - re) / 2.0).copysign(im);
+        let (ch, sh) = (math::cosh(a), math::sinh(a));
+        let (s, c) = math::sin_cos(b);
         let (cosh_r, cosh_i) = (ch * c, sh * s);
         let (sinh_r, sinh_i) = (sh * c, ch * s);
         let d = a * a + b * b;
@@ -8383,7 +8858,7 @@ pub mod g3 {
     #[allow(dead_code)]
     fn exp_weights(s: f64, t: f64) -> [f64; 4] {
         if t > 0.0 {
-            let r = t.sqrt();
+            let r = math::sqrt(t);
             let (cp, cm) = (cosh_sqrt(s + r), cosh_sqrt(s - r));
             let (sp, sm) = (sinhc_sqrt(s + r), sinhc_sqrt(s - r));
             [
@@ -8393,7 +8868,7 @@ pub mod g3 {
                 (sp - sm) / (2.0 * r),
             ]
         } else if t < 0.0 {
-            let r = (-t).sqrt();
+            let r = math::sqrt(-t);
             let [cr, ci, sr, si] = complex_cosh_sinhc_sqrt(s, r);
             [cr, ci / r, sr, si / r]
         } else {
@@ -8401,53 +8876,68 @@ pub mod g3 {
             [cosh_sqrt(s), weight / 2.0, weight, sinhc_sqrt_derivative(s)]
         }
     }
+    /// `[w, turn]` with `log(c + P) = w P + turn D`, where `P^2` has the sign of `x`,
+    /// `m = sqrt |P^2|` and `c^2 - P^2 = 1`; `turn` is pi for `c + P = -1` (`P` zero)
+    /// and `D` the plane chosen for it. NaN where no real logarithm exists (`c < 0`
+    /// with `P^2 >= 0` and `P` not zero).
+    #[allow(dead_code)]
+    fn log_weight(c: f64, x: f64, m: f64, p_is_zero: bool) -> [f64; 2] {
+        if p_is_zero && c < 0.0 {
+            [0.0, ::core::f64::consts::PI]
+        } else if x < 0.0 {
+            [math::atan2(m, c) / m, 0.0]
+        } else if c < 0.0 {
+            [f64::NAN, 0.0]
+        } else if x > 0.0 {
+            [if m < 1e-4 { 1.0 - m * m / 6.0 } else { math::asinh(m) / m }, 0.0]
+        } else {
+            [1.0 / c, 0.0]
+        }
+    }
     /// The weight w with log(c + P) = w P, where P^2 = p2 is a scalar and c^2 - p2 = 1.
     #[allow(dead_code)]
-    fn log_weight(c: f64, p2: f64) -> f64 {
+    fn log_weight_of_square(c: f64, p2: f64) -> f64 {
         if p2 < 0.0 {
-            let m = (-p2).sqrt();
-            m.atan2(c) / m
+            let m = math::sqrt(-p2);
+            math::atan2(m, c) / m
         } else if p2 > 0.0 {
-            let m = p2.sqrt();
-            if m < 1e-4 { 1.0 - p2 / 6.0 } else { m.asinh() / m }
+            let m = math::sqrt(p2);
+            if m < 1e-4 { 1.0 - p2 / 6.0 } else { math::asinh(m) / m }
         } else {
             1.0 / c
         }
     }
-    /// For a four-dimensional rotor c0 + P + c4 I with P^2 = p0 + p4 I and I^2 = iota:
-    /// the weights (g0, g4) with log = g0 P + g4 P I.
+    /// For a four-dimensional rotor c0 + P + c4 I with P^2 = p0 + p4 I and I^2 = iota
+    /// (-1 or 0; +1 is taken by channels in `Even::log`): the weights (g0, g4) with
+    /// log = g0 P + g4 P I.
     #[allow(dead_code)]
     fn log_weights_4d(c0: f64, c4: f64, p0: f64, p4: f64, iota: f64) -> [f64; 2] {
-        if iota > 0.0 {
-            let plus = log_weight(c0 + c4, p0 + p4);
-            let minus = log_weight(c0 - c4, p0 - p4);
-            [(plus + minus) / 2.0, (plus - minus) / 2.0]
-        } else if iota < 0.0 {
-            let modulus = p0.hypot(p4);
+        if iota < 0.0 {
+            let modulus = math::hypot(p0, p4);
             if modulus == 0.0 {
                 return [1.0, 0.0];
             }
-            let sr = ((modulus + p0) / 2.0).sqrt();
-            let si = ((modulus - p0) / 2.0).sqrt().copysign(p4);
+            let sr = math::sqrt((modulus + p0) / 2.0);
+            let si = math::sqrt((modulus - p0) / 2.0).copysign(p4);
             let (dr, di) = (c0 + 1.0, c4);
             let dd = dr * dr + di * di;
             let (qr, qi) = ((p0 * dr + p4 * di) / dd, (p4 * dr - p0 * di) / dd);
             let (ur, ui) = (qr + sr, qi + si);
-            let yr = 0.5 * (2.0 * ur + ur * ur + ui * ui).ln_1p();
-            let yi = ui.atan2(1.0 + ur);
+            let yr = 0.5 * math::ln_1p(2.0 * ur + ur * ur + ui * ui);
+            let yi = math::atan2(ui, 1.0 + ur);
             let ss = sr * sr + si * si;
             [(yr * sr + yi * si) / ss, (yi * sr - yr * si) / ss]
         } else {
-            let g0 = log_weight(c0, p0);
+            let g0 = log_weight_of_square(c0, p0);
             let h = if p0.abs() < 1e-12 {
                 -1.0 / 3.0
             } else if p0 < 0.0 {
-                let m = (-p0).sqrt();
-                let theta = m.atan2(c0);
+                let m = math::sqrt(-p0);
+                let theta = math::atan2(m, c0);
                 (theta * c0 - m) / (m * m * m)
             } else {
-                let m = p0.sqrt();
-                let y = m.asinh();
+                let m = math::sqrt(p0);
+                let y = math::asinh(m);
                 (m - y * c0) / (m * m * m)
             };
             [g0, c4 * h]

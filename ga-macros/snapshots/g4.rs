@@ -42,6 +42,59 @@ pub mod g4 {
             }
         }
     }
+    ///The floating-point functions beyond `core` that this algebra calls, in one place (the `math:` key of `algebra!` chooses `std` or `libm`).
+    #[allow(dead_code)]
+    mod math {
+        #[inline]
+        pub(super) fn sqrt(x: f64) -> f64 {
+            x.sqrt()
+        }
+        #[inline]
+        pub(super) fn sin(x: f64) -> f64 {
+            x.sin()
+        }
+        #[inline]
+        pub(super) fn cos(x: f64) -> f64 {
+            x.cos()
+        }
+        #[inline]
+        pub(super) fn cosh(x: f64) -> f64 {
+            x.cosh()
+        }
+        #[inline]
+        pub(super) fn sinh(x: f64) -> f64 {
+            x.sinh()
+        }
+        #[inline]
+        pub(super) fn asinh(x: f64) -> f64 {
+            x.asinh()
+        }
+        #[inline]
+        pub(super) fn ln_1p(x: f64) -> f64 {
+            x.ln_1p()
+        }
+        #[inline]
+        pub(super) fn sin_cos(x: f64) -> (f64, f64) {
+            x.sin_cos()
+        }
+        #[inline]
+        pub(super) fn atan2(y: f64, x: f64) -> f64 {
+            y.atan2(x)
+        }
+        #[inline]
+        pub(super) fn hypot(x: f64, y: f64) -> f64 {
+            x.hypot(y)
+        }
+    }
+    /// A sum of squares at least this large lost nothing that matters to underflow: a
+    /// square in the subnormal range is off by at most half its spacing,
+    /// `MIN_POSITIVE * EPSILON / 2`, below `EPSILON^2` relative to this bound.
+    #[allow(dead_code)]
+    const SQUARE_MIN: f64 = f64::MIN_POSITIVE / f64::EPSILON;
+    /// A sum of squares at most this large had no square overflow, and its reciprocal
+    /// (and that of its square root) is a normal number.
+    #[allow(dead_code)]
+    const SQUARE_MAX: f64 = f64::EPSILON / f64::MIN_POSITIVE;
     ///A vector: components e1, e2, e3, e4.
     #[derive(Clone, Copy, Debug, PartialEq, Default)]
     #[repr(C)]
@@ -168,43 +221,112 @@ pub mod g4 {
             }
         }
         /// `<A ~A>_0`: the squared norm (negative or zero for some elements of
-        /// non-Euclidean metrics).
+        /// non-Euclidean metrics). Computed as it stands, so it overflows once a component
+        /// passes the square root of the largest float; `norm` does not.
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f64 {
             (self.e1 * self.e1 + self.e2 * self.e2)
                 + (self.e3 * self.e3 + self.e4 * self.e4)
         }
-        /// `sqrt(|<A ~A>_0|)`.
+        /// `sqrt(|<A ~A>_0|)`, right to a few ulps for every finite `A` whose norm is
+        /// finite: when the squares could have overflowed or underflowed, the components
+        /// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
         #[inline]
         #[must_use]
         pub fn norm(self) -> f64 {
-            self.norm_squared().abs().sqrt()
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return math::sqrt(squared);
+            }
+            let largest: f64 = self
+                .e1
+                .abs()
+                .max(self.e2.abs())
+                .max(self.e3.abs())
+                .max(self.e4.abs());
+            if !(largest > 0.0 && largest < f64::INFINITY) {
+                return if largest == f64::INFINITY {
+                    largest
+                } else {
+                    math::sqrt(squared)
+                };
+            }
+            let descaled = Vector {
+                e1: self.e1 / largest,
+                e2: self.e2 / largest,
+                e3: self.e3 / largest,
+                e4: self.e4 / largest,
+            };
+            math::sqrt(descaled.norm_squared().abs()) * largest
         }
-        /// `self / self.norm()`: non-finite when the norm is zero (see `try_normalized`).
+        /// `self / self.norm()`, scaled like `norm` so that it is a unit value for every
+        /// finite non-null `A`; non-finite when the norm is zero or not finite (see
+        /// `try_normalized`).
         #[inline]
         #[must_use]
         pub fn normalized(self) -> Self {
-            self * (1.0 / self.norm())
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return self * (1.0 / math::sqrt(squared));
+            }
+            let largest: f64 = self
+                .e1
+                .abs()
+                .max(self.e2.abs())
+                .max(self.e3.abs())
+                .max(self.e4.abs());
+            let descaled = Vector {
+                e1: self.e1 / largest,
+                e2: self.e2 / largest,
+                e3: self.e3 / largest,
+                e4: self.e4 / largest,
+            };
+            descaled * (1.0 / math::sqrt(descaled.norm_squared().abs()))
         }
-        /// `self / self.norm()`, or `None` when the norm is zero or not finite.
+        /// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
+        /// not finite.
         #[inline]
         #[must_use]
         pub fn try_normalized(self) -> Option<Self> {
-            let norm = self.norm();
-            if norm > 0.0 && norm.is_finite() { Some(self * (1.0 / norm)) } else { None }
+            let normalized = self.normalized();
+            if normalized.to_array().iter().all(|c| c.is_finite()) {
+                Some(normalized)
+            } else {
+                None
+            }
         }
         /// The inverse `~A / (A ~A)` (here `A ~A` is a scalar for every `A`), or `None`
-        /// when `A ~A` is zero or the result is not finite.
+        /// when `A ~A` is zero or the result is not finite. Right to a few ulps
+        /// relative whenever the inverse is a normal number: when `A ~A` could have
+        /// overflowed or underflowed, `A` is first divided by its largest component.
         #[inline]
         #[must_use]
         pub fn inverse(self) -> Option<Vector> {
-            let denominator = (self.e1 * self.e1 + self.e2 * self.e2)
+            let denominator: f64 = (self.e1 * self.e1 + self.e2 * self.e2)
                 + (self.e3 * self.e3 + self.e4 * self.e4);
-            if denominator == 0.0 {
-                return None;
-            }
-            let inverse = self.reverse() * (1.0 / denominator);
+            let inverse = if denominator.abs() >= SQUARE_MIN
+                && denominator.abs() <= SQUARE_MAX
+            {
+                self.reverse() * (1.0 / denominator)
+            } else {
+                let largest: f64 = self
+                    .e1
+                    .abs()
+                    .max(self.e2.abs())
+                    .max(self.e3.abs())
+                    .max(self.e4.abs());
+                let descaled = Vector {
+                    e1: self.e1 / largest,
+                    e2: self.e2 / largest,
+                    e3: self.e3 / largest,
+                    e4: self.e4 / largest,
+                };
+                let denominator: f64 = (descaled.e1 * descaled.e1
+                    + descaled.e2 * descaled.e2)
+                    + (descaled.e3 * descaled.e3 + descaled.e4 * descaled.e4);
+                descaled.reverse() * ((1.0 / denominator) / largest)
+            };
             if inverse.to_array().iter().all(|c| c.is_finite()) {
                 Some(inverse.into())
             } else {
@@ -238,11 +360,20 @@ pub mod g4 {
         /// induction. `None` when this is not a blade (to rounding) or a factor is null.
         #[must_use]
         pub fn factor(self) -> Option<[Vector; 1usize]> {
-            let blade = Multivector::from(self);
-            let size = blade.to_array().iter().map(|c| c * c).sum::<f64>().sqrt();
-            if !(size > 0.0) || !size.is_finite() {
+            if !self.to_array().iter().all(|c| c.is_finite()) {
                 return None;
             }
+            let largest = self.to_array().iter().fold(0.0 as f64, |m, c| m.max(c.abs()));
+            if !(largest > 0.0) {
+                return None;
+            }
+            let blade = Multivector::from(Vector {
+                e1: self.e1 / largest,
+                e2: self.e2 / largest,
+                e3: self.e3 / largest,
+                e4: self.e4 / largest,
+            });
+            let size = math::sqrt(blade.to_array().iter().map(|c| c * c).sum::<f64>());
             let mut rest = blade;
             let mut factors = [Vector::ZERO; 1usize];
             for slot in factors.iter_mut().take(1usize - 1) {
@@ -293,14 +424,19 @@ pub mod g4 {
                 .iter()
                 .zip(blade.to_array())
                 .map(|(p, b)| (p - b) * (p - b))
-                .sum::<f64>()
-                .sqrt();
+                .sum::<f64>();
+            let error = math::sqrt(error);
             let scale = factors
                 .iter()
-                .map(|f| f.to_array().iter().map(|c| c * c).sum::<f64>().sqrt())
+                .map(|f| math::sqrt(f.to_array().iter().map(|c| c * c).sum::<f64>()))
                 .product::<f64>()
                 .max(size);
-            if error <= 1024.0 * f64::EPSILON * scale { Some(factors) } else { None }
+            if error <= 1024.0 * f64::EPSILON * scale {
+                factors[0] = factors[0] * largest;
+                Some(factors)
+            } else {
+                None
+            }
         }
     }
     ///A grade-2 multivector: components e12, e13, e14, e23, e24, e34.
@@ -465,31 +601,88 @@ pub mod g4 {
             }
         }
         /// `<A ~A>_0`: the squared norm (negative or zero for some elements of
-        /// non-Euclidean metrics).
+        /// non-Euclidean metrics). Computed as it stands, so it overflows once a component
+        /// passes the square root of the largest float; `norm` does not.
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f64 {
             ((self.e12 * self.e12 + self.e13 * self.e13) + self.e14 * self.e14)
                 + ((self.e23 * self.e23 + self.e24 * self.e24) + self.e34 * self.e34)
         }
-        /// `sqrt(|<A ~A>_0|)`.
+        /// `sqrt(|<A ~A>_0|)`, right to a few ulps for every finite `A` whose norm is
+        /// finite: when the squares could have overflowed or underflowed, the components
+        /// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
         #[inline]
         #[must_use]
         pub fn norm(self) -> f64 {
-            self.norm_squared().abs().sqrt()
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return math::sqrt(squared);
+            }
+            let largest: f64 = self
+                .e12
+                .abs()
+                .max(self.e13.abs())
+                .max(self.e14.abs())
+                .max(self.e23.abs())
+                .max(self.e24.abs())
+                .max(self.e34.abs());
+            if !(largest > 0.0 && largest < f64::INFINITY) {
+                return if largest == f64::INFINITY {
+                    largest
+                } else {
+                    math::sqrt(squared)
+                };
+            }
+            let descaled = Bivector {
+                e12: self.e12 / largest,
+                e13: self.e13 / largest,
+                e14: self.e14 / largest,
+                e23: self.e23 / largest,
+                e24: self.e24 / largest,
+                e34: self.e34 / largest,
+            };
+            math::sqrt(descaled.norm_squared().abs()) * largest
         }
-        /// `self / self.norm()`: non-finite when the norm is zero (see `try_normalized`).
+        /// `self / self.norm()`, scaled like `norm` so that it is a unit value for every
+        /// finite non-null `A`; non-finite when the norm is zero or not finite (see
+        /// `try_normalized`).
         #[inline]
         #[must_use]
         pub fn normalized(self) -> Self {
-            self * (1.0 / self.norm())
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return self * (1.0 / math::sqrt(squared));
+            }
+            let largest: f64 = self
+                .e12
+                .abs()
+                .max(self.e13.abs())
+                .max(self.e14.abs())
+                .max(self.e23.abs())
+                .max(self.e24.abs())
+                .max(self.e34.abs());
+            let descaled = Bivector {
+                e12: self.e12 / largest,
+                e13: self.e13 / largest,
+                e14: self.e14 / largest,
+                e23: self.e23 / largest,
+                e24: self.e24 / largest,
+                e34: self.e34 / largest,
+            };
+            descaled * (1.0 / math::sqrt(descaled.norm_squared().abs()))
         }
-        /// `self / self.norm()`, or `None` when the norm is zero or not finite.
+        /// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
+        /// not finite.
         #[inline]
         #[must_use]
         pub fn try_normalized(self) -> Option<Self> {
-            let norm = self.norm();
-            if norm > 0.0 && norm.is_finite() { Some(self * (1.0 / norm)) } else { None }
+            let normalized = self.normalized();
+            if normalized.to_array().iter().all(|c| c.is_finite()) {
+                Some(normalized)
+            } else {
+                None
+            }
         }
         /// The inverse, by solving `A X = 1` (`A ~A` is not a scalar for this type), or
         /// `None` when `A` is singular.
@@ -533,13 +726,28 @@ pub mod g4 {
         /// in four dimensions is not).
         #[must_use]
         pub fn is_blade(self) -> bool {
-            let wedge = Quadvector {
-                e1234: ((self.e12 * self.e34 + self.e14 * self.e23)
-                    + self.e23 * self.e14)
-                    + ((self.e34 * self.e12 - self.e13 * self.e24) - self.e24 * self.e13),
+            if !self.to_array().iter().all(|c| c.is_finite()) {
+                return false;
+            }
+            let largest = self.to_array().iter().fold(0.0 as f64, |m, c| m.max(c.abs()));
+            if largest == 0.0 {
+                return true;
+            }
+            let unit = Bivector {
+                e12: self.e12 / largest,
+                e13: self.e13 / largest,
+                e14: self.e14 / largest,
+                e23: self.e23 / largest,
+                e24: self.e24 / largest,
+                e34: self.e34 / largest,
             };
-            let size = self.to_array().iter().map(|c| c * c).sum::<f64>();
-            let excess = wedge.to_array().iter().map(|c| c * c).sum::<f64>().sqrt();
+            let wedge = Quadvector {
+                e1234: ((unit.e12 * unit.e34 + unit.e14 * unit.e23)
+                    + unit.e23 * unit.e14)
+                    + ((unit.e34 * unit.e12 - unit.e13 * unit.e24) - unit.e24 * unit.e13),
+            };
+            let size = unit.to_array().iter().map(|c| c * c).sum::<f64>();
+            let excess = math::sqrt(wedge.to_array().iter().map(|c| c * c).sum::<f64>());
             excess <= 64.0 * f64::EPSILON * size
         }
         /// Factors a blade into orthogonal vectors whose geometric product is the blade,
@@ -547,11 +755,22 @@ pub mod g4 {
         /// induction. `None` when this is not a blade (to rounding) or a factor is null.
         #[must_use]
         pub fn factor(self) -> Option<[Vector; 2usize]> {
-            let blade = Multivector::from(self);
-            let size = blade.to_array().iter().map(|c| c * c).sum::<f64>().sqrt();
-            if !(size > 0.0) || !size.is_finite() {
+            if !self.to_array().iter().all(|c| c.is_finite()) {
                 return None;
             }
+            let largest = self.to_array().iter().fold(0.0 as f64, |m, c| m.max(c.abs()));
+            if !(largest > 0.0) {
+                return None;
+            }
+            let blade = Multivector::from(Bivector {
+                e12: self.e12 / largest,
+                e13: self.e13 / largest,
+                e14: self.e14 / largest,
+                e23: self.e23 / largest,
+                e24: self.e24 / largest,
+                e34: self.e34 / largest,
+            });
+            let size = math::sqrt(blade.to_array().iter().map(|c| c * c).sum::<f64>());
             let mut rest = blade;
             let mut factors = [Vector::ZERO; 2usize];
             for slot in factors.iter_mut().take(2usize - 1) {
@@ -602,14 +821,19 @@ pub mod g4 {
                 .iter()
                 .zip(blade.to_array())
                 .map(|(p, b)| (p - b) * (p - b))
-                .sum::<f64>()
-                .sqrt();
+                .sum::<f64>();
+            let error = math::sqrt(error);
             let scale = factors
                 .iter()
-                .map(|f| f.to_array().iter().map(|c| c * c).sum::<f64>().sqrt())
+                .map(|f| math::sqrt(f.to_array().iter().map(|c| c * c).sum::<f64>()))
                 .product::<f64>()
                 .max(size);
-            if error <= 1024.0 * f64::EPSILON * scale { Some(factors) } else { None }
+            if error <= 1024.0 * f64::EPSILON * scale {
+                factors[0] = factors[0] * largest;
+                Some(factors)
+            } else {
+                None
+            }
         }
     }
     ///A grade-3 multivector: components e123, e124, e134, e234.
@@ -738,43 +962,112 @@ pub mod g4 {
             }
         }
         /// `<A ~A>_0`: the squared norm (negative or zero for some elements of
-        /// non-Euclidean metrics).
+        /// non-Euclidean metrics). Computed as it stands, so it overflows once a component
+        /// passes the square root of the largest float; `norm` does not.
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f64 {
             (self.e123 * self.e123 + self.e124 * self.e124)
                 + (self.e134 * self.e134 + self.e234 * self.e234)
         }
-        /// `sqrt(|<A ~A>_0|)`.
+        /// `sqrt(|<A ~A>_0|)`, right to a few ulps for every finite `A` whose norm is
+        /// finite: when the squares could have overflowed or underflowed, the components
+        /// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
         #[inline]
         #[must_use]
         pub fn norm(self) -> f64 {
-            self.norm_squared().abs().sqrt()
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return math::sqrt(squared);
+            }
+            let largest: f64 = self
+                .e123
+                .abs()
+                .max(self.e124.abs())
+                .max(self.e134.abs())
+                .max(self.e234.abs());
+            if !(largest > 0.0 && largest < f64::INFINITY) {
+                return if largest == f64::INFINITY {
+                    largest
+                } else {
+                    math::sqrt(squared)
+                };
+            }
+            let descaled = Trivector {
+                e123: self.e123 / largest,
+                e124: self.e124 / largest,
+                e134: self.e134 / largest,
+                e234: self.e234 / largest,
+            };
+            math::sqrt(descaled.norm_squared().abs()) * largest
         }
-        /// `self / self.norm()`: non-finite when the norm is zero (see `try_normalized`).
+        /// `self / self.norm()`, scaled like `norm` so that it is a unit value for every
+        /// finite non-null `A`; non-finite when the norm is zero or not finite (see
+        /// `try_normalized`).
         #[inline]
         #[must_use]
         pub fn normalized(self) -> Self {
-            self * (1.0 / self.norm())
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return self * (1.0 / math::sqrt(squared));
+            }
+            let largest: f64 = self
+                .e123
+                .abs()
+                .max(self.e124.abs())
+                .max(self.e134.abs())
+                .max(self.e234.abs());
+            let descaled = Trivector {
+                e123: self.e123 / largest,
+                e124: self.e124 / largest,
+                e134: self.e134 / largest,
+                e234: self.e234 / largest,
+            };
+            descaled * (1.0 / math::sqrt(descaled.norm_squared().abs()))
         }
-        /// `self / self.norm()`, or `None` when the norm is zero or not finite.
+        /// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
+        /// not finite.
         #[inline]
         #[must_use]
         pub fn try_normalized(self) -> Option<Self> {
-            let norm = self.norm();
-            if norm > 0.0 && norm.is_finite() { Some(self * (1.0 / norm)) } else { None }
+            let normalized = self.normalized();
+            if normalized.to_array().iter().all(|c| c.is_finite()) {
+                Some(normalized)
+            } else {
+                None
+            }
         }
         /// The inverse `~A / (A ~A)` (here `A ~A` is a scalar for every `A`), or `None`
-        /// when `A ~A` is zero or the result is not finite.
+        /// when `A ~A` is zero or the result is not finite. Right to a few ulps
+        /// relative whenever the inverse is a normal number: when `A ~A` could have
+        /// overflowed or underflowed, `A` is first divided by its largest component.
         #[inline]
         #[must_use]
         pub fn inverse(self) -> Option<Trivector> {
-            let denominator = (self.e123 * self.e123 + self.e124 * self.e124)
+            let denominator: f64 = (self.e123 * self.e123 + self.e124 * self.e124)
                 + (self.e134 * self.e134 + self.e234 * self.e234);
-            if denominator == 0.0 {
-                return None;
-            }
-            let inverse = self.reverse() * (1.0 / denominator);
+            let inverse = if denominator.abs() >= SQUARE_MIN
+                && denominator.abs() <= SQUARE_MAX
+            {
+                self.reverse() * (1.0 / denominator)
+            } else {
+                let largest: f64 = self
+                    .e123
+                    .abs()
+                    .max(self.e124.abs())
+                    .max(self.e134.abs())
+                    .max(self.e234.abs());
+                let descaled = Trivector {
+                    e123: self.e123 / largest,
+                    e124: self.e124 / largest,
+                    e134: self.e134 / largest,
+                    e234: self.e234 / largest,
+                };
+                let denominator: f64 = (descaled.e123 * descaled.e123
+                    + descaled.e124 * descaled.e124)
+                    + (descaled.e134 * descaled.e134 + descaled.e234 * descaled.e234);
+                descaled.reverse() * ((1.0 / denominator) / largest)
+            };
             if inverse.to_array().iter().all(|c| c.is_finite()) {
                 Some(inverse.into())
             } else {
@@ -808,11 +1101,20 @@ pub mod g4 {
         /// induction. `None` when this is not a blade (to rounding) or a factor is null.
         #[must_use]
         pub fn factor(self) -> Option<[Vector; 3usize]> {
-            let blade = Multivector::from(self);
-            let size = blade.to_array().iter().map(|c| c * c).sum::<f64>().sqrt();
-            if !(size > 0.0) || !size.is_finite() {
+            if !self.to_array().iter().all(|c| c.is_finite()) {
                 return None;
             }
+            let largest = self.to_array().iter().fold(0.0 as f64, |m, c| m.max(c.abs()));
+            if !(largest > 0.0) {
+                return None;
+            }
+            let blade = Multivector::from(Trivector {
+                e123: self.e123 / largest,
+                e124: self.e124 / largest,
+                e134: self.e134 / largest,
+                e234: self.e234 / largest,
+            });
+            let size = math::sqrt(blade.to_array().iter().map(|c| c * c).sum::<f64>());
             let mut rest = blade;
             let mut factors = [Vector::ZERO; 3usize];
             for slot in factors.iter_mut().take(3usize - 1) {
@@ -863,14 +1165,19 @@ pub mod g4 {
                 .iter()
                 .zip(blade.to_array())
                 .map(|(p, b)| (p - b) * (p - b))
-                .sum::<f64>()
-                .sqrt();
+                .sum::<f64>();
+            let error = math::sqrt(error);
             let scale = factors
                 .iter()
-                .map(|f| f.to_array().iter().map(|c| c * c).sum::<f64>().sqrt())
+                .map(|f| math::sqrt(f.to_array().iter().map(|c| c * c).sum::<f64>()))
                 .product::<f64>()
                 .max(size);
-            if error <= 1024.0 * f64::EPSILON * scale { Some(factors) } else { None }
+            if error <= 1024.0 * f64::EPSILON * scale {
+                factors[0] = factors[0] * largest;
+                Some(factors)
+            } else {
+                None
+            }
         }
     }
     ///A grade-4 multivector: components e1234.
@@ -954,41 +1261,84 @@ pub mod g4 {
             self.e1234
         }
         /// `<A ~A>_0`: the squared norm (negative or zero for some elements of
-        /// non-Euclidean metrics).
+        /// non-Euclidean metrics). Computed as it stands, so it overflows once a component
+        /// passes the square root of the largest float; `norm` does not.
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f64 {
             self.e1234 * self.e1234
         }
-        /// `sqrt(|<A ~A>_0|)`.
+        /// `sqrt(|<A ~A>_0|)`, right to a few ulps for every finite `A` whose norm is
+        /// finite: when the squares could have overflowed or underflowed, the components
+        /// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
         #[inline]
         #[must_use]
         pub fn norm(self) -> f64 {
-            self.norm_squared().abs().sqrt()
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return math::sqrt(squared);
+            }
+            let largest: f64 = self.e1234.abs();
+            if !(largest > 0.0 && largest < f64::INFINITY) {
+                return if largest == f64::INFINITY {
+                    largest
+                } else {
+                    math::sqrt(squared)
+                };
+            }
+            let descaled = Quadvector {
+                e1234: self.e1234 / largest,
+            };
+            math::sqrt(descaled.norm_squared().abs()) * largest
         }
-        /// `self / self.norm()`: non-finite when the norm is zero (see `try_normalized`).
+        /// `self / self.norm()`, scaled like `norm` so that it is a unit value for every
+        /// finite non-null `A`; non-finite when the norm is zero or not finite (see
+        /// `try_normalized`).
         #[inline]
         #[must_use]
         pub fn normalized(self) -> Self {
-            self * (1.0 / self.norm())
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return self * (1.0 / math::sqrt(squared));
+            }
+            let largest: f64 = self.e1234.abs();
+            let descaled = Quadvector {
+                e1234: self.e1234 / largest,
+            };
+            descaled * (1.0 / math::sqrt(descaled.norm_squared().abs()))
         }
-        /// `self / self.norm()`, or `None` when the norm is zero or not finite.
+        /// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
+        /// not finite.
         #[inline]
         #[must_use]
         pub fn try_normalized(self) -> Option<Self> {
-            let norm = self.norm();
-            if norm > 0.0 && norm.is_finite() { Some(self * (1.0 / norm)) } else { None }
+            let normalized = self.normalized();
+            if normalized.to_array().iter().all(|c| c.is_finite()) {
+                Some(normalized)
+            } else {
+                None
+            }
         }
         /// The inverse `~A / (A ~A)` (here `A ~A` is a scalar for every `A`), or `None`
-        /// when `A ~A` is zero or the result is not finite.
+        /// when `A ~A` is zero or the result is not finite. Right to a few ulps
+        /// relative whenever the inverse is a normal number: when `A ~A` could have
+        /// overflowed or underflowed, `A` is first divided by its largest component.
         #[inline]
         #[must_use]
         pub fn inverse(self) -> Option<Quadvector> {
-            let denominator = self.e1234 * self.e1234;
-            if denominator == 0.0 {
-                return None;
-            }
-            let inverse = self.reverse() * (1.0 / denominator);
+            let denominator: f64 = self.e1234 * self.e1234;
+            let inverse = if denominator.abs() >= SQUARE_MIN
+                && denominator.abs() <= SQUARE_MAX
+            {
+                self.reverse() * (1.0 / denominator)
+            } else {
+                let largest: f64 = self.e1234.abs();
+                let descaled = Quadvector {
+                    e1234: self.e1234 / largest,
+                };
+                let denominator: f64 = descaled.e1234 * descaled.e1234;
+                descaled.reverse() * ((1.0 / denominator) / largest)
+            };
             if inverse.to_array().iter().all(|c| c.is_finite()) {
                 Some(inverse.into())
             } else {
@@ -1017,11 +1367,17 @@ pub mod g4 {
         /// induction. `None` when this is not a blade (to rounding) or a factor is null.
         #[must_use]
         pub fn factor(self) -> Option<[Vector; 4usize]> {
-            let blade = Multivector::from(self);
-            let size = blade.to_array().iter().map(|c| c * c).sum::<f64>().sqrt();
-            if !(size > 0.0) || !size.is_finite() {
+            if !self.to_array().iter().all(|c| c.is_finite()) {
                 return None;
             }
+            let largest = self.to_array().iter().fold(0.0 as f64, |m, c| m.max(c.abs()));
+            if !(largest > 0.0) {
+                return None;
+            }
+            let blade = Multivector::from(Quadvector {
+                e1234: self.e1234 / largest,
+            });
+            let size = math::sqrt(blade.to_array().iter().map(|c| c * c).sum::<f64>());
             let mut rest = blade;
             let mut factors = [Vector::ZERO; 4usize];
             for slot in factors.iter_mut().take(4usize - 1) {
@@ -1072,14 +1428,19 @@ pub mod g4 {
                 .iter()
                 .zip(blade.to_array())
                 .map(|(p, b)| (p - b) * (p - b))
-                .sum::<f64>()
-                .sqrt();
+                .sum::<f64>();
+            let error = math::sqrt(error);
             let scale = factors
                 .iter()
-                .map(|f| f.to_array().iter().map(|c| c * c).sum::<f64>().sqrt())
+                .map(|f| math::sqrt(f.to_array().iter().map(|c| c * c).sum::<f64>()))
                 .product::<f64>()
                 .max(size);
-            if error <= 1024.0 * f64::EPSILON * scale { Some(factors) } else { None }
+            if error <= 1024.0 * f64::EPSILON * scale {
+                factors[0] = factors[0] * largest;
+                Some(factors)
+            } else {
+                None
+            }
         }
     }
     ///An even multivector (a rotor when unit): components s, e12, e13, e14, e23, e24, e34, e1234.
@@ -1279,7 +1640,8 @@ pub mod g4 {
             }
         }
         /// `<A ~A>_0`: the squared norm (negative or zero for some elements of
-        /// non-Euclidean metrics).
+        /// non-Euclidean metrics). Computed as it stands, so it overflows once a component
+        /// passes the square root of the largest float; `norm` does not.
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f64 {
@@ -1288,24 +1650,88 @@ pub mod g4 {
                 + ((self.e23 * self.e23 + self.e24 * self.e24)
                     + (self.e34 * self.e34 + self.e1234 * self.e1234))
         }
-        /// `sqrt(|<A ~A>_0|)`.
+        /// `sqrt(|<A ~A>_0|)`, right to a few ulps for every finite `A` whose norm is
+        /// finite: when the squares could have overflowed or underflowed, the components
+        /// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
         #[inline]
         #[must_use]
         pub fn norm(self) -> f64 {
-            self.norm_squared().abs().sqrt()
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return math::sqrt(squared);
+            }
+            let largest: f64 = self
+                .s
+                .abs()
+                .max(self.e12.abs())
+                .max(self.e13.abs())
+                .max(self.e14.abs())
+                .max(self.e23.abs())
+                .max(self.e24.abs())
+                .max(self.e34.abs())
+                .max(self.e1234.abs());
+            if !(largest > 0.0 && largest < f64::INFINITY) {
+                return if largest == f64::INFINITY {
+                    largest
+                } else {
+                    math::sqrt(squared)
+                };
+            }
+            let descaled = Even {
+                s: self.s / largest,
+                e12: self.e12 / largest,
+                e13: self.e13 / largest,
+                e14: self.e14 / largest,
+                e23: self.e23 / largest,
+                e24: self.e24 / largest,
+                e34: self.e34 / largest,
+                e1234: self.e1234 / largest,
+            };
+            math::sqrt(descaled.norm_squared().abs()) * largest
         }
-        /// `self / self.norm()`: non-finite when the norm is zero (see `try_normalized`).
+        /// `self / self.norm()`, scaled like `norm` so that it is a unit value for every
+        /// finite non-null `A`; non-finite when the norm is zero or not finite (see
+        /// `try_normalized`).
         #[inline]
         #[must_use]
         pub fn normalized(self) -> Self {
-            self * (1.0 / self.norm())
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return self * (1.0 / math::sqrt(squared));
+            }
+            let largest: f64 = self
+                .s
+                .abs()
+                .max(self.e12.abs())
+                .max(self.e13.abs())
+                .max(self.e14.abs())
+                .max(self.e23.abs())
+                .max(self.e24.abs())
+                .max(self.e34.abs())
+                .max(self.e1234.abs());
+            let descaled = Even {
+                s: self.s / largest,
+                e12: self.e12 / largest,
+                e13: self.e13 / largest,
+                e14: self.e14 / largest,
+                e23: self.e23 / largest,
+                e24: self.e24 / largest,
+                e34: self.e34 / largest,
+                e1234: self.e1234 / largest,
+            };
+            descaled * (1.0 / math::sqrt(descaled.norm_squared().abs()))
         }
-        /// `self / self.norm()`, or `None` when the norm is zero or not finite.
+        /// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
+        /// not finite.
         #[inline]
         #[must_use]
         pub fn try_normalized(self) -> Option<Self> {
-            let norm = self.norm();
-            if norm > 0.0 && norm.is_finite() { Some(self * (1.0 / norm)) } else { None }
+            let normalized = self.normalized();
+            if normalized.to_array().iter().all(|c| c.is_finite()) {
+                Some(normalized)
+            } else {
+                None
+            }
         }
         /// The inverse, by solving `A X = 1` (`A ~A` is not a scalar for this type), or
         /// `None` when `A` is singular.
@@ -1555,7 +1981,8 @@ pub mod g4 {
             }
         }
         /// `<A ~A>_0`: the squared norm (negative or zero for some elements of
-        /// non-Euclidean metrics).
+        /// non-Euclidean metrics). Computed as it stands, so it overflows once a component
+        /// passes the square root of the largest float; `norm` does not.
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f64 {
@@ -1564,24 +1991,88 @@ pub mod g4 {
                 + ((self.e123 * self.e123 + self.e124 * self.e124)
                     + (self.e134 * self.e134 + self.e234 * self.e234))
         }
-        /// `sqrt(|<A ~A>_0|)`.
+        /// `sqrt(|<A ~A>_0|)`, right to a few ulps for every finite `A` whose norm is
+        /// finite: when the squares could have overflowed or underflowed, the components
+        /// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
         #[inline]
         #[must_use]
         pub fn norm(self) -> f64 {
-            self.norm_squared().abs().sqrt()
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return math::sqrt(squared);
+            }
+            let largest: f64 = self
+                .e1
+                .abs()
+                .max(self.e2.abs())
+                .max(self.e3.abs())
+                .max(self.e4.abs())
+                .max(self.e123.abs())
+                .max(self.e124.abs())
+                .max(self.e134.abs())
+                .max(self.e234.abs());
+            if !(largest > 0.0 && largest < f64::INFINITY) {
+                return if largest == f64::INFINITY {
+                    largest
+                } else {
+                    math::sqrt(squared)
+                };
+            }
+            let descaled = Odd {
+                e1: self.e1 / largest,
+                e2: self.e2 / largest,
+                e3: self.e3 / largest,
+                e4: self.e4 / largest,
+                e123: self.e123 / largest,
+                e124: self.e124 / largest,
+                e134: self.e134 / largest,
+                e234: self.e234 / largest,
+            };
+            math::sqrt(descaled.norm_squared().abs()) * largest
         }
-        /// `self / self.norm()`: non-finite when the norm is zero (see `try_normalized`).
+        /// `self / self.norm()`, scaled like `norm` so that it is a unit value for every
+        /// finite non-null `A`; non-finite when the norm is zero or not finite (see
+        /// `try_normalized`).
         #[inline]
         #[must_use]
         pub fn normalized(self) -> Self {
-            self * (1.0 / self.norm())
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return self * (1.0 / math::sqrt(squared));
+            }
+            let largest: f64 = self
+                .e1
+                .abs()
+                .max(self.e2.abs())
+                .max(self.e3.abs())
+                .max(self.e4.abs())
+                .max(self.e123.abs())
+                .max(self.e124.abs())
+                .max(self.e134.abs())
+                .max(self.e234.abs());
+            let descaled = Odd {
+                e1: self.e1 / largest,
+                e2: self.e2 / largest,
+                e3: self.e3 / largest,
+                e4: self.e4 / largest,
+                e123: self.e123 / largest,
+                e124: self.e124 / largest,
+                e134: self.e134 / largest,
+                e234: self.e234 / largest,
+            };
+            descaled * (1.0 / math::sqrt(descaled.norm_squared().abs()))
         }
-        /// `self / self.norm()`, or `None` when the norm is zero or not finite.
+        /// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
+        /// not finite.
         #[inline]
         #[must_use]
         pub fn try_normalized(self) -> Option<Self> {
-            let norm = self.norm();
-            if norm > 0.0 && norm.is_finite() { Some(self * (1.0 / norm)) } else { None }
+            let normalized = self.normalized();
+            if normalized.to_array().iter().all(|c| c.is_finite()) {
+                Some(normalized)
+            } else {
+                None
+            }
         }
         /// The inverse, by solving `A X = 1` (`A ~A` is not a scalar for this type), or
         /// `None` when `A` is singular.
@@ -2205,7 +2696,8 @@ pub mod g4 {
             }
         }
         /// `<A ~A>_0`: the squared norm (negative or zero for some elements of
-        /// non-Euclidean metrics).
+        /// non-Euclidean metrics). Computed as it stands, so it overflows once a component
+        /// passes the square root of the largest float; `norm` does not.
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f64 {
@@ -2218,24 +2710,120 @@ pub mod g4 {
                     + ((self.e124 * self.e124 + self.e134 * self.e134)
                         + (self.e234 * self.e234 + self.e1234 * self.e1234)))
         }
-        /// `sqrt(|<A ~A>_0|)`.
+        /// `sqrt(|<A ~A>_0|)`, right to a few ulps for every finite `A` whose norm is
+        /// finite: when the squares could have overflowed or underflowed, the components
+        /// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
         #[inline]
         #[must_use]
         pub fn norm(self) -> f64 {
-            self.norm_squared().abs().sqrt()
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return math::sqrt(squared);
+            }
+            let largest: f64 = self
+                .s
+                .abs()
+                .max(self.e1.abs())
+                .max(self.e2.abs())
+                .max(self.e3.abs())
+                .max(self.e4.abs())
+                .max(self.e12.abs())
+                .max(self.e13.abs())
+                .max(self.e14.abs())
+                .max(self.e23.abs())
+                .max(self.e24.abs())
+                .max(self.e34.abs())
+                .max(self.e123.abs())
+                .max(self.e124.abs())
+                .max(self.e134.abs())
+                .max(self.e234.abs())
+                .max(self.e1234.abs());
+            if !(largest > 0.0 && largest < f64::INFINITY) {
+                return if largest == f64::INFINITY {
+                    largest
+                } else {
+                    math::sqrt(squared)
+                };
+            }
+            let descaled = Multivector {
+                s: self.s / largest,
+                e1: self.e1 / largest,
+                e2: self.e2 / largest,
+                e3: self.e3 / largest,
+                e4: self.e4 / largest,
+                e12: self.e12 / largest,
+                e13: self.e13 / largest,
+                e14: self.e14 / largest,
+                e23: self.e23 / largest,
+                e24: self.e24 / largest,
+                e34: self.e34 / largest,
+                e123: self.e123 / largest,
+                e124: self.e124 / largest,
+                e134: self.e134 / largest,
+                e234: self.e234 / largest,
+                e1234: self.e1234 / largest,
+            };
+            math::sqrt(descaled.norm_squared().abs()) * largest
         }
-        /// `self / self.norm()`: non-finite when the norm is zero (see `try_normalized`).
+        /// `self / self.norm()`, scaled like `norm` so that it is a unit value for every
+        /// finite non-null `A`; non-finite when the norm is zero or not finite (see
+        /// `try_normalized`).
         #[inline]
         #[must_use]
         pub fn normalized(self) -> Self {
-            self * (1.0 / self.norm())
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return self * (1.0 / math::sqrt(squared));
+            }
+            let largest: f64 = self
+                .s
+                .abs()
+                .max(self.e1.abs())
+                .max(self.e2.abs())
+                .max(self.e3.abs())
+                .max(self.e4.abs())
+                .max(self.e12.abs())
+                .max(self.e13.abs())
+                .max(self.e14.abs())
+                .max(self.e23.abs())
+                .max(self.e24.abs())
+                .max(self.e34.abs())
+                .max(self.e123.abs())
+                .max(self.e124.abs())
+                .max(self.e134.abs())
+                .max(self.e234.abs())
+                .max(self.e1234.abs());
+            let descaled = Multivector {
+                s: self.s / largest,
+                e1: self.e1 / largest,
+                e2: self.e2 / largest,
+                e3: self.e3 / largest,
+                e4: self.e4 / largest,
+                e12: self.e12 / largest,
+                e13: self.e13 / largest,
+                e14: self.e14 / largest,
+                e23: self.e23 / largest,
+                e24: self.e24 / largest,
+                e34: self.e34 / largest,
+                e123: self.e123 / largest,
+                e124: self.e124 / largest,
+                e134: self.e134 / largest,
+                e234: self.e234 / largest,
+                e1234: self.e1234 / largest,
+            };
+            descaled * (1.0 / math::sqrt(descaled.norm_squared().abs()))
         }
-        /// `self / self.norm()`, or `None` when the norm is zero or not finite.
+        /// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
+        /// not finite.
         #[inline]
         #[must_use]
         pub fn try_normalized(self) -> Option<Self> {
-            let norm = self.norm();
-            if norm > 0.0 && norm.is_finite() { Some(self * (1.0 / norm)) } else { None }
+            let normalized = self.normalized();
+            if normalized.to_array().iter().all(|c| c.is_finite()) {
+                Some(normalized)
+            } else {
+                None
+            }
         }
         /// The inverse, by solving `A X = 1` (`A ~A` is not a scalar for this type), or
         /// `None` when `A` is singular.
@@ -15270,20 +15858,19 @@ pub mod g4 {
     #[allow(dead_code)]
     fn multivector_inverse(a: Multivector) -> Option<Multivector> {
         let a = a.to_array();
-        let mut m = [[0.0 as f64; 16usize]; 16usize];
-        let mut largest: f64 = 0.0;
-        for (i, &ai) in a.iter().enumerate() {
-            for (j, &(k, sign)) in LEFT[i].iter().enumerate() {
-                m[k][j] += f64::from(sign) * ai;
-            }
-            largest = largest.max(ai.abs());
-        }
+        let largest = a.iter().fold(0.0 as f64, |m, x| m.max(x.abs()));
         if !(largest > 0.0) || !largest.is_finite() {
             return None;
         }
+        let mut m = [[0.0 as f64; 16usize]; 16usize];
+        for (i, &ai) in a.iter().enumerate() {
+            for (j, &(k, sign)) in LEFT[i].iter().enumerate() {
+                m[k][j] += f64::from(sign) * (ai / largest);
+            }
+        }
         let mut rhs = [0.0 as f64; 16usize];
         rhs[0] = 1.0;
-        let tolerance = largest * f64::EPSILON * (16usize as f64);
+        let tolerance = f64::EPSILON * (16usize as f64);
         for col in 0..16usize {
             let mut pivot = col;
             for row in col + 1..16usize {
@@ -15314,6 +15901,7 @@ pub mod g4 {
             }
             x[row] = sum / m[row][row];
         }
+        let x = x.map(|v| v / largest);
         if x.iter().all(|v| v.is_finite()) {
             Some(Multivector::from_array(x))
         } else {
@@ -15472,94 +16060,185 @@ pub mod g4 {
         }
     }
     impl Bivector {
-        ///`exp(B)` in closed form for every bivector and every metric: cos/sin, cosh/sinh or 1 + B per invariant plane (see docs/derivations/exp-log.md).
+        ///`exp(B)` in closed form for every bivector and every metric: cos/sin, cosh/sinh or 1 + B per invariant plane (see docs/derivations/exp-log.md). Angles are reduced modulo 2 pi by `sin`/`cos` themselves, and `B` is scaled before squaring, so a rotation bivector of any finite size gives a unit rotor.
         #[inline]
         #[must_use]
         pub fn exp(self) -> Even {
-            let s: f64 = -(((self.e12 * self.e12 + self.e13 * self.e13)
-                + self.e14 * self.e14)
-                + ((self.e23 * self.e23 + self.e24 * self.e24) + self.e34 * self.e34));
-            let q = Quadvector {
-                e1234: 2.0
-                    * ((self.e12 * self.e34 + self.e14 * self.e23) - self.e13 * self.e24),
+            let unit = Quadvector { e1234: 1.0 };
+            let dual: Bivector = Bivector {
+                e12: -self.e34 * unit.e1234,
+                e13: self.e24 * unit.e1234,
+                e14: -self.e23 * unit.e1234,
+                e23: -self.e14 * unit.e1234,
+                e24: self.e13 * unit.e1234,
+                e34: -self.e12 * unit.e1234,
             };
-            let t: f64 = q.e1234 * q.e1234;
-            let [c0, c4, s0, s4] = exp_weights(s, t);
-            let bq = Bivector {
-                e12: -self.e34 * q.e1234,
-                e13: self.e24 * q.e1234,
-                e14: -self.e23 * q.e1234,
-                e23: -self.e14 * q.e1234,
-                e24: self.e13 * q.e1234,
-                e34: -self.e12 * q.e1234,
+            let plus = Bivector {
+                e12: (self.e12 + dual.e12) * 0.5,
+                e13: (self.e13 + dual.e13) * 0.5,
+                e14: (self.e14 + dual.e14) * 0.5,
+                e23: (self.e23 + dual.e23) * 0.5,
+                e24: (self.e24 + dual.e24) * 0.5,
+                e34: (self.e34 + dual.e34) * 0.5,
             };
+            let minus = Bivector {
+                e12: (self.e12 - dual.e12) * 0.5,
+                e13: (self.e13 - dual.e13) * 0.5,
+                e14: (self.e14 - dual.e14) * 0.5,
+                e23: (self.e23 - dual.e23) * 0.5,
+                e24: (self.e24 - dual.e24) * 0.5,
+                e34: (self.e34 - dual.e34) * 0.5,
+            };
+            let [xp, rp] = square_and_root(plus);
+            let [xm, rm] = square_and_root(minus);
+            let [cp, sp] = cosh_sinhc(xp, ::core::f64::consts::SQRT_2 * rp);
+            let [cm, sm] = cosh_sinhc(xm, ::core::f64::consts::SQRT_2 * rm);
             Even {
-                s: c0,
-                e12: s0 * self.e12 + s4 * bq.e12,
-                e13: s0 * self.e13 + s4 * bq.e13,
-                e14: s0 * self.e14 + s4 * bq.e14,
-                e23: s0 * self.e23 + s4 * bq.e23,
-                e24: s0 * self.e24 + s4 * bq.e24,
-                e34: s0 * self.e34 + s4 * bq.e34,
-                e1234: c4 * q.e1234,
+                s: (cp + cm) * 0.5,
+                e12: sp * plus.e12 + sm * minus.e12,
+                e13: sp * plus.e13 + sm * minus.e13,
+                e14: sp * plus.e14 + sm * minus.e14,
+                e23: sp * plus.e23 + sm * minus.e23,
+                e24: sp * plus.e24 + sm * minus.e24,
+                e34: sp * plus.e34 + sm * minus.e34,
+                e1234: (cp - cm) * 0.5,
             }
         }
     }
     impl Even {
         /// The bivector `B` with `B.exp() == self` on the principal range (rotation
-        /// angles below pi per plane); `self` must be a unit rotor.
+        /// angles below pi per plane, or their sum below pi in four dimensions), or
+        /// `None` when `self` is not a rotor: `<R ~R>_0` further from 1 than the
+        /// square root of the machine epsilon, or a result that is not finite. Where
+        /// the logarithm is not unique it is chosen: `log(-1)` is `pi e12`, a full turn
+        /// in the first plane that squares to -1, and in four dimensions a channel at
+        /// -1 (`log(+-e1234)` in G4) turns by pi in `(e12 -+ e34) / 2`. See
+        /// docs/derivations/exp-log.md.
         #[inline]
         #[must_use]
-        pub fn log(self) -> Bivector {
-            let p = Bivector {
-                e12: self.e12,
-                e13: self.e13,
-                e14: self.e14,
-                e23: self.e23,
-                e24: self.e24,
-                e34: self.e34,
-            };
-            let p0: f64 = -(((p.e12 * p.e12 + p.e13 * p.e13) + p.e14 * p.e14)
-                + ((p.e23 * p.e23 + p.e24 * p.e24) + p.e34 * p.e34));
-            let p4: f64 = 2.0 * ((p.e12 * p.e34 + p.e14 * p.e23) - p.e13 * p.e24);
-            let [g0, g4] = log_weights_4d(self.s, self.e1234, p0, p4, 1.0);
-            let unit = Quadvector { e1234: 1.0 };
-            let p_unit: Bivector = Bivector {
-                e12: -p.e34 * unit.e1234,
-                e13: p.e24 * unit.e1234,
-                e14: -p.e23 * unit.e1234,
-                e23: -p.e14 * unit.e1234,
-                e24: p.e13 * unit.e1234,
-                e34: -p.e12 * unit.e1234,
-            };
-            Bivector {
-                e12: g0 * p.e12 + g4 * p_unit.e12,
-                e13: g0 * p.e13 + g4 * p_unit.e13,
-                e14: g0 * p.e14 + g4 * p_unit.e14,
-                e23: g0 * p.e23 + g4 * p_unit.e23,
-                e24: g0 * p.e24 + g4 * p_unit.e24,
-                e34: g0 * p.e34 + g4 * p_unit.e34,
+        pub fn log(self) -> Option<Bivector> {
+            let norm_squared: f64 = ((self.s * self.s + self.e12 * self.e12)
+                + (self.e13 * self.e13 + self.e14 * self.e14))
+                + ((self.e23 * self.e23 + self.e24 * self.e24)
+                    + (self.e34 * self.e34 + self.e1234 * self.e1234));
+            if !((norm_squared - 1.0).abs() <= 0.000000014901161193847656) {
+                return None;
             }
+            let log = {
+                let p = Bivector {
+                    e12: self.e12,
+                    e13: self.e13,
+                    e14: self.e14,
+                    e23: self.e23,
+                    e24: self.e24,
+                    e34: self.e34,
+                };
+                let unit = Quadvector { e1234: 1.0 };
+                let dual: Bivector = Bivector {
+                    e12: -p.e34 * unit.e1234,
+                    e13: p.e24 * unit.e1234,
+                    e14: -p.e23 * unit.e1234,
+                    e23: -p.e14 * unit.e1234,
+                    e24: p.e13 * unit.e1234,
+                    e34: -p.e12 * unit.e1234,
+                };
+                let plus = Bivector {
+                    e12: (p.e12 + dual.e12) * 0.5,
+                    e13: (p.e13 + dual.e13) * 0.5,
+                    e14: (p.e14 + dual.e14) * 0.5,
+                    e23: (p.e23 + dual.e23) * 0.5,
+                    e24: (p.e24 + dual.e24) * 0.5,
+                    e34: (p.e34 + dual.e34) * 0.5,
+                };
+                let minus = Bivector {
+                    e12: (p.e12 - dual.e12) * 0.5,
+                    e13: (p.e13 - dual.e13) * 0.5,
+                    e14: (p.e14 - dual.e14) * 0.5,
+                    e23: (p.e23 - dual.e23) * 0.5,
+                    e24: (p.e24 - dual.e24) * 0.5,
+                    e34: (p.e34 - dual.e34) * 0.5,
+                };
+                let (cp, cm) = (self.s + self.e1234, self.s - self.e1234);
+                let [xp, rp] = square_and_root(plus);
+                let [xm, rm] = square_and_root(minus);
+                let (mp, mm) = (
+                    ::core::f64::consts::SQRT_2 * rp,
+                    ::core::f64::consts::SQRT_2 * rm,
+                );
+                let np = cp * cp - xp.signum() * mp * mp;
+                let nm = cm * cm - xm.signum() * mm * mm;
+                if !((np - 1.0).abs() <= 0.000000014901161193847656
+                    && (nm - 1.0).abs() <= 0.000000014901161193847656)
+                {
+                    return None;
+                }
+                let [wp, turn_plus] = log_weight(cp, xp, mp, plus == Bivector::ZERO);
+                let [wm, turn_minus] = log_weight(cm, xm, mm, minus == Bivector::ZERO);
+                Bivector {
+                    e12: wp * plus.e12 + wm * minus.e12 + 0.5 * turn_plus
+                        + 0.5 * turn_minus,
+                    e13: wp * plus.e13 + wm * minus.e13,
+                    e14: wp * plus.e14 + wm * minus.e14,
+                    e23: wp * plus.e23 + wm * minus.e23,
+                    e24: wp * plus.e24 + wm * minus.e24,
+                    e34: wp * plus.e34 + wm * minus.e34 + -0.5 * turn_plus
+                        + --0.5 * turn_minus,
+                }
+            };
+            if log.to_array().iter().all(|c| c.is_finite()) { Some(log) } else { None }
         }
+    }
+    /// `[x, sqrt |x|]` for `x = <B B>_0`, the root right to a few ulps at every
+    /// magnitude: when the squares could overflow or underflow, `B` is first divided
+    /// by its largest component, and `x` then carries only the sign of `<B B>_0`.
+    #[allow(dead_code)]
+    #[inline]
+    fn square_and_root(b: Bivector) -> [f64; 2] {
+        let x: f64 = -(((b.e12 * b.e12 + b.e13 * b.e13) + b.e14 * b.e14)
+            + ((b.e23 * b.e23 + b.e24 * b.e24) + b.e34 * b.e34));
+        if x.abs() >= SQUARE_MIN && x.abs() <= SQUARE_MAX {
+            return [x, math::sqrt(x.abs())];
+        }
+        let largest: f64 = b
+            .e12
+            .abs()
+            .max(b.e13.abs())
+            .max(b.e14.abs())
+            .max(b.e23.abs())
+            .max(b.e24.abs())
+            .max(b.e34.abs());
+        if !(largest > 0.0 && largest < f64::INFINITY) {
+            return [x, math::sqrt(x.abs())];
+        }
+        let u = Bivector {
+            e12: b.e12 / largest,
+            e13: b.e13 / largest,
+            e14: b.e14 / largest,
+            e23: b.e23 / largest,
+            e24: b.e24 / largest,
+            e34: b.e34 / largest,
+        };
+        let x: f64 = -(((u.e12 * u.e12 + u.e13 * u.e13) + u.e14 * u.e14)
+            + ((u.e23 * u.e23 + u.e24 * u.e24) + u.e34 * u.e34));
+        [x, math::sqrt(x.abs()) * largest]
     }
     /// cosh(sqrt x) for x >= 0 and cos(sqrt -x) for x < 0: entire in x.
     #[allow(dead_code)]
     #[inline]
     fn cosh_sqrt(x: f64) -> f64 {
-        if x >= 0.0 { x.sqrt().cosh() } else { (-x).sqrt().cos() }
+        if x >= 0.0 { math::cosh(math::sqrt(x)) } else { math::cos(math::sqrt(-x)) }
     }
-    /// `[cosh(sqrt x), sinh(sqrt x)/sqrt x]` with one square root and one `sin_cos`
-    /// (x < 0: cos and sin of sqrt -x); the ratio by its series where the root is tiny.
+    /// `[cosh r, sinh(r)/r]` for `x > 0` and `[cos r, sin(r)/r]` for `x < 0`, where
+    /// `r = sqrt |x|` is given (only the sign of `x` is read); the ratio by its series
+    /// where `r` is tiny. `sin_cos` reduces any finite angle modulo 2 pi exactly.
     #[allow(dead_code)]
     #[inline]
-    fn cosh_sinhc_sqrt(x: f64) -> [f64; 2] {
+    fn cosh_sinhc(x: f64, r: f64) -> [f64; 2] {
         if x < 0.0 {
-            let r = (-x).sqrt();
-            let (sin, cos) = r.sin_cos();
-            [cos, if r < 1e-4 { 1.0 + x / 6.0 } else { sin / r }]
+            let (sin, cos) = math::sin_cos(r);
+            [cos, if r < 1e-4 { 1.0 - r * r / 6.0 } else { sin / r }]
         } else if x > 0.0 {
-            let r = x.sqrt();
-            [r.cosh(), if r < 1e-4 { 1.0 + x / 6.0 } else { r.sinh() / r }]
+            [math::cosh(r), if r < 1e-4 { 1.0 + r * r / 6.0 } else { math::sinh(r) / r }]
         } else {
             [1.0, 1.0]
         }
@@ -15571,11 +16250,11 @@ pub mod g4 {
         if x.abs() < 1e-3 {
             1.0 + x * (1.0 / 6.0 + x * (1.0 / 120.0 + x * (1.0 / 5040.0)))
         } else if x > 0.0 {
-            let r = x.sqrt();
-            r.sinh() / r
+            let r = math::sqrt(x);
+            math::sinh(r) / r
         } else {
-            let r = (-x).sqrt();
-            r.sin() / r
+            let r = math::sqrt(-x);
+            math::sin(r) / r
         }
     }
     /// The derivative of `sinhc_sqrt`, (cosh_sqrt - sinhc_sqrt) / 2x, by its series near 0.
@@ -15590,7 +16269,7 @@ pub mod g4 {
     /// cosh(sqrt z) and sinh(sqrt z)/sqrt z for complex z = (re, im).
     #[allow(dead_code)]
     fn complex_cosh_sinhc_sqrt(re: f64, im: f64) -> [f64; 4] {
-        let modulus = re.hypot(im);
+        let modulus = math::hypot(re, im);
         if modulus < 1e-3 {
             let (z2r, z2i) = (re * re - im * im, 2.0 * re * im);
             return [
@@ -15600,9 +16279,10 @@ pub mod g4 {
                 im / 6.0 + z2i / 120.0,
             ];
         }
-        let a = ((modulus + re) / 2.0).sqrt();
-        let b = ((modulus - re) / 2.0).sqrt().copysign(im);
-        let (ch, sh, c, s) = (a.cosh(), a.sinh(), b.cos(), b.sin());
+        let a = math::sqrt((modulus + re) / 2.0);
+        let b = math::sqrt((modulus - re) / 2.0).copysign(im);
+        let (ch, sh) = (math::cosh(a), math::sinh(a));
+        let (s, c) = math::sin_cos(b);
         let (cosh_r, cosh_i) = (ch * c, sh * s);
         let (sinh_r, sinh_i) = (sh * c, ch * s);
         let d = a * a + b * b;
@@ -15613,7 +16293,7 @@ pub mod g4 {
     #[allow(dead_code)]
     fn exp_weights(s: f64, t: f64) -> [f64; 4] {
         if t > 0.0 {
-            let r = t.sqrt();
+            let r = math::sqrt(t);
             let (cp, cm) = (cosh_sqrt(s + r), cosh_sqrt(s - r));
             let (sp, sm) = (sinhc_sqrt(s + r), sinhc_sqrt(s - r));
             [
@@ -15623,7 +16303,7 @@ pub mod g4 {
                 (sp - sm) / (2.0 * r),
             ]
         } else if t < 0.0 {
-            let r = (-t).sqrt();
+            let r = math::sqrt(-t);
             let [cr, ci, sr, si] = complex_cosh_sinhc_sqrt(s, r);
             [cr, ci / r, sr, si / r]
         } else {
@@ -15631,53 +16311,68 @@ pub mod g4 {
             [cosh_sqrt(s), weight / 2.0, weight, sinhc_sqrt_derivative(s)]
         }
     }
+    /// `[w, turn]` with `log(c + P) = w P + turn D`, where `P^2` has the sign of `x`,
+    /// `m = sqrt |P^2|` and `c^2 - P^2 = 1`; `turn` is pi for `c + P = -1` (`P` zero)
+    /// and `D` the plane chosen for it. NaN where no real logarithm exists (`c < 0`
+    /// with `P^2 >= 0` and `P` not zero).
+    #[allow(dead_code)]
+    fn log_weight(c: f64, x: f64, m: f64, p_is_zero: bool) -> [f64; 2] {
+        if p_is_zero && c < 0.0 {
+            [0.0, ::core::f64::consts::PI]
+        } else if x < 0.0 {
+            [math::atan2(m, c) / m, 0.0]
+        } else if c < 0.0 {
+            [f64::NAN, 0.0]
+        } else if x > 0.0 {
+            [if m < 1e-4 { 1.0 - m * m / 6.0 } else { math::asinh(m) / m }, 0.0]
+        } else {
+            [1.0 / c, 0.0]
+        }
+    }
     /// The weight w with log(c + P) = w P, where P^2 = p2 is a scalar and c^2 - p2 = 1.
     #[allow(dead_code)]
-    fn log_weight(c: f64, p2: f64) -> f64 {
+    fn log_weight_of_square(c: f64, p2: f64) -> f64 {
         if p2 < 0.0 {
-            let m = (-p2).sqrt();
-            m.atan2(c) / m
+            let m = math::sqrt(-p2);
+            math::atan2(m, c) / m
         } else if p2 > 0.0 {
-            let m = p2.sqrt();
-            if m < 1e-4 { 1.0 - p2 / 6.0 } else { m.asinh() / m }
+            let m = math::sqrt(p2);
+            if m < 1e-4 { 1.0 - p2 / 6.0 } else { math::asinh(m) / m }
         } else {
             1.0 / c
         }
     }
-    /// For a four-dimensional rotor c0 + P + c4 I with P^2 = p0 + p4 I and I^2 = iota:
-    /// the weights (g0, g4) with log = g0 P + g4 P I.
+    /// For a four-dimensional rotor c0 + P + c4 I with P^2 = p0 + p4 I and I^2 = iota
+    /// (-1 or 0; +1 is taken by channels in `Even::log`): the weights (g0, g4) with
+    /// log = g0 P + g4 P I.
     #[allow(dead_code)]
     fn log_weights_4d(c0: f64, c4: f64, p0: f64, p4: f64, iota: f64) -> [f64; 2] {
-        if iota > 0.0 {
-            let plus = log_weight(c0 + c4, p0 + p4);
-            let minus = log_weight(c0 - c4, p0 - p4);
-            [(plus + minus) / 2.0, (plus - minus) / 2.0]
-        } else if iota < 0.0 {
-            let modulus = p0.hypot(p4);
+        if iota < 0.0 {
+            let modulus = math::hypot(p0, p4);
             if modulus == 0.0 {
                 return [1.0, 0.0];
             }
-            let sr = ((modulus + p0) / 2.0).sqrt();
-            let si = ((modulus - p0) / 2.0).sqrt().copysign(p4);
+            let sr = math::sqrt((modulus + p0) / 2.0);
+            let si = math::sqrt((modulus - p0) / 2.0).copysign(p4);
             let (dr, di) = (c0 + 1.0, c4);
             let dd = dr * dr + di * di;
             let (qr, qi) = ((p0 * dr + p4 * di) / dd, (p4 * dr - p0 * di) / dd);
             let (ur, ui) = (qr + sr, qi + si);
-            let yr = 0.5 * (2.0 * ur + ur * ur + ui * ui).ln_1p();
-            let yi = ui.atan2(1.0 + ur);
+            let yr = 0.5 * math::ln_1p(2.0 * ur + ur * ur + ui * ui);
+            let yi = math::atan2(ui, 1.0 + ur);
             let ss = sr * sr + si * si;
             [(yr * sr + yi * si) / ss, (yi * sr - yr * si) / ss]
         } else {
-            let g0 = log_weight(c0, p0);
+            let g0 = log_weight_of_square(c0, p0);
             let h = if p0.abs() < 1e-12 {
                 -1.0 / 3.0
             } else if p0 < 0.0 {
-                let m = (-p0).sqrt();
-                let theta = m.atan2(c0);
+                let m = math::sqrt(-p0);
+                let theta = math::atan2(m, c0);
                 (theta * c0 - m) / (m * m * m)
             } else {
-                let m = p0.sqrt();
-                let y = m.asinh();
+                let m = math::sqrt(p0);
+                let y = math::asinh(m);
                 (m - y * c0) / (m * m * m)
             };
             [g0, c4 * h]

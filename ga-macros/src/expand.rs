@@ -3,13 +3,27 @@
 use proc_macro2::TokenStream;
 
 use crate::emit;
-use crate::plan::Plan;
-use crate::spec::{validate, RawAlgebra, RawDerive};
+use crate::plan::{Plan, TypeId};
+use crate::spec::{check_emitted, validate, RawAlgebra, RawDerive, Spec};
+
+/// The plan of a validated spec, refused when an operation the user listed would be
+/// missing from it.
+fn plan(spec: &Spec) -> syn::Result<Plan> {
+    let plan = Plan::new(spec);
+    let n = spec.metric.dimension();
+    let emits = |id| plan.emitted.contains(&id);
+    check_emitted(
+        spec,
+        n >= 2 && emits(TypeId::grade(2)),
+        emits(TypeId::even(n)),
+    )?;
+    Ok(plan)
+}
 
 /// `algebra! { ... }`.
 pub fn algebra(input: RawAlgebra) -> syn::Result<TokenStream> {
     let spec = validate(input.attrs, input.vis, input.name, input.entries)?;
-    let plan = Plan::new(&spec);
+    let plan = plan(&spec)?;
     Ok(emit::module(&spec, &plan))
 }
 
@@ -19,7 +33,7 @@ pub fn derive(input: syn::DeriveInput) -> syn::Result<TokenStream> {
     let raw = RawDerive::from_derive(input)?;
     let module_name = syn::Ident::new(&snake_case(&raw.name.to_string()), raw.name.span());
     let spec = validate(raw.attrs, raw.vis, module_name, raw.entries)?;
-    let plan = Plan::new(&spec);
+    let plan = plan(&spec)?;
     Ok(emit::module(&spec, &plan))
 }
 

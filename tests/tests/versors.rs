@@ -470,7 +470,7 @@ macro_rules! rotor_tests {
                     let direction = bivector_of_norm(&x, 1.0);
                     let (first, second) = angles(direction);
                     let b = direction * (angle_sum / (first + second));
-                    let back: Bivector = b.exp().log();
+                    let back: Bivector = b.exp().log().expect("exp gives a unit rotor");
                     let scale = l1(&dense!(b));
                     prop_assert_close!(
                         dense!(back),

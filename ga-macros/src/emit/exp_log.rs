@@ -33,10 +33,12 @@ pub fn emit_exp(plan: &Plan) -> TokenStream {
             b.blade(plan, blade).map(|c| quote!(weight * #c))
         });
         quote! {
-            let x: #s = #square;
-            let [even, weight] = cosh_sinhc_sqrt(x);
+            let [x, root] = square_and_root(self);
+            let [even, weight] = cosh_sinhc(x, root);
             #value
         }
+    } else if n == 4 && plan.metric.pseudoscalar_square() > 0 {
+        four_dimensional_exp(plan)
     } else if n <= 5 {
         // B^2 = s + Q with Q = B ^ B commuting with B and Q^2 = t a scalar: functions of
         // B^2 act on the two-dimensional commutative algebra {1, Q}.
@@ -91,7 +93,7 @@ pub fn emit_exp(plan: &Plan) -> TokenStream {
         let (acc_acc, _) = product_value(plan, ProductKind::Geometric, &acc, &acc);
         let even_fields: Vec<_> = even_blades.iter().map(|&bl| field_ident(bl)).collect();
         quote! {
-            let size: #s = (#(self.#bivector_fields * self.#bivector_fields)+*).sqrt();
+            let size: #s = math::sqrt(#(self.#bivector_fields * self.#bivector_fields)+*);
             let mut halvings = 0;
             let mut scale: #s = 1.0;
             while size * scale > 0.25 && halvings < 2000 {
@@ -114,7 +116,9 @@ pub fn emit_exp(plan: &Plan) -> TokenStream {
     };
     let doc = if n <= 5 {
         "`exp(B)` in closed form for every bivector and every metric: cos/sin, cosh/sinh or \
-         1 + B per invariant plane (see docs/derivations/exp-log.md)."
+         1 + B per invariant plane (see docs/derivations/exp-log.md). Angles are reduced \
+         modulo 2 pi by `sin`/`cos` themselves, and `B` is scaled before squaring, so a \
+         rotation bivector of any finite size gives a unit rotor."
     } else {
         "`exp(B)` by scaling and squaring of the Taylor series (no closed form is emitted \
          above five dimensions)."
@@ -131,6 +135,68 @@ pub fn emit_exp(plan: &Plan) -> TokenStream {
     }
 }
 
+/// The channels of a four-dimensional bivector whose pseudoscalar squares to +1:
+/// `B+- = (B +- B I) / 2`, so that `B = B+ + B-`, `B+ B- = 0` and `B+-^2 = 2 <B+-^2>_0 P+-`
+/// with the projectors `P+- = (1 +- I) / 2`. Each channel is then a problem of one plane
+/// whose square is formed from its own components, without the cancellation of
+/// `s +- sqrt(t)` (see docs/derivations/exp-log.md).
+fn channels(plan: &Plan, of: &Operand) -> TokenStream {
+    let pseudoscalar = plan.metric.pseudoscalar();
+    let unit_field = field_ident(pseudoscalar);
+    let unit = Operand::new(quote!(unit), TypeId::grade(4));
+    let (dual, _) = product_value(plan, ProductKind::Geometric, of, &unit);
+    let fields: Vec<_> = grade_blades(plan, 2)
+        .iter()
+        .map(|&bl| field_ident(bl))
+        .collect();
+    let b = &of.expr;
+    quote! {
+        let unit = Quadvector { #unit_field: 1.0 };
+        let dual: Bivector = #dual;
+        let plus = Bivector { #(#fields: (#b.#fields + dual.#fields) * 0.5),* };
+        let minus = Bivector { #(#fields: (#b.#fields - dual.#fields) * 0.5),* };
+    }
+}
+
+/// `Bivector::exp` in four dimensions with `I^2 = 1` (Euclidean G4): by channels,
+/// `exp(B) = (C+ + C-)/2 + (C+ - C-)/2 I + S+ B+ + S- B-` with `C`, `S` the cosine and
+/// sinc of each channel's angle. Nothing is divided by the difference of the two plane
+/// angles, so the isoclinic case `a = b` is as accurate as any other.
+fn four_dimensional_exp(plan: &Plan) -> TokenStream {
+    let n = plan.metric.dimension();
+    let pseudoscalar = plan.metric.pseudoscalar();
+    let split = channels(plan, &Operand::new(quote!(self), TypeId::grade(2)));
+    let value = construct(plan, Output::Type(TypeId::even(n)), |blade| {
+        if blade == 0 {
+            return Some(quote!((cp + cm) * 0.5));
+        }
+        if blade == pseudoscalar {
+            return Some(quote!((cp - cm) * 0.5));
+        }
+        let f = field_ident(blade);
+        Some(quote!(sp * plus.#f + sm * minus.#f))
+    });
+    let s = scalar_type(plan);
+    quote! {
+        #split
+        // A channel's own angle is sqrt(2) times the root of its scalar square.
+        let [xp, rp] = square_and_root(plus);
+        let [xm, rm] = square_and_root(minus);
+        let [cp, sp] = cosh_sinhc(xp, ::core::#s::consts::SQRT_2 * rp);
+        let [cm, sm] = cosh_sinhc(xm, ::core::#s::consts::SQRT_2 * rm);
+        #value
+    }
+}
+
+/// The bivector chosen as `log(-1)`: `pi D` for the first basis bivector `D` with
+/// `D^2 = -1` (e12 in Euclidean algebras), a full turn in that plane; `None` when the
+/// metric has none.
+fn full_turn_plane(plan: &Plan) -> Option<crate::algebra::Blade> {
+    grade_blades(plan, 2)
+        .into_iter()
+        .find(|&bl| plan.metric.geometric(bl, bl).0 < 0)
+}
+
 /// `Even::log`, for dimensions 2 to 4.
 pub fn emit_log(plan: &Plan) -> TokenStream {
     let n = plan.metric.dimension();
@@ -142,16 +208,89 @@ pub fn emit_log(plan: &Plan) -> TokenStream {
         .map(|&bl| field_ident(bl))
         .collect();
     let p = Operand::new(quote!(p), bivector);
-    let p_square = self_square_component(plan, &p, 0);
+    let norm_squared = super::unary::norm_squared_expr(plan, &r);
+    // Half the digits: rotors that drifted by rounding over many products pass, a value
+    // that is not a rotor does not.
+    let tolerance = match plan.scalar {
+        crate::spec::Scalar::F64 => float(f64::EPSILON.sqrt()),
+        crate::spec::Scalar::F32 => float(f64::from(f32::EPSILON.sqrt())),
+    };
+    let turn = full_turn_plane(plan);
+    let pseudoscalar = plan.metric.pseudoscalar();
     let body = if n <= 3 {
+        let turn_term = |blade| {
+            if Some(blade) == turn {
+                quote!(+ turn)
+            } else {
+                quote!()
+            }
+        };
+        let terms = grade_blades(plan, 2).into_iter().map(|bl| {
+            let f = field_ident(bl);
+            let t = turn_term(bl);
+            quote!(#f: weight * p.#f #t)
+        });
+        // Without a plane that squares to -1, -1 is no exponential: no logarithm.
+        let no_plane = turn.is_none().then(|| {
+            quote! {
+                if turn != 0.0 {
+                    return None;
+                }
+            }
+        });
         quote! {
             let p = Bivector { #(#p_fields: self.#p_fields),* };
-            let p2: #s = #p_square;
-            let weight = log_weight(self.s, p2);
-            Bivector { #(#p_fields: weight * p.#p_fields),* }
+            let [x, root] = square_and_root(p);
+            let [weight, turn] = log_weight(self.s, x, root, p == Bivector::ZERO);
+            #no_plane
+            Bivector { #(#terms),* }
+        }
+    } else if n == 4 && plan.metric.pseudoscalar_square() > 0 {
+        let split = channels(plan, &Operand::new(quote!(p), bivector));
+        let c4 = r.blade(plan, pseudoscalar).unwrap_or_else(|| quote!(0.0));
+        // The turn of each channel: pi (D +- D I) / 2, a unit angle in that channel.
+        let (turn_plus, turn_minus) = match turn {
+            Some(d) => {
+                let (sign, di) = plan.metric.geometric(d, pseudoscalar);
+                let half = float(0.5);
+                let signed = float(0.5 * f64::from(sign));
+                let plus = [(d, quote!(#half)), (di, quote!(#signed))];
+                let minus = [(d, quote!(#half)), (di, quote!(-#signed))];
+                (plus.to_vec(), minus.to_vec())
+            }
+            None => (Vec::new(), Vec::new()),
+        };
+        let terms = grade_blades(plan, 2).into_iter().map(|bl| {
+            let f = field_ident(bl);
+            let extra = |list: &[(crate::algebra::Blade, TokenStream)], name: TokenStream| {
+                list.iter()
+                    .find(|(b, _)| *b == bl)
+                    .map(|(_, c)| quote!(+ #c * #name))
+                    .unwrap_or_default()
+            };
+            let tp = extra(&turn_plus, quote!(turn_plus));
+            let tm = extra(&turn_minus, quote!(turn_minus));
+            quote!(#f: wp * plus.#f + wm * minus.#f #tp #tm)
+        });
+        quote! {
+            let p = Bivector { #(#p_fields: self.#p_fields),* };
+            #split
+            let (cp, cm) = (self.s + #c4, self.s - #c4);
+            let [xp, rp] = square_and_root(plus);
+            let [xm, rm] = square_and_root(minus);
+            let (mp, mm) = (::core::#s::consts::SQRT_2 * rp, ::core::#s::consts::SQRT_2 * rm);
+            // R ~R = 1 is each channel's c^2 - sign(x) m^2 = 1.
+            let np = cp * cp - xp.signum() * mp * mp;
+            let nm = cm * cm - xm.signum() * mm * mm;
+            if !((np - 1.0).abs() <= #tolerance && (nm - 1.0).abs() <= #tolerance) {
+                return None;
+            }
+            let [wp, turn_plus] = log_weight(cp, xp, mp, plus == Bivector::ZERO);
+            let [wm, turn_minus] = log_weight(cm, xm, mm, minus == Bivector::ZERO);
+            Bivector { #(#terms),* }
         }
     } else {
-        let pseudoscalar = plan.metric.pseudoscalar();
+        let p_square = self_square_component(plan, &p, 0);
         let p4 = self_square_component(plan, &p, pseudoscalar);
         let c4 = r.blade(plan, pseudoscalar).unwrap_or_else(|| quote!(0.0));
         let iota = float(plan.metric.pseudoscalar_square() as f64);
@@ -171,11 +310,26 @@ pub fn emit_log(plan: &Plan) -> TokenStream {
     quote! {
         impl Even {
             /// The bivector `B` with `B.exp() == self` on the principal range (rotation
-            /// angles below pi per plane); `self` must be a unit rotor.
+            /// angles below pi per plane, or their sum below pi in four dimensions), or
+            /// `None` when `self` is not a rotor: `<R ~R>_0` further from 1 than the
+            /// square root of the machine epsilon, or a result that is not finite. Where
+            /// the logarithm is not unique it is chosen: `log(-1)` is `pi e12`, a full turn
+            /// in the first plane that squares to -1, and in four dimensions a channel at
+            /// -1 (`log(+-e1234)` in G4) turns by pi in `(e12 -+ e34) / 2`. See
+            /// docs/derivations/exp-log.md.
             #[inline]
             #[must_use]
-            pub fn log(self) -> Bivector {
-                #body
+            pub fn log(self) -> Option<Bivector> {
+                let norm_squared: #s = #norm_squared;
+                if !((norm_squared - 1.0).abs() <= #tolerance) {
+                    return None;
+                }
+                let log = { #body };
+                if log.to_array().iter().all(|c| c.is_finite()) {
+                    Some(log)
+                } else {
+                    None
+                }
             }
         }
     }
@@ -185,26 +339,51 @@ pub fn emit_log(plan: &Plan) -> TokenStream {
 /// `allow(dead_code)` because which of them a module calls depends on its dimension.
 pub fn emit_scalar_functions(plan: &Plan) -> TokenStream {
     let s = scalar_type(plan);
+    let b = Operand::new(quote!(b), TypeId::grade(2));
+    let square = self_square_component(plan, &b, 0);
+    let u = Operand::new(quote!(u), TypeId::grade(2));
+    let unit_square = self_square_component(plan, &u, 0);
+    let indices: Vec<usize> = (0..grade_blades(plan, 2).len()).collect();
+    let largest = super::unary::largest_abs(plan, &b, &indices);
+    let descaled = super::unary::descaled(plan, &b, &quote!(largest));
     quote! {
+        /// `[x, sqrt |x|]` for `x = <B B>_0`, the root right to a few ulps at every
+        /// magnitude: when the squares could overflow or underflow, `B` is first divided
+        /// by its largest component, and `x` then carries only the sign of `<B B>_0`.
+        #[allow(dead_code)]
+        #[inline]
+        fn square_and_root(b: Bivector) -> [#s; 2] {
+            let x: #s = #square;
+            if x.abs() >= SQUARE_MIN && x.abs() <= SQUARE_MAX {
+                return [x, math::sqrt(x.abs())];
+            }
+            let largest: #s = #largest;
+            if !(largest > 0.0 && largest < #s::INFINITY) {
+                return [x, math::sqrt(x.abs())];
+            }
+            let u = #descaled;
+            let x: #s = #unit_square;
+            [x, math::sqrt(x.abs()) * largest]
+        }
+
         /// cosh(sqrt x) for x >= 0 and cos(sqrt -x) for x < 0: entire in x.
         #[allow(dead_code)]
         #[inline]
         fn cosh_sqrt(x: #s) -> #s {
-            if x >= 0.0 { x.sqrt().cosh() } else { (-x).sqrt().cos() }
+            if x >= 0.0 { math::cosh(math::sqrt(x)) } else { math::cos(math::sqrt(-x)) }
         }
 
-        /// `[cosh(sqrt x), sinh(sqrt x)/sqrt x]` with one square root and one `sin_cos`
-        /// (x < 0: cos and sin of sqrt -x); the ratio by its series where the root is tiny.
+        /// `[cosh r, sinh(r)/r]` for `x > 0` and `[cos r, sin(r)/r]` for `x < 0`, where
+        /// `r = sqrt |x|` is given (only the sign of `x` is read); the ratio by its series
+        /// where `r` is tiny. `sin_cos` reduces any finite angle modulo 2 pi exactly.
         #[allow(dead_code)]
         #[inline]
-        fn cosh_sinhc_sqrt(x: #s) -> [#s; 2] {
+        fn cosh_sinhc(x: #s, r: #s) -> [#s; 2] {
             if x < 0.0 {
-                let r = (-x).sqrt();
-                let (sin, cos) = r.sin_cos();
-                [cos, if r < 1e-4 { 1.0 + x / 6.0 } else { sin / r }]
+                let (sin, cos) = math::sin_cos(r);
+                [cos, if r < 1e-4 { 1.0 - r * r / 6.0 } else { sin / r }]
             } else if x > 0.0 {
-                let r = x.sqrt();
-                [r.cosh(), if r < 1e-4 { 1.0 + x / 6.0 } else { r.sinh() / r }]
+                [math::cosh(r), if r < 1e-4 { 1.0 + r * r / 6.0 } else { math::sinh(r) / r }]
             } else {
                 [1.0, 1.0]
             }
@@ -217,11 +396,11 @@ pub fn emit_scalar_functions(plan: &Plan) -> TokenStream {
             if x.abs() < 1e-3 {
                 1.0 + x * (1.0 / 6.0 + x * (1.0 / 120.0 + x * (1.0 / 5040.0)))
             } else if x > 0.0 {
-                let r = x.sqrt();
-                r.sinh() / r
+                let r = math::sqrt(x);
+                math::sinh(r) / r
             } else {
-                let r = (-x).sqrt();
-                r.sin() / r
+                let r = math::sqrt(-x);
+                math::sin(r) / r
             }
         }
 
@@ -238,7 +417,7 @@ pub fn emit_scalar_functions(plan: &Plan) -> TokenStream {
         /// cosh(sqrt z) and sinh(sqrt z)/sqrt z for complex z = (re, im).
         #[allow(dead_code)]
         fn complex_cosh_sinhc_sqrt(re: #s, im: #s) -> [#s; 4] {
-            let modulus = re.hypot(im);
+            let modulus = math::hypot(re, im);
             if modulus < 1e-3 {
                 // 1 + z/2 + z^2/24 and 1 + z/6 + z^2/120.
                 let (z2r, z2i) = (re * re - im * im, 2.0 * re * im);
@@ -250,9 +429,10 @@ pub fn emit_scalar_functions(plan: &Plan) -> TokenStream {
                 ];
             }
             // Principal square root a + ib of re + i im.
-            let a = ((modulus + re) / 2.0).sqrt();
-            let b = ((modulus - re) / 2.0).sqrt().copysign(im);
-            let (ch, sh, c, s) = (a.cosh(), a.sinh(), b.cos(), b.sin());
+            let a = math::sqrt((modulus + re) / 2.0);
+            let b = math::sqrt((modulus - re) / 2.0).copysign(im);
+            let (ch, sh) = (math::cosh(a), math::sinh(a));
+            let (s, c) = math::sin_cos(b);
             let (cosh_r, cosh_i) = (ch * c, sh * s);
             let (sinh_r, sinh_i) = (sh * c, ch * s);
             let d = a * a + b * b;
@@ -264,12 +444,12 @@ pub fn emit_scalar_functions(plan: &Plan) -> TokenStream {
         #[allow(dead_code)]
         fn exp_weights(s: #s, t: #s) -> [#s; 4] {
             if t > 0.0 {
-                let r = t.sqrt();
+                let r = math::sqrt(t);
                 let (cp, cm) = (cosh_sqrt(s + r), cosh_sqrt(s - r));
                 let (sp, sm) = (sinhc_sqrt(s + r), sinhc_sqrt(s - r));
                 [(cp + cm) / 2.0, (cp - cm) / (2.0 * r), (sp + sm) / 2.0, (sp - sm) / (2.0 * r)]
             } else if t < 0.0 {
-                let r = (-t).sqrt();
+                let r = math::sqrt(-t);
                 let [cr, ci, sr, si] = complex_cosh_sinhc_sqrt(s, r);
                 [cr, ci / r, sr, si / r]
             } else {
@@ -278,58 +458,73 @@ pub fn emit_scalar_functions(plan: &Plan) -> TokenStream {
             }
         }
 
+        /// `[w, turn]` with `log(c + P) = w P + turn D`, where `P^2` has the sign of `x`,
+        /// `m = sqrt |P^2|` and `c^2 - P^2 = 1`; `turn` is pi for `c + P = -1` (`P` zero)
+        /// and `D` the plane chosen for it. NaN where no real logarithm exists (`c < 0`
+        /// with `P^2 >= 0` and `P` not zero).
+        #[allow(dead_code)]
+        fn log_weight(c: #s, x: #s, m: #s, p_is_zero: bool) -> [#s; 2] {
+            if p_is_zero && c < 0.0 {
+                [0.0, ::core::#s::consts::PI]
+            } else if x < 0.0 {
+                [math::atan2(m, c) / m, 0.0]
+            } else if c < 0.0 {
+                [#s::NAN, 0.0]
+            } else if x > 0.0 {
+                [if m < 1e-4 { 1.0 - m * m / 6.0 } else { math::asinh(m) / m }, 0.0]
+            } else {
+                [1.0 / c, 0.0]
+            }
+        }
+
         /// The weight w with log(c + P) = w P, where P^2 = p2 is a scalar and c^2 - p2 = 1.
         #[allow(dead_code)]
-        fn log_weight(c: #s, p2: #s) -> #s {
+        fn log_weight_of_square(c: #s, p2: #s) -> #s {
             if p2 < 0.0 {
-                let m = (-p2).sqrt();
-                m.atan2(c) / m
+                let m = math::sqrt(-p2);
+                math::atan2(m, c) / m
             } else if p2 > 0.0 {
-                let m = p2.sqrt();
-                if m < 1e-4 { 1.0 - p2 / 6.0 } else { m.asinh() / m }
+                let m = math::sqrt(p2);
+                if m < 1e-4 { 1.0 - p2 / 6.0 } else { math::asinh(m) / m }
             } else {
                 1.0 / c
             }
         }
 
-        /// For a four-dimensional rotor c0 + P + c4 I with P^2 = p0 + p4 I and I^2 = iota:
-        /// the weights (g0, g4) with log = g0 P + g4 P I.
+        /// For a four-dimensional rotor c0 + P + c4 I with P^2 = p0 + p4 I and I^2 = iota
+        /// (-1 or 0; +1 is taken by channels in `Even::log`): the weights (g0, g4) with
+        /// log = g0 P + g4 P I.
         #[allow(dead_code)]
         fn log_weights_4d(c0: #s, c4: #s, p0: #s, p4: #s, iota: #s) -> [#s; 2] {
-            if iota > 0.0 {
-                // Two real channels, I -> +1 and I -> -1.
-                let plus = log_weight(c0 + c4, p0 + p4);
-                let minus = log_weight(c0 - c4, p0 - p4);
-                [(plus + minus) / 2.0, (plus - minus) / 2.0]
-            } else if iota < 0.0 {
+            if iota < 0.0 {
                 // One complex channel, I -> i: g = y / sinh y with cosh y = c, sinh^2 y = p;
                 // y = log1p(u) with u = c - 1 + sqrt p and c - 1 = p / (c + 1).
-                let modulus = p0.hypot(p4);
+                let modulus = math::hypot(p0, p4);
                 if modulus == 0.0 {
                     return [1.0, 0.0];
                 }
-                let sr = ((modulus + p0) / 2.0).sqrt();
-                let si = ((modulus - p0) / 2.0).sqrt().copysign(p4);
+                let sr = math::sqrt((modulus + p0) / 2.0);
+                let si = math::sqrt((modulus - p0) / 2.0).copysign(p4);
                 let (dr, di) = (c0 + 1.0, c4);
                 let dd = dr * dr + di * di;
                 let (qr, qi) = ((p0 * dr + p4 * di) / dd, (p4 * dr - p0 * di) / dd);
                 let (ur, ui) = (qr + sr, qi + si);
-                let yr = 0.5 * (2.0 * ur + ur * ur + ui * ui).ln_1p();
-                let yi = ui.atan2(1.0 + ur);
+                let yr = 0.5 * math::ln_1p(2.0 * ur + ur * ur + ui * ui);
+                let yi = math::atan2(ui, 1.0 + ur);
                 let ss = sr * sr + si * si;
                 [(yr * sr + yi * si) / ss, (yi * sr - yr * si) / ss]
             } else {
                 // Dual numbers, I^2 = 0: g4 = c4 (sinh y - y cosh y) / sinh^3 y.
-                let g0 = log_weight(c0, p0);
+                let g0 = log_weight_of_square(c0, p0);
                 let h = if p0.abs() < 1e-12 {
                     -1.0 / 3.0
                 } else if p0 < 0.0 {
-                    let m = (-p0).sqrt();
-                    let theta = m.atan2(c0);
+                    let m = math::sqrt(-p0);
+                    let theta = math::atan2(m, c0);
                     (theta * c0 - m) / (m * m * m)
                 } else {
-                    let m = p0.sqrt();
-                    let y = m.asinh();
+                    let m = math::sqrt(p0);
+                    let y = math::asinh(m);
                     (m - y * c0) / (m * m * m)
                 };
                 [g0, c4 * h]

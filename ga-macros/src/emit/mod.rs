@@ -4,6 +4,7 @@
 mod batch;
 mod exp_log;
 mod expr;
+mod math;
 mod operators;
 mod products;
 mod simd;
@@ -21,6 +22,9 @@ use crate::spec::{Op, Spec};
 pub fn module_items(spec: &Spec, plan: &Plan) -> TokenStream {
     let n = plan.metric.dimension();
     let mut items = types::emit_support_items(plan);
+    if plan.lanes.is_none() {
+        items.extend(math::emit_math(plan, &spec.math));
+    }
     for &t in &plan.emitted {
         items.extend(types::emit_struct(plan, t));
         items.extend(unary::emit_unary(plan, t));

@@ -4,7 +4,7 @@ use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 
 use super::expr::{
-    construct, field_ident, float, output_type, scalar_type, signed_sum, type_tokens, Operand,
+    construct, field_ident, output_type, scalar_type, signed_sum, type_tokens, Operand,
 };
 use crate::algebra::Involution;
 use crate::plan::{Output, Plan, TypeId, TypeKind};
@@ -134,40 +134,92 @@ pub fn norm_squared_expr(plan: &Plan, operand: &Operand) -> TokenStream {
     signed_sum(&terms)
 }
 
+/// The indices of the components that `<A ~A>_0` sees (blades of non-zero square).
+fn nondegenerate(plan: &Plan, t: TypeId) -> Vec<usize> {
+    let blades = &plan.types.get(t).blades;
+    (0..blades.len())
+        .filter(|&i| plan.metric.geometric(blades[i], blades[i]).0 != 0)
+        .collect()
+}
+
+/// `max |x_i|` over the given components of `operand`.
+pub fn largest_abs(plan: &Plan, operand: &Operand, indices: &[usize]) -> TokenStream {
+    let mut parts = indices.iter().map(|&i| {
+        let x = operand.component(plan, i);
+        quote!(#x.abs())
+    });
+    let first = parts.next().unwrap_or_else(|| quote!(0.0));
+    parts.fold(first, |acc, x| quote!(#acc.max(#x)))
+}
+
+/// `operand` with every component divided by `by`, as a value of `operand`'s type.
+pub fn descaled(plan: &Plan, operand: &Operand, by: &TokenStream) -> TokenStream {
+    construct(plan, Output::Type(operand.ty), |blade| {
+        operand.blade(plan, blade).map(|x| quote!(#x / #by))
+    })
+}
+
 fn norms(plan: &Plan, t: TypeId) -> TokenStream {
     let s = scalar_type(plan);
-    let sum = norm_squared_expr(plan, &Operand::new(quote!(self), t));
-    let zero = float(0.0);
+    let this = Operand::new(quote!(self), t);
+    let sum = norm_squared_expr(plan, &this);
+    let indices = nondegenerate(plan, t);
+    let largest = largest_abs(plan, &this, &indices);
+    let descaled = descaled(plan, &this, &quote!(largest));
     quote! {
         /// `<A ~A>_0`: the squared norm (negative or zero for some elements of
-        /// non-Euclidean metrics).
+        /// non-Euclidean metrics). Computed as it stands, so it overflows once a component
+        /// passes the square root of the largest float; `norm` does not.
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> #s {
             #sum
         }
 
-        /// `sqrt(|<A ~A>_0|)`.
+        /// `sqrt(|<A ~A>_0|)`, right to a few ulps for every finite `A` whose norm is
+        /// finite: when the squares could have overflowed or underflowed, the components
+        /// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
         #[inline]
         #[must_use]
         pub fn norm(self) -> #s {
-            self.norm_squared().abs().sqrt()
+            let squared = self.norm_squared().abs();
+            // The common case costs one comparison: the unscaled sum is exact enough.
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return math::sqrt(squared);
+            }
+            let largest: #s = #largest;
+            if !(largest > 0.0 && largest < #s::INFINITY) {
+                // Zero, NaN or infinite components: the unscaled value is the answer.
+                return if largest == #s::INFINITY { largest } else { math::sqrt(squared) };
+            }
+            let descaled = #descaled;
+            math::sqrt(descaled.norm_squared().abs()) * largest
         }
 
-        /// `self / self.norm()`: non-finite when the norm is zero (see `try_normalized`).
+        /// `self / self.norm()`, scaled like `norm` so that it is a unit value for every
+        /// finite non-null `A`; non-finite when the norm is zero or not finite (see
+        /// `try_normalized`).
         #[inline]
         #[must_use]
         pub fn normalized(self) -> Self {
-            self * (1.0 / self.norm())
+            let squared = self.norm_squared().abs();
+            // Here 1 / sqrt(squared) is a normal number: one multiply per component.
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return self * (1.0 / math::sqrt(squared));
+            }
+            let largest: #s = #largest;
+            let descaled = #descaled;
+            descaled * (1.0 / math::sqrt(descaled.norm_squared().abs()))
         }
 
-        /// `self / self.norm()`, or `None` when the norm is zero or not finite.
+        /// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
+        /// not finite.
         #[inline]
         #[must_use]
         pub fn try_normalized(self) -> Option<Self> {
-            let norm = self.norm();
-            if norm > #zero && norm.is_finite() {
-                Some(self * (1.0 / norm))
+            let normalized = self.normalized();
+            if normalized.to_array().iter().all(|c| c.is_finite()) {
+                Some(normalized)
             } else {
                 None
             }
@@ -178,21 +230,33 @@ fn norms(plan: &Plan, t: TypeId) -> TokenStream {
 fn inverse(plan: &Plan, t: TypeId) -> TokenStream {
     let output = plan.inverse_output(t);
     let out_ty = output_type(plan, output);
-    let zero = float(0.0);
     if plan.has_scalar_self_product(t) {
+        let s = scalar_type(plan);
         let this = Operand::new(quote!(self), t);
         let denominator = super::expr::quadratic_component(plan, &this, Involution::Reverse, 0);
+        let scaled = Operand::new(quote!(descaled), t);
+        let scaled_denominator =
+            super::expr::quadratic_component(plan, &scaled, Involution::Reverse, 0);
+        let largest = largest_abs(plan, &this, &nondegenerate(plan, t));
+        let descaled = descaled(plan, &this, &quote!(largest));
         return quote! {
             /// The inverse `~A / (A ~A)` (here `A ~A` is a scalar for every `A`), or `None`
-            /// when `A ~A` is zero or the result is not finite.
+            /// when `A ~A` is zero or the result is not finite. Right to a few ulps
+            /// relative whenever the inverse is a normal number: when `A ~A` could have
+            /// overflowed or underflowed, `A` is first divided by its largest component.
             #[inline]
             #[must_use]
             pub fn inverse(self) -> Option<#out_ty> {
-                let denominator = #denominator;
-                if denominator == #zero {
-                    return None;
-                }
-                let inverse = self.reverse() * (1.0 / denominator);
+                let denominator: #s = #denominator;
+                let inverse = if denominator.abs() >= SQUARE_MIN && denominator.abs() <= SQUARE_MAX {
+                    self.reverse() * (1.0 / denominator)
+                } else {
+                    // A^-1 = ~u / (u ~u) / m with u = A / m, m the largest component.
+                    let largest: #s = #largest;
+                    let descaled = #descaled;
+                    let denominator: #s = #scaled_denominator;
+                    descaled.reverse() * ((1.0 / denominator) / largest)
+                };
                 if inverse.to_array().iter().all(|c| c.is_finite()) {
                     Some(inverse.into())
                 } else {
@@ -288,20 +352,21 @@ pub fn emit_multivector_inverse(plan: &Plan) -> TokenStream {
         #[allow(dead_code)]
         fn multivector_inverse(a: Multivector) -> Option<Multivector> {
             let a = a.to_array();
-            let mut m = [[0.0 as #s; #len]; #len];
-            let mut largest: #s = 0.0;
-            for (i, &ai) in a.iter().enumerate() {
-                for (j, &(k, sign)) in LEFT[i].iter().enumerate() {
-                    m[k][j] += #s::from(sign) * ai;
-                }
-                largest = largest.max(ai.abs());
-            }
+            let largest = a.iter().fold(0.0 as #s, |m, x| m.max(x.abs()));
             if !(largest > 0.0) || !largest.is_finite() {
                 return None;
             }
+            // Solve for A / largest, whose entries are at most 1, so that the elimination
+            // neither overflows nor underflows; then X = (A / largest)^-1 / largest.
+            let mut m = [[0.0 as #s; #len]; #len];
+            for (i, &ai) in a.iter().enumerate() {
+                for (j, &(k, sign)) in LEFT[i].iter().enumerate() {
+                    m[k][j] += #s::from(sign) * (ai / largest);
+                }
+            }
             let mut rhs = [0.0 as #s; #len];
             rhs[0] = 1.0;
-            let tolerance = largest * #s::EPSILON * (#len as #s);
+            let tolerance = #s::EPSILON * (#len as #s);
             for col in 0..#len {
                 let mut pivot = col;
                 for row in col + 1..#len {
@@ -332,6 +397,7 @@ pub fn emit_multivector_inverse(plan: &Plan) -> TokenStream {
                 }
                 x[row] = sum / m[row][row];
             }
+            let x = x.map(|v| v / largest);
             if x.iter().all(|v| v.is_finite()) {
                 Some(Multivector::from_array(x))
             } else {

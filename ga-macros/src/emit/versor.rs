@@ -487,14 +487,26 @@ pub fn emit_blades(plan: &Plan, t: TypeId) -> TokenStream {
     let mut methods = TokenStream::new();
     if k == 2 {
         let this = Operand::new(quote!(self), t);
-        let (wedge, output) = product_value(plan, ProductKind::Outer, &this, &this);
+        let unit = Operand::new(quote!(unit), t);
+        let (wedge, output) = product_value(plan, ProductKind::Outer, &unit, &unit);
+        let descaled = super::unary::descaled(plan, &this, &quote!(largest));
         let check = match output {
             // B ^ B has no components below four dimensions: every bivector is a blade.
             Output::Zero => quote!(true),
+            // Squares of the components divided by the largest neither overflow nor
+            // underflow, so the test means the same at every magnitude.
             _ => quote! {
+                if !self.to_array().iter().all(|c| c.is_finite()) {
+                    return false;
+                }
+                let largest = self.to_array().iter().fold(0.0 as #s, |m, c| m.max(c.abs()));
+                if largest == 0.0 {
+                    return true;
+                }
+                let unit = #descaled;
                 let wedge = #wedge;
-                let size = self.to_array().iter().map(|c| c * c).sum::<#s>();
-                let excess = wedge.to_array().iter().map(|c| c * c).sum::<#s>().sqrt();
+                let size = unit.to_array().iter().map(|c| c * c).sum::<#s>();
+                let excess = math::sqrt(wedge.to_array().iter().map(|c| c * c).sum::<#s>());
                 excess <= 64.0 * #s::EPSILON * size
             },
         };
@@ -518,17 +530,25 @@ pub fn emit_blades(plan: &Plan, t: TypeId) -> TokenStream {
     let zero = float(0.0);
     let candidate_square =
         super::unary::norm_squared_expr(plan, &Operand::new(quote!(candidate), TypeId::grade(1)));
+    let descaled_self =
+        super::unary::descaled(plan, &Operand::new(quote!(self), t), &quote!(largest));
     methods.extend(quote! {
         /// Factors a blade into orthogonal vectors whose geometric product is the blade,
         /// as in the lecture: take `a` in the blade, then `b' = a^-1 (a ^ b)` and so on by
         /// induction. `None` when this is not a blade (to rounding) or a factor is null.
         #[must_use]
         pub fn factor(self) -> Option<[Vector; #k_lit]> {
-            let blade = Multivector::from(self);
-            let size = blade.to_array().iter().map(|c| c * c).sum::<#s>().sqrt();
-            if !(size > #zero) || !size.is_finite() {
+            if !self.to_array().iter().all(|c| c.is_finite()) {
                 return None;
             }
+            // Factor the blade divided by its largest component (no square overflows or
+            // underflows), then give that scale back to the first factor.
+            let largest = self.to_array().iter().fold(0.0 as #s, |m, c| m.max(c.abs()));
+            if !(largest > #zero) {
+                return None;
+            }
+            let blade = Multivector::from(#descaled_self);
+            let size = math::sqrt(blade.to_array().iter().map(|c| c * c).sum::<#s>());
             let mut rest = blade;
             let mut factors = [Vector::ZERO; #k_lit];
             for slot in factors.iter_mut().take(#k_lit - 1) {
@@ -560,16 +580,17 @@ pub fn emit_blades(plan: &Plan, t: TypeId) -> TokenStream {
                 .iter()
                 .zip(blade.to_array())
                 .map(|(p, b)| (p - b) * (p - b))
-                .sum::<#s>()
-                .sqrt();
+                .sum::<#s>();
+            let error = math::sqrt(error);
             // Rounding grows with the factors' own sizes, which exceed the blade's when the
             // metric makes their products cancel (Minkowski directions).
             let scale = factors
                 .iter()
-                .map(|f| f.to_array().iter().map(|c| c * c).sum::<#s>().sqrt())
+                .map(|f| math::sqrt(f.to_array().iter().map(|c| c * c).sum::<#s>()))
                 .product::<#s>()
                 .max(size);
             if error <= 1024.0 * #s::EPSILON * scale {
+                factors[0] = factors[0] * largest;
                 Some(factors)
             } else {
                 None

@@ -25,6 +25,22 @@ pub struct Spec {
     /// Whether SIMD bodies may be written (`simd: false` keeps every body scalar, and the
     /// module free of `unsafe`).
     pub simd: bool,
+    /// Where the square root and the transcendental functions come from.
+    pub math: Math,
+    /// The `ops` entries as written, to point at one whose method cannot be emitted.
+    pub op_idents: Vec<Ident>,
+}
+
+/// The floating-point backend of the emitted `math` module (`math: ...`).
+#[derive(Clone)]
+pub enum Math {
+    /// `std`'s inherent methods (the default).
+    Std,
+    /// The `libm` crate at this path (`::libm` unless given): for `no_std` crates.
+    Libm(syn::Path),
+    /// `std`'s methods when the calling crate's `std` feature is on, `libm` at this path
+    /// otherwise (the crate must declare a `std` feature).
+    Auto(syn::Path),
 }
 
 /// The scalar type of the algebra.
@@ -135,7 +151,7 @@ impl Op {
     }
 }
 
-const KEYS: &str = "metric, signature, scalar, types, ops, lanes, simd";
+const KEYS: &str = "metric, signature, scalar, types, ops, lanes, simd, math";
 
 const GRADE_NAMES: [&str; MAX_DIMENSION] = [
     "Vector",
@@ -164,6 +180,7 @@ pub fn validate(
         (None, None, None, None, None);
     let mut lanes: Option<RawLanes> = None;
     let mut simd = true;
+    let mut math = Math::Std;
     for entry in entries {
         let key = entry.key.to_string();
         if seen.contains(&entry.key) {
@@ -217,6 +234,10 @@ pub fn validate(
                     format!("`simd` takes `true` or `false`, not `{value}`"),
                 ),
             },
+            "math" => match check_math(value) {
+                Ok(backend) => math = backend,
+                Err(e) => cx.syn_error(e),
+            },
             _ => cx.error_spanned_by(
                 &entry.key,
                 format!("unknown key `{key}`: expected one of {KEYS}"),
@@ -242,6 +263,7 @@ pub fn validate(
         (Some(squares), Some(raw)) => Some(check_types(&mut cx, squares.len(), raw)),
         _ => None,
     };
+    let op_idents: Vec<Ident> = ops.as_ref().map(|raw| raw.0.clone()).unwrap_or_default();
     let ops = ops.map(|raw| check_ops(&mut cx, raw));
     let scalar = scalar.unwrap_or(Scalar::F64);
     let lanes = lanes
@@ -264,7 +286,89 @@ pub fn validate(
         ops,
         lanes,
         simd,
+        math,
+        op_idents,
     })
+}
+
+/// Operations listed in `ops` whose methods the planned module cannot carry: `exp` is a
+/// method of `Bivector` and `log` of `Even`, so listing them without those types (or in a
+/// dimension without a closed form) would make them disappear silently.
+pub fn check_emitted(spec: &Spec, has_bivector: bool, has_even: bool) -> syn::Result<()> {
+    let n = spec.metric.dimension();
+    let mut cx = Ctxt::default();
+    for ident in &spec.op_idents {
+        if ident == "exp" {
+            if n < 2 {
+                cx.error_spanned_by(
+                    ident,
+                    "`exp` needs bivectors, which a one-dimensional algebra does not have: \
+                     remove `exp`",
+                );
+            } else if !has_bivector {
+                cx.error_spanned_by(
+                    ident,
+                    "`exp` is a method of `Bivector`, which `types` leaves out: add `Bivector` \
+                     to `types` (its result type `Even` comes with it)",
+                );
+            }
+        } else if ident == "log" {
+            if !(2..=4).contains(&n) {
+                cx.error_spanned_by(
+                    ident,
+                    format!(
+                        "`log` is emitted for dimensions 2 to 4 only, and this algebra has {n}: \
+                         remove `log`"
+                    ),
+                );
+            } else if !has_even {
+                cx.error_spanned_by(
+                    ident,
+                    "`log` is a method of `Even`, which `types` leaves out: add `Even` (or \
+                     `Rotor`) to `types` (its result type `Bivector` comes with it)",
+                );
+            }
+        }
+    }
+    cx.check()
+}
+
+/// `math: std`, `math: libm`, `math: libm(path)` or `math: auto(path)`.
+fn check_math(value: proc_macro2::TokenStream) -> syn::Result<Math> {
+    use syn::parse::Parser;
+    let parser = |input: syn::parse::ParseStream| {
+        let backend: Ident = input.parse()?;
+        let path = if input.peek(syn::token::Paren) {
+            let content;
+            syn::parenthesized!(content in input);
+            Some(content.parse::<syn::Path>()?)
+        } else {
+            None
+        };
+        if !input.is_empty() {
+            return Err(input.error("expected `std`, `libm`, `libm(path)` or `auto(path)`"));
+        }
+        Ok((backend, path))
+    };
+    let (backend, path) = parser.parse2(value)?;
+    let libm = || syn::parse_quote!(::libm);
+    match (backend.to_string().as_str(), path) {
+        ("std", None) => Ok(Math::Std),
+        ("std", Some(path)) => Err(syn::Error::new_spanned(
+            path,
+            "`math: std` takes no path: write `math: std`, or `math: libm(path)`",
+        )),
+        ("libm", path) => Ok(Math::Libm(path.unwrap_or_else(libm))),
+        ("auto", path) => Ok(Math::Auto(path.unwrap_or_else(libm))),
+        (other, _) => Err(syn::Error::new_spanned(
+            &backend,
+            format!(
+                "unknown math backend `{other}`: expected `std` (the default), `libm` or \
+                 `libm(path)` for no_std crates, or `auto(path)` (std with the crate's `std` \
+                 feature, libm at `path` without it)"
+            ),
+        )),
+    }
 }
 
 fn is_metric_key(key: &Ident) -> bool {

@@ -1,0 +1,10 @@
+ga_macros::algebra! {
+    pub mod g3 {
+        metric: [1, 1, 1],
+        scalar: f64,
+        types: [Vector, Even],
+        ops: [geometric, exp],
+    }
+}
+
+fn main() {}
