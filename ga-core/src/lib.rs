@@ -17,6 +17,7 @@
 
 #[cfg(feature = "glam")]
 mod glam_interop;
+mod precision;
 
 /// Double-precision algebras.
 pub mod f64 {
