@@ -18,6 +18,9 @@
 #[cfg(feature = "glam")]
 mod glam_interop;
 mod precision;
+mod rotor;
+
+pub use rotor::RotationMatrix;
 
 /// Double-precision algebras.
 pub mod f64 {
