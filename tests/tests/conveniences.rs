@@ -275,3 +275,88 @@ fn precision_casts_round_to_nearest_and_widen_exactly() {
     let g2 = ga_core::f64::g2::Even::new(1.0, 2.0);
     assert_eq!(g2.as_f32(), ga_core::f32::g2::Even::new(1.0, 2.0));
 }
+
+/// Display, indexing, iteration and reference operators on every type of every algebra
+/// under test, including the STA, PGA and CGA generated in `tests/`: what the macro
+/// gives a user's own algebra.
+macro_rules! every_type_of_every_algebra {
+    (
+        $name:ident, $path:path,
+        dim = $dim:expr,
+        metric = $metric:expr,
+        types = [$($all:ident),*],
+        grade_types = [$($grade:ident),*],
+        projections = [$($projection:tt)*],
+    ) => {
+        #[test]
+        fn $name() {
+            use ga_tests::embed::Embed;
+            use $path as algebra;
+            let mut values = Values($dim);
+            $(
+                every_type_of_every_algebra!(@type algebra, algebra::$grade, values);
+            )*
+            every_type_of_every_algebra!(@type algebra, algebra::Even, values);
+            every_type_of_every_algebra!(@type algebra, algebra::Odd, values);
+            every_type_of_every_algebra!(@type algebra, algebra::Multivector, values);
+        }
+    };
+    (@type $algebra:ident, $ty:path, $values:ident) => {{
+        let blades = <$ty as Embed<$algebra::Multivector>>::blades();
+        for _ in 0..20 {
+            let mut components = <$ty>::ZERO.to_array();
+            for c in components.iter_mut() {
+                *c = $values.next();
+            }
+            let x = <$ty>::from(components);
+            for (i, c) in components.iter().enumerate() {
+                assert_eq!(x[i], *c);
+            }
+            assert_eq!(x.into_iter().collect::<Vec<_>>(), components.to_vec());
+            let expected: Vec<(String, f64)> = blades
+                .iter()
+                .zip(components)
+                .filter(|(_, c)| *c != 0.0)
+                .map(|(&b, c)| {
+                    let name = if b == 0 { String::new() } else { ga_tests::blade::blade_name(b) };
+                    (name, c)
+                })
+                .collect();
+            assert_eq!(parse_terms(&x.to_string()), expected, "{x}");
+            assert!(x.is_finite() && !x.is_nan());
+            assert_eq!(&x + &x, x + x);
+            assert_eq!(&x * &x, x * x);
+            assert_eq!(-&x, -x);
+            assert_eq!([x, x].iter().sum::<$ty>(), x + x);
+        }
+    }};
+}
+
+ga_tests::for_each_algebra!(every_type_of_every_algebra);
+
+#[test]
+fn division_in_a_non_euclidean_metric_multiplies_by_the_reference_inverse() {
+    use ga_tests::algebras::sta;
+    let algebra = Algebra::new(&[1, -1, -1, -1]);
+    let mut values = Values(8);
+    let dense = |m: sta::Multivector| algebra.from_canonical(&m.to_array());
+    for _ in 0..50 {
+        let m = sta::Multivector::from_array(values.array());
+        let v = sta::Vector::from_array(values.array());
+        // A four-dimensional bivector has no `/` (B ~B has a grade-4 part); a trivector
+        // has.
+        let t = sta::Trivector::from_array(values.array());
+        for (divisor, quotient) in [
+            (sta::Multivector::from(v), m / v),
+            (sta::Multivector::from(t), m / t),
+        ] {
+            // A null or nearly null divisor has no (well-conditioned) inverse.
+            if divisor.norm_squared().abs() < 1e-3 {
+                continue;
+            }
+            let inverse = algebra.inverse(&dense(divisor)).expect("invertible");
+            let expected = algebra.to_canonical(&algebra.geometric(&dense(m), &inverse));
+            assert_close!(quotient.to_array(), expected, rel = 1e-10);
+        }
+    }
+}
