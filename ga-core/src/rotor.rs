@@ -5,8 +5,9 @@
 //! `I a` (`I = e1e2e3`; `I e3 = e12`) and a positive angle turns by the right-hand rule:
 //! `from_axis_angle(e3, theta)` is `exp(-e12 theta / 2)`, which turns e1 toward e2, and
 //! equals glam's `Quat::from_axis_angle(Vec3::Z, theta)` under `w = s, x = -e23,
-//! y = e13, z = -e12`. Inputs documented as unit must be unit (glam asserts the same);
-//! results for zero or non-finite input are stated on each method.
+//! y = e13, z = -e12`. Inputs documented as unit must be unit (glam asserts the same).
+//! Non-finite input gives non-finite output (NaN propagates); zero input is stated on
+//! each method; `look_to`, whose input can fail in ordinary use, returns `Option`.
 
 /// A 3x3 rotation matrix that [`Rotor::from_matrix`](crate::f64::g3::Rotor::from_matrix)
 /// accepts: a column-major `[[S; 3]; 3]` (glam's `to_cols_array_2d` layout) and, under the
@@ -86,7 +87,8 @@ macro_rules! rotor3_toolkit {
             }
 
             /// The unit axis and the angle in `[0, pi]` of a unit rotor (the shorter way
-            /// round, so `R` and `-R` agree); `(e1, 0)` for the identity.
+            /// round, so `R` and `-R` agree); `(e1, 0)` for the identity (and the zero
+            /// rotor), NaN when a component is.
             ///
             /// ```
             #[doc = concat!("use ga_core::", stringify!($s), "::g3::*;")]
@@ -101,6 +103,8 @@ macro_rules! rotor3_toolkit {
                 let length = axis.norm();
                 if length > 0.0 {
                     (axis * (1.0 / length), 2.0 * length.atan2(r.s))
+                } else if r.is_nan() {
+                    (Vector::new($s::NAN, $s::NAN, $s::NAN), $s::NAN)
                 } else {
                     (Vector::E1, 0.0)
                 }
@@ -132,7 +136,7 @@ macro_rules! rotor3_toolkit {
             /// The axis times the angle, the angle in `[0, pi]` (the shorter way round,
             /// so `R` and `-R` agree, unlike glam's `to_scaled_axis`, whose angle reaches
             /// 2 pi); the inverse of `from_scaled_axis`. Zero for the identity and for
-            /// the zero rotor.
+            /// the zero rotor, NaN when a component is.
             ///
             /// ```
             #[doc = concat!("use ga_core::", stringify!($s), "::g3::*;")]
@@ -147,6 +151,8 @@ macro_rules! rotor3_toolkit {
                 let length = axis.norm();
                 if length > 0.0 {
                     axis * (2.0 * length.atan2(r.s) / length)
+                } else if r.is_nan() {
+                    Vector::new($s::NAN, $s::NAN, $s::NAN)
                 } else {
                     Vector::ZERO
                 }

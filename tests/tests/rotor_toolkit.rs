@@ -313,6 +313,25 @@ macro_rules! toolkit_tests {
             }
 
             #[test]
+            fn non_finite_input_gives_non_finite_output() {
+                let nan = Rotor::new($s::NAN, 0.0, 0.0, 0.0);
+                let r = Rotor::from_axis_angle(Vector::E1, 0.3);
+                assert!(Rotor::from_axis_angle(Vector::new($s::NAN, 0.0, 0.0), 1.0).is_nan());
+                assert!(Rotor::from_axis_angle(Vector::E1, $s::INFINITY).is_nan());
+                assert!(r.slerp(nan, 0.5).is_nan() && nan.slerp(r, 0.5).is_nan());
+                assert!(r.nlerp(nan, 0.5).is_nan());
+                assert!(r.angle_between(nan).is_nan());
+                assert!(nan.to_matrix().iter().flatten().any(|c| c.is_nan()));
+                let mut m = r.to_matrix();
+                m[1][2] = $s::NAN;
+                assert!(Rotor::from_matrix(m).is_nan());
+                assert!(nan.to_scaled_axis().is_nan());
+                assert!(nan.to_axis_angle().1.is_nan());
+                let wrong = Rotor::new(0.0, 0.0, $s::NAN, 0.0);
+                assert!(wrong.to_scaled_axis().is_nan());
+            }
+
+            #[test]
             fn g2_angle_functions_follow_the_e12_plane_of_g3() {
                 use ga_core::$s::g2;
                 let mut values = Values(21);
