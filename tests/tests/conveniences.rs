@@ -360,3 +360,35 @@ fn division_in_a_non_euclidean_metric_multiplies_by_the_reference_inverse() {
         }
     }
 }
+
+ga_macros::algebra! {
+    /// A restricted algebra with a user type, as a user would write it.
+    pub mod planes {
+        metric: [1, 1, 1],
+        scalar: f64,
+        types: [Rotor, Vector, Plane = [e12, e13]],
+    }
+}
+
+#[test]
+// `&r * &p` is taken on purpose: it exercises the reference impls.
+#[allow(clippy::op_ref)]
+fn a_user_type_gets_the_conveniences_too() {
+    use planes::*;
+    let p = Plane::new(2.0, -0.5);
+    assert_eq!(p.to_string(), "2e12 - 0.5e13");
+    assert_eq!(format!("{:.2}", Plane::new(1.0 / 3.0, 0.0)), "0.33e12");
+    assert_eq!((p[0], p[1]), (2.0, -0.5));
+    assert_eq!(<[f64; 2]>::from(p), [2.0, -0.5]);
+    assert_eq!([p, p].iter().sum::<Plane>(), p + p);
+    let r = Rotor::new(0.5, 0.5, -0.5, 0.5);
+    assert_eq!(&r * &p, r * p);
+    // P ~P = |P|^2 is a scalar, so `/ Plane` exists; against the reference inverse.
+    let algebra = Algebra::new(&[1, 1, 1]);
+    let dense_p = algebra.from_components(&[0b011, 0b101], &[2.0, -0.5]);
+    let dense_r = algebra.from_components(&[0, 0b011, 0b101, 0b110], &[0.5, 0.5, -0.5, 0.5]);
+    let expected = algebra.geometric(&dense_r, &algebra.inverse(&dense_p).expect("invertible"));
+    let quotient = r / p;
+    let actual = algebra.from_components(&[0, 0b011, 0b101, 0b110], &quotient.to_array());
+    assert_close!(actual, expected, rel = 1e-14);
+}
