@@ -189,9 +189,11 @@ macro_rules! rotor3_toolkit {
             /// `Mat3`/`DMat3` under the `glam` feature), with a non-negative scalar.
             ///
             /// Shepperd's method (S. W. Shepperd, "Quaternion from rotation matrix",
-            /// J. Guidance and Control 1(3), 1978): the square root is taken of the
-            /// largest of the four diagonal combinations, so it is accurate near a half
-            /// turn too. A matrix that is not a rotation gives a rotor that is not unit.
+            /// J. Guidance and Control 1(3), 1978) with the branch chosen by signs
+            /// (M. Day, "Converting a rotation matrix to a quaternion", Insomniac Games,
+            /// 2015): the square root is taken of a diagonal combination of at least 1,
+            /// so it is accurate near a half turn too. A matrix that is not a rotation
+            /// gives a rotor that is not unit.
             ///
             /// ```
             #[doc = concat!("use ga_core::", stringify!($s), "::g3::*;")]
@@ -203,25 +205,26 @@ macro_rules! rotor3_toolkit {
             pub fn from_matrix(m: impl RotationMatrix<$s>) -> Self {
                 // m_rc: row r, column c.
                 let [[m00, m10, m20], [m01, m11, m21], [m02, m12, m22]] = m.to_cols_array_2d();
-                let trace = m00 + m11 + m22;
-                let (w, x, y, z);
-                if trace >= m00.max(m11).max(m22) {
-                    w = 0.5 * (1.0 + trace).sqrt();
-                    let k = 0.25 / w;
-                    (x, y, z) = ((m21 - m12) * k, (m02 - m20) * k, (m10 - m01) * k);
-                } else if m00 >= m11 && m00 >= m22 {
-                    x = 0.5 * (1.0 + m00 - m11 - m22).sqrt();
-                    let k = 0.25 / x;
-                    (w, y, z) = ((m21 - m12) * k, (m01 + m10) * k, (m02 + m20) * k);
-                } else if m11 >= m22 {
-                    y = 0.5 * (1.0 - m00 + m11 - m22).sqrt();
-                    let k = 0.25 / y;
-                    (w, x, z) = ((m02 - m20) * k, (m01 + m10) * k, (m12 + m21) * k);
+                // Day's selection: signs of the diagonal pick a component whose squared
+                // magnitude times 4 is `t >= 1`, so `1 / sqrt(t)` never loses digits.
+                let (t, w, x, y, z);
+                if m22 < 0.0 {
+                    if m00 > m11 {
+                        t = 1.0 + m00 - m11 - m22;
+                        (w, x, y, z) = (m21 - m12, t, m01 + m10, m02 + m20);
+                    } else {
+                        t = 1.0 - m00 + m11 - m22;
+                        (w, x, y, z) = (m02 - m20, m01 + m10, t, m12 + m21);
+                    }
+                } else if m00 < -m11 {
+                    t = 1.0 - m00 - m11 + m22;
+                    (w, x, y, z) = (m10 - m01, m02 + m20, m12 + m21, t);
                 } else {
-                    z = 0.5 * (1.0 - m00 - m11 + m22).sqrt();
-                    let k = 0.25 / z;
-                    (w, x, y) = ((m10 - m01) * k, (m02 + m20) * k, (m12 + m21) * k);
+                    t = 1.0 + m00 + m11 + m22;
+                    (w, x, y, z) = (t, m21 - m12, m02 - m20, m10 - m01);
                 }
+                let k = 0.5 / t.sqrt();
+                let (w, x, y, z) = (w * k, x * k, y * k, z * k);
                 let sign: $s = if w < 0.0 { -1.0 } else { 1.0 };
                 Rotor::new(sign * w, -sign * z, sign * y, -sign * x)
             }
