@@ -22,7 +22,13 @@ pub use libm;
 
 #[cfg(feature = "glam")]
 mod glam_interop;
+// The slice kernels ask the CPU what it has, which needs the standard library.
+#[cfg(feature = "std")]
 pub mod kernels;
+mod precision;
+mod rotor;
+
+pub use rotor::RotationMatrix;
 
 /// Double-precision algebras.
 pub mod f64 {

@@ -32,6 +32,9 @@ pub mod g4 {
     /// The top grade: multiples of e1..en.
     pub type Pseudoscalar = Quadvector;
     /// An even multivector used as a rotor: `y = R x ~R`, `R = exp(-B theta / 2)`.
+    ///
+    /// An alias, not a new type: `Debug` prints a rotor as `Even { .. }` and
+    /// `Display` as its terms (`0.7 - 0.7e12`).
     pub type Rotor = Even;
     impl ::core::convert::From<f64> for Multivector {
         #[inline]
@@ -15558,6 +15561,3469 @@ pub mod g4 {
                     e4: m[3][0] * x.e1 + m[3][1] * x.e2 + m[3][2] * x.e3 + m[3][3] * x.e4,
                 };
             }
+        }
+    }
+    /// Writes `1 + 2e1 - 0.5e12`: each non-zero component with its blade (the scalar
+    /// without one), honouring the formatter's precision; at a precision `p`, terms
+    /// that would print as zero are left out. Zero prints as `0`.
+    fn display_terms(
+        f: &mut ::core::fmt::Formatter<'_>,
+        terms: &[(f64, &str)],
+    ) -> ::core::fmt::Result {
+        let threshold: f64 = match f.precision() {
+            Some(p) => 0.5 * (10.0 as f64).powi(-(p.min(400) as i32)),
+            None => 0.0,
+        };
+        let mut first = true;
+        for &(value, blade) in terms {
+            let magnitude = value.abs();
+            if magnitude <= threshold {
+                continue;
+            }
+            let negative = value.is_sign_negative() && !value.is_nan();
+            match (first, negative) {
+                (true, true) => f.write_str("-")?,
+                (true, false) => {}
+                (false, true) => f.write_str(" - ")?,
+                (false, false) => f.write_str(" + ")?,
+            }
+            match f.precision() {
+                Some(p) => write!(f, "{:.*}{}", p, magnitude, blade)?,
+                None => write!(f, "{}{}", magnitude, blade)?,
+            }
+            first = false;
+        }
+        if first {
+            f.write_str("0")?;
+        }
+        Ok(())
+    }
+    impl ::core::ops::Index<usize> for Vector {
+        type Output = f64;
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index(&self, index: usize) -> &f64 {
+            match index {
+                0usize => &self.e1,
+                1usize => &self.e2,
+                2usize => &self.e3,
+                3usize => &self.e4,
+                _ => panic!("index {} out of range for `Vector` (4 components)", index),
+            }
+        }
+    }
+    impl ::core::ops::IndexMut<usize> for Vector {
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index_mut(&mut self, index: usize) -> &mut f64 {
+            match index {
+                0usize => &mut self.e1,
+                1usize => &mut self.e2,
+                2usize => &mut self.e3,
+                3usize => &mut self.e4,
+                _ => panic!("index {} out of range for `Vector` (4 components)", index),
+            }
+        }
+    }
+    impl Vector {
+        /// The components in canonical order, by value.
+        #[inline]
+        pub fn iter(&self) -> ::core::array::IntoIter<f64, 4usize> {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::iter::IntoIterator for Vector {
+        type Item = f64;
+        type IntoIter = ::core::array::IntoIter<f64, 4usize>;
+        #[inline]
+        fn into_iter(self) -> Self::IntoIter {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::convert::From<[f64; 4usize]> for Vector {
+        #[inline]
+        fn from(components: [f64; 4usize]) -> Vector {
+            Vector::from_array(components)
+        }
+    }
+    impl ::core::convert::From<Vector> for [f64; 4usize] {
+        #[inline]
+        fn from(value: Vector) -> [f64; 4usize] {
+            value.to_array()
+        }
+    }
+    impl ::core::fmt::Display for Vector {
+        fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+            display_terms(
+                f,
+                &[(self.e1, "e1"), (self.e2, "e2"), (self.e3, "e3"), (self.e4, "e4")],
+            )
+        }
+    }
+    impl Vector {
+        /// Whether every component is finite (neither infinite nor NaN).
+        #[inline]
+        #[must_use]
+        pub fn is_finite(self) -> bool {
+            self.e1.is_finite() && self.e2.is_finite() && self.e3.is_finite()
+                && self.e4.is_finite()
+        }
+        /// Whether any component is NaN.
+        #[inline]
+        #[must_use]
+        pub fn is_nan(self) -> bool {
+            self.e1.is_nan() || self.e2.is_nan() || self.e3.is_nan() || self.e4.is_nan()
+        }
+    }
+    impl ::core::iter::Sum for Vector {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = Vector>>(iter: I) -> Vector {
+            iter.fold(Vector::ZERO, |total, x| total + x)
+        }
+    }
+    impl<'a> ::core::iter::Sum<&'a Vector> for Vector {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = &'a Vector>>(iter: I) -> Vector {
+            iter.fold(Vector::ZERO, |total, x| total + *x)
+        }
+    }
+    impl ::core::ops::Index<usize> for Bivector {
+        type Output = f64;
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index(&self, index: usize) -> &f64 {
+            match index {
+                0usize => &self.e12,
+                1usize => &self.e13,
+                2usize => &self.e14,
+                3usize => &self.e23,
+                4usize => &self.e24,
+                5usize => &self.e34,
+                _ => panic!("index {} out of range for `Bivector` (6 components)", index),
+            }
+        }
+    }
+    impl ::core::ops::IndexMut<usize> for Bivector {
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index_mut(&mut self, index: usize) -> &mut f64 {
+            match index {
+                0usize => &mut self.e12,
+                1usize => &mut self.e13,
+                2usize => &mut self.e14,
+                3usize => &mut self.e23,
+                4usize => &mut self.e24,
+                5usize => &mut self.e34,
+                _ => panic!("index {} out of range for `Bivector` (6 components)", index),
+            }
+        }
+    }
+    impl Bivector {
+        /// The components in canonical order, by value.
+        #[inline]
+        pub fn iter(&self) -> ::core::array::IntoIter<f64, 6usize> {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::iter::IntoIterator for Bivector {
+        type Item = f64;
+        type IntoIter = ::core::array::IntoIter<f64, 6usize>;
+        #[inline]
+        fn into_iter(self) -> Self::IntoIter {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::convert::From<[f64; 6usize]> for Bivector {
+        #[inline]
+        fn from(components: [f64; 6usize]) -> Bivector {
+            Bivector::from_array(components)
+        }
+    }
+    impl ::core::convert::From<Bivector> for [f64; 6usize] {
+        #[inline]
+        fn from(value: Bivector) -> [f64; 6usize] {
+            value.to_array()
+        }
+    }
+    impl ::core::fmt::Display for Bivector {
+        fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+            display_terms(
+                f,
+                &[
+                    (self.e12, "e12"),
+                    (self.e13, "e13"),
+                    (self.e14, "e14"),
+                    (self.e23, "e23"),
+                    (self.e24, "e24"),
+                    (self.e34, "e34"),
+                ],
+            )
+        }
+    }
+    impl Bivector {
+        /// Whether every component is finite (neither infinite nor NaN).
+        #[inline]
+        #[must_use]
+        pub fn is_finite(self) -> bool {
+            self.e12.is_finite() && self.e13.is_finite() && self.e14.is_finite()
+                && self.e23.is_finite() && self.e24.is_finite() && self.e34.is_finite()
+        }
+        /// Whether any component is NaN.
+        #[inline]
+        #[must_use]
+        pub fn is_nan(self) -> bool {
+            self.e12.is_nan() || self.e13.is_nan() || self.e14.is_nan()
+                || self.e23.is_nan() || self.e24.is_nan() || self.e34.is_nan()
+        }
+    }
+    impl ::core::iter::Sum for Bivector {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = Bivector>>(iter: I) -> Bivector {
+            iter.fold(Bivector::ZERO, |total, x| total + x)
+        }
+    }
+    impl<'a> ::core::iter::Sum<&'a Bivector> for Bivector {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = &'a Bivector>>(iter: I) -> Bivector {
+            iter.fold(Bivector::ZERO, |total, x| total + *x)
+        }
+    }
+    impl ::core::ops::Index<usize> for Trivector {
+        type Output = f64;
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index(&self, index: usize) -> &f64 {
+            match index {
+                0usize => &self.e123,
+                1usize => &self.e124,
+                2usize => &self.e134,
+                3usize => &self.e234,
+                _ => {
+                    panic!("index {} out of range for `Trivector` (4 components)", index)
+                }
+            }
+        }
+    }
+    impl ::core::ops::IndexMut<usize> for Trivector {
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index_mut(&mut self, index: usize) -> &mut f64 {
+            match index {
+                0usize => &mut self.e123,
+                1usize => &mut self.e124,
+                2usize => &mut self.e134,
+                3usize => &mut self.e234,
+                _ => {
+                    panic!("index {} out of range for `Trivector` (4 components)", index)
+                }
+            }
+        }
+    }
+    impl Trivector {
+        /// The components in canonical order, by value.
+        #[inline]
+        pub fn iter(&self) -> ::core::array::IntoIter<f64, 4usize> {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::iter::IntoIterator for Trivector {
+        type Item = f64;
+        type IntoIter = ::core::array::IntoIter<f64, 4usize>;
+        #[inline]
+        fn into_iter(self) -> Self::IntoIter {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::convert::From<[f64; 4usize]> for Trivector {
+        #[inline]
+        fn from(components: [f64; 4usize]) -> Trivector {
+            Trivector::from_array(components)
+        }
+    }
+    impl ::core::convert::From<Trivector> for [f64; 4usize] {
+        #[inline]
+        fn from(value: Trivector) -> [f64; 4usize] {
+            value.to_array()
+        }
+    }
+    impl ::core::fmt::Display for Trivector {
+        fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+            display_terms(
+                f,
+                &[
+                    (self.e123, "e123"),
+                    (self.e124, "e124"),
+                    (self.e134, "e134"),
+                    (self.e234, "e234"),
+                ],
+            )
+        }
+    }
+    impl Trivector {
+        /// Whether every component is finite (neither infinite nor NaN).
+        #[inline]
+        #[must_use]
+        pub fn is_finite(self) -> bool {
+            self.e123.is_finite() && self.e124.is_finite() && self.e134.is_finite()
+                && self.e234.is_finite()
+        }
+        /// Whether any component is NaN.
+        #[inline]
+        #[must_use]
+        pub fn is_nan(self) -> bool {
+            self.e123.is_nan() || self.e124.is_nan() || self.e134.is_nan()
+                || self.e234.is_nan()
+        }
+    }
+    impl ::core::iter::Sum for Trivector {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = Trivector>>(iter: I) -> Trivector {
+            iter.fold(Trivector::ZERO, |total, x| total + x)
+        }
+    }
+    impl<'a> ::core::iter::Sum<&'a Trivector> for Trivector {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = &'a Trivector>>(iter: I) -> Trivector {
+            iter.fold(Trivector::ZERO, |total, x| total + *x)
+        }
+    }
+    impl ::core::ops::Index<usize> for Quadvector {
+        type Output = f64;
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index(&self, index: usize) -> &f64 {
+            match index {
+                0usize => &self.e1234,
+                _ => {
+                    panic!(
+                        "index {} out of range for `Quadvector` (1 components)", index
+                    )
+                }
+            }
+        }
+    }
+    impl ::core::ops::IndexMut<usize> for Quadvector {
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index_mut(&mut self, index: usize) -> &mut f64 {
+            match index {
+                0usize => &mut self.e1234,
+                _ => {
+                    panic!(
+                        "index {} out of range for `Quadvector` (1 components)", index
+                    )
+                }
+            }
+        }
+    }
+    impl Quadvector {
+        /// The components in canonical order, by value.
+        #[inline]
+        pub fn iter(&self) -> ::core::array::IntoIter<f64, 1usize> {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::iter::IntoIterator for Quadvector {
+        type Item = f64;
+        type IntoIter = ::core::array::IntoIter<f64, 1usize>;
+        #[inline]
+        fn into_iter(self) -> Self::IntoIter {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::convert::From<[f64; 1usize]> for Quadvector {
+        #[inline]
+        fn from(components: [f64; 1usize]) -> Quadvector {
+            Quadvector::from_array(components)
+        }
+    }
+    impl ::core::convert::From<Quadvector> for [f64; 1usize] {
+        #[inline]
+        fn from(value: Quadvector) -> [f64; 1usize] {
+            value.to_array()
+        }
+    }
+    impl ::core::fmt::Display for Quadvector {
+        fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+            display_terms(f, &[(self.e1234, "e1234")])
+        }
+    }
+    impl Quadvector {
+        /// Whether every component is finite (neither infinite nor NaN).
+        #[inline]
+        #[must_use]
+        pub fn is_finite(self) -> bool {
+            self.e1234.is_finite()
+        }
+        /// Whether any component is NaN.
+        #[inline]
+        #[must_use]
+        pub fn is_nan(self) -> bool {
+            self.e1234.is_nan()
+        }
+    }
+    impl ::core::iter::Sum for Quadvector {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = Quadvector>>(iter: I) -> Quadvector {
+            iter.fold(Quadvector::ZERO, |total, x| total + x)
+        }
+    }
+    impl<'a> ::core::iter::Sum<&'a Quadvector> for Quadvector {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = &'a Quadvector>>(iter: I) -> Quadvector {
+            iter.fold(Quadvector::ZERO, |total, x| total + *x)
+        }
+    }
+    impl ::core::ops::Index<usize> for Even {
+        type Output = f64;
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index(&self, index: usize) -> &f64 {
+            match index {
+                0usize => &self.s,
+                1usize => &self.e12,
+                2usize => &self.e13,
+                3usize => &self.e14,
+                4usize => &self.e23,
+                5usize => &self.e24,
+                6usize => &self.e34,
+                7usize => &self.e1234,
+                _ => panic!("index {} out of range for `Even` (8 components)", index),
+            }
+        }
+    }
+    impl ::core::ops::IndexMut<usize> for Even {
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index_mut(&mut self, index: usize) -> &mut f64 {
+            match index {
+                0usize => &mut self.s,
+                1usize => &mut self.e12,
+                2usize => &mut self.e13,
+                3usize => &mut self.e14,
+                4usize => &mut self.e23,
+                5usize => &mut self.e24,
+                6usize => &mut self.e34,
+                7usize => &mut self.e1234,
+                _ => panic!("index {} out of range for `Even` (8 components)", index),
+            }
+        }
+    }
+    impl Even {
+        /// The components in canonical order, by value.
+        #[inline]
+        pub fn iter(&self) -> ::core::array::IntoIter<f64, 8usize> {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::iter::IntoIterator for Even {
+        type Item = f64;
+        type IntoIter = ::core::array::IntoIter<f64, 8usize>;
+        #[inline]
+        fn into_iter(self) -> Self::IntoIter {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::convert::From<[f64; 8usize]> for Even {
+        #[inline]
+        fn from(components: [f64; 8usize]) -> Even {
+            Even::from_array(components)
+        }
+    }
+    impl ::core::convert::From<Even> for [f64; 8usize] {
+        #[inline]
+        fn from(value: Even) -> [f64; 8usize] {
+            value.to_array()
+        }
+    }
+    impl ::core::fmt::Display for Even {
+        fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+            display_terms(
+                f,
+                &[
+                    (self.s, ""),
+                    (self.e12, "e12"),
+                    (self.e13, "e13"),
+                    (self.e14, "e14"),
+                    (self.e23, "e23"),
+                    (self.e24, "e24"),
+                    (self.e34, "e34"),
+                    (self.e1234, "e1234"),
+                ],
+            )
+        }
+    }
+    impl Even {
+        /// Whether every component is finite (neither infinite nor NaN).
+        #[inline]
+        #[must_use]
+        pub fn is_finite(self) -> bool {
+            self.s.is_finite() && self.e12.is_finite() && self.e13.is_finite()
+                && self.e14.is_finite() && self.e23.is_finite() && self.e24.is_finite()
+                && self.e34.is_finite() && self.e1234.is_finite()
+        }
+        /// Whether any component is NaN.
+        #[inline]
+        #[must_use]
+        pub fn is_nan(self) -> bool {
+            self.s.is_nan() || self.e12.is_nan() || self.e13.is_nan()
+                || self.e14.is_nan() || self.e23.is_nan() || self.e24.is_nan()
+                || self.e34.is_nan() || self.e1234.is_nan()
+        }
+    }
+    impl ::core::iter::Sum for Even {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = Even>>(iter: I) -> Even {
+            iter.fold(Even::ZERO, |total, x| total + x)
+        }
+    }
+    impl<'a> ::core::iter::Sum<&'a Even> for Even {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = &'a Even>>(iter: I) -> Even {
+            iter.fold(Even::ZERO, |total, x| total + *x)
+        }
+    }
+    impl ::core::ops::MulAssign<Even> for Even {
+        #[inline]
+        fn mul_assign(&mut self, rhs: Even) {
+            *self = *self * rhs;
+        }
+    }
+    impl ::core::iter::Product for Even {
+        #[inline]
+        fn product<I: ::core::iter::Iterator<Item = Even>>(iter: I) -> Even {
+            iter.fold(Even::ONE, |total, x| total * x)
+        }
+    }
+    impl<'a> ::core::iter::Product<&'a Even> for Even {
+        #[inline]
+        fn product<I: ::core::iter::Iterator<Item = &'a Even>>(iter: I) -> Even {
+            iter.fold(Even::ONE, |total, x| total * *x)
+        }
+    }
+    impl ::core::ops::Index<usize> for Odd {
+        type Output = f64;
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index(&self, index: usize) -> &f64 {
+            match index {
+                0usize => &self.e1,
+                1usize => &self.e2,
+                2usize => &self.e3,
+                3usize => &self.e4,
+                4usize => &self.e123,
+                5usize => &self.e124,
+                6usize => &self.e134,
+                7usize => &self.e234,
+                _ => panic!("index {} out of range for `Odd` (8 components)", index),
+            }
+        }
+    }
+    impl ::core::ops::IndexMut<usize> for Odd {
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index_mut(&mut self, index: usize) -> &mut f64 {
+            match index {
+                0usize => &mut self.e1,
+                1usize => &mut self.e2,
+                2usize => &mut self.e3,
+                3usize => &mut self.e4,
+                4usize => &mut self.e123,
+                5usize => &mut self.e124,
+                6usize => &mut self.e134,
+                7usize => &mut self.e234,
+                _ => panic!("index {} out of range for `Odd` (8 components)", index),
+            }
+        }
+    }
+    impl Odd {
+        /// The components in canonical order, by value.
+        #[inline]
+        pub fn iter(&self) -> ::core::array::IntoIter<f64, 8usize> {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::iter::IntoIterator for Odd {
+        type Item = f64;
+        type IntoIter = ::core::array::IntoIter<f64, 8usize>;
+        #[inline]
+        fn into_iter(self) -> Self::IntoIter {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::convert::From<[f64; 8usize]> for Odd {
+        #[inline]
+        fn from(components: [f64; 8usize]) -> Odd {
+            Odd::from_array(components)
+        }
+    }
+    impl ::core::convert::From<Odd> for [f64; 8usize] {
+        #[inline]
+        fn from(value: Odd) -> [f64; 8usize] {
+            value.to_array()
+        }
+    }
+    impl ::core::fmt::Display for Odd {
+        fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+            display_terms(
+                f,
+                &[
+                    (self.e1, "e1"),
+                    (self.e2, "e2"),
+                    (self.e3, "e3"),
+                    (self.e4, "e4"),
+                    (self.e123, "e123"),
+                    (self.e124, "e124"),
+                    (self.e134, "e134"),
+                    (self.e234, "e234"),
+                ],
+            )
+        }
+    }
+    impl Odd {
+        /// Whether every component is finite (neither infinite nor NaN).
+        #[inline]
+        #[must_use]
+        pub fn is_finite(self) -> bool {
+            self.e1.is_finite() && self.e2.is_finite() && self.e3.is_finite()
+                && self.e4.is_finite() && self.e123.is_finite() && self.e124.is_finite()
+                && self.e134.is_finite() && self.e234.is_finite()
+        }
+        /// Whether any component is NaN.
+        #[inline]
+        #[must_use]
+        pub fn is_nan(self) -> bool {
+            self.e1.is_nan() || self.e2.is_nan() || self.e3.is_nan() || self.e4.is_nan()
+                || self.e123.is_nan() || self.e124.is_nan() || self.e134.is_nan()
+                || self.e234.is_nan()
+        }
+    }
+    impl ::core::iter::Sum for Odd {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = Odd>>(iter: I) -> Odd {
+            iter.fold(Odd::ZERO, |total, x| total + x)
+        }
+    }
+    impl<'a> ::core::iter::Sum<&'a Odd> for Odd {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = &'a Odd>>(iter: I) -> Odd {
+            iter.fold(Odd::ZERO, |total, x| total + *x)
+        }
+    }
+    impl ::core::ops::Index<usize> for Multivector {
+        type Output = f64;
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index(&self, index: usize) -> &f64 {
+            match index {
+                0usize => &self.s,
+                1usize => &self.e1,
+                2usize => &self.e2,
+                3usize => &self.e3,
+                4usize => &self.e4,
+                5usize => &self.e12,
+                6usize => &self.e13,
+                7usize => &self.e14,
+                8usize => &self.e23,
+                9usize => &self.e24,
+                10usize => &self.e34,
+                11usize => &self.e123,
+                12usize => &self.e124,
+                13usize => &self.e134,
+                14usize => &self.e234,
+                15usize => &self.e1234,
+                _ => {
+                    panic!(
+                        "index {} out of range for `Multivector` (16 components)", index
+                    )
+                }
+            }
+        }
+    }
+    impl ::core::ops::IndexMut<usize> for Multivector {
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index_mut(&mut self, index: usize) -> &mut f64 {
+            match index {
+                0usize => &mut self.s,
+                1usize => &mut self.e1,
+                2usize => &mut self.e2,
+                3usize => &mut self.e3,
+                4usize => &mut self.e4,
+                5usize => &mut self.e12,
+                6usize => &mut self.e13,
+                7usize => &mut self.e14,
+                8usize => &mut self.e23,
+                9usize => &mut self.e24,
+                10usize => &mut self.e34,
+                11usize => &mut self.e123,
+                12usize => &mut self.e124,
+                13usize => &mut self.e134,
+                14usize => &mut self.e234,
+                15usize => &mut self.e1234,
+                _ => {
+                    panic!(
+                        "index {} out of range for `Multivector` (16 components)", index
+                    )
+                }
+            }
+        }
+    }
+    impl Multivector {
+        /// The components in canonical order, by value.
+        #[inline]
+        pub fn iter(&self) -> ::core::array::IntoIter<f64, 16usize> {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::iter::IntoIterator for Multivector {
+        type Item = f64;
+        type IntoIter = ::core::array::IntoIter<f64, 16usize>;
+        #[inline]
+        fn into_iter(self) -> Self::IntoIter {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::convert::From<[f64; 16usize]> for Multivector {
+        #[inline]
+        fn from(components: [f64; 16usize]) -> Multivector {
+            Multivector::from_array(components)
+        }
+    }
+    impl ::core::convert::From<Multivector> for [f64; 16usize] {
+        #[inline]
+        fn from(value: Multivector) -> [f64; 16usize] {
+            value.to_array()
+        }
+    }
+    impl ::core::fmt::Display for Multivector {
+        fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+            display_terms(
+                f,
+                &[
+                    (self.s, ""),
+                    (self.e1, "e1"),
+                    (self.e2, "e2"),
+                    (self.e3, "e3"),
+                    (self.e4, "e4"),
+                    (self.e12, "e12"),
+                    (self.e13, "e13"),
+                    (self.e14, "e14"),
+                    (self.e23, "e23"),
+                    (self.e24, "e24"),
+                    (self.e34, "e34"),
+                    (self.e123, "e123"),
+                    (self.e124, "e124"),
+                    (self.e134, "e134"),
+                    (self.e234, "e234"),
+                    (self.e1234, "e1234"),
+                ],
+            )
+        }
+    }
+    impl Multivector {
+        /// Whether every component is finite (neither infinite nor NaN).
+        #[inline]
+        #[must_use]
+        pub fn is_finite(self) -> bool {
+            self.s.is_finite() && self.e1.is_finite() && self.e2.is_finite()
+                && self.e3.is_finite() && self.e4.is_finite() && self.e12.is_finite()
+                && self.e13.is_finite() && self.e14.is_finite() && self.e23.is_finite()
+                && self.e24.is_finite() && self.e34.is_finite() && self.e123.is_finite()
+                && self.e124.is_finite() && self.e134.is_finite()
+                && self.e234.is_finite() && self.e1234.is_finite()
+        }
+        /// Whether any component is NaN.
+        #[inline]
+        #[must_use]
+        pub fn is_nan(self) -> bool {
+            self.s.is_nan() || self.e1.is_nan() || self.e2.is_nan() || self.e3.is_nan()
+                || self.e4.is_nan() || self.e12.is_nan() || self.e13.is_nan()
+                || self.e14.is_nan() || self.e23.is_nan() || self.e24.is_nan()
+                || self.e34.is_nan() || self.e123.is_nan() || self.e124.is_nan()
+                || self.e134.is_nan() || self.e234.is_nan() || self.e1234.is_nan()
+        }
+    }
+    impl ::core::iter::Sum for Multivector {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = Multivector>>(iter: I) -> Multivector {
+            iter.fold(Multivector::ZERO, |total, x| total + x)
+        }
+    }
+    impl<'a> ::core::iter::Sum<&'a Multivector> for Multivector {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = &'a Multivector>>(
+            iter: I,
+        ) -> Multivector {
+            iter.fold(Multivector::ZERO, |total, x| total + *x)
+        }
+    }
+    impl ::core::ops::MulAssign<Multivector> for Multivector {
+        #[inline]
+        fn mul_assign(&mut self, rhs: Multivector) {
+            *self = *self * rhs;
+        }
+    }
+    impl ::core::iter::Product for Multivector {
+        #[inline]
+        fn product<I: ::core::iter::Iterator<Item = Multivector>>(
+            iter: I,
+        ) -> Multivector {
+            iter.fold(Multivector::ONE, |total, x| total * x)
+        }
+    }
+    impl<'a> ::core::iter::Product<&'a Multivector> for Multivector {
+        #[inline]
+        fn product<I: ::core::iter::Iterator<Item = &'a Multivector>>(
+            iter: I,
+        ) -> Multivector {
+            iter.fold(Multivector::ONE, |total, x| total * *x)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Quadvector> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Quadvector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Quadvector> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Quadvector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Quadvector> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Quadvector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Quadvector> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Quadvector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Quadvector> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Quadvector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for &Vector {
+        type Output = <Vector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Quadvector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Quadvector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Quadvector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Quadvector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Quadvector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Quadvector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Quadvector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Quadvector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Quadvector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Quadvector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Quadvector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Quadvector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Quadvector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Quadvector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Quadvector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Quadvector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Quadvector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Quadvector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Quadvector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Quadvector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Quadvector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Quadvector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Quadvector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Quadvector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Quadvector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Quadvector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Quadvector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Quadvector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Quadvector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Quadvector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Quadvector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Mul<Quadvector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Quadvector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitXor<Quadvector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Quadvector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitOr<Quadvector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Quadvector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Add<Quadvector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Quadvector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Sub<Quadvector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for &Even {
+        type Output = <Even as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for &Even {
+        type Output = <Even as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for &Even {
+        type Output = <Even as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for &Even {
+        type Output = <Even as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for &Even {
+        type Output = <Even as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for &Even {
+        type Output = <Even as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for &Even {
+        type Output = <Even as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for &Even {
+        type Output = <Even as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Quadvector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Quadvector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Quadvector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Quadvector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Quadvector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Quadvector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Quadvector> for &Even {
+        type Output = <Even as ::core::ops::Add<Quadvector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Quadvector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Quadvector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for &Even {
+        type Output = <Even as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for &Even {
+        type Output = <Even as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for &Even {
+        type Output = <Even as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for &Even {
+        type Output = <Even as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for &Even {
+        type Output = <Even as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for &Even {
+        type Output = <Even as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for &Even {
+        type Output = <Even as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for &Odd {
+        type Output = <Odd as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Quadvector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Quadvector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Quadvector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Quadvector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Quadvector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Quadvector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Quadvector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Quadvector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Quadvector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Quadvector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Quadvector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Quadvector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Quadvector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Quadvector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Quadvector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Quadvector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Quadvector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Quadvector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Quadvector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Quadvector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Neg for &Vector {
+        type Output = Vector;
+        #[inline]
+        fn neg(self) -> Vector {
+            -*self
+        }
+    }
+    impl ::core::ops::Neg for &Bivector {
+        type Output = Bivector;
+        #[inline]
+        fn neg(self) -> Bivector {
+            -*self
+        }
+    }
+    impl ::core::ops::Neg for &Trivector {
+        type Output = Trivector;
+        #[inline]
+        fn neg(self) -> Trivector {
+            -*self
+        }
+    }
+    impl ::core::ops::Neg for &Quadvector {
+        type Output = Quadvector;
+        #[inline]
+        fn neg(self) -> Quadvector {
+            -*self
+        }
+    }
+    impl ::core::ops::Neg for &Even {
+        type Output = Even;
+        #[inline]
+        fn neg(self) -> Even {
+            -*self
+        }
+    }
+    impl ::core::ops::Neg for &Odd {
+        type Output = Odd;
+        #[inline]
+        fn neg(self) -> Odd {
+            -*self
+        }
+    }
+    impl ::core::ops::Neg for &Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn neg(self) -> Multivector {
+            -*self
+        }
+    }
+    impl ::core::ops::Div<Vector> for f64 {
+        type Output = Vector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Vector) -> Vector {
+            let scale = 1.0
+                / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
+                    + (rhs.e3 * rhs.e3 + rhs.e4 * rhs.e4));
+            self
+                * Vector {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                    e4: rhs.e4 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Trivector> for f64 {
+        type Output = Trivector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Trivector) -> Trivector {
+            let scale = 1.0
+                / ((rhs.e123 * rhs.e123 + rhs.e124 * rhs.e124)
+                    + (rhs.e134 * rhs.e134 + rhs.e234 * rhs.e234));
+            self
+                * Trivector {
+                    e123: -rhs.e123 * scale,
+                    e124: -rhs.e124 * scale,
+                    e134: -rhs.e134 * scale,
+                    e234: -rhs.e234 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Quadvector> for f64 {
+        type Output = Quadvector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Quadvector) -> Quadvector {
+            let scale = 1.0 / (rhs.e1234 * rhs.e1234);
+            self
+                * Quadvector {
+                    e1234: rhs.e1234 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Vector> for Vector {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Vector) -> Even {
+            let scale = 1.0
+                / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
+                    + (rhs.e3 * rhs.e3 + rhs.e4 * rhs.e4));
+            self
+                * Vector {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                    e4: rhs.e4 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Trivector> for Vector {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Trivector) -> Even {
+            let scale = 1.0
+                / ((rhs.e123 * rhs.e123 + rhs.e124 * rhs.e124)
+                    + (rhs.e134 * rhs.e134 + rhs.e234 * rhs.e234));
+            self
+                * Trivector {
+                    e123: -rhs.e123 * scale,
+                    e124: -rhs.e124 * scale,
+                    e134: -rhs.e134 * scale,
+                    e234: -rhs.e234 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Quadvector> for Vector {
+        type Output = Trivector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Quadvector) -> Trivector {
+            let scale = 1.0 / (rhs.e1234 * rhs.e1234);
+            self
+                * Quadvector {
+                    e1234: rhs.e1234 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Vector> for Bivector {
+        type Output = Odd;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Vector) -> Odd {
+            let scale = 1.0
+                / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
+                    + (rhs.e3 * rhs.e3 + rhs.e4 * rhs.e4));
+            self
+                * Vector {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                    e4: rhs.e4 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Trivector> for Bivector {
+        type Output = Odd;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Trivector) -> Odd {
+            let scale = 1.0
+                / ((rhs.e123 * rhs.e123 + rhs.e124 * rhs.e124)
+                    + (rhs.e134 * rhs.e134 + rhs.e234 * rhs.e234));
+            self
+                * Trivector {
+                    e123: -rhs.e123 * scale,
+                    e124: -rhs.e124 * scale,
+                    e134: -rhs.e134 * scale,
+                    e234: -rhs.e234 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Quadvector> for Bivector {
+        type Output = Bivector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Quadvector) -> Bivector {
+            let scale = 1.0 / (rhs.e1234 * rhs.e1234);
+            self
+                * Quadvector {
+                    e1234: rhs.e1234 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Vector> for Trivector {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Vector) -> Even {
+            let scale = 1.0
+                / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
+                    + (rhs.e3 * rhs.e3 + rhs.e4 * rhs.e4));
+            self
+                * Vector {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                    e4: rhs.e4 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Trivector> for Trivector {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Trivector) -> Even {
+            let scale = 1.0
+                / ((rhs.e123 * rhs.e123 + rhs.e124 * rhs.e124)
+                    + (rhs.e134 * rhs.e134 + rhs.e234 * rhs.e234));
+            self
+                * Trivector {
+                    e123: -rhs.e123 * scale,
+                    e124: -rhs.e124 * scale,
+                    e134: -rhs.e134 * scale,
+                    e234: -rhs.e234 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Quadvector> for Trivector {
+        type Output = Vector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Quadvector) -> Vector {
+            let scale = 1.0 / (rhs.e1234 * rhs.e1234);
+            self
+                * Quadvector {
+                    e1234: rhs.e1234 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Vector> for Quadvector {
+        type Output = Trivector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Vector) -> Trivector {
+            let scale = 1.0
+                / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
+                    + (rhs.e3 * rhs.e3 + rhs.e4 * rhs.e4));
+            self
+                * Vector {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                    e4: rhs.e4 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Trivector> for Quadvector {
+        type Output = Vector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Trivector) -> Vector {
+            let scale = 1.0
+                / ((rhs.e123 * rhs.e123 + rhs.e124 * rhs.e124)
+                    + (rhs.e134 * rhs.e134 + rhs.e234 * rhs.e234));
+            self
+                * Trivector {
+                    e123: -rhs.e123 * scale,
+                    e124: -rhs.e124 * scale,
+                    e134: -rhs.e134 * scale,
+                    e234: -rhs.e234 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Quadvector> for Quadvector {
+        type Output = f64;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Quadvector) -> f64 {
+            let scale = 1.0 / (rhs.e1234 * rhs.e1234);
+            self
+                * Quadvector {
+                    e1234: rhs.e1234 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Vector> for Even {
+        type Output = Odd;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Vector) -> Odd {
+            let scale = 1.0
+                / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
+                    + (rhs.e3 * rhs.e3 + rhs.e4 * rhs.e4));
+            self
+                * Vector {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                    e4: rhs.e4 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Trivector> for Even {
+        type Output = Odd;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Trivector) -> Odd {
+            let scale = 1.0
+                / ((rhs.e123 * rhs.e123 + rhs.e124 * rhs.e124)
+                    + (rhs.e134 * rhs.e134 + rhs.e234 * rhs.e234));
+            self
+                * Trivector {
+                    e123: -rhs.e123 * scale,
+                    e124: -rhs.e124 * scale,
+                    e134: -rhs.e134 * scale,
+                    e234: -rhs.e234 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Quadvector> for Even {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Quadvector) -> Even {
+            let scale = 1.0 / (rhs.e1234 * rhs.e1234);
+            self
+                * Quadvector {
+                    e1234: rhs.e1234 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Vector> for Odd {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Vector) -> Even {
+            let scale = 1.0
+                / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
+                    + (rhs.e3 * rhs.e3 + rhs.e4 * rhs.e4));
+            self
+                * Vector {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                    e4: rhs.e4 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Trivector> for Odd {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Trivector) -> Even {
+            let scale = 1.0
+                / ((rhs.e123 * rhs.e123 + rhs.e124 * rhs.e124)
+                    + (rhs.e134 * rhs.e134 + rhs.e234 * rhs.e234));
+            self
+                * Trivector {
+                    e123: -rhs.e123 * scale,
+                    e124: -rhs.e124 * scale,
+                    e134: -rhs.e134 * scale,
+                    e234: -rhs.e234 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Quadvector> for Odd {
+        type Output = Odd;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Quadvector) -> Odd {
+            let scale = 1.0 / (rhs.e1234 * rhs.e1234);
+            self
+                * Quadvector {
+                    e1234: rhs.e1234 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Vector> for Multivector {
+        type Output = Multivector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Vector) -> Multivector {
+            let scale = 1.0
+                / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
+                    + (rhs.e3 * rhs.e3 + rhs.e4 * rhs.e4));
+            self
+                * Vector {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                    e4: rhs.e4 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Trivector> for Multivector {
+        type Output = Multivector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Trivector) -> Multivector {
+            let scale = 1.0
+                / ((rhs.e123 * rhs.e123 + rhs.e124 * rhs.e124)
+                    + (rhs.e134 * rhs.e134 + rhs.e234 * rhs.e234));
+            self
+                * Trivector {
+                    e123: -rhs.e123 * scale,
+                    e124: -rhs.e124 * scale,
+                    e134: -rhs.e134 * scale,
+                    e234: -rhs.e234 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Quadvector> for Multivector {
+        type Output = Multivector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Quadvector) -> Multivector {
+            let scale = 1.0 / (rhs.e1234 * rhs.e1234);
+            self
+                * Quadvector {
+                    e1234: rhs.e1234 * scale,
+                }
         }
     }
     /// `LEFT[i][j] = (k, sign)`: `e_i e_j = sign e_k` by component index. Used only by

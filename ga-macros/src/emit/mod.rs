@@ -2,6 +2,7 @@
 //! was made and checked before.
 
 mod batch;
+mod conveniences;
 mod exp_log;
 mod expr;
 mod math;
@@ -55,6 +56,7 @@ pub fn module_items(spec: &Spec, plan: &Plan) -> TokenStream {
     if plan.has(Op::Sandwich) {
         items.extend(versor::emit_sandwiches(plan));
     }
+    items.extend(conveniences::emit_conveniences(plan));
     if plan.lanes.is_none() && plan.emitted.contains(&TypeId::multivector(n)) {
         items.extend(unary::emit_multivector_inverse(plan));
         items.extend(versor::emit_multivector_helpers(plan));

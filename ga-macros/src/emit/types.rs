@@ -166,6 +166,9 @@ pub fn emit_support_items(plan: &Plan) -> TokenStream {
     if plan.emitted.contains(&TypeId::even(n)) {
         out.extend(quote! {
             /// An even multivector used as a rotor: `y = R x ~R`, `R = exp(-B theta / 2)`.
+            ///
+            /// An alias, not a new type: `Debug` prints a rotor as `Even { .. }` and
+            /// `Display` as its terms (`0.7 - 0.7e12`).
             pub type Rotor = Even;
         });
     }

@@ -88,7 +88,7 @@ impl Splitting {
         let mut axis = [0.0; 3];
         axis[k] = -half_s;
         let plane = omega_from_vector(axis);
-        *rotor = *rotor * Rotor::new(half_c, plane.e12, plane.e13, plane.e23);
+        *rotor *= Rotor::new(half_c, plane.e12, plane.e13, plane.e23);
     }
 
     /// The torque kick `m += tau_k * dt` at time `t`.
