@@ -2,6 +2,7 @@
 //! each citing the paper it follows, all behind the one [`Integrator`] trait.
 
 mod closed_form;
+mod composition;
 mod dopri;
 mod exact;
 mod integrator;
@@ -11,6 +12,7 @@ mod rk4;
 mod splitting;
 
 pub use closed_form::ClosedForm;
+pub use composition::Composition;
 pub use dopri::{DormandPrince, DormandPrinceStats};
 pub use exact::ExactFreeBody;
 pub use integrator::Integrator;
