@@ -16,6 +16,10 @@
 //! A symmetric composition of a symmetric method of order two is symmetric, so its order
 //! is even; it keeps whatever the step keeps (symplecticity, `|R ~R| = 1`, `|m|`).
 
+// The coefficients carry the published digits, beyond f64, so that they can be read
+// against the sources.
+#![allow(clippy::excessive_precision)]
+
 use crate::error::Error;
 
 /// Suzuki's `p = 1/(4 - 4^(1/3))`, to 30 digits.
