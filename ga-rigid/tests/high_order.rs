@@ -365,3 +365,52 @@ fn names_and_bad_orders() {
         .advance(&body, 0.0, HAIRER_VILMART.state(), f64::NAN)
         .is_err());
 }
+
+/// Every new method through `simulate`'s entry point, by its `--method` name, on a heavy
+/// scene: the rows agree with RK4 at a fine step.
+#[test]
+fn new_methods_run_through_simulate() {
+    use ga_rigid::cli::{run_simulation, Method, Step};
+    use ga_rigid::scene::Scene;
+    use std::path::Path;
+    let text = "[body]\nmoments = [2.0, 1.5, 1.0]\n[initial]\nrotor = [0.9, 0.1, -0.3, 0.2]\n\
+                omega = [0.3, -0.4, 5.0]\n[run]\nt_end = 2.0\nsamples = 5\n[torque]\n\
+                g = [0.0, 0.0, -9.81]\ncom_offset = [0.0, 0.0, 0.5]\n";
+    let scene = Scene::parse(text, Path::new("inline.toml")).unwrap();
+    let truth = run_simulation(&scene, Method::Rk4, Step::Fixed(1e-3)).unwrap();
+    let cases = [
+        (Method::ExactSplitting, Step::Fixed(1e-3), "exact-splitting"),
+        (
+            Method::ExactSplitting4,
+            Step::Fixed(1e-2),
+            "exact-splitting-4",
+        ),
+        (
+            Method::ExactSplitting6,
+            Step::Fixed(2e-2),
+            "exact-splitting-6",
+        ),
+        (
+            Method::ExactSplitting8,
+            Step::Fixed(5e-2),
+            "exact-splitting-8",
+        ),
+        (Method::Splitting4, Step::Fixed(1e-2), "splitting-4"),
+        (Method::Splitting6, Step::Fixed(2e-2), "splitting-6"),
+        (Method::Splitting8, Step::Fixed(5e-2), "splitting-8"),
+        (Method::LieDop853, Step::Tolerance(1e-10), "lie-dop853"),
+    ];
+    for (method, step, name) in cases {
+        assert_eq!(method.name(), name);
+        let rows = run_simulation(&scene, method, step).unwrap();
+        for (row, expected) in rows.iter().zip(&truth) {
+            let (a, b) = (row.values(), expected.values());
+            // Omega and the energy (entries 5 on); the rotor's sign may differ.
+            let worst = (5..a.len())
+                .map(|k| (a[k] - b[k]).abs())
+                .fold(0.0, f64::max);
+            assert!(worst < 1e-5, "{name}: {worst:e}");
+        }
+    }
+    assert!(run_simulation(&scene, Method::LieDop853, Step::Fixed(0.1)).is_err());
+}

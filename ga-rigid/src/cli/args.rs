@@ -86,6 +86,29 @@ pub enum Method {
     Dopri,
     /// The exact flow through Jacobi elliptic functions.
     Exact,
+    /// Torque kick, exact free flow, torque kick (Celledoni-Fassò-Säfström-Zanna), order 2.
+    ExactSplitting,
+    /// The exact-flow splitting composed to order 4 (Suzuki).
+    #[value(name = "exact-splitting-4")]
+    ExactSplitting4,
+    /// The exact-flow splitting composed to order 6 (Kahan-Li).
+    #[value(name = "exact-splitting-6")]
+    ExactSplitting6,
+    /// The exact-flow splitting composed to order 8 (Kahan-Li).
+    #[value(name = "exact-splitting-8")]
+    ExactSplitting8,
+    /// The DLM splitting composed to order 4 (Suzuki).
+    #[value(name = "splitting-4")]
+    Splitting4,
+    /// The DLM splitting composed to order 6 (Kahan-Li).
+    #[value(name = "splitting-6")]
+    Splitting6,
+    /// The DLM splitting composed to order 8 (Kahan-Li).
+    #[value(name = "splitting-8")]
+    Splitting8,
+    /// Adaptive Runge-Kutta-Munthe-Kaas with the Dormand-Prince 8(5,3) pair.
+    #[value(name = "lie-dop853")]
+    LieDop853,
 }
 
 /// What step control a method takes.
@@ -111,6 +134,14 @@ impl Method {
             Method::Splitting => "splitting",
             Method::Dopri => "dopri",
             Method::Exact => "exact",
+            Method::ExactSplitting => "exact-splitting",
+            Method::ExactSplitting4 => "exact-splitting-4",
+            Method::ExactSplitting6 => "exact-splitting-6",
+            Method::ExactSplitting8 => "exact-splitting-8",
+            Method::Splitting4 => "splitting-4",
+            Method::Splitting6 => "splitting-6",
+            Method::Splitting8 => "splitting-8",
+            Method::LieDop853 => "lie-dop853",
         }
     }
 
@@ -119,7 +150,14 @@ impl Method {
     pub fn step_kind(self) -> StepKind {
         match self {
             Method::Rk4 | Method::LieRk4 | Method::Midpoint | Method::Splitting => StepKind::Fixed,
-            Method::Dopri => StepKind::Adaptive,
+            Method::ExactSplitting
+            | Method::ExactSplitting4
+            | Method::ExactSplitting6
+            | Method::ExactSplitting8
+            | Method::Splitting4
+            | Method::Splitting6
+            | Method::Splitting8 => StepKind::Fixed,
+            Method::Dopri | Method::LieDop853 => StepKind::Adaptive,
             Method::ClosedForm | Method::Exact => StepKind::AtSamples,
         }
     }

@@ -12,7 +12,8 @@ use crate::csv::Row;
 use crate::dynamics::{omega_to_vector, Gravity, RigidBody, State};
 use crate::error::Error;
 use crate::integrators::{
-    ClosedForm, DormandPrince, ExactFreeBody, ImplicitMidpoint, Integrator, LieRk4, Rk4, Splitting,
+    ClosedForm, ComposedSplitting, DormandPrince, ExactFreeBody, ExactSplitting, ImplicitMidpoint,
+    Integrator, LieDop853, LieRk4, Rk4, Splitting,
 };
 use crate::scene::Scene;
 
@@ -38,6 +39,25 @@ pub fn integrator_for(method: Method, step: Step) -> Result<Box<dyn Integrator>,
                 tol * DOPRI_ABSOLUTE_TOLERANCE_RATIO,
             )?),
             _ => return Err(Error::invalid("--tol", "dopri needs --tol")),
+        },
+        Method::ExactSplitting => Box::new(ExactSplitting::new(fixed("exact-splitting")?)?),
+        Method::ExactSplitting4 => {
+            Box::new(ExactSplitting::with_order(fixed("exact-splitting-4")?, 4)?)
+        }
+        Method::ExactSplitting6 => {
+            Box::new(ExactSplitting::with_order(fixed("exact-splitting-6")?, 6)?)
+        }
+        Method::ExactSplitting8 => {
+            Box::new(ExactSplitting::with_order(fixed("exact-splitting-8")?, 8)?)
+        }
+        Method::Splitting4 => Box::new(ComposedSplitting::new(fixed("splitting-4")?, 4)?),
+        Method::Splitting6 => Box::new(ComposedSplitting::new(fixed("splitting-6")?, 6)?),
+        Method::Splitting8 => Box::new(ComposedSplitting::new(fixed("splitting-8")?, 8)?),
+        Method::LieDop853 => match step {
+            Step::Tolerance(tol) => {
+                Box::new(LieDop853::new(tol, tol * DOPRI_ABSOLUTE_TOLERANCE_RATIO)?)
+            }
+            _ => return Err(Error::invalid("--tol", "lie-dop853 needs --tol")),
         },
     })
 }
