@@ -414,3 +414,18 @@ fn new_methods_run_through_simulate() {
     }
     assert!(run_simulation(&scene, Method::LieDop853, Step::Fixed(0.1)).is_err());
 }
+
+/// Without a torque the exact-flow splitting is the exact flow: the symmetric closed form
+/// and the elliptic solution, whatever the step.
+#[test]
+fn exact_splitting_without_torque_is_the_free_flow() {
+    for scene in [SHORT_FAT.runnable().scene, HAIRER_VILMART] {
+        let body = scene.body();
+        let t = 3.0;
+        let reference = scene.reference(&[t])[0];
+        let mut method = ExactSplitting::with_order(0.5, 8).unwrap();
+        let end = method.advance(&body, 0.0, scene.state(), t).unwrap();
+        let e = error(&body, &end, &reference);
+        assert!(e < 1e-12, "{}: {e:e}", scene.name);
+    }
+}

@@ -21,14 +21,16 @@
 //! `Omega` (gravity, a time-dependent couple); a time-dependent torque is read at the time
 //! the kick stands at (time moves with the free flow), which keeps the method symmetric.
 
-use ga_core::f64::g3::Rotor;
+use ga_core::f64::g3::{Bivector, Rotor, Sandwich};
 
-use crate::dynamics::{omega_from_vector, omega_to_vector, RigidBody, State};
+use crate::dynamics::{
+    omega_from_vector, omega_to_vector, RigidBody, State, DEFAULT_SYMMETRY_TOLERANCE,
+};
 use crate::error::Error;
 use crate::exact_flow::exact_free_body;
 
 use super::composition::Composition;
-use super::integrator::{check_finite, check_step, substeps, Integrator};
+use super::integrator::{check_finite, check_step, substeps, unit, Integrator};
 use super::splitting::Splitting;
 
 /// Kick, exact free flow, kick, composed to order 2, 4, 6 or 8, with fixed step `h`.
@@ -66,11 +68,69 @@ impl ExactSplitting {
 
     /// The exact free flow over `tau`, on the rotor and the body momentum.
     #[inline]
-    fn free(moments: [f64; 3], tau: f64, rotor: &mut Rotor, m: &mut [f64; 3]) {
-        let r = *rotor;
-        let (r1, m1) = exact_free_body(moments, *m, [r.s, r.e12, r.e13, r.e23], tau);
-        *rotor = Rotor::new(r1[0], r1[1], r1[2], r1[3]);
-        *m = m1;
+    fn free(flow: &FreeFlow, tau: f64, rotor: &mut Rotor, m: &mut [f64; 3]) {
+        match *flow {
+            FreeFlow::Symmetric {
+                axis,
+                plane,
+                precession,
+                spin,
+            } => {
+                // The symmetric top's closed form (the lecture's, as in `SymmetricTop`):
+                // R(tau) = exp(-L tau / 2 i_p) R exp(-Omega_r tau / 2) with
+                // Omega_r = w_a (i_p - i_a) / i_p I e_a; the body momentum turns with the
+                // right factor. Inline rather than through `exact_free_body`, which spends
+                // twice as long on quaternion conversions and on classifying the body.
+                let body_momentum = omega_from_vector(*m);
+                let left = (rotor.sandwich(body_momentum) * (precession * tau)).exp();
+                let right = (plane * (spin * m[axis] * tau)).exp();
+                *rotor = left * *rotor * right;
+                *m = omega_to_vector(right.reverse().sandwich(body_momentum));
+            }
+            FreeFlow::Elliptic(moments) => {
+                let r = *rotor;
+                let (r1, m1) = exact_free_body(moments, *m, [r.s, r.e12, r.e13, r.e23], tau);
+                *rotor = Rotor::new(r1[0], r1[1], r1[2], r1[3]);
+                *m = m1;
+            }
+        }
+    }
+}
+
+/// The free flow chosen once per call: the closed form of a symmetric body, or the
+/// elliptic flow.
+#[derive(Clone, Copy, Debug)]
+enum FreeFlow {
+    Symmetric {
+        /// The symmetry axis (0, 1, 2).
+        axis: usize,
+        /// `I e_a`, the plane the body spins in.
+        plane: Bivector,
+        /// `-1 / (2 i_p)`: `left = exp(precession tau L)`.
+        precession: f64,
+        /// `-(i_p - i_a) / (2 i_a i_p)`: `right = exp(spin m_a tau I e_a)`.
+        spin: f64,
+    },
+    Elliptic([f64; 3]),
+}
+
+impl FreeFlow {
+    fn of(body: &RigidBody) -> FreeFlow {
+        let moments = body.moments();
+        match body.symmetry_axis(DEFAULT_SYMMETRY_TOLERANCE) {
+            Some(axis) => {
+                let (i_a, i_p) = (moments[axis], moments[(axis + 1) % 3]);
+                let mut e = [0.0; 3];
+                e[axis] = 1.0;
+                FreeFlow::Symmetric {
+                    axis,
+                    plane: omega_from_vector(e),
+                    precession: -0.5 / i_p,
+                    spin: -0.5 * (i_p - i_a) / (i_a * i_p),
+                }
+            }
+            None => FreeFlow::Elliptic(moments),
+        }
     }
 }
 
@@ -93,6 +153,7 @@ impl Integrator for ExactSplitting {
         let w = omega_to_vector(state.omega);
         let mut m: [f64; 3] = std::array::from_fn(|k| moments[k] * w[k]);
         let mut rotor = state.rotor;
+        let flow = FreeFlow::of(body);
         if body.has_torque() {
             // The kick still owed at the current time: the closing half of the last stage.
             let mut owed = 0.0;
@@ -103,18 +164,22 @@ impl Integrator for ExactSplitting {
                 for g in self.scheme.gammas() {
                     let tau = g * h;
                     Splitting::kick(body, time, owed + 0.5 * tau, rotor, &mut m);
-                    Self::free(moments, tau, &mut rotor, &mut m);
+                    Self::free(&flow, tau, &mut rotor, &mut m);
                     offset += tau;
                     time = start + offset;
                     owed = 0.5 * tau;
                 }
-                // Land each step on its grid time rather than on the sum of the stages.
+                // Land each step on its grid time rather than on the sum of the stages, and
+                // keep the rotor unit against the rounding of the closed form's products.
                 time = start + h;
+                if matches!(flow, FreeFlow::Symmetric { .. }) {
+                    rotor = unit(rotor);
+                }
             }
             Splitting::kick(body, time, owed, rotor, &mut m);
         } else {
             // No kicks: the free flows of every stage compose exactly into one.
-            Self::free(moments, dt, &mut rotor, &mut m);
+            Self::free(&flow, dt, &mut rotor, &mut m);
         }
         let omega = omega_from_vector(std::array::from_fn(|k| m[k] / moments[k]));
         check_finite(self.name(), State { rotor, omega })
