@@ -22,10 +22,11 @@ mod common;
 use common::{batch1, chain, config, conv, group, BATCH};
 use criterion::{black_box, criterion_group, criterion_main, Criterion, SamplingMode, Throughput};
 use ga_benches::rigid::{
-    body, dop853, fewest_steps, hlw_momentum, initial_state, loosest_tolerance,
-    matrix_attitude_error, CLOSED_FORM, HLW_MOMENTS, HLW_ROTOR_AT_10, HV_MOMENTS, HV_MOMENTUM,
-    MILLION_GROUP, RACE_GROUP, RACE_PEER, RACE_TARGET, RACE_T_END, RK4_STEP, SHORT_FAT_MOMENTS,
-    SHORT_FAT_MOMENTUM, STEP_GROUP, TOP_GROUP,
+    body, dop853, dop853_heavy, fewest_steps, heavy_top, hlw_momentum, initial_state,
+    loosest_tolerance, matrix_attitude_error, rotor_matrix_error, CLOSED_FORM, HEAVY_GROUP,
+    HEAVY_T_END, HLW_MOMENTS, HLW_ROTOR_AT_10, HV_MOMENTS, HV_MOMENTUM, MILLION_GROUP, RACE_GROUP,
+    RACE_PEER, RACE_TARGET, RACE_T_END, RK4_STEP, SHORT_FAT_MOMENTS, SHORT_FAT_MOMENTUM,
+    STEP_GROUP, TOP_GROUP,
 };
 use ga_benches::rng::XorShift64;
 use ga_core::f64::g3::{Bivector, Rotor};
@@ -34,7 +35,8 @@ use ga_rigid::dynamics::{
 };
 use ga_rigid::error::Error;
 use ga_rigid::integrators::{
-    DormandPrince, ExactFreeBody, ImplicitMidpoint, Integrator, LieRk4, Rk4, Splitting,
+    ComposedSplitting, DormandPrince, ExactFreeBody, ExactSplitting, ImplicitMidpoint, Integrator,
+    LieDop853, LieRk4, Rk4, Splitting,
 };
 use ga_rigid::report::attitude_error;
 use rayon::prelude::*;
@@ -317,6 +319,18 @@ fn race(c: &mut Criterion) {
         name: "splitting",
         build: Box::new(move |n| boxed(splitting(n, order))),
     });
+    // Its compositions to order 4, 6, 8 (issue 11), with the same axis order.
+    for (name, k) in [("splitting-4", 4), ("splitting-6", 6), ("splitting-8", 8)] {
+        fixed.push(FixedStep {
+            name,
+            build: Box::new(move |n| {
+                boxed(
+                    ComposedSplitting::new(RACE_T_END / n as f64, k)
+                        .and_then(|m| m.with_axis_order(order)),
+                )
+            }),
+        });
+    }
 
     let mut g = c.benchmark_group(RACE_GROUP);
     for method in &fixed {
@@ -325,7 +339,7 @@ fn race(c: &mut Criterion) {
         })
         .unwrap_or_else(|| panic!("{} misses {RACE_TARGET:e} at 2^23 steps", method.name));
         let h = RACE_T_END / n as f64;
-        let detail = if method.name == "splitting" {
+        let detail = if method.name.starts_with("splitting") {
             format!(", axis order {order:?}")
         } else {
             String::new()
@@ -340,6 +354,8 @@ fn race(c: &mut Criterion) {
         if method.name == "splitting" {
             // About 30 ms an integration: 10 flat samples fit the measurement time.
             g.sample_size(10).sampling_mode(SamplingMode::Flat);
+        } else {
+            g.sample_size(30).sampling_mode(SamplingMode::Auto);
         }
         g.bench_function(method.name, |bencher| bencher.iter(timed));
     }
@@ -363,6 +379,24 @@ fn race(c: &mut Criterion) {
     let timed = || run(Box::new(dopri(tol).expect("valid tolerance")));
     assert!(error_of(timed()) <= RACE_TARGET);
     g.bench_function("dopri5", |bencher| bencher.iter(timed));
+
+    let lie = |tol: f64| LieDop853::new(tol, tol);
+    let (tol, error) = loosest_tolerance(RACE_TARGET, |tol| {
+        lie(tol).map(|m| error_of(run(Box::new(m))))
+    })
+    .expect("lie-dop853 reaches the target");
+    let mut method = lie(tol).expect("valid tolerance");
+    method
+        .advance(&body, 0.0, initial, RACE_T_END)
+        .expect("finite");
+    let stats = method.stats();
+    println!(
+        "  {:<18} rtol = atol = {tol:.3e}, {} steps ({} rejected), error {error:.3e}",
+        "lie-dop853", stats.accepted, stats.rejected
+    );
+    let timed = || run(Box::new(lie(tol).expect("valid tolerance")));
+    assert!(error_of(timed()) <= RACE_TARGET);
+    g.bench_function("lie-dop853", |bencher| bencher.iter(timed));
 
     let exact = || run(Box::new(ExactFreeBody::new()));
     let error = exact().map_or(f64::INFINITY, |s| attitude_error(s.rotor, published));
@@ -390,9 +424,169 @@ fn race(c: &mut Criterion) {
     g.finish();
 }
 
+/// The race to an attitude error of 1e-10 at t = 4 on the report's heavy top (a Lagrange
+/// top: gravity on a centre of mass up the symmetry axis), against a Dop853 run at
+/// tolerance 1e-14 that two independent geometric methods confirm. Every side is measured
+/// by `|M - M_ref|_F / sqrt 2` against that reference.
+fn heavy_race(c: &mut Criterion) {
+    let (body, initial) = heavy_top();
+    let (reference, stats) = dop853_heavy(HEAVY_T_END, 1e-14).expect("the reference integrates");
+    // Two geometric methods that share no code with Dop853 or with each other's steps.
+    let lie_end = LieDop853::new(1e-14, 1e-14)
+        .and_then(|mut m| m.advance(&body, 0.0, initial, HEAVY_T_END))
+        .expect("finite");
+    let split_end = ExactSplitting::with_order(HEAVY_T_END / 400.0, 8)
+        .and_then(|mut m| m.advance(&body, 0.0, initial, HEAVY_T_END))
+        .expect("finite");
+    let (lie_gap, split_gap) = (
+        rotor_matrix_error(lie_end.rotor, &reference),
+        rotor_matrix_error(split_end.rotor, &reference),
+    );
+    println!(
+        "{HEAVY_GROUP}: reference Dop853 at 1e-14 ({} steps); lie-dop853 at 1e-14 differs by \
+         {lie_gap:.2e}, exact-splitting-8 at h = 1e-2 by {split_gap:.2e}",
+        stats.accepted_steps
+    );
+    assert!(
+        lie_gap < 1e-11 && split_gap < 1e-11,
+        "the reference is not tight"
+    );
+
+    let run = |mut method: Box<dyn Integrator>| {
+        method.advance(&body, 0.0, black_box(initial), HEAVY_T_END)
+    };
+    let error_of = |end: Result<State, Error>| {
+        end.map_or(f64::INFINITY, |s| rotor_matrix_error(s.rotor, &reference))
+    };
+    let h = |n: u64| HEAVY_T_END / n as f64;
+    let fixed = vec![
+        FixedStep {
+            name: "rk4",
+            build: Box::new(move |n| boxed(Rk4::new(h(n)))),
+        },
+        FixedStep {
+            name: "lie-rk4",
+            build: Box::new(move |n| boxed(LieRk4::new(h(n)))),
+        },
+        FixedStep {
+            name: "splitting",
+            build: Box::new(move |n| boxed(Splitting::new(h(n)))),
+        },
+        FixedStep {
+            name: "splitting-4",
+            build: Box::new(move |n| boxed(ComposedSplitting::new(h(n), 4))),
+        },
+        FixedStep {
+            name: "splitting-8",
+            build: Box::new(move |n| boxed(ComposedSplitting::new(h(n), 8))),
+        },
+        FixedStep {
+            name: "exact-splitting",
+            build: Box::new(move |n| boxed(ExactSplitting::new(h(n)))),
+        },
+        FixedStep {
+            name: "exact-splitting-4",
+            build: Box::new(move |n| boxed(ExactSplitting::with_order(h(n), 4))),
+        },
+        FixedStep {
+            name: "exact-splitting-6",
+            build: Box::new(move |n| boxed(ExactSplitting::with_order(h(n), 6))),
+        },
+        FixedStep {
+            name: "exact-splitting-8",
+            build: Box::new(move |n| boxed(ExactSplitting::with_order(h(n), 8))),
+        },
+    ];
+    println!("{HEAVY_GROUP}: cheapest settings to {RACE_TARGET:e} at t = {HEAVY_T_END}:");
+    let mut g = c.benchmark_group(HEAVY_GROUP);
+    for method in &fixed {
+        let found = fewest_steps(RACE_TARGET, 64, 1 << 22, |n| {
+            error_of((method.build)(n).and_then(run))
+        });
+        let Some((n, error)) = found else {
+            println!("  {:<18} misses {RACE_TARGET:e} at 2^22 steps", method.name);
+            continue;
+        };
+        println!(
+            "  {:<18} {n} steps (h = {:.4e}), error {error:.3e}",
+            method.name,
+            h(n)
+        );
+        let timed = || run((method.build)(n).expect("valid step"));
+        assert!(error_of(timed()) <= RACE_TARGET, "{}", method.name);
+        let slow = n > 20_000 || (method.name.starts_with("splitting") && n > 2_000);
+        if slow {
+            g.sample_size(10).sampling_mode(SamplingMode::Flat);
+        } else {
+            g.sample_size(30).sampling_mode(SamplingMode::Auto);
+        }
+        g.bench_function(method.name, |bencher| bencher.iter(timed));
+    }
+    g.sample_size(30).sampling_mode(SamplingMode::Auto);
+
+    let dopri = |tol: f64| DormandPrince::new(tol, tol);
+    match loosest_tolerance(RACE_TARGET, |tol| {
+        dopri(tol).map(|m| error_of(run(Box::new(m))))
+    }) {
+        Some((tol, error)) => {
+            println!(
+                "  {:<18} rtol = atol = {tol:.3e}, error {error:.3e}",
+                "dopri5"
+            );
+            let timed = || run(Box::new(dopri(tol).expect("valid tolerance")));
+            g.bench_function("dopri5", |bencher| bencher.iter(timed));
+        }
+        None => println!(
+            "  {:<18} misses {RACE_TARGET:e} at tolerance 1e-15",
+            "dopri5"
+        ),
+    }
+    let lie = |tol: f64| LieDop853::new(tol, tol);
+    let (tol, error) = loosest_tolerance(RACE_TARGET, |tol| {
+        lie(tol).map(|m| error_of(run(Box::new(m))))
+    })
+    .expect("lie-dop853 reaches the target");
+    let mut method = lie(tol).expect("valid tolerance");
+    method
+        .advance(&body, 0.0, initial, HEAVY_T_END)
+        .expect("finite");
+    println!(
+        "  {:<18} rtol = atol = {tol:.3e}, {} steps ({} rejected), error {error:.3e}",
+        "lie-dop853",
+        method.stats().accepted,
+        method.stats().rejected
+    );
+    let timed = || run(Box::new(lie(tol).expect("valid tolerance")));
+    g.bench_function("lie-dop853", |bencher| bencher.iter(timed));
+
+    let peer = |tol: f64| dop853_heavy(HEAVY_T_END, black_box(tol));
+    let (tol, error) = loosest_tolerance(RACE_TARGET, |tol| {
+        peer(tol).map(|(end, _)| matrix_attitude_error_against(&end, &reference))
+    })
+    .expect("Dop853 reaches the target");
+    let (_, stats) = peer(tol).expect("integrates");
+    println!(
+        "  {RACE_PEER:<18} rtol = atol = {tol:.3e}, {} steps ({} rejected), {} evaluations, \
+         error {error:.3e}",
+        stats.accepted_steps, stats.rejected_steps, stats.num_eval
+    );
+    let timed = || peer(tol).expect("integrates").0;
+    g.bench_function(RACE_PEER, |bencher| bencher.iter(timed));
+    g.finish();
+}
+
+/// `|M - M_ref|_F / sqrt 2` between two matrix states.
+fn matrix_attitude_error_against(
+    y: &ga_benches::rigid::MatrixState,
+    reference: &ga_benches::rigid::MatrixState,
+) -> f64 {
+    let squared: f64 = (0..9).map(|i| (y[i] - reference[i]).powi(2)).sum();
+    (0.5 * squared).sqrt()
+}
+
 criterion_group! {
     name = benches;
     config = config();
-    targets = symmetric_top, integrator_step, million, race
+    targets = symmetric_top, integrator_step, million, race, heavy_race
 }
 criterion_main!(benches);

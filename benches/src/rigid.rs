@@ -6,8 +6,8 @@
 //! The criterion group and function names live here too, so that `benches/rigid.rs` and
 //! [`crate::summary`] cannot disagree about them.
 
-use ga_core::f64::g3::{Rotor, Sandwich, Vector};
-use ga_rigid::dynamics::{omega_from_vector, RigidBody, State};
+use ga_core::f64::g3::{Bivector, Rotor, Sandwich, Vector};
+use ga_rigid::dynamics::{omega_from_vector, Gravity, RigidBody, State};
 use ode_solvers::dop_shared::{IntegrationError, Stats};
 use ode_solvers::{Dop853, OutputType, SVector, System};
 
@@ -25,7 +25,16 @@ pub const MILLION_GROUP: &str = "rigid/symmetric_top_1e6/f64/batch";
 /// per integration from t = 0.
 pub const RACE_GROUP: &str = "rigid/reach_1e-10/f64/hlw_t10";
 /// The geometric-algebra time-stepping methods of the race, each at its cheapest setting.
-pub const RACE_GA_METHODS: [&str; 4] = ["rk4", "lie-rk4", "dopri5", "splitting"];
+pub const RACE_GA_METHODS: [&str; 8] = [
+    "rk4",
+    "lie-rk4",
+    "dopri5",
+    "splitting",
+    "splitting-4",
+    "splitting-6",
+    "splitting-8",
+    "lie-dop853",
+];
 /// ode_solvers' Dop853 on the matrix form, in [`RACE_GROUP`].
 pub const RACE_PEER: &str = "ode_solvers dop853";
 
@@ -33,6 +42,134 @@ pub const RACE_PEER: &str = "ode_solvers dop853";
 pub const RACE_TARGET: f64 = 1e-10;
 /// The end time of the race.
 pub const RACE_T_END: f64 = 10.0;
+
+/// The race to [`RACE_TARGET`] at t = [`HEAVY_T_END`] on the report's heavy top (a
+/// Lagrange top: no exact flow, a closed-form free flow), per integration from t = 0.
+pub const HEAVY_GROUP: &str = "rigid/reach_1e-10/f64/heavy_top_t4";
+/// The geometric-algebra methods of the heavy-top race.
+pub const HEAVY_GA_METHODS: [&str; 11] = [
+    "rk4",
+    "lie-rk4",
+    "dopri5",
+    "splitting",
+    "splitting-4",
+    "splitting-8",
+    "exact-splitting",
+    "exact-splitting-4",
+    "exact-splitting-6",
+    "exact-splitting-8",
+    "lie-dop853",
+];
+/// The end time of the heavy-top race (the report's).
+pub const HEAVY_T_END: f64 = 4.0;
+/// The report's heavy top: moments (1, 1, 0.5) about the pivot.
+pub const HEAVY_MOMENTS: [f64; 3] = [1.0, 1.0, 0.5];
+/// Its centre of mass, 0.5 up the symmetry axis (body frame).
+pub const HEAVY_COM: [f64; 3] = [0.0, 0.0, 0.5];
+/// Its weight `m g` in the space frame (mass 1).
+pub const HEAVY_WEIGHT: [f64; 3] = [0.0, 0.0, -9.81];
+/// Its spin about the symmetry axis at t = 0, rad/s.
+pub const HEAVY_SPIN: f64 = 20.0;
+/// Its tilt at t = 0: a turn by 0.3 rad in the e23 plane.
+pub const HEAVY_TILT: f64 = 0.3;
+
+/// The report's heavy top as a library body and its state at t = 0.
+#[must_use]
+pub fn heavy_top() -> (RigidBody, State) {
+    let [gx, gy, gz] = HEAVY_WEIGHT;
+    let [cx, cy, cz] = HEAVY_COM;
+    let body = RigidBody::new(HEAVY_MOMENTS)
+        .expect("physical moments")
+        .with_torque(Gravity {
+            mass: 1.0,
+            g: Vector::new(gx, gy, gz),
+            com_offset: Vector::new(cx, cy, cz),
+        });
+    let state = State {
+        rotor: (Bivector::E23 * (-0.5 * HEAVY_TILT)).exp(),
+        omega: omega_from_vector([0.0, 0.0, HEAVY_SPIN]),
+    };
+    (body, state)
+}
+
+/// The heavy top in matrix form for Dop853: [`EulerMatrix`] plus the gravity couple
+/// `tau = c x (M^T (m g))`, linear in `M`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HeavyMatrix {
+    free: EulerMatrix,
+}
+
+impl HeavyMatrix {
+    /// The report's heavy top.
+    #[must_use]
+    pub fn new() -> Self {
+        HeavyMatrix {
+            free: EulerMatrix::new(HEAVY_MOMENTS),
+        }
+    }
+
+    /// `M(0)` and `m(0)` of [`heavy_top`].
+    #[must_use]
+    pub fn initial() -> MatrixState {
+        let (_, state) = heavy_top();
+        let mut y = MatrixState::zeros();
+        for (i, entry) in rotation_matrix(state.rotor).into_iter().enumerate() {
+            y[i] = entry;
+        }
+        y[11] = HEAVY_MOMENTS[2] * HEAVY_SPIN;
+        y
+    }
+}
+
+impl Default for HeavyMatrix {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl System<f64, MatrixState> for HeavyMatrix {
+    #[inline]
+    fn system(&self, t: f64, y: &MatrixState, dy: &mut MatrixState) {
+        self.free.system(t, y, dy);
+        let f: [f64; 3] =
+            std::array::from_fn(|c| (0..3).map(|r| y[3 * r + c] * HEAVY_WEIGHT[r]).sum());
+        let tau = cross(HEAVY_COM, f);
+        for k in 0..3 {
+            dy[9 + k] += tau[k];
+        }
+    }
+}
+
+/// Dop853 on [`HeavyMatrix`] over `[0, t_end]` with `rtol = atol = tol`: the end state
+/// and ode_solvers' counts.
+pub fn dop853_heavy(t_end: f64, tol: f64) -> Result<(MatrixState, Stats), IntegrationError> {
+    let mut stepper = Dop853::new(
+        HeavyMatrix::new(),
+        0.0,
+        t_end,
+        t_end,
+        HeavyMatrix::initial(),
+        tol,
+        tol,
+    );
+    stepper.set_output(OutputType::Sparse);
+    let stats = stepper.integrate()?;
+    let end = *stepper
+        .y_out()
+        .last()
+        .expect("the initial state is always kept");
+    Ok((end, stats))
+}
+
+/// The attitude error of a rotor against a reference matrix, `|M(R) - M_ref|_F / sqrt 2`
+/// (the measure of [`matrix_attitude_error`], so that both sides of the heavy-top race
+/// are measured alike).
+#[must_use]
+pub fn rotor_matrix_error(rotor: Rotor, reference: &MatrixState) -> f64 {
+    let m = rotation_matrix(rotor);
+    let squared: f64 = (0..9).map(|i| (m[i] - reference[i]).powi(2)).sum();
+    (0.5 * squared).sqrt()
+}
 
 /// Hairer-Lubich-Wanner's body (*Geometric Numerical Integration*): moments (2, 1, 2/3).
 pub const HLW_MOMENTS: [f64; 3] = [2.0, 1.0, 2.0 / 3.0];
@@ -236,7 +373,6 @@ pub fn loosest_tolerance<E>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use ga_core::f64::g3::Bivector;
     use ga_rigid::integrators::{ExactFreeBody, Integrator};
     use ga_rigid::report::attitude_error;
 
@@ -284,6 +420,27 @@ mod tests {
         for k in 0..3 {
             assert!((m[k] - published[k]).abs() < 2e-12, "m{k} = {}", m[k]);
         }
+    }
+
+    /// The matrix form of the heavy top against the library's own equations: one
+    /// right-hand side evaluation agrees, so the race compares the same motion.
+    #[test]
+    fn heavy_matrix_rates_match_the_library() {
+        let (body, state) = heavy_top();
+        let y = HeavyMatrix::initial();
+        let mut dy = MatrixState::zeros();
+        HeavyMatrix::new().system(0.0, &y, &mut dy);
+        let rate = body.omega_rate(0.0, &state);
+        let w = ga_rigid::dynamics::omega_to_vector(rate);
+        for k in 0..3 {
+            let expected = HEAVY_MOMENTS[k] * w[k];
+            assert!(
+                (dy[9 + k] - expected).abs() < 1e-12,
+                "{k}: {} vs {expected}",
+                dy[9 + k]
+            );
+        }
+        assert!(rotor_matrix_error(state.rotor, &y) < 1e-15);
     }
 
     #[test]

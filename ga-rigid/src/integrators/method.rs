@@ -11,7 +11,8 @@ use std::str::FromStr;
 use crate::error::{self, Error};
 
 use super::{
-    ClosedForm, DormandPrince, ExactFreeBody, ImplicitMidpoint, Integrator, LieRk4, Rk4, Splitting,
+    ClosedForm, ComposedSplitting, DormandPrince, ExactFreeBody, ExactSplitting, ImplicitMidpoint,
+    Integrator, LieDop853, LieRk4, Rk4, Splitting,
 };
 
 /// The absolute tolerance paired with a relative tolerance `tol` for Dormand-Prince, as a
@@ -35,6 +36,23 @@ pub enum Method {
     Dopri,
     /// The exact flow of the free body through Jacobi elliptic functions.
     Exact,
+    /// Torque kick, exact free flow, torque kick (Celledoni-Fassò-Säfström-Zanna), order 2.
+    ExactSplitting,
+    /// The exact-flow splitting composed to order 4 (Suzuki).
+    ExactSplitting4,
+    /// The exact-flow splitting composed to order 6 (Kahan-Li).
+    ExactSplitting6,
+    /// The exact-flow splitting composed to order 8 (Kahan-Li).
+    ExactSplitting8,
+    /// The DLM splitting composed to order 4 (Suzuki).
+    Splitting4,
+    /// The DLM splitting composed to order 6 (Kahan-Li).
+    Splitting6,
+    /// The DLM splitting composed to order 8 (Kahan-Li).
+    Splitting8,
+    /// Adaptive Runge-Kutta-Munthe-Kaas on the rotor group with the Dormand-Prince 8(5,3)
+    /// pair.
+    LieDop853,
 }
 
 /// The kind of step control a method takes.
@@ -73,7 +91,7 @@ pub struct MethodInfo {
 }
 
 /// The registry: one row per method, in the order tables list them.
-pub const METHODS: [MethodInfo; 7] = [
+pub const METHODS: [MethodInfo; 15] = [
     MethodInfo {
         method: Method::ClosedForm,
         name: "closed-form",
@@ -115,6 +133,54 @@ pub const METHODS: [MethodInfo; 7] = [
         name: "dopri",
         kind: StepKind::Adaptive,
         summary: "adaptive Dormand-Prince 5(4)",
+    },
+    MethodInfo {
+        method: Method::ExactSplitting,
+        name: "exact-splitting",
+        kind: StepKind::Fixed,
+        summary: "torque kick, exact free flow, torque kick (Celledoni et al. 2008), order two",
+    },
+    MethodInfo {
+        method: Method::ExactSplitting4,
+        name: "exact-splitting-4",
+        kind: StepKind::Fixed,
+        summary: "the exact-flow splitting composed to order four (Suzuki)",
+    },
+    MethodInfo {
+        method: Method::ExactSplitting6,
+        name: "exact-splitting-6",
+        kind: StepKind::Fixed,
+        summary: "the exact-flow splitting composed to order six (Kahan-Li)",
+    },
+    MethodInfo {
+        method: Method::ExactSplitting8,
+        name: "exact-splitting-8",
+        kind: StepKind::Fixed,
+        summary: "the exact-flow splitting composed to order eight (Kahan-Li)",
+    },
+    MethodInfo {
+        method: Method::Splitting4,
+        name: "splitting-4",
+        kind: StepKind::Fixed,
+        summary: "the axis-rotation splitting composed to order four (Suzuki)",
+    },
+    MethodInfo {
+        method: Method::Splitting6,
+        name: "splitting-6",
+        kind: StepKind::Fixed,
+        summary: "the axis-rotation splitting composed to order six (Kahan-Li)",
+    },
+    MethodInfo {
+        method: Method::Splitting8,
+        name: "splitting-8",
+        kind: StepKind::Fixed,
+        summary: "the axis-rotation splitting composed to order eight (Kahan-Li)",
+    },
+    MethodInfo {
+        method: Method::LieDop853,
+        name: "lie-dop853",
+        kind: StepKind::Adaptive,
+        summary: "adaptive order-8 Runge-Kutta-Munthe-Kaas on the rotor group (DOP853 pair)",
     },
 ];
 
@@ -209,6 +275,13 @@ impl Method {
                 format!("method {name} takes a fixed step dt"),
             )),
         };
+        let tolerance = || match step {
+            Step::Tolerance(tol) => Ok(tol),
+            _ => Err(Error::invalid(
+                "tol",
+                format!("method {name} is adaptive and takes a tolerance tol"),
+            )),
+        };
         Ok(match self {
             Method::ClosedForm => Box::new(ClosedForm::new()),
             Method::Exact => Box::new(ExactFreeBody::new()),
@@ -216,18 +289,35 @@ impl Method {
             Method::LieRk4 => Box::new(LieRk4::new(fixed()?).map_err(|e| e.at("dt"))?),
             Method::Midpoint => Box::new(ImplicitMidpoint::new(fixed()?).map_err(|e| e.at("dt"))?),
             Method::Splitting => Box::new(Splitting::new(fixed()?).map_err(|e| e.at("dt"))?),
-            Method::Dopri => match step {
-                Step::Tolerance(tol) => Box::new(
-                    DormandPrince::new(tol, tol * DOPRI_ABSOLUTE_TOLERANCE_RATIO)
-                        .map_err(|e| e.at("tol"))?,
-                ),
-                _ => {
-                    return Err(Error::invalid(
-                        "tol",
-                        format!("method {name} is adaptive and takes a tolerance tol"),
-                    ))
-                }
-            },
+            Method::Dopri => Box::new(
+                DormandPrince::new(tolerance()?, tolerance()? * DOPRI_ABSOLUTE_TOLERANCE_RATIO)
+                    .map_err(|e| e.at("tol"))?,
+            ),
+            Method::LieDop853 => Box::new(
+                LieDop853::new(tolerance()?, tolerance()? * DOPRI_ABSOLUTE_TOLERANCE_RATIO)
+                    .map_err(|e| e.at("tol"))?,
+            ),
+            Method::ExactSplitting => {
+                Box::new(ExactSplitting::new(fixed()?).map_err(|e| e.at("dt"))?)
+            }
+            Method::ExactSplitting4 => {
+                Box::new(ExactSplitting::with_order(fixed()?, 4).map_err(|e| e.at("dt"))?)
+            }
+            Method::ExactSplitting6 => {
+                Box::new(ExactSplitting::with_order(fixed()?, 6).map_err(|e| e.at("dt"))?)
+            }
+            Method::ExactSplitting8 => {
+                Box::new(ExactSplitting::with_order(fixed()?, 8).map_err(|e| e.at("dt"))?)
+            }
+            Method::Splitting4 => {
+                Box::new(ComposedSplitting::new(fixed()?, 4).map_err(|e| e.at("dt"))?)
+            }
+            Method::Splitting6 => {
+                Box::new(ComposedSplitting::new(fixed()?, 6).map_err(|e| e.at("dt"))?)
+            }
+            Method::Splitting8 => {
+                Box::new(ComposedSplitting::new(fixed()?, 8).map_err(|e| e.at("dt"))?)
+            }
         })
     }
 }

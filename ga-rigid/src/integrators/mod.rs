@@ -2,9 +2,13 @@
 //! each citing the paper it follows, all behind the one [`Integrator`] trait.
 
 mod closed_form;
+mod composed_splitting;
+mod composition;
 mod dopri;
 mod exact;
+mod exact_splitting;
 mod integrator;
+mod lie_dop853;
 mod lie_rk4;
 mod method;
 mod midpoint;
@@ -12,9 +16,13 @@ mod rk4;
 mod splitting;
 
 pub use closed_form::ClosedForm;
+pub use composed_splitting::ComposedSplitting;
+pub use composition::Composition;
 pub use dopri::{DormandPrince, DormandPrinceStats};
 pub use exact::ExactFreeBody;
+pub use exact_splitting::ExactSplitting;
 pub use integrator::Integrator;
+pub use lie_dop853::{LieDop853, LieDop853Stats};
 pub use lie_rk4::LieRk4;
 pub use method::{Method, MethodInfo, Step, StepKind, DOPRI_ABSOLUTE_TOLERANCE_RATIO, METHODS};
 pub use midpoint::ImplicitMidpoint;

@@ -77,7 +77,13 @@ impl Splitting {
     /// The free flow of `m_k^2 / 2 i_k` for time `tau`: `m` turned about `e_k` and the
     /// rotor carried along.
     #[inline]
-    fn axis_flow(moments: [f64; 3], k: usize, tau: f64, rotor: &mut Rotor, m: &mut [f64; 3]) {
+    pub(super) fn axis_flow(
+        moments: [f64; 3],
+        k: usize,
+        tau: f64,
+        rotor: &mut Rotor,
+        m: &mut [f64; 3],
+    ) {
         let theta = tau * m[k] / moments[k];
         let (a, b) = ((k + 1) % 3, (k + 2) % 3);
         let (s, c) = theta.sin_cos();
@@ -93,7 +99,7 @@ impl Splitting {
 
     /// The torque kick `m += tau_k * dt` at time `t`.
     #[inline]
-    fn kick(body: &RigidBody, t: f64, dt: f64, rotor: Rotor, m: &mut [f64; 3]) {
+    pub(super) fn kick(body: &RigidBody, t: f64, dt: f64, rotor: Rotor, m: &mut [f64; 3]) {
         let omega = omega_from_vector(std::array::from_fn(|k| m[k] / body.moments()[k]));
         let tau = omega_to_vector(body.torque(t, &State { rotor, omega }));
         for k in 0..3 {

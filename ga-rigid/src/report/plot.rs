@@ -17,7 +17,7 @@ const ERROR_FLOOR: f64 = 1e-17;
 /// [`Method::ALL`]; a method added later takes the next colour of the palette).
 #[must_use]
 pub fn method_colour(method: Method) -> RGBColor {
-    const PALETTE: [RGBColor; 10] = [
+    const PALETTE: [RGBColor; 16] = [
         RGBColor(140, 86, 75),   // brown
         RGBColor(0, 0, 0),       // black
         RGBColor(214, 39, 40),   // red
@@ -28,6 +28,13 @@ pub fn method_colour(method: Method) -> RGBColor {
         RGBColor(227, 119, 194), // pink
         RGBColor(23, 190, 207),  // cyan
         RGBColor(188, 189, 34),  // olive
+        // The high-order steppers of issue 11: darker tones, apart from the ten above.
+        RGBColor(0, 90, 50),   // dark green
+        RGBColor(8, 48, 107),  // navy
+        RGBColor(103, 0, 13),  // maroon
+        RGBColor(127, 39, 4),  // rust
+        RGBColor(63, 0, 125),  // indigo
+        RGBColor(0, 109, 119), // teal
     ];
     let index = Method::ALL.iter().position(|&m| m == method).unwrap_or(0);
     PALETTE[index % PALETTE.len()]
