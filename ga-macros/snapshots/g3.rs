@@ -32,6 +32,9 @@ pub mod g3 {
     /// The top grade: multiples of e1..en.
     pub type Pseudoscalar = Trivector;
     /// An even multivector used as a rotor: `y = R x ~R`, `R = exp(-B theta / 2)`.
+    ///
+    /// An alias, not a new type: `Debug` prints a rotor as `Even { .. }` and
+    /// `Display` as its terms (`0.7 - 0.7e12`).
     pub type Rotor = Even;
     impl ::core::convert::From<f64> for Multivector {
         #[inline]
@@ -8517,6 +8520,2911 @@ pub mod g3 {
                 e23: (x.e23 + two_s * c_e23) + (two_e13 * c_e12 - two_e12 * c_e13),
                 e123: x.e123,
             }
+        }
+    }
+    /// Writes `1 + 2e1 - 0.5e12`: each non-zero component with its blade (the scalar
+    /// without one), honouring the formatter's precision; at a precision `p`, terms
+    /// that would print as zero are left out. Zero prints as `0`.
+    fn display_terms(
+        f: &mut ::core::fmt::Formatter<'_>,
+        terms: &[(f64, &str)],
+    ) -> ::core::fmt::Result {
+        let threshold: f64 = match f.precision() {
+            Some(p) => (0..p.min(400)).fold(0.5, |t, _| t / 10.0),
+            None => 0.0,
+        };
+        let mut first = true;
+        for &(value, blade) in terms {
+            let magnitude = value.abs();
+            if magnitude <= threshold {
+                continue;
+            }
+            let negative = value.is_sign_negative() && !value.is_nan();
+            match (first, negative) {
+                (true, true) => f.write_str("-")?,
+                (true, false) => {}
+                (false, true) => f.write_str(" - ")?,
+                (false, false) => f.write_str(" + ")?,
+            }
+            match f.precision() {
+                Some(p) => write!(f, "{:.*}{}", p, magnitude, blade)?,
+                None => write!(f, "{}{}", magnitude, blade)?,
+            }
+            first = false;
+        }
+        if first {
+            f.write_str("0")?;
+        }
+        Ok(())
+    }
+    impl ::core::ops::Index<usize> for Vector {
+        type Output = f64;
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index(&self, index: usize) -> &f64 {
+            match index {
+                0usize => &self.e1,
+                1usize => &self.e2,
+                2usize => &self.e3,
+                _ => panic!("index {} out of range for `Vector` (3 components)", index),
+            }
+        }
+    }
+    impl ::core::ops::IndexMut<usize> for Vector {
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index_mut(&mut self, index: usize) -> &mut f64 {
+            match index {
+                0usize => &mut self.e1,
+                1usize => &mut self.e2,
+                2usize => &mut self.e3,
+                _ => panic!("index {} out of range for `Vector` (3 components)", index),
+            }
+        }
+    }
+    impl Vector {
+        /// The components in canonical order, by value.
+        #[inline]
+        pub fn iter(&self) -> ::core::array::IntoIter<f64, 3usize> {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::iter::IntoIterator for Vector {
+        type Item = f64;
+        type IntoIter = ::core::array::IntoIter<f64, 3usize>;
+        #[inline]
+        fn into_iter(self) -> Self::IntoIter {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::convert::From<[f64; 3usize]> for Vector {
+        #[inline]
+        fn from(components: [f64; 3usize]) -> Vector {
+            Vector::from_array(components)
+        }
+    }
+    impl ::core::convert::From<Vector> for [f64; 3usize] {
+        #[inline]
+        fn from(value: Vector) -> [f64; 3usize] {
+            value.to_array()
+        }
+    }
+    impl ::core::fmt::Display for Vector {
+        fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+            display_terms(f, &[(self.e1, "e1"), (self.e2, "e2"), (self.e3, "e3")])
+        }
+    }
+    impl Vector {
+        /// Whether every component is finite (neither infinite nor NaN).
+        #[inline]
+        #[must_use]
+        pub fn is_finite(self) -> bool {
+            self.e1.is_finite() && self.e2.is_finite() && self.e3.is_finite()
+        }
+        /// Whether any component is NaN.
+        #[inline]
+        #[must_use]
+        pub fn is_nan(self) -> bool {
+            self.e1.is_nan() || self.e2.is_nan() || self.e3.is_nan()
+        }
+    }
+    impl ::core::iter::Sum for Vector {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = Vector>>(iter: I) -> Vector {
+            iter.fold(Vector::ZERO, |total, x| total + x)
+        }
+    }
+    impl<'a> ::core::iter::Sum<&'a Vector> for Vector {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = &'a Vector>>(iter: I) -> Vector {
+            iter.fold(Vector::ZERO, |total, x| total + *x)
+        }
+    }
+    impl ::core::ops::Index<usize> for Bivector {
+        type Output = f64;
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index(&self, index: usize) -> &f64 {
+            match index {
+                0usize => &self.e12,
+                1usize => &self.e13,
+                2usize => &self.e23,
+                _ => panic!("index {} out of range for `Bivector` (3 components)", index),
+            }
+        }
+    }
+    impl ::core::ops::IndexMut<usize> for Bivector {
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index_mut(&mut self, index: usize) -> &mut f64 {
+            match index {
+                0usize => &mut self.e12,
+                1usize => &mut self.e13,
+                2usize => &mut self.e23,
+                _ => panic!("index {} out of range for `Bivector` (3 components)", index),
+            }
+        }
+    }
+    impl Bivector {
+        /// The components in canonical order, by value.
+        #[inline]
+        pub fn iter(&self) -> ::core::array::IntoIter<f64, 3usize> {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::iter::IntoIterator for Bivector {
+        type Item = f64;
+        type IntoIter = ::core::array::IntoIter<f64, 3usize>;
+        #[inline]
+        fn into_iter(self) -> Self::IntoIter {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::convert::From<[f64; 3usize]> for Bivector {
+        #[inline]
+        fn from(components: [f64; 3usize]) -> Bivector {
+            Bivector::from_array(components)
+        }
+    }
+    impl ::core::convert::From<Bivector> for [f64; 3usize] {
+        #[inline]
+        fn from(value: Bivector) -> [f64; 3usize] {
+            value.to_array()
+        }
+    }
+    impl ::core::fmt::Display for Bivector {
+        fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+            display_terms(f, &[(self.e12, "e12"), (self.e13, "e13"), (self.e23, "e23")])
+        }
+    }
+    impl Bivector {
+        /// Whether every component is finite (neither infinite nor NaN).
+        #[inline]
+        #[must_use]
+        pub fn is_finite(self) -> bool {
+            self.e12.is_finite() && self.e13.is_finite() && self.e23.is_finite()
+        }
+        /// Whether any component is NaN.
+        #[inline]
+        #[must_use]
+        pub fn is_nan(self) -> bool {
+            self.e12.is_nan() || self.e13.is_nan() || self.e23.is_nan()
+        }
+    }
+    impl ::core::iter::Sum for Bivector {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = Bivector>>(iter: I) -> Bivector {
+            iter.fold(Bivector::ZERO, |total, x| total + x)
+        }
+    }
+    impl<'a> ::core::iter::Sum<&'a Bivector> for Bivector {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = &'a Bivector>>(iter: I) -> Bivector {
+            iter.fold(Bivector::ZERO, |total, x| total + *x)
+        }
+    }
+    impl ::core::ops::Index<usize> for Trivector {
+        type Output = f64;
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index(&self, index: usize) -> &f64 {
+            match index {
+                0usize => &self.e123,
+                _ => {
+                    panic!("index {} out of range for `Trivector` (1 components)", index)
+                }
+            }
+        }
+    }
+    impl ::core::ops::IndexMut<usize> for Trivector {
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index_mut(&mut self, index: usize) -> &mut f64 {
+            match index {
+                0usize => &mut self.e123,
+                _ => {
+                    panic!("index {} out of range for `Trivector` (1 components)", index)
+                }
+            }
+        }
+    }
+    impl Trivector {
+        /// The components in canonical order, by value.
+        #[inline]
+        pub fn iter(&self) -> ::core::array::IntoIter<f64, 1usize> {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::iter::IntoIterator for Trivector {
+        type Item = f64;
+        type IntoIter = ::core::array::IntoIter<f64, 1usize>;
+        #[inline]
+        fn into_iter(self) -> Self::IntoIter {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::convert::From<[f64; 1usize]> for Trivector {
+        #[inline]
+        fn from(components: [f64; 1usize]) -> Trivector {
+            Trivector::from_array(components)
+        }
+    }
+    impl ::core::convert::From<Trivector> for [f64; 1usize] {
+        #[inline]
+        fn from(value: Trivector) -> [f64; 1usize] {
+            value.to_array()
+        }
+    }
+    impl ::core::fmt::Display for Trivector {
+        fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+            display_terms(f, &[(self.e123, "e123")])
+        }
+    }
+    impl Trivector {
+        /// Whether every component is finite (neither infinite nor NaN).
+        #[inline]
+        #[must_use]
+        pub fn is_finite(self) -> bool {
+            self.e123.is_finite()
+        }
+        /// Whether any component is NaN.
+        #[inline]
+        #[must_use]
+        pub fn is_nan(self) -> bool {
+            self.e123.is_nan()
+        }
+    }
+    impl ::core::iter::Sum for Trivector {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = Trivector>>(iter: I) -> Trivector {
+            iter.fold(Trivector::ZERO, |total, x| total + x)
+        }
+    }
+    impl<'a> ::core::iter::Sum<&'a Trivector> for Trivector {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = &'a Trivector>>(iter: I) -> Trivector {
+            iter.fold(Trivector::ZERO, |total, x| total + *x)
+        }
+    }
+    impl ::core::ops::Index<usize> for Even {
+        type Output = f64;
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index(&self, index: usize) -> &f64 {
+            match index {
+                0usize => &self.s,
+                1usize => &self.e12,
+                2usize => &self.e13,
+                3usize => &self.e23,
+                _ => panic!("index {} out of range for `Even` (4 components)", index),
+            }
+        }
+    }
+    impl ::core::ops::IndexMut<usize> for Even {
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index_mut(&mut self, index: usize) -> &mut f64 {
+            match index {
+                0usize => &mut self.s,
+                1usize => &mut self.e12,
+                2usize => &mut self.e13,
+                3usize => &mut self.e23,
+                _ => panic!("index {} out of range for `Even` (4 components)", index),
+            }
+        }
+    }
+    impl Even {
+        /// The components in canonical order, by value.
+        #[inline]
+        pub fn iter(&self) -> ::core::array::IntoIter<f64, 4usize> {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::iter::IntoIterator for Even {
+        type Item = f64;
+        type IntoIter = ::core::array::IntoIter<f64, 4usize>;
+        #[inline]
+        fn into_iter(self) -> Self::IntoIter {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::convert::From<[f64; 4usize]> for Even {
+        #[inline]
+        fn from(components: [f64; 4usize]) -> Even {
+            Even::from_array(components)
+        }
+    }
+    impl ::core::convert::From<Even> for [f64; 4usize] {
+        #[inline]
+        fn from(value: Even) -> [f64; 4usize] {
+            value.to_array()
+        }
+    }
+    impl ::core::fmt::Display for Even {
+        fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+            display_terms(
+                f,
+                &[(self.s, ""), (self.e12, "e12"), (self.e13, "e13"), (self.e23, "e23")],
+            )
+        }
+    }
+    impl Even {
+        /// Whether every component is finite (neither infinite nor NaN).
+        #[inline]
+        #[must_use]
+        pub fn is_finite(self) -> bool {
+            self.s.is_finite() && self.e12.is_finite() && self.e13.is_finite()
+                && self.e23.is_finite()
+        }
+        /// Whether any component is NaN.
+        #[inline]
+        #[must_use]
+        pub fn is_nan(self) -> bool {
+            self.s.is_nan() || self.e12.is_nan() || self.e13.is_nan()
+                || self.e23.is_nan()
+        }
+    }
+    impl ::core::iter::Sum for Even {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = Even>>(iter: I) -> Even {
+            iter.fold(Even::ZERO, |total, x| total + x)
+        }
+    }
+    impl<'a> ::core::iter::Sum<&'a Even> for Even {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = &'a Even>>(iter: I) -> Even {
+            iter.fold(Even::ZERO, |total, x| total + *x)
+        }
+    }
+    impl ::core::ops::MulAssign<Even> for Even {
+        #[inline]
+        fn mul_assign(&mut self, rhs: Even) {
+            *self = *self * rhs;
+        }
+    }
+    impl ::core::iter::Product for Even {
+        #[inline]
+        fn product<I: ::core::iter::Iterator<Item = Even>>(iter: I) -> Even {
+            iter.fold(Even::ONE, |total, x| total * x)
+        }
+    }
+    impl<'a> ::core::iter::Product<&'a Even> for Even {
+        #[inline]
+        fn product<I: ::core::iter::Iterator<Item = &'a Even>>(iter: I) -> Even {
+            iter.fold(Even::ONE, |total, x| total * *x)
+        }
+    }
+    impl ::core::ops::Index<usize> for Odd {
+        type Output = f64;
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index(&self, index: usize) -> &f64 {
+            match index {
+                0usize => &self.e1,
+                1usize => &self.e2,
+                2usize => &self.e3,
+                3usize => &self.e123,
+                _ => panic!("index {} out of range for `Odd` (4 components)", index),
+            }
+        }
+    }
+    impl ::core::ops::IndexMut<usize> for Odd {
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index_mut(&mut self, index: usize) -> &mut f64 {
+            match index {
+                0usize => &mut self.e1,
+                1usize => &mut self.e2,
+                2usize => &mut self.e3,
+                3usize => &mut self.e123,
+                _ => panic!("index {} out of range for `Odd` (4 components)", index),
+            }
+        }
+    }
+    impl Odd {
+        /// The components in canonical order, by value.
+        #[inline]
+        pub fn iter(&self) -> ::core::array::IntoIter<f64, 4usize> {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::iter::IntoIterator for Odd {
+        type Item = f64;
+        type IntoIter = ::core::array::IntoIter<f64, 4usize>;
+        #[inline]
+        fn into_iter(self) -> Self::IntoIter {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::convert::From<[f64; 4usize]> for Odd {
+        #[inline]
+        fn from(components: [f64; 4usize]) -> Odd {
+            Odd::from_array(components)
+        }
+    }
+    impl ::core::convert::From<Odd> for [f64; 4usize] {
+        #[inline]
+        fn from(value: Odd) -> [f64; 4usize] {
+            value.to_array()
+        }
+    }
+    impl ::core::fmt::Display for Odd {
+        fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+            display_terms(
+                f,
+                &[(self.e1, "e1"), (self.e2, "e2"), (self.e3, "e3"), (self.e123, "e123")],
+            )
+        }
+    }
+    impl Odd {
+        /// Whether every component is finite (neither infinite nor NaN).
+        #[inline]
+        #[must_use]
+        pub fn is_finite(self) -> bool {
+            self.e1.is_finite() && self.e2.is_finite() && self.e3.is_finite()
+                && self.e123.is_finite()
+        }
+        /// Whether any component is NaN.
+        #[inline]
+        #[must_use]
+        pub fn is_nan(self) -> bool {
+            self.e1.is_nan() || self.e2.is_nan() || self.e3.is_nan()
+                || self.e123.is_nan()
+        }
+    }
+    impl ::core::iter::Sum for Odd {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = Odd>>(iter: I) -> Odd {
+            iter.fold(Odd::ZERO, |total, x| total + x)
+        }
+    }
+    impl<'a> ::core::iter::Sum<&'a Odd> for Odd {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = &'a Odd>>(iter: I) -> Odd {
+            iter.fold(Odd::ZERO, |total, x| total + *x)
+        }
+    }
+    impl ::core::ops::Index<usize> for Multivector {
+        type Output = f64;
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index(&self, index: usize) -> &f64 {
+            match index {
+                0usize => &self.s,
+                1usize => &self.e1,
+                2usize => &self.e2,
+                3usize => &self.e3,
+                4usize => &self.e12,
+                5usize => &self.e13,
+                6usize => &self.e23,
+                7usize => &self.e123,
+                _ => {
+                    panic!(
+                        "index {} out of range for `Multivector` (8 components)", index
+                    )
+                }
+            }
+        }
+    }
+    impl ::core::ops::IndexMut<usize> for Multivector {
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index_mut(&mut self, index: usize) -> &mut f64 {
+            match index {
+                0usize => &mut self.s,
+                1usize => &mut self.e1,
+                2usize => &mut self.e2,
+                3usize => &mut self.e3,
+                4usize => &mut self.e12,
+                5usize => &mut self.e13,
+                6usize => &mut self.e23,
+                7usize => &mut self.e123,
+                _ => {
+                    panic!(
+                        "index {} out of range for `Multivector` (8 components)", index
+                    )
+                }
+            }
+        }
+    }
+    impl Multivector {
+        /// The components in canonical order, by value.
+        #[inline]
+        pub fn iter(&self) -> ::core::array::IntoIter<f64, 8usize> {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::iter::IntoIterator for Multivector {
+        type Item = f64;
+        type IntoIter = ::core::array::IntoIter<f64, 8usize>;
+        #[inline]
+        fn into_iter(self) -> Self::IntoIter {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::convert::From<[f64; 8usize]> for Multivector {
+        #[inline]
+        fn from(components: [f64; 8usize]) -> Multivector {
+            Multivector::from_array(components)
+        }
+    }
+    impl ::core::convert::From<Multivector> for [f64; 8usize] {
+        #[inline]
+        fn from(value: Multivector) -> [f64; 8usize] {
+            value.to_array()
+        }
+    }
+    impl ::core::fmt::Display for Multivector {
+        fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+            display_terms(
+                f,
+                &[
+                    (self.s, ""),
+                    (self.e1, "e1"),
+                    (self.e2, "e2"),
+                    (self.e3, "e3"),
+                    (self.e12, "e12"),
+                    (self.e13, "e13"),
+                    (self.e23, "e23"),
+                    (self.e123, "e123"),
+                ],
+            )
+        }
+    }
+    impl Multivector {
+        /// Whether every component is finite (neither infinite nor NaN).
+        #[inline]
+        #[must_use]
+        pub fn is_finite(self) -> bool {
+            self.s.is_finite() && self.e1.is_finite() && self.e2.is_finite()
+                && self.e3.is_finite() && self.e12.is_finite() && self.e13.is_finite()
+                && self.e23.is_finite() && self.e123.is_finite()
+        }
+        /// Whether any component is NaN.
+        #[inline]
+        #[must_use]
+        pub fn is_nan(self) -> bool {
+            self.s.is_nan() || self.e1.is_nan() || self.e2.is_nan() || self.e3.is_nan()
+                || self.e12.is_nan() || self.e13.is_nan() || self.e23.is_nan()
+                || self.e123.is_nan()
+        }
+    }
+    impl ::core::iter::Sum for Multivector {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = Multivector>>(iter: I) -> Multivector {
+            iter.fold(Multivector::ZERO, |total, x| total + x)
+        }
+    }
+    impl<'a> ::core::iter::Sum<&'a Multivector> for Multivector {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = &'a Multivector>>(
+            iter: I,
+        ) -> Multivector {
+            iter.fold(Multivector::ZERO, |total, x| total + *x)
+        }
+    }
+    impl ::core::ops::MulAssign<Multivector> for Multivector {
+        #[inline]
+        fn mul_assign(&mut self, rhs: Multivector) {
+            *self = *self * rhs;
+        }
+    }
+    impl ::core::iter::Product for Multivector {
+        #[inline]
+        fn product<I: ::core::iter::Iterator<Item = Multivector>>(
+            iter: I,
+        ) -> Multivector {
+            iter.fold(Multivector::ONE, |total, x| total * x)
+        }
+    }
+    impl<'a> ::core::iter::Product<&'a Multivector> for Multivector {
+        #[inline]
+        fn product<I: ::core::iter::Iterator<Item = &'a Multivector>>(
+            iter: I,
+        ) -> Multivector {
+            iter.fold(Multivector::ONE, |total, x| total * *x)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for &Vector {
+        type Output = <Vector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for &Even {
+        type Output = <Even as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for &Even {
+        type Output = <Even as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for &Even {
+        type Output = <Even as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for &Even {
+        type Output = <Even as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for &Even {
+        type Output = <Even as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for &Even {
+        type Output = <Even as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for &Even {
+        type Output = <Even as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for &Even {
+        type Output = <Even as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for &Even {
+        type Output = <Even as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for &Even {
+        type Output = <Even as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for &Even {
+        type Output = <Even as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for &Even {
+        type Output = <Even as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for &Even {
+        type Output = <Even as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for &Even {
+        type Output = <Even as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for &Even {
+        type Output = <Even as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for &Odd {
+        type Output = <Odd as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Neg for &Vector {
+        type Output = Vector;
+        #[inline]
+        fn neg(self) -> Vector {
+            -*self
+        }
+    }
+    impl ::core::ops::Neg for &Bivector {
+        type Output = Bivector;
+        #[inline]
+        fn neg(self) -> Bivector {
+            -*self
+        }
+    }
+    impl ::core::ops::Neg for &Trivector {
+        type Output = Trivector;
+        #[inline]
+        fn neg(self) -> Trivector {
+            -*self
+        }
+    }
+    impl ::core::ops::Neg for &Even {
+        type Output = Even;
+        #[inline]
+        fn neg(self) -> Even {
+            -*self
+        }
+    }
+    impl ::core::ops::Neg for &Odd {
+        type Output = Odd;
+        #[inline]
+        fn neg(self) -> Odd {
+            -*self
+        }
+    }
+    impl ::core::ops::Neg for &Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn neg(self) -> Multivector {
+            -*self
+        }
+    }
+    impl ::core::ops::Div<Vector> for f64 {
+        type Output = Vector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Vector) -> Vector {
+            let scale = 1.0 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2) + rhs.e3 * rhs.e3);
+            self
+                * Vector {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Bivector> for f64 {
+        type Output = Bivector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Bivector) -> Bivector {
+            let scale = 1.0
+                / ((rhs.e12 * rhs.e12 + rhs.e13 * rhs.e13) + rhs.e23 * rhs.e23);
+            self
+                * Bivector {
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Trivector> for f64 {
+        type Output = Trivector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Trivector) -> Trivector {
+            let scale = 1.0 / (rhs.e123 * rhs.e123);
+            self
+                * Trivector {
+                    e123: -rhs.e123 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Even> for f64 {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Even) -> Even {
+            let scale = 1.0
+                / ((rhs.s * rhs.s + rhs.e12 * rhs.e12)
+                    + (rhs.e13 * rhs.e13 + rhs.e23 * rhs.e23));
+            self
+                * Even {
+                    s: rhs.s * scale,
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Odd> for f64 {
+        type Output = Odd;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Odd) -> Odd {
+            let scale = 1.0
+                / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
+                    + (rhs.e3 * rhs.e3 + rhs.e123 * rhs.e123));
+            self
+                * Odd {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                    e123: -rhs.e123 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Vector> for Vector {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Vector) -> Even {
+            let scale = 1.0 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2) + rhs.e3 * rhs.e3);
+            self
+                * Vector {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Bivector> for Vector {
+        type Output = Odd;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Bivector) -> Odd {
+            let scale = 1.0
+                / ((rhs.e12 * rhs.e12 + rhs.e13 * rhs.e13) + rhs.e23 * rhs.e23);
+            self
+                * Bivector {
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Trivector> for Vector {
+        type Output = Bivector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Trivector) -> Bivector {
+            let scale = 1.0 / (rhs.e123 * rhs.e123);
+            self
+                * Trivector {
+                    e123: -rhs.e123 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Even> for Vector {
+        type Output = Odd;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Even) -> Odd {
+            let scale = 1.0
+                / ((rhs.s * rhs.s + rhs.e12 * rhs.e12)
+                    + (rhs.e13 * rhs.e13 + rhs.e23 * rhs.e23));
+            self
+                * Even {
+                    s: rhs.s * scale,
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Odd> for Vector {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Odd) -> Even {
+            let scale = 1.0
+                / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
+                    + (rhs.e3 * rhs.e3 + rhs.e123 * rhs.e123));
+            self
+                * Odd {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                    e123: -rhs.e123 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Vector> for Bivector {
+        type Output = Odd;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Vector) -> Odd {
+            let scale = 1.0 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2) + rhs.e3 * rhs.e3);
+            self
+                * Vector {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Bivector> for Bivector {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Bivector) -> Even {
+            let scale = 1.0
+                / ((rhs.e12 * rhs.e12 + rhs.e13 * rhs.e13) + rhs.e23 * rhs.e23);
+            self
+                * Bivector {
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Trivector> for Bivector {
+        type Output = Vector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Trivector) -> Vector {
+            let scale = 1.0 / (rhs.e123 * rhs.e123);
+            self
+                * Trivector {
+                    e123: -rhs.e123 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Even> for Bivector {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Even) -> Even {
+            let scale = 1.0
+                / ((rhs.s * rhs.s + rhs.e12 * rhs.e12)
+                    + (rhs.e13 * rhs.e13 + rhs.e23 * rhs.e23));
+            self
+                * Even {
+                    s: rhs.s * scale,
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Odd> for Bivector {
+        type Output = Odd;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Odd) -> Odd {
+            let scale = 1.0
+                / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
+                    + (rhs.e3 * rhs.e3 + rhs.e123 * rhs.e123));
+            self
+                * Odd {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                    e123: -rhs.e123 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Vector> for Trivector {
+        type Output = Bivector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Vector) -> Bivector {
+            let scale = 1.0 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2) + rhs.e3 * rhs.e3);
+            self
+                * Vector {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Bivector> for Trivector {
+        type Output = Vector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Bivector) -> Vector {
+            let scale = 1.0
+                / ((rhs.e12 * rhs.e12 + rhs.e13 * rhs.e13) + rhs.e23 * rhs.e23);
+            self
+                * Bivector {
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Trivector> for Trivector {
+        type Output = f64;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Trivector) -> f64 {
+            let scale = 1.0 / (rhs.e123 * rhs.e123);
+            self
+                * Trivector {
+                    e123: -rhs.e123 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Even> for Trivector {
+        type Output = Odd;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Even) -> Odd {
+            let scale = 1.0
+                / ((rhs.s * rhs.s + rhs.e12 * rhs.e12)
+                    + (rhs.e13 * rhs.e13 + rhs.e23 * rhs.e23));
+            self
+                * Even {
+                    s: rhs.s * scale,
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Odd> for Trivector {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Odd) -> Even {
+            let scale = 1.0
+                / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
+                    + (rhs.e3 * rhs.e3 + rhs.e123 * rhs.e123));
+            self
+                * Odd {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                    e123: -rhs.e123 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Vector> for Even {
+        type Output = Odd;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Vector) -> Odd {
+            let scale = 1.0 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2) + rhs.e3 * rhs.e3);
+            self
+                * Vector {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Bivector> for Even {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Bivector) -> Even {
+            let scale = 1.0
+                / ((rhs.e12 * rhs.e12 + rhs.e13 * rhs.e13) + rhs.e23 * rhs.e23);
+            self
+                * Bivector {
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Trivector> for Even {
+        type Output = Odd;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Trivector) -> Odd {
+            let scale = 1.0 / (rhs.e123 * rhs.e123);
+            self
+                * Trivector {
+                    e123: -rhs.e123 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Even> for Even {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Even) -> Even {
+            let scale = 1.0
+                / ((rhs.s * rhs.s + rhs.e12 * rhs.e12)
+                    + (rhs.e13 * rhs.e13 + rhs.e23 * rhs.e23));
+            self
+                * Even {
+                    s: rhs.s * scale,
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Odd> for Even {
+        type Output = Odd;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Odd) -> Odd {
+            let scale = 1.0
+                / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
+                    + (rhs.e3 * rhs.e3 + rhs.e123 * rhs.e123));
+            self
+                * Odd {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                    e123: -rhs.e123 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Vector> for Odd {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Vector) -> Even {
+            let scale = 1.0 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2) + rhs.e3 * rhs.e3);
+            self
+                * Vector {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Bivector> for Odd {
+        type Output = Odd;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Bivector) -> Odd {
+            let scale = 1.0
+                / ((rhs.e12 * rhs.e12 + rhs.e13 * rhs.e13) + rhs.e23 * rhs.e23);
+            self
+                * Bivector {
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Trivector> for Odd {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Trivector) -> Even {
+            let scale = 1.0 / (rhs.e123 * rhs.e123);
+            self
+                * Trivector {
+                    e123: -rhs.e123 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Even> for Odd {
+        type Output = Odd;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Even) -> Odd {
+            let scale = 1.0
+                / ((rhs.s * rhs.s + rhs.e12 * rhs.e12)
+                    + (rhs.e13 * rhs.e13 + rhs.e23 * rhs.e23));
+            self
+                * Even {
+                    s: rhs.s * scale,
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Odd> for Odd {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Odd) -> Even {
+            let scale = 1.0
+                / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
+                    + (rhs.e3 * rhs.e3 + rhs.e123 * rhs.e123));
+            self
+                * Odd {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                    e123: -rhs.e123 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Vector> for Multivector {
+        type Output = Multivector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Vector) -> Multivector {
+            let scale = 1.0 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2) + rhs.e3 * rhs.e3);
+            self
+                * Vector {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Bivector> for Multivector {
+        type Output = Multivector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Bivector) -> Multivector {
+            let scale = 1.0
+                / ((rhs.e12 * rhs.e12 + rhs.e13 * rhs.e13) + rhs.e23 * rhs.e23);
+            self
+                * Bivector {
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Trivector> for Multivector {
+        type Output = Multivector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Trivector) -> Multivector {
+            let scale = 1.0 / (rhs.e123 * rhs.e123);
+            self
+                * Trivector {
+                    e123: -rhs.e123 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Even> for Multivector {
+        type Output = Multivector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Even) -> Multivector {
+            let scale = 1.0
+                / ((rhs.s * rhs.s + rhs.e12 * rhs.e12)
+                    + (rhs.e13 * rhs.e13 + rhs.e23 * rhs.e23));
+            self
+                * Even {
+                    s: rhs.s * scale,
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Odd> for Multivector {
+        type Output = Multivector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Odd) -> Multivector {
+            let scale = 1.0
+                / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
+                    + (rhs.e3 * rhs.e3 + rhs.e123 * rhs.e123));
+            self
+                * Odd {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                    e123: -rhs.e123 * scale,
+                }
         }
     }
     /// `LEFT[i][j] = (k, sign)`: `e_i e_j = sign e_k` by component index. Used only by

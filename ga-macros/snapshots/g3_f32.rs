@@ -32,6 +32,9 @@ pub mod g3 {
     /// The top grade: multiples of e1..en.
     pub type Pseudoscalar = Trivector;
     /// An even multivector used as a rotor: `y = R x ~R`, `R = exp(-B theta / 2)`.
+    ///
+    /// An alias, not a new type: `Debug` prints a rotor as `Even { .. }` and
+    /// `Display` as its terms (`0.7 - 0.7e12`).
     pub type Rotor = Even;
     impl ::core::convert::From<f32> for Multivector {
         #[inline]
@@ -42,6 +45,59 @@ pub mod g3 {
             }
         }
     }
+    ///The floating-point functions beyond `core` that this algebra calls, in one place (the `math:` key of `algebra!` chooses `std` or `libm`).
+    #[allow(dead_code)]
+    mod math {
+        #[inline]
+        pub(super) fn sqrt(x: f32) -> f32 {
+            x.sqrt()
+        }
+        #[inline]
+        pub(super) fn sin(x: f32) -> f32 {
+            x.sin()
+        }
+        #[inline]
+        pub(super) fn cos(x: f32) -> f32 {
+            x.cos()
+        }
+        #[inline]
+        pub(super) fn cosh(x: f32) -> f32 {
+            x.cosh()
+        }
+        #[inline]
+        pub(super) fn sinh(x: f32) -> f32 {
+            x.sinh()
+        }
+        #[inline]
+        pub(super) fn asinh(x: f32) -> f32 {
+            x.asinh()
+        }
+        #[inline]
+        pub(super) fn ln_1p(x: f32) -> f32 {
+            x.ln_1p()
+        }
+        #[inline]
+        pub(super) fn sin_cos(x: f32) -> (f32, f32) {
+            x.sin_cos()
+        }
+        #[inline]
+        pub(super) fn atan2(y: f32, x: f32) -> f32 {
+            y.atan2(x)
+        }
+        #[inline]
+        pub(super) fn hypot(x: f32, y: f32) -> f32 {
+            x.hypot(y)
+        }
+    }
+    /// A sum of squares at least this large lost nothing that matters to underflow: a
+    /// square in the subnormal range is off by at most half its spacing,
+    /// `MIN_POSITIVE * EPSILON / 2`, below `EPSILON^2` relative to this bound.
+    #[allow(dead_code)]
+    const SQUARE_MIN: f32 = f32::MIN_POSITIVE / f32::EPSILON;
+    /// A sum of squares at most this large had no square overflow, and its reciprocal
+    /// (and that of its square root) is a normal number.
+    #[allow(dead_code)]
+    const SQUARE_MAX: f32 = f32::EPSILON / f32::MIN_POSITIVE;
     ///A vector: components e1, e2, e3.
     #[derive(Clone, Copy, Debug, PartialEq, Default)]
     #[repr(C)]
@@ -157,42 +213,92 @@ pub mod g3 {
             }
         }
         /// `<A ~A>_0`: the squared norm (negative or zero for some elements of
-        /// non-Euclidean metrics).
+        /// non-Euclidean metrics). Computed as it stands, so it overflows once a component
+        /// passes the square root of the largest float; `norm` does not.
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f32 {
             (self.e1 * self.e1 + self.e2 * self.e2) + self.e3 * self.e3
         }
-        /// `sqrt(|<A ~A>_0|)`.
+        /// `sqrt(|<A ~A>_0|)`, right to a few ulps for every finite `A` whose norm is
+        /// finite: when the squares could have overflowed or underflowed, the components
+        /// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
         #[inline]
         #[must_use]
         pub fn norm(self) -> f32 {
-            self.norm_squared().abs().sqrt()
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return math::sqrt(squared);
+            }
+            let largest: f32 = self.e1.abs().max(self.e2.abs()).max(self.e3.abs());
+            if !(largest > 0.0 && largest < f32::INFINITY) {
+                return if largest == f32::INFINITY {
+                    largest
+                } else {
+                    math::sqrt(squared)
+                };
+            }
+            let descaled = Vector {
+                e1: self.e1 / largest,
+                e2: self.e2 / largest,
+                e3: self.e3 / largest,
+            };
+            math::sqrt(descaled.norm_squared().abs()) * largest
         }
-        /// `self / self.norm()`: non-finite when the norm is zero (see `try_normalized`).
+        /// `self / self.norm()`, scaled like `norm` so that it is a unit value for every
+        /// finite non-null `A`; non-finite when the norm is zero or not finite (see
+        /// `try_normalized`).
         #[inline]
         #[must_use]
         pub fn normalized(self) -> Self {
-            self * (1.0 / self.norm())
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return self * (1.0 / math::sqrt(squared));
+            }
+            let largest: f32 = self.e1.abs().max(self.e2.abs()).max(self.e3.abs());
+            let descaled = Vector {
+                e1: self.e1 / largest,
+                e2: self.e2 / largest,
+                e3: self.e3 / largest,
+            };
+            descaled * (1.0 / math::sqrt(descaled.norm_squared().abs()))
         }
-        /// `self / self.norm()`, or `None` when the norm is zero or not finite.
+        /// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
+        /// not finite.
         #[inline]
         #[must_use]
         pub fn try_normalized(self) -> Option<Self> {
-            let norm = self.norm();
-            if norm > 0.0 && norm.is_finite() { Some(self * (1.0 / norm)) } else { None }
+            let normalized = self.normalized();
+            if normalized.to_array().iter().all(|c| c.is_finite()) {
+                Some(normalized)
+            } else {
+                None
+            }
         }
         /// The inverse `~A / (A ~A)` (here `A ~A` is a scalar for every `A`), or `None`
-        /// when `A ~A` is zero or the result is not finite.
+        /// when `A ~A` is zero or the result is not finite. Right to a few ulps
+        /// relative whenever the inverse is a normal number: when `A ~A` could have
+        /// overflowed or underflowed, `A` is first divided by its largest component.
         #[inline]
         #[must_use]
         pub fn inverse(self) -> Option<Vector> {
-            let denominator = (self.e1 * self.e1 + self.e2 * self.e2)
+            let denominator: f32 = (self.e1 * self.e1 + self.e2 * self.e2)
                 + self.e3 * self.e3;
-            if denominator == 0.0 {
-                return None;
-            }
-            let inverse = self.reverse() * (1.0 / denominator);
+            let inverse = if denominator.abs() >= SQUARE_MIN
+                && denominator.abs() <= SQUARE_MAX
+            {
+                self.reverse() * (1.0 / denominator)
+            } else {
+                let largest: f32 = self.e1.abs().max(self.e2.abs()).max(self.e3.abs());
+                let descaled = Vector {
+                    e1: self.e1 / largest,
+                    e2: self.e2 / largest,
+                    e3: self.e3 / largest,
+                };
+                let denominator: f32 = (descaled.e1 * descaled.e1
+                    + descaled.e2 * descaled.e2) + descaled.e3 * descaled.e3;
+                descaled.reverse() * ((1.0 / denominator) / largest)
+            };
             if inverse.to_array().iter().all(|c| c.is_finite()) {
                 Some(inverse.into())
             } else {
@@ -225,11 +331,19 @@ pub mod g3 {
         /// induction. `None` when this is not a blade (to rounding) or a factor is null.
         #[must_use]
         pub fn factor(self) -> Option<[Vector; 1usize]> {
-            let blade = Multivector::from(self);
-            let size = blade.to_array().iter().map(|c| c * c).sum::<f32>().sqrt();
-            if !(size > 0.0) || !size.is_finite() {
+            if !self.to_array().iter().all(|c| c.is_finite()) {
                 return None;
             }
+            let largest = self.to_array().iter().fold(0.0 as f32, |m, c| m.max(c.abs()));
+            if !(largest > 0.0) {
+                return None;
+            }
+            let blade = Multivector::from(Vector {
+                e1: self.e1 / largest,
+                e2: self.e2 / largest,
+                e3: self.e3 / largest,
+            });
+            let size = math::sqrt(blade.to_array().iter().map(|c| c * c).sum::<f32>());
             let mut rest = blade;
             let mut factors = [Vector::ZERO; 1usize];
             for slot in factors.iter_mut().take(1usize - 1) {
@@ -276,14 +390,19 @@ pub mod g3 {
                 .iter()
                 .zip(blade.to_array())
                 .map(|(p, b)| (p - b) * (p - b))
-                .sum::<f32>()
-                .sqrt();
+                .sum::<f32>();
+            let error = math::sqrt(error);
             let scale = factors
                 .iter()
-                .map(|f| f.to_array().iter().map(|c| c * c).sum::<f32>().sqrt())
+                .map(|f| math::sqrt(f.to_array().iter().map(|c| c * c).sum::<f32>()))
                 .product::<f32>()
                 .max(size);
-            if error <= 1024.0 * f32::EPSILON * scale { Some(factors) } else { None }
+            if error <= 1024.0 * f32::EPSILON * scale {
+                factors[0] = factors[0] * largest;
+                Some(factors)
+            } else {
+                None
+            }
         }
     }
     ///A grade-2 multivector: components e12, e13, e23.
@@ -401,42 +520,96 @@ pub mod g3 {
             }
         }
         /// `<A ~A>_0`: the squared norm (negative or zero for some elements of
-        /// non-Euclidean metrics).
+        /// non-Euclidean metrics). Computed as it stands, so it overflows once a component
+        /// passes the square root of the largest float; `norm` does not.
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f32 {
             (self.e12 * self.e12 + self.e13 * self.e13) + self.e23 * self.e23
         }
-        /// `sqrt(|<A ~A>_0|)`.
+        /// `sqrt(|<A ~A>_0|)`, right to a few ulps for every finite `A` whose norm is
+        /// finite: when the squares could have overflowed or underflowed, the components
+        /// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
         #[inline]
         #[must_use]
         pub fn norm(self) -> f32 {
-            self.norm_squared().abs().sqrt()
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return math::sqrt(squared);
+            }
+            let largest: f32 = self.e12.abs().max(self.e13.abs()).max(self.e23.abs());
+            if !(largest > 0.0 && largest < f32::INFINITY) {
+                return if largest == f32::INFINITY {
+                    largest
+                } else {
+                    math::sqrt(squared)
+                };
+            }
+            let descaled = Bivector {
+                e12: self.e12 / largest,
+                e13: self.e13 / largest,
+                e23: self.e23 / largest,
+            };
+            math::sqrt(descaled.norm_squared().abs()) * largest
         }
-        /// `self / self.norm()`: non-finite when the norm is zero (see `try_normalized`).
+        /// `self / self.norm()`, scaled like `norm` so that it is a unit value for every
+        /// finite non-null `A`; non-finite when the norm is zero or not finite (see
+        /// `try_normalized`).
         #[inline]
         #[must_use]
         pub fn normalized(self) -> Self {
-            self * (1.0 / self.norm())
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return self * (1.0 / math::sqrt(squared));
+            }
+            let largest: f32 = self.e12.abs().max(self.e13.abs()).max(self.e23.abs());
+            let descaled = Bivector {
+                e12: self.e12 / largest,
+                e13: self.e13 / largest,
+                e23: self.e23 / largest,
+            };
+            descaled * (1.0 / math::sqrt(descaled.norm_squared().abs()))
         }
-        /// `self / self.norm()`, or `None` when the norm is zero or not finite.
+        /// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
+        /// not finite.
         #[inline]
         #[must_use]
         pub fn try_normalized(self) -> Option<Self> {
-            let norm = self.norm();
-            if norm > 0.0 && norm.is_finite() { Some(self * (1.0 / norm)) } else { None }
+            let normalized = self.normalized();
+            if normalized.to_array().iter().all(|c| c.is_finite()) {
+                Some(normalized)
+            } else {
+                None
+            }
         }
         /// The inverse `~A / (A ~A)` (here `A ~A` is a scalar for every `A`), or `None`
-        /// when `A ~A` is zero or the result is not finite.
+        /// when `A ~A` is zero or the result is not finite. Right to a few ulps
+        /// relative whenever the inverse is a normal number: when `A ~A` could have
+        /// overflowed or underflowed, `A` is first divided by its largest component.
         #[inline]
         #[must_use]
         pub fn inverse(self) -> Option<Bivector> {
-            let denominator = (self.e12 * self.e12 + self.e13 * self.e13)
+            let denominator: f32 = (self.e12 * self.e12 + self.e13 * self.e13)
                 + self.e23 * self.e23;
-            if denominator == 0.0 {
-                return None;
-            }
-            let inverse = self.reverse() * (1.0 / denominator);
+            let inverse = if denominator.abs() >= SQUARE_MIN
+                && denominator.abs() <= SQUARE_MAX
+            {
+                self.reverse() * (1.0 / denominator)
+            } else {
+                let largest: f32 = self
+                    .e12
+                    .abs()
+                    .max(self.e13.abs())
+                    .max(self.e23.abs());
+                let descaled = Bivector {
+                    e12: self.e12 / largest,
+                    e13: self.e13 / largest,
+                    e23: self.e23 / largest,
+                };
+                let denominator: f32 = (descaled.e12 * descaled.e12
+                    + descaled.e13 * descaled.e13) + descaled.e23 * descaled.e23;
+                descaled.reverse() * ((1.0 / denominator) / largest)
+            };
             if inverse.to_array().iter().all(|c| c.is_finite()) {
                 Some(inverse.into())
             } else {
@@ -475,11 +648,19 @@ pub mod g3 {
         /// induction. `None` when this is not a blade (to rounding) or a factor is null.
         #[must_use]
         pub fn factor(self) -> Option<[Vector; 2usize]> {
-            let blade = Multivector::from(self);
-            let size = blade.to_array().iter().map(|c| c * c).sum::<f32>().sqrt();
-            if !(size > 0.0) || !size.is_finite() {
+            if !self.to_array().iter().all(|c| c.is_finite()) {
                 return None;
             }
+            let largest = self.to_array().iter().fold(0.0 as f32, |m, c| m.max(c.abs()));
+            if !(largest > 0.0) {
+                return None;
+            }
+            let blade = Multivector::from(Bivector {
+                e12: self.e12 / largest,
+                e13: self.e13 / largest,
+                e23: self.e23 / largest,
+            });
+            let size = math::sqrt(blade.to_array().iter().map(|c| c * c).sum::<f32>());
             let mut rest = blade;
             let mut factors = [Vector::ZERO; 2usize];
             for slot in factors.iter_mut().take(2usize - 1) {
@@ -526,14 +707,19 @@ pub mod g3 {
                 .iter()
                 .zip(blade.to_array())
                 .map(|(p, b)| (p - b) * (p - b))
-                .sum::<f32>()
-                .sqrt();
+                .sum::<f32>();
+            let error = math::sqrt(error);
             let scale = factors
                 .iter()
-                .map(|f| f.to_array().iter().map(|c| c * c).sum::<f32>().sqrt())
+                .map(|f| math::sqrt(f.to_array().iter().map(|c| c * c).sum::<f32>()))
                 .product::<f32>()
                 .max(size);
-            if error <= 1024.0 * f32::EPSILON * scale { Some(factors) } else { None }
+            if error <= 1024.0 * f32::EPSILON * scale {
+                factors[0] = factors[0] * largest;
+                Some(factors)
+            } else {
+                None
+            }
         }
     }
     ///A grade-3 multivector: components e123.
@@ -617,41 +803,84 @@ pub mod g3 {
             self.e123
         }
         /// `<A ~A>_0`: the squared norm (negative or zero for some elements of
-        /// non-Euclidean metrics).
+        /// non-Euclidean metrics). Computed as it stands, so it overflows once a component
+        /// passes the square root of the largest float; `norm` does not.
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f32 {
             self.e123 * self.e123
         }
-        /// `sqrt(|<A ~A>_0|)`.
+        /// `sqrt(|<A ~A>_0|)`, right to a few ulps for every finite `A` whose norm is
+        /// finite: when the squares could have overflowed or underflowed, the components
+        /// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
         #[inline]
         #[must_use]
         pub fn norm(self) -> f32 {
-            self.norm_squared().abs().sqrt()
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return math::sqrt(squared);
+            }
+            let largest: f32 = self.e123.abs();
+            if !(largest > 0.0 && largest < f32::INFINITY) {
+                return if largest == f32::INFINITY {
+                    largest
+                } else {
+                    math::sqrt(squared)
+                };
+            }
+            let descaled = Trivector {
+                e123: self.e123 / largest,
+            };
+            math::sqrt(descaled.norm_squared().abs()) * largest
         }
-        /// `self / self.norm()`: non-finite when the norm is zero (see `try_normalized`).
+        /// `self / self.norm()`, scaled like `norm` so that it is a unit value for every
+        /// finite non-null `A`; non-finite when the norm is zero or not finite (see
+        /// `try_normalized`).
         #[inline]
         #[must_use]
         pub fn normalized(self) -> Self {
-            self * (1.0 / self.norm())
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return self * (1.0 / math::sqrt(squared));
+            }
+            let largest: f32 = self.e123.abs();
+            let descaled = Trivector {
+                e123: self.e123 / largest,
+            };
+            descaled * (1.0 / math::sqrt(descaled.norm_squared().abs()))
         }
-        /// `self / self.norm()`, or `None` when the norm is zero or not finite.
+        /// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
+        /// not finite.
         #[inline]
         #[must_use]
         pub fn try_normalized(self) -> Option<Self> {
-            let norm = self.norm();
-            if norm > 0.0 && norm.is_finite() { Some(self * (1.0 / norm)) } else { None }
+            let normalized = self.normalized();
+            if normalized.to_array().iter().all(|c| c.is_finite()) {
+                Some(normalized)
+            } else {
+                None
+            }
         }
         /// The inverse `~A / (A ~A)` (here `A ~A` is a scalar for every `A`), or `None`
-        /// when `A ~A` is zero or the result is not finite.
+        /// when `A ~A` is zero or the result is not finite. Right to a few ulps
+        /// relative whenever the inverse is a normal number: when `A ~A` could have
+        /// overflowed or underflowed, `A` is first divided by its largest component.
         #[inline]
         #[must_use]
         pub fn inverse(self) -> Option<Trivector> {
-            let denominator = self.e123 * self.e123;
-            if denominator == 0.0 {
-                return None;
-            }
-            let inverse = self.reverse() * (1.0 / denominator);
+            let denominator: f32 = self.e123 * self.e123;
+            let inverse = if denominator.abs() >= SQUARE_MIN
+                && denominator.abs() <= SQUARE_MAX
+            {
+                self.reverse() * (1.0 / denominator)
+            } else {
+                let largest: f32 = self.e123.abs();
+                let descaled = Trivector {
+                    e123: self.e123 / largest,
+                };
+                let denominator: f32 = descaled.e123 * descaled.e123;
+                descaled.reverse() * ((1.0 / denominator) / largest)
+            };
             if inverse.to_array().iter().all(|c| c.is_finite()) {
                 Some(inverse.into())
             } else {
@@ -680,11 +909,17 @@ pub mod g3 {
         /// induction. `None` when this is not a blade (to rounding) or a factor is null.
         #[must_use]
         pub fn factor(self) -> Option<[Vector; 3usize]> {
-            let blade = Multivector::from(self);
-            let size = blade.to_array().iter().map(|c| c * c).sum::<f32>().sqrt();
-            if !(size > 0.0) || !size.is_finite() {
+            if !self.to_array().iter().all(|c| c.is_finite()) {
                 return None;
             }
+            let largest = self.to_array().iter().fold(0.0 as f32, |m, c| m.max(c.abs()));
+            if !(largest > 0.0) {
+                return None;
+            }
+            let blade = Multivector::from(Trivector {
+                e123: self.e123 / largest,
+            });
+            let size = math::sqrt(blade.to_array().iter().map(|c| c * c).sum::<f32>());
             let mut rest = blade;
             let mut factors = [Vector::ZERO; 3usize];
             for slot in factors.iter_mut().take(3usize - 1) {
@@ -731,14 +966,19 @@ pub mod g3 {
                 .iter()
                 .zip(blade.to_array())
                 .map(|(p, b)| (p - b) * (p - b))
-                .sum::<f32>()
-                .sqrt();
+                .sum::<f32>();
+            let error = math::sqrt(error);
             let scale = factors
                 .iter()
-                .map(|f| f.to_array().iter().map(|c| c * c).sum::<f32>().sqrt())
+                .map(|f| math::sqrt(f.to_array().iter().map(|c| c * c).sum::<f32>()))
                 .product::<f32>()
                 .max(size);
-            if error <= 1024.0 * f32::EPSILON * scale { Some(factors) } else { None }
+            if error <= 1024.0 * f32::EPSILON * scale {
+                factors[0] = factors[0] * largest;
+                Some(factors)
+            } else {
+                None
+            }
         }
     }
     ///An even multivector (a rotor when unit): components s, e12, e13, e23.
@@ -867,43 +1107,112 @@ pub mod g3 {
             }
         }
         /// `<A ~A>_0`: the squared norm (negative or zero for some elements of
-        /// non-Euclidean metrics).
+        /// non-Euclidean metrics). Computed as it stands, so it overflows once a component
+        /// passes the square root of the largest float; `norm` does not.
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f32 {
             (self.s * self.s + self.e12 * self.e12)
                 + (self.e13 * self.e13 + self.e23 * self.e23)
         }
-        /// `sqrt(|<A ~A>_0|)`.
+        /// `sqrt(|<A ~A>_0|)`, right to a few ulps for every finite `A` whose norm is
+        /// finite: when the squares could have overflowed or underflowed, the components
+        /// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
         #[inline]
         #[must_use]
         pub fn norm(self) -> f32 {
-            self.norm_squared().abs().sqrt()
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return math::sqrt(squared);
+            }
+            let largest: f32 = self
+                .s
+                .abs()
+                .max(self.e12.abs())
+                .max(self.e13.abs())
+                .max(self.e23.abs());
+            if !(largest > 0.0 && largest < f32::INFINITY) {
+                return if largest == f32::INFINITY {
+                    largest
+                } else {
+                    math::sqrt(squared)
+                };
+            }
+            let descaled = Even {
+                s: self.s / largest,
+                e12: self.e12 / largest,
+                e13: self.e13 / largest,
+                e23: self.e23 / largest,
+            };
+            math::sqrt(descaled.norm_squared().abs()) * largest
         }
-        /// `self / self.norm()`: non-finite when the norm is zero (see `try_normalized`).
+        /// `self / self.norm()`, scaled like `norm` so that it is a unit value for every
+        /// finite non-null `A`; non-finite when the norm is zero or not finite (see
+        /// `try_normalized`).
         #[inline]
         #[must_use]
         pub fn normalized(self) -> Self {
-            self * (1.0 / self.norm())
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return self * (1.0 / math::sqrt(squared));
+            }
+            let largest: f32 = self
+                .s
+                .abs()
+                .max(self.e12.abs())
+                .max(self.e13.abs())
+                .max(self.e23.abs());
+            let descaled = Even {
+                s: self.s / largest,
+                e12: self.e12 / largest,
+                e13: self.e13 / largest,
+                e23: self.e23 / largest,
+            };
+            descaled * (1.0 / math::sqrt(descaled.norm_squared().abs()))
         }
-        /// `self / self.norm()`, or `None` when the norm is zero or not finite.
+        /// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
+        /// not finite.
         #[inline]
         #[must_use]
         pub fn try_normalized(self) -> Option<Self> {
-            let norm = self.norm();
-            if norm > 0.0 && norm.is_finite() { Some(self * (1.0 / norm)) } else { None }
+            let normalized = self.normalized();
+            if normalized.to_array().iter().all(|c| c.is_finite()) {
+                Some(normalized)
+            } else {
+                None
+            }
         }
         /// The inverse `~A / (A ~A)` (here `A ~A` is a scalar for every `A`), or `None`
-        /// when `A ~A` is zero or the result is not finite.
+        /// when `A ~A` is zero or the result is not finite. Right to a few ulps
+        /// relative whenever the inverse is a normal number: when `A ~A` could have
+        /// overflowed or underflowed, `A` is first divided by its largest component.
         #[inline]
         #[must_use]
         pub fn inverse(self) -> Option<Even> {
-            let denominator = (self.s * self.s + self.e12 * self.e12)
+            let denominator: f32 = (self.s * self.s + self.e12 * self.e12)
                 + (self.e13 * self.e13 + self.e23 * self.e23);
-            if denominator == 0.0 {
-                return None;
-            }
-            let inverse = self.reverse() * (1.0 / denominator);
+            let inverse = if denominator.abs() >= SQUARE_MIN
+                && denominator.abs() <= SQUARE_MAX
+            {
+                self.reverse() * (1.0 / denominator)
+            } else {
+                let largest: f32 = self
+                    .s
+                    .abs()
+                    .max(self.e12.abs())
+                    .max(self.e13.abs())
+                    .max(self.e23.abs());
+                let descaled = Even {
+                    s: self.s / largest,
+                    e12: self.e12 / largest,
+                    e13: self.e13 / largest,
+                    e23: self.e23 / largest,
+                };
+                let denominator: f32 = (descaled.s * descaled.s
+                    + descaled.e12 * descaled.e12)
+                    + (descaled.e13 * descaled.e13 + descaled.e23 * descaled.e23);
+                descaled.reverse() * ((1.0 / denominator) / largest)
+            };
             if inverse.to_array().iter().all(|c| c.is_finite()) {
                 Some(inverse.into())
             } else {
@@ -1062,43 +1371,112 @@ pub mod g3 {
             }
         }
         /// `<A ~A>_0`: the squared norm (negative or zero for some elements of
-        /// non-Euclidean metrics).
+        /// non-Euclidean metrics). Computed as it stands, so it overflows once a component
+        /// passes the square root of the largest float; `norm` does not.
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f32 {
             (self.e1 * self.e1 + self.e2 * self.e2)
                 + (self.e3 * self.e3 + self.e123 * self.e123)
         }
-        /// `sqrt(|<A ~A>_0|)`.
+        /// `sqrt(|<A ~A>_0|)`, right to a few ulps for every finite `A` whose norm is
+        /// finite: when the squares could have overflowed or underflowed, the components
+        /// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
         #[inline]
         #[must_use]
         pub fn norm(self) -> f32 {
-            self.norm_squared().abs().sqrt()
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return math::sqrt(squared);
+            }
+            let largest: f32 = self
+                .e1
+                .abs()
+                .max(self.e2.abs())
+                .max(self.e3.abs())
+                .max(self.e123.abs());
+            if !(largest > 0.0 && largest < f32::INFINITY) {
+                return if largest == f32::INFINITY {
+                    largest
+                } else {
+                    math::sqrt(squared)
+                };
+            }
+            let descaled = Odd {
+                e1: self.e1 / largest,
+                e2: self.e2 / largest,
+                e3: self.e3 / largest,
+                e123: self.e123 / largest,
+            };
+            math::sqrt(descaled.norm_squared().abs()) * largest
         }
-        /// `self / self.norm()`: non-finite when the norm is zero (see `try_normalized`).
+        /// `self / self.norm()`, scaled like `norm` so that it is a unit value for every
+        /// finite non-null `A`; non-finite when the norm is zero or not finite (see
+        /// `try_normalized`).
         #[inline]
         #[must_use]
         pub fn normalized(self) -> Self {
-            self * (1.0 / self.norm())
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return self * (1.0 / math::sqrt(squared));
+            }
+            let largest: f32 = self
+                .e1
+                .abs()
+                .max(self.e2.abs())
+                .max(self.e3.abs())
+                .max(self.e123.abs());
+            let descaled = Odd {
+                e1: self.e1 / largest,
+                e2: self.e2 / largest,
+                e3: self.e3 / largest,
+                e123: self.e123 / largest,
+            };
+            descaled * (1.0 / math::sqrt(descaled.norm_squared().abs()))
         }
-        /// `self / self.norm()`, or `None` when the norm is zero or not finite.
+        /// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
+        /// not finite.
         #[inline]
         #[must_use]
         pub fn try_normalized(self) -> Option<Self> {
-            let norm = self.norm();
-            if norm > 0.0 && norm.is_finite() { Some(self * (1.0 / norm)) } else { None }
+            let normalized = self.normalized();
+            if normalized.to_array().iter().all(|c| c.is_finite()) {
+                Some(normalized)
+            } else {
+                None
+            }
         }
         /// The inverse `~A / (A ~A)` (here `A ~A` is a scalar for every `A`), or `None`
-        /// when `A ~A` is zero or the result is not finite.
+        /// when `A ~A` is zero or the result is not finite. Right to a few ulps
+        /// relative whenever the inverse is a normal number: when `A ~A` could have
+        /// overflowed or underflowed, `A` is first divided by its largest component.
         #[inline]
         #[must_use]
         pub fn inverse(self) -> Option<Odd> {
-            let denominator = (self.e1 * self.e1 + self.e2 * self.e2)
+            let denominator: f32 = (self.e1 * self.e1 + self.e2 * self.e2)
                 + (self.e3 * self.e3 + self.e123 * self.e123);
-            if denominator == 0.0 {
-                return None;
-            }
-            let inverse = self.reverse() * (1.0 / denominator);
+            let inverse = if denominator.abs() >= SQUARE_MIN
+                && denominator.abs() <= SQUARE_MAX
+            {
+                self.reverse() * (1.0 / denominator)
+            } else {
+                let largest: f32 = self
+                    .e1
+                    .abs()
+                    .max(self.e2.abs())
+                    .max(self.e3.abs())
+                    .max(self.e123.abs());
+                let descaled = Odd {
+                    e1: self.e1 / largest,
+                    e2: self.e2 / largest,
+                    e3: self.e3 / largest,
+                    e123: self.e123 / largest,
+                };
+                let denominator: f32 = (descaled.e1 * descaled.e1
+                    + descaled.e2 * descaled.e2)
+                    + (descaled.e3 * descaled.e3 + descaled.e123 * descaled.e123);
+                descaled.reverse() * ((1.0 / denominator) / largest)
+            };
             if inverse.to_array().iter().all(|c| c.is_finite()) {
                 Some(inverse.into())
             } else {
@@ -1303,7 +1681,8 @@ pub mod g3 {
             }
         }
         /// `<A ~A>_0`: the squared norm (negative or zero for some elements of
-        /// non-Euclidean metrics).
+        /// non-Euclidean metrics). Computed as it stands, so it overflows once a component
+        /// passes the square root of the largest float; `norm` does not.
         #[inline]
         #[must_use]
         pub fn norm_squared(self) -> f32 {
@@ -1312,24 +1691,88 @@ pub mod g3 {
                 + ((self.e12 * self.e12 + self.e13 * self.e13)
                     + (self.e23 * self.e23 + self.e123 * self.e123))
         }
-        /// `sqrt(|<A ~A>_0|)`.
+        /// `sqrt(|<A ~A>_0|)`, right to a few ulps for every finite `A` whose norm is
+        /// finite: when the squares could have overflowed or underflowed, the components
+        /// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
         #[inline]
         #[must_use]
         pub fn norm(self) -> f32 {
-            self.norm_squared().abs().sqrt()
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return math::sqrt(squared);
+            }
+            let largest: f32 = self
+                .s
+                .abs()
+                .max(self.e1.abs())
+                .max(self.e2.abs())
+                .max(self.e3.abs())
+                .max(self.e12.abs())
+                .max(self.e13.abs())
+                .max(self.e23.abs())
+                .max(self.e123.abs());
+            if !(largest > 0.0 && largest < f32::INFINITY) {
+                return if largest == f32::INFINITY {
+                    largest
+                } else {
+                    math::sqrt(squared)
+                };
+            }
+            let descaled = Multivector {
+                s: self.s / largest,
+                e1: self.e1 / largest,
+                e2: self.e2 / largest,
+                e3: self.e3 / largest,
+                e12: self.e12 / largest,
+                e13: self.e13 / largest,
+                e23: self.e23 / largest,
+                e123: self.e123 / largest,
+            };
+            math::sqrt(descaled.norm_squared().abs()) * largest
         }
-        /// `self / self.norm()`: non-finite when the norm is zero (see `try_normalized`).
+        /// `self / self.norm()`, scaled like `norm` so that it is a unit value for every
+        /// finite non-null `A`; non-finite when the norm is zero or not finite (see
+        /// `try_normalized`).
         #[inline]
         #[must_use]
         pub fn normalized(self) -> Self {
-            self * (1.0 / self.norm())
+            let squared = self.norm_squared().abs();
+            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+                return self * (1.0 / math::sqrt(squared));
+            }
+            let largest: f32 = self
+                .s
+                .abs()
+                .max(self.e1.abs())
+                .max(self.e2.abs())
+                .max(self.e3.abs())
+                .max(self.e12.abs())
+                .max(self.e13.abs())
+                .max(self.e23.abs())
+                .max(self.e123.abs());
+            let descaled = Multivector {
+                s: self.s / largest,
+                e1: self.e1 / largest,
+                e2: self.e2 / largest,
+                e3: self.e3 / largest,
+                e12: self.e12 / largest,
+                e13: self.e13 / largest,
+                e23: self.e23 / largest,
+                e123: self.e123 / largest,
+            };
+            descaled * (1.0 / math::sqrt(descaled.norm_squared().abs()))
         }
-        /// `self / self.norm()`, or `None` when the norm is zero or not finite.
+        /// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
+        /// not finite.
         #[inline]
         #[must_use]
         pub fn try_normalized(self) -> Option<Self> {
-            let norm = self.norm();
-            if norm > 0.0 && norm.is_finite() { Some(self * (1.0 / norm)) } else { None }
+            let normalized = self.normalized();
+            if normalized.to_array().iter().all(|c| c.is_finite()) {
+                Some(normalized)
+            } else {
+                None
+            }
         }
         /// The inverse, by solving `A X = 1` (`A ~A` is not a scalar for this type), or
         /// `None` when `A` is singular.
@@ -8563,6 +9006,2911 @@ pub mod g3 {
             }
         }
     }
+    /// Writes `1 + 2e1 - 0.5e12`: each non-zero component with its blade (the scalar
+    /// without one), honouring the formatter's precision; at a precision `p`, terms
+    /// that would print as zero are left out. Zero prints as `0`.
+    fn display_terms(
+        f: &mut ::core::fmt::Formatter<'_>,
+        terms: &[(f32, &str)],
+    ) -> ::core::fmt::Result {
+        let threshold: f32 = match f.precision() {
+            Some(p) => (0..p.min(400)).fold(0.5, |t, _| t / 10.0),
+            None => 0.0,
+        };
+        let mut first = true;
+        for &(value, blade) in terms {
+            let magnitude = value.abs();
+            if magnitude <= threshold {
+                continue;
+            }
+            let negative = value.is_sign_negative() && !value.is_nan();
+            match (first, negative) {
+                (true, true) => f.write_str("-")?,
+                (true, false) => {}
+                (false, true) => f.write_str(" - ")?,
+                (false, false) => f.write_str(" + ")?,
+            }
+            match f.precision() {
+                Some(p) => write!(f, "{:.*}{}", p, magnitude, blade)?,
+                None => write!(f, "{}{}", magnitude, blade)?,
+            }
+            first = false;
+        }
+        if first {
+            f.write_str("0")?;
+        }
+        Ok(())
+    }
+    impl ::core::ops::Index<usize> for Vector {
+        type Output = f32;
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index(&self, index: usize) -> &f32 {
+            match index {
+                0usize => &self.e1,
+                1usize => &self.e2,
+                2usize => &self.e3,
+                _ => panic!("index {} out of range for `Vector` (3 components)", index),
+            }
+        }
+    }
+    impl ::core::ops::IndexMut<usize> for Vector {
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index_mut(&mut self, index: usize) -> &mut f32 {
+            match index {
+                0usize => &mut self.e1,
+                1usize => &mut self.e2,
+                2usize => &mut self.e3,
+                _ => panic!("index {} out of range for `Vector` (3 components)", index),
+            }
+        }
+    }
+    impl Vector {
+        /// The components in canonical order, by value.
+        #[inline]
+        pub fn iter(&self) -> ::core::array::IntoIter<f32, 3usize> {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::iter::IntoIterator for Vector {
+        type Item = f32;
+        type IntoIter = ::core::array::IntoIter<f32, 3usize>;
+        #[inline]
+        fn into_iter(self) -> Self::IntoIter {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::convert::From<[f32; 3usize]> for Vector {
+        #[inline]
+        fn from(components: [f32; 3usize]) -> Vector {
+            Vector::from_array(components)
+        }
+    }
+    impl ::core::convert::From<Vector> for [f32; 3usize] {
+        #[inline]
+        fn from(value: Vector) -> [f32; 3usize] {
+            value.to_array()
+        }
+    }
+    impl ::core::fmt::Display for Vector {
+        fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+            display_terms(f, &[(self.e1, "e1"), (self.e2, "e2"), (self.e3, "e3")])
+        }
+    }
+    impl Vector {
+        /// Whether every component is finite (neither infinite nor NaN).
+        #[inline]
+        #[must_use]
+        pub fn is_finite(self) -> bool {
+            self.e1.is_finite() && self.e2.is_finite() && self.e3.is_finite()
+        }
+        /// Whether any component is NaN.
+        #[inline]
+        #[must_use]
+        pub fn is_nan(self) -> bool {
+            self.e1.is_nan() || self.e2.is_nan() || self.e3.is_nan()
+        }
+    }
+    impl ::core::iter::Sum for Vector {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = Vector>>(iter: I) -> Vector {
+            iter.fold(Vector::ZERO, |total, x| total + x)
+        }
+    }
+    impl<'a> ::core::iter::Sum<&'a Vector> for Vector {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = &'a Vector>>(iter: I) -> Vector {
+            iter.fold(Vector::ZERO, |total, x| total + *x)
+        }
+    }
+    impl ::core::ops::Index<usize> for Bivector {
+        type Output = f32;
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index(&self, index: usize) -> &f32 {
+            match index {
+                0usize => &self.e12,
+                1usize => &self.e13,
+                2usize => &self.e23,
+                _ => panic!("index {} out of range for `Bivector` (3 components)", index),
+            }
+        }
+    }
+    impl ::core::ops::IndexMut<usize> for Bivector {
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index_mut(&mut self, index: usize) -> &mut f32 {
+            match index {
+                0usize => &mut self.e12,
+                1usize => &mut self.e13,
+                2usize => &mut self.e23,
+                _ => panic!("index {} out of range for `Bivector` (3 components)", index),
+            }
+        }
+    }
+    impl Bivector {
+        /// The components in canonical order, by value.
+        #[inline]
+        pub fn iter(&self) -> ::core::array::IntoIter<f32, 3usize> {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::iter::IntoIterator for Bivector {
+        type Item = f32;
+        type IntoIter = ::core::array::IntoIter<f32, 3usize>;
+        #[inline]
+        fn into_iter(self) -> Self::IntoIter {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::convert::From<[f32; 3usize]> for Bivector {
+        #[inline]
+        fn from(components: [f32; 3usize]) -> Bivector {
+            Bivector::from_array(components)
+        }
+    }
+    impl ::core::convert::From<Bivector> for [f32; 3usize] {
+        #[inline]
+        fn from(value: Bivector) -> [f32; 3usize] {
+            value.to_array()
+        }
+    }
+    impl ::core::fmt::Display for Bivector {
+        fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+            display_terms(f, &[(self.e12, "e12"), (self.e13, "e13"), (self.e23, "e23")])
+        }
+    }
+    impl Bivector {
+        /// Whether every component is finite (neither infinite nor NaN).
+        #[inline]
+        #[must_use]
+        pub fn is_finite(self) -> bool {
+            self.e12.is_finite() && self.e13.is_finite() && self.e23.is_finite()
+        }
+        /// Whether any component is NaN.
+        #[inline]
+        #[must_use]
+        pub fn is_nan(self) -> bool {
+            self.e12.is_nan() || self.e13.is_nan() || self.e23.is_nan()
+        }
+    }
+    impl ::core::iter::Sum for Bivector {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = Bivector>>(iter: I) -> Bivector {
+            iter.fold(Bivector::ZERO, |total, x| total + x)
+        }
+    }
+    impl<'a> ::core::iter::Sum<&'a Bivector> for Bivector {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = &'a Bivector>>(iter: I) -> Bivector {
+            iter.fold(Bivector::ZERO, |total, x| total + *x)
+        }
+    }
+    impl ::core::ops::Index<usize> for Trivector {
+        type Output = f32;
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index(&self, index: usize) -> &f32 {
+            match index {
+                0usize => &self.e123,
+                _ => {
+                    panic!("index {} out of range for `Trivector` (1 components)", index)
+                }
+            }
+        }
+    }
+    impl ::core::ops::IndexMut<usize> for Trivector {
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index_mut(&mut self, index: usize) -> &mut f32 {
+            match index {
+                0usize => &mut self.e123,
+                _ => {
+                    panic!("index {} out of range for `Trivector` (1 components)", index)
+                }
+            }
+        }
+    }
+    impl Trivector {
+        /// The components in canonical order, by value.
+        #[inline]
+        pub fn iter(&self) -> ::core::array::IntoIter<f32, 1usize> {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::iter::IntoIterator for Trivector {
+        type Item = f32;
+        type IntoIter = ::core::array::IntoIter<f32, 1usize>;
+        #[inline]
+        fn into_iter(self) -> Self::IntoIter {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::convert::From<[f32; 1usize]> for Trivector {
+        #[inline]
+        fn from(components: [f32; 1usize]) -> Trivector {
+            Trivector::from_array(components)
+        }
+    }
+    impl ::core::convert::From<Trivector> for [f32; 1usize] {
+        #[inline]
+        fn from(value: Trivector) -> [f32; 1usize] {
+            value.to_array()
+        }
+    }
+    impl ::core::fmt::Display for Trivector {
+        fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+            display_terms(f, &[(self.e123, "e123")])
+        }
+    }
+    impl Trivector {
+        /// Whether every component is finite (neither infinite nor NaN).
+        #[inline]
+        #[must_use]
+        pub fn is_finite(self) -> bool {
+            self.e123.is_finite()
+        }
+        /// Whether any component is NaN.
+        #[inline]
+        #[must_use]
+        pub fn is_nan(self) -> bool {
+            self.e123.is_nan()
+        }
+    }
+    impl ::core::iter::Sum for Trivector {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = Trivector>>(iter: I) -> Trivector {
+            iter.fold(Trivector::ZERO, |total, x| total + x)
+        }
+    }
+    impl<'a> ::core::iter::Sum<&'a Trivector> for Trivector {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = &'a Trivector>>(iter: I) -> Trivector {
+            iter.fold(Trivector::ZERO, |total, x| total + *x)
+        }
+    }
+    impl ::core::ops::Index<usize> for Even {
+        type Output = f32;
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index(&self, index: usize) -> &f32 {
+            match index {
+                0usize => &self.s,
+                1usize => &self.e12,
+                2usize => &self.e13,
+                3usize => &self.e23,
+                _ => panic!("index {} out of range for `Even` (4 components)", index),
+            }
+        }
+    }
+    impl ::core::ops::IndexMut<usize> for Even {
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index_mut(&mut self, index: usize) -> &mut f32 {
+            match index {
+                0usize => &mut self.s,
+                1usize => &mut self.e12,
+                2usize => &mut self.e13,
+                3usize => &mut self.e23,
+                _ => panic!("index {} out of range for `Even` (4 components)", index),
+            }
+        }
+    }
+    impl Even {
+        /// The components in canonical order, by value.
+        #[inline]
+        pub fn iter(&self) -> ::core::array::IntoIter<f32, 4usize> {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::iter::IntoIterator for Even {
+        type Item = f32;
+        type IntoIter = ::core::array::IntoIter<f32, 4usize>;
+        #[inline]
+        fn into_iter(self) -> Self::IntoIter {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::convert::From<[f32; 4usize]> for Even {
+        #[inline]
+        fn from(components: [f32; 4usize]) -> Even {
+            Even::from_array(components)
+        }
+    }
+    impl ::core::convert::From<Even> for [f32; 4usize] {
+        #[inline]
+        fn from(value: Even) -> [f32; 4usize] {
+            value.to_array()
+        }
+    }
+    impl ::core::fmt::Display for Even {
+        fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+            display_terms(
+                f,
+                &[(self.s, ""), (self.e12, "e12"), (self.e13, "e13"), (self.e23, "e23")],
+            )
+        }
+    }
+    impl Even {
+        /// Whether every component is finite (neither infinite nor NaN).
+        #[inline]
+        #[must_use]
+        pub fn is_finite(self) -> bool {
+            self.s.is_finite() && self.e12.is_finite() && self.e13.is_finite()
+                && self.e23.is_finite()
+        }
+        /// Whether any component is NaN.
+        #[inline]
+        #[must_use]
+        pub fn is_nan(self) -> bool {
+            self.s.is_nan() || self.e12.is_nan() || self.e13.is_nan()
+                || self.e23.is_nan()
+        }
+    }
+    impl ::core::iter::Sum for Even {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = Even>>(iter: I) -> Even {
+            iter.fold(Even::ZERO, |total, x| total + x)
+        }
+    }
+    impl<'a> ::core::iter::Sum<&'a Even> for Even {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = &'a Even>>(iter: I) -> Even {
+            iter.fold(Even::ZERO, |total, x| total + *x)
+        }
+    }
+    impl ::core::ops::MulAssign<Even> for Even {
+        #[inline]
+        fn mul_assign(&mut self, rhs: Even) {
+            *self = *self * rhs;
+        }
+    }
+    impl ::core::iter::Product for Even {
+        #[inline]
+        fn product<I: ::core::iter::Iterator<Item = Even>>(iter: I) -> Even {
+            iter.fold(Even::ONE, |total, x| total * x)
+        }
+    }
+    impl<'a> ::core::iter::Product<&'a Even> for Even {
+        #[inline]
+        fn product<I: ::core::iter::Iterator<Item = &'a Even>>(iter: I) -> Even {
+            iter.fold(Even::ONE, |total, x| total * *x)
+        }
+    }
+    impl ::core::ops::Index<usize> for Odd {
+        type Output = f32;
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index(&self, index: usize) -> &f32 {
+            match index {
+                0usize => &self.e1,
+                1usize => &self.e2,
+                2usize => &self.e3,
+                3usize => &self.e123,
+                _ => panic!("index {} out of range for `Odd` (4 components)", index),
+            }
+        }
+    }
+    impl ::core::ops::IndexMut<usize> for Odd {
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index_mut(&mut self, index: usize) -> &mut f32 {
+            match index {
+                0usize => &mut self.e1,
+                1usize => &mut self.e2,
+                2usize => &mut self.e3,
+                3usize => &mut self.e123,
+                _ => panic!("index {} out of range for `Odd` (4 components)", index),
+            }
+        }
+    }
+    impl Odd {
+        /// The components in canonical order, by value.
+        #[inline]
+        pub fn iter(&self) -> ::core::array::IntoIter<f32, 4usize> {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::iter::IntoIterator for Odd {
+        type Item = f32;
+        type IntoIter = ::core::array::IntoIter<f32, 4usize>;
+        #[inline]
+        fn into_iter(self) -> Self::IntoIter {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::convert::From<[f32; 4usize]> for Odd {
+        #[inline]
+        fn from(components: [f32; 4usize]) -> Odd {
+            Odd::from_array(components)
+        }
+    }
+    impl ::core::convert::From<Odd> for [f32; 4usize] {
+        #[inline]
+        fn from(value: Odd) -> [f32; 4usize] {
+            value.to_array()
+        }
+    }
+    impl ::core::fmt::Display for Odd {
+        fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+            display_terms(
+                f,
+                &[(self.e1, "e1"), (self.e2, "e2"), (self.e3, "e3"), (self.e123, "e123")],
+            )
+        }
+    }
+    impl Odd {
+        /// Whether every component is finite (neither infinite nor NaN).
+        #[inline]
+        #[must_use]
+        pub fn is_finite(self) -> bool {
+            self.e1.is_finite() && self.e2.is_finite() && self.e3.is_finite()
+                && self.e123.is_finite()
+        }
+        /// Whether any component is NaN.
+        #[inline]
+        #[must_use]
+        pub fn is_nan(self) -> bool {
+            self.e1.is_nan() || self.e2.is_nan() || self.e3.is_nan()
+                || self.e123.is_nan()
+        }
+    }
+    impl ::core::iter::Sum for Odd {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = Odd>>(iter: I) -> Odd {
+            iter.fold(Odd::ZERO, |total, x| total + x)
+        }
+    }
+    impl<'a> ::core::iter::Sum<&'a Odd> for Odd {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = &'a Odd>>(iter: I) -> Odd {
+            iter.fold(Odd::ZERO, |total, x| total + *x)
+        }
+    }
+    impl ::core::ops::Index<usize> for Multivector {
+        type Output = f32;
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index(&self, index: usize) -> &f32 {
+            match index {
+                0usize => &self.s,
+                1usize => &self.e1,
+                2usize => &self.e2,
+                3usize => &self.e3,
+                4usize => &self.e12,
+                5usize => &self.e13,
+                6usize => &self.e23,
+                7usize => &self.e123,
+                _ => {
+                    panic!(
+                        "index {} out of range for `Multivector` (8 components)", index
+                    )
+                }
+            }
+        }
+    }
+    impl ::core::ops::IndexMut<usize> for Multivector {
+        /// The component at canonical position `index`; panics past `LEN`, like an array.
+        #[inline]
+        fn index_mut(&mut self, index: usize) -> &mut f32 {
+            match index {
+                0usize => &mut self.s,
+                1usize => &mut self.e1,
+                2usize => &mut self.e2,
+                3usize => &mut self.e3,
+                4usize => &mut self.e12,
+                5usize => &mut self.e13,
+                6usize => &mut self.e23,
+                7usize => &mut self.e123,
+                _ => {
+                    panic!(
+                        "index {} out of range for `Multivector` (8 components)", index
+                    )
+                }
+            }
+        }
+    }
+    impl Multivector {
+        /// The components in canonical order, by value.
+        #[inline]
+        pub fn iter(&self) -> ::core::array::IntoIter<f32, 8usize> {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::iter::IntoIterator for Multivector {
+        type Item = f32;
+        type IntoIter = ::core::array::IntoIter<f32, 8usize>;
+        #[inline]
+        fn into_iter(self) -> Self::IntoIter {
+            self.to_array().into_iter()
+        }
+    }
+    impl ::core::convert::From<[f32; 8usize]> for Multivector {
+        #[inline]
+        fn from(components: [f32; 8usize]) -> Multivector {
+            Multivector::from_array(components)
+        }
+    }
+    impl ::core::convert::From<Multivector> for [f32; 8usize] {
+        #[inline]
+        fn from(value: Multivector) -> [f32; 8usize] {
+            value.to_array()
+        }
+    }
+    impl ::core::fmt::Display for Multivector {
+        fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+            display_terms(
+                f,
+                &[
+                    (self.s, ""),
+                    (self.e1, "e1"),
+                    (self.e2, "e2"),
+                    (self.e3, "e3"),
+                    (self.e12, "e12"),
+                    (self.e13, "e13"),
+                    (self.e23, "e23"),
+                    (self.e123, "e123"),
+                ],
+            )
+        }
+    }
+    impl Multivector {
+        /// Whether every component is finite (neither infinite nor NaN).
+        #[inline]
+        #[must_use]
+        pub fn is_finite(self) -> bool {
+            self.s.is_finite() && self.e1.is_finite() && self.e2.is_finite()
+                && self.e3.is_finite() && self.e12.is_finite() && self.e13.is_finite()
+                && self.e23.is_finite() && self.e123.is_finite()
+        }
+        /// Whether any component is NaN.
+        #[inline]
+        #[must_use]
+        pub fn is_nan(self) -> bool {
+            self.s.is_nan() || self.e1.is_nan() || self.e2.is_nan() || self.e3.is_nan()
+                || self.e12.is_nan() || self.e13.is_nan() || self.e23.is_nan()
+                || self.e123.is_nan()
+        }
+    }
+    impl ::core::iter::Sum for Multivector {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = Multivector>>(iter: I) -> Multivector {
+            iter.fold(Multivector::ZERO, |total, x| total + x)
+        }
+    }
+    impl<'a> ::core::iter::Sum<&'a Multivector> for Multivector {
+        #[inline]
+        fn sum<I: ::core::iter::Iterator<Item = &'a Multivector>>(
+            iter: I,
+        ) -> Multivector {
+            iter.fold(Multivector::ZERO, |total, x| total + *x)
+        }
+    }
+    impl ::core::ops::MulAssign<Multivector> for Multivector {
+        #[inline]
+        fn mul_assign(&mut self, rhs: Multivector) {
+            *self = *self * rhs;
+        }
+    }
+    impl ::core::iter::Product for Multivector {
+        #[inline]
+        fn product<I: ::core::iter::Iterator<Item = Multivector>>(
+            iter: I,
+        ) -> Multivector {
+            iter.fold(Multivector::ONE, |total, x| total * x)
+        }
+    }
+    impl<'a> ::core::iter::Product<&'a Multivector> for Multivector {
+        #[inline]
+        fn product<I: ::core::iter::Iterator<Item = &'a Multivector>>(
+            iter: I,
+        ) -> Multivector {
+            iter.fold(Multivector::ONE, |total, x| total * *x)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for &f32 {
+        type Output = <f32 as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for &f32 {
+        type Output = <f32 as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for &f32 {
+        type Output = <f32 as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for &f32 {
+        type Output = <f32 as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for &f32 {
+        type Output = <f32 as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for &f32 {
+        type Output = <f32 as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for &f32 {
+        type Output = <f32 as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for &f32 {
+        type Output = <f32 as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for &f32 {
+        type Output = <f32 as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for &f32 {
+        type Output = <f32 as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for &f32 {
+        type Output = <f32 as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for &f32 {
+        type Output = <f32 as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for &f32 {
+        type Output = <f32 as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for &f32 {
+        type Output = <f32 as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for &f32 {
+        type Output = <f32 as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for &f32 {
+        type Output = <f32 as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for &f32 {
+        type Output = <f32 as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for &f32 {
+        type Output = <f32 as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for &f32 {
+        type Output = <f32 as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for &f32 {
+        type Output = <f32 as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for &f32 {
+        type Output = <f32 as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for &f32 {
+        type Output = <f32 as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for &f32 {
+        type Output = <f32 as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for &f32 {
+        type Output = <f32 as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for &f32 {
+        type Output = <f32 as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for &f32 {
+        type Output = <f32 as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for &f32 {
+        type Output = <f32 as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for &f32 {
+        type Output = <f32 as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for &f32 {
+        type Output = <f32 as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for &f32 {
+        type Output = <f32 as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f32> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<f32>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f32> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<f32>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f32) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f32> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<f32>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f32) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&f32> for &Vector {
+        type Output = <Vector as ::core::ops::Add<f32>>::Output;
+        #[inline]
+        fn add(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f32> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<f32>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f32> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<f32>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f32> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<f32>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f32) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f32> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<f32>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f32) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&f32> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<f32>>::Output;
+        #[inline]
+        fn add(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f32> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<f32>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f32> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<f32>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f32> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<f32>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f32) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f32> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<f32>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f32) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&f32> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<f32>>::Output;
+        #[inline]
+        fn add(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f32> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<f32>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f32> for &Even {
+        type Output = <Even as ::core::ops::Mul<f32>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f32> for &Even {
+        type Output = <Even as ::core::ops::BitXor<f32>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f32) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f32> for &Even {
+        type Output = <Even as ::core::ops::BitOr<f32>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f32) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&f32> for &Even {
+        type Output = <Even as ::core::ops::Add<f32>>::Output;
+        #[inline]
+        fn add(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f32> for &Even {
+        type Output = <Even as ::core::ops::Sub<f32>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for &Even {
+        type Output = <Even as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for &Even {
+        type Output = <Even as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for &Even {
+        type Output = <Even as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for &Even {
+        type Output = <Even as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for &Even {
+        type Output = <Even as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for &Even {
+        type Output = <Even as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for &Even {
+        type Output = <Even as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for &Even {
+        type Output = <Even as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for &Even {
+        type Output = <Even as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for &Even {
+        type Output = <Even as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f32> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<f32>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f32> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<f32>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f32) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f32> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<f32>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f32) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&f32> for &Odd {
+        type Output = <Odd as ::core::ops::Add<f32>>::Output;
+        #[inline]
+        fn add(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f32> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<f32>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f32> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<f32>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f32> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<f32>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f32) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f32> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<f32>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f32) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&f32> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<f32>>::Output;
+        #[inline]
+        fn add(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f32> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<f32>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Neg for &Vector {
+        type Output = Vector;
+        #[inline]
+        fn neg(self) -> Vector {
+            -*self
+        }
+    }
+    impl ::core::ops::Neg for &Bivector {
+        type Output = Bivector;
+        #[inline]
+        fn neg(self) -> Bivector {
+            -*self
+        }
+    }
+    impl ::core::ops::Neg for &Trivector {
+        type Output = Trivector;
+        #[inline]
+        fn neg(self) -> Trivector {
+            -*self
+        }
+    }
+    impl ::core::ops::Neg for &Even {
+        type Output = Even;
+        #[inline]
+        fn neg(self) -> Even {
+            -*self
+        }
+    }
+    impl ::core::ops::Neg for &Odd {
+        type Output = Odd;
+        #[inline]
+        fn neg(self) -> Odd {
+            -*self
+        }
+    }
+    impl ::core::ops::Neg for &Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn neg(self) -> Multivector {
+            -*self
+        }
+    }
+    impl ::core::ops::Div<Vector> for f32 {
+        type Output = Vector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Vector) -> Vector {
+            let scale = 1.0 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2) + rhs.e3 * rhs.e3);
+            self
+                * Vector {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Bivector> for f32 {
+        type Output = Bivector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Bivector) -> Bivector {
+            let scale = 1.0
+                / ((rhs.e12 * rhs.e12 + rhs.e13 * rhs.e13) + rhs.e23 * rhs.e23);
+            self
+                * Bivector {
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Trivector> for f32 {
+        type Output = Trivector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Trivector) -> Trivector {
+            let scale = 1.0 / (rhs.e123 * rhs.e123);
+            self
+                * Trivector {
+                    e123: -rhs.e123 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Even> for f32 {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Even) -> Even {
+            let scale = 1.0
+                / ((rhs.s * rhs.s + rhs.e12 * rhs.e12)
+                    + (rhs.e13 * rhs.e13 + rhs.e23 * rhs.e23));
+            self
+                * Even {
+                    s: rhs.s * scale,
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Odd> for f32 {
+        type Output = Odd;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Odd) -> Odd {
+            let scale = 1.0
+                / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
+                    + (rhs.e3 * rhs.e3 + rhs.e123 * rhs.e123));
+            self
+                * Odd {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                    e123: -rhs.e123 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Vector> for Vector {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Vector) -> Even {
+            let scale = 1.0 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2) + rhs.e3 * rhs.e3);
+            self
+                * Vector {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Bivector> for Vector {
+        type Output = Odd;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Bivector) -> Odd {
+            let scale = 1.0
+                / ((rhs.e12 * rhs.e12 + rhs.e13 * rhs.e13) + rhs.e23 * rhs.e23);
+            self
+                * Bivector {
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Trivector> for Vector {
+        type Output = Bivector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Trivector) -> Bivector {
+            let scale = 1.0 / (rhs.e123 * rhs.e123);
+            self
+                * Trivector {
+                    e123: -rhs.e123 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Even> for Vector {
+        type Output = Odd;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Even) -> Odd {
+            let scale = 1.0
+                / ((rhs.s * rhs.s + rhs.e12 * rhs.e12)
+                    + (rhs.e13 * rhs.e13 + rhs.e23 * rhs.e23));
+            self
+                * Even {
+                    s: rhs.s * scale,
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Odd> for Vector {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Odd) -> Even {
+            let scale = 1.0
+                / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
+                    + (rhs.e3 * rhs.e3 + rhs.e123 * rhs.e123));
+            self
+                * Odd {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                    e123: -rhs.e123 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Vector> for Bivector {
+        type Output = Odd;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Vector) -> Odd {
+            let scale = 1.0 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2) + rhs.e3 * rhs.e3);
+            self
+                * Vector {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Bivector> for Bivector {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Bivector) -> Even {
+            let scale = 1.0
+                / ((rhs.e12 * rhs.e12 + rhs.e13 * rhs.e13) + rhs.e23 * rhs.e23);
+            self
+                * Bivector {
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Trivector> for Bivector {
+        type Output = Vector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Trivector) -> Vector {
+            let scale = 1.0 / (rhs.e123 * rhs.e123);
+            self
+                * Trivector {
+                    e123: -rhs.e123 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Even> for Bivector {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Even) -> Even {
+            let scale = 1.0
+                / ((rhs.s * rhs.s + rhs.e12 * rhs.e12)
+                    + (rhs.e13 * rhs.e13 + rhs.e23 * rhs.e23));
+            self
+                * Even {
+                    s: rhs.s * scale,
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Odd> for Bivector {
+        type Output = Odd;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Odd) -> Odd {
+            let scale = 1.0
+                / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
+                    + (rhs.e3 * rhs.e3 + rhs.e123 * rhs.e123));
+            self
+                * Odd {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                    e123: -rhs.e123 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Vector> for Trivector {
+        type Output = Bivector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Vector) -> Bivector {
+            let scale = 1.0 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2) + rhs.e3 * rhs.e3);
+            self
+                * Vector {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Bivector> for Trivector {
+        type Output = Vector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Bivector) -> Vector {
+            let scale = 1.0
+                / ((rhs.e12 * rhs.e12 + rhs.e13 * rhs.e13) + rhs.e23 * rhs.e23);
+            self
+                * Bivector {
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Trivector> for Trivector {
+        type Output = f32;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Trivector) -> f32 {
+            let scale = 1.0 / (rhs.e123 * rhs.e123);
+            self
+                * Trivector {
+                    e123: -rhs.e123 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Even> for Trivector {
+        type Output = Odd;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Even) -> Odd {
+            let scale = 1.0
+                / ((rhs.s * rhs.s + rhs.e12 * rhs.e12)
+                    + (rhs.e13 * rhs.e13 + rhs.e23 * rhs.e23));
+            self
+                * Even {
+                    s: rhs.s * scale,
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Odd> for Trivector {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Odd) -> Even {
+            let scale = 1.0
+                / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
+                    + (rhs.e3 * rhs.e3 + rhs.e123 * rhs.e123));
+            self
+                * Odd {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                    e123: -rhs.e123 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Vector> for Even {
+        type Output = Odd;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Vector) -> Odd {
+            let scale = 1.0 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2) + rhs.e3 * rhs.e3);
+            self
+                * Vector {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Bivector> for Even {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Bivector) -> Even {
+            let scale = 1.0
+                / ((rhs.e12 * rhs.e12 + rhs.e13 * rhs.e13) + rhs.e23 * rhs.e23);
+            self
+                * Bivector {
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Trivector> for Even {
+        type Output = Odd;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Trivector) -> Odd {
+            let scale = 1.0 / (rhs.e123 * rhs.e123);
+            self
+                * Trivector {
+                    e123: -rhs.e123 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Even> for Even {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Even) -> Even {
+            let scale = 1.0
+                / ((rhs.s * rhs.s + rhs.e12 * rhs.e12)
+                    + (rhs.e13 * rhs.e13 + rhs.e23 * rhs.e23));
+            self
+                * Even {
+                    s: rhs.s * scale,
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Odd> for Even {
+        type Output = Odd;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Odd) -> Odd {
+            let scale = 1.0
+                / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
+                    + (rhs.e3 * rhs.e3 + rhs.e123 * rhs.e123));
+            self
+                * Odd {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                    e123: -rhs.e123 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Vector> for Odd {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Vector) -> Even {
+            let scale = 1.0 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2) + rhs.e3 * rhs.e3);
+            self
+                * Vector {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Bivector> for Odd {
+        type Output = Odd;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Bivector) -> Odd {
+            let scale = 1.0
+                / ((rhs.e12 * rhs.e12 + rhs.e13 * rhs.e13) + rhs.e23 * rhs.e23);
+            self
+                * Bivector {
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Trivector> for Odd {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Trivector) -> Even {
+            let scale = 1.0 / (rhs.e123 * rhs.e123);
+            self
+                * Trivector {
+                    e123: -rhs.e123 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Even> for Odd {
+        type Output = Odd;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Even) -> Odd {
+            let scale = 1.0
+                / ((rhs.s * rhs.s + rhs.e12 * rhs.e12)
+                    + (rhs.e13 * rhs.e13 + rhs.e23 * rhs.e23));
+            self
+                * Even {
+                    s: rhs.s * scale,
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Odd> for Odd {
+        type Output = Even;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Odd) -> Even {
+            let scale = 1.0
+                / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
+                    + (rhs.e3 * rhs.e3 + rhs.e123 * rhs.e123));
+            self
+                * Odd {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                    e123: -rhs.e123 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Vector> for Multivector {
+        type Output = Multivector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Vector) -> Multivector {
+            let scale = 1.0 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2) + rhs.e3 * rhs.e3);
+            self
+                * Vector {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Bivector> for Multivector {
+        type Output = Multivector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Bivector) -> Multivector {
+            let scale = 1.0
+                / ((rhs.e12 * rhs.e12 + rhs.e13 * rhs.e13) + rhs.e23 * rhs.e23);
+            self
+                * Bivector {
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Trivector> for Multivector {
+        type Output = Multivector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Trivector) -> Multivector {
+            let scale = 1.0 / (rhs.e123 * rhs.e123);
+            self
+                * Trivector {
+                    e123: -rhs.e123 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Even> for Multivector {
+        type Output = Multivector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Even) -> Multivector {
+            let scale = 1.0
+                / ((rhs.s * rhs.s + rhs.e12 * rhs.e12)
+                    + (rhs.e13 * rhs.e13 + rhs.e23 * rhs.e23));
+            self
+                * Even {
+                    s: rhs.s * scale,
+                    e12: -rhs.e12 * scale,
+                    e13: -rhs.e13 * scale,
+                    e23: -rhs.e23 * scale,
+                }
+        }
+    }
+    impl ::core::ops::Div<Odd> for Multivector {
+        type Output = Multivector;
+        /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
+        /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
+        #[inline]
+        fn div(self, rhs: Odd) -> Multivector {
+            let scale = 1.0
+                / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
+                    + (rhs.e3 * rhs.e3 + rhs.e123 * rhs.e123));
+            self
+                * Odd {
+                    e1: rhs.e1 * scale,
+                    e2: rhs.e2 * scale,
+                    e3: rhs.e3 * scale,
+                    e123: -rhs.e123 * scale,
+                }
+        }
+    }
     /// `LEFT[i][j] = (k, sign)`: `e_i e_j = sign e_k` by component index. Used only by
     /// the general inverse, never by a product.
     #[allow(dead_code)]
@@ -8653,20 +12001,19 @@ pub mod g3 {
     #[allow(dead_code)]
     fn multivector_inverse(a: Multivector) -> Option<Multivector> {
         let a = a.to_array();
-        let mut m = [[0.0 as f32; 8usize]; 8usize];
-        let mut largest: f32 = 0.0;
-        for (i, &ai) in a.iter().enumerate() {
-            for (j, &(k, sign)) in LEFT[i].iter().enumerate() {
-                m[k][j] += f32::from(sign) * ai;
-            }
-            largest = largest.max(ai.abs());
-        }
+        let largest = a.iter().fold(0.0 as f32, |m, x| m.max(x.abs()));
         if !(largest > 0.0) || !largest.is_finite() {
             return None;
         }
+        let mut m = [[0.0 as f32; 8usize]; 8usize];
+        for (i, &ai) in a.iter().enumerate() {
+            for (j, &(k, sign)) in LEFT[i].iter().enumerate() {
+                m[k][j] += f32::from(sign) * (ai / largest);
+            }
+        }
         let mut rhs = [0.0 as f32; 8usize];
         rhs[0] = 1.0;
-        let tolerance = largest * f32::EPSILON * (8usize as f32);
+        let tolerance = f32::EPSILON * (8usize as f32);
         for col in 0..8usize {
             let mut pivot = col;
             for row in col + 1..8usize {
@@ -8697,6 +12044,7 @@ pub mod g3 {
             }
             x[row] = sum / m[row][row];
         }
+        let x = x.map(|v| v / largest);
         if x.iter().all(|v| v.is_finite()) {
             Some(Multivector::from_array(x))
         } else {
@@ -8761,13 +12109,12 @@ pub mod g3 {
         }
     }
     impl Bivector {
-        ///`exp(B)` in closed form for every bivector and every metric: cos/sin, cosh/sinh or 1 + B per invariant plane (see docs/derivations/exp-log.md).
+        ///`exp(B)` in closed form for every bivector and every metric: cos/sin, cosh/sinh or 1 + B per invariant plane (see docs/derivations/exp-log.md). Angles are reduced modulo 2 pi by `sin`/`cos` themselves, and `B` is scaled before squaring, so a rotation bivector of any finite size gives a unit rotor.
         #[inline]
         #[must_use]
         pub fn exp(self) -> Even {
-            let x: f32 = -((self.e12 * self.e12 + self.e13 * self.e13)
-                + self.e23 * self.e23);
-            let [even, weight] = cosh_sinhc_sqrt(x);
+            let [x, root] = square_and_root(self);
+            let [even, weight] = cosh_sinhc(x, root);
             Even {
                 s: even,
                 e12: weight * self.e12,
@@ -8778,42 +12125,77 @@ pub mod g3 {
     }
     impl Even {
         /// The bivector `B` with `B.exp() == self` on the principal range (rotation
-        /// angles below pi per plane); `self` must be a unit rotor.
+        /// angles below pi per plane, or their sum below pi in four dimensions), or
+        /// `None` when `self` is not a rotor: `<R ~R>_0` further from 1 than the
+        /// square root of the machine epsilon, or a result that is not finite. Where
+        /// the logarithm is not unique it is chosen: `log(-1)` is `pi e12`, a full turn
+        /// in the first plane that squares to -1, and in four dimensions a channel at
+        /// -1 (`log(+-e1234)` in G4) turns by pi in `(e12 -+ e34) / 2`. See
+        /// docs/derivations/exp-log.md.
         #[inline]
         #[must_use]
-        pub fn log(self) -> Bivector {
-            let p = Bivector {
-                e12: self.e12,
-                e13: self.e13,
-                e23: self.e23,
-            };
-            let p2: f32 = -((p.e12 * p.e12 + p.e13 * p.e13) + p.e23 * p.e23);
-            let weight = log_weight(self.s, p2);
-            Bivector {
-                e12: weight * p.e12,
-                e13: weight * p.e13,
-                e23: weight * p.e23,
+        pub fn log(self) -> Option<Bivector> {
+            let norm_squared: f32 = (self.s * self.s + self.e12 * self.e12)
+                + (self.e13 * self.e13 + self.e23 * self.e23);
+            if !((norm_squared - 1.0).abs() <= 0.0003452669770922512) {
+                return None;
             }
+            let log = {
+                let p = Bivector {
+                    e12: self.e12,
+                    e13: self.e13,
+                    e23: self.e23,
+                };
+                let [x, root] = square_and_root(p);
+                let [weight, turn] = log_weight(self.s, x, root, p == Bivector::ZERO);
+                Bivector {
+                    e12: weight * p.e12 + turn,
+                    e13: weight * p.e13,
+                    e23: weight * p.e23,
+                }
+            };
+            if log.to_array().iter().all(|c| c.is_finite()) { Some(log) } else { None }
         }
+    }
+    /// `[x, sqrt |x|]` for `x = <B B>_0`, the root right to a few ulps at every
+    /// magnitude: when the squares could overflow or underflow, `B` is first divided
+    /// by its largest component, and `x` then carries only the sign of `<B B>_0`.
+    #[allow(dead_code)]
+    #[inline]
+    fn square_and_root(b: Bivector) -> [f32; 2] {
+        let x: f32 = -((b.e12 * b.e12 + b.e13 * b.e13) + b.e23 * b.e23);
+        if x.abs() >= SQUARE_MIN && x.abs() <= SQUARE_MAX {
+            return [x, math::sqrt(x.abs())];
+        }
+        let largest: f32 = b.e12.abs().max(b.e13.abs()).max(b.e23.abs());
+        if !(largest > 0.0 && largest < f32::INFINITY) {
+            return [x, math::sqrt(x.abs())];
+        }
+        let u = Bivector {
+            e12: b.e12 / largest,
+            e13: b.e13 / largest,
+            e23: b.e23 / largest,
+        };
+        let x: f32 = -((u.e12 * u.e12 + u.e13 * u.e13) + u.e23 * u.e23);
+        [x, math::sqrt(x.abs()) * largest]
     }
     /// cosh(sqrt x) for x >= 0 and cos(sqrt -x) for x < 0: entire in x.
     #[allow(dead_code)]
     #[inline]
     fn cosh_sqrt(x: f32) -> f32 {
-        if x >= 0.0 { x.sqrt().cosh() } else { (-x).sqrt().cos() }
+        if x >= 0.0 { math::cosh(math::sqrt(x)) } else { math::cos(math::sqrt(-x)) }
     }
-    /// `[cosh(sqrt x), sinh(sqrt x)/sqrt x]` with one square root and one `sin_cos`
-    /// (x < 0: cos and sin of sqrt -x); the ratio by its series where the root is tiny.
+    /// `[cosh r, sinh(r)/r]` for `x > 0` and `[cos r, sin(r)/r]` for `x < 0`, where
+    /// `r = sqrt |x|` is given (only the sign of `x` is read); the ratio by its series
+    /// where `r` is tiny. `sin_cos` reduces any finite angle modulo 2 pi exactly.
     #[allow(dead_code)]
     #[inline]
-    fn cosh_sinhc_sqrt(x: f32) -> [f32; 2] {
+    fn cosh_sinhc(x: f32, r: f32) -> [f32; 2] {
         if x < 0.0 {
-            let r = (-x).sqrt();
-            let (sin, cos) = r.sin_cos();
-            [cos, if r < 1e-4 { 1.0 + x / 6.0 } else { sin / r }]
+            let (sin, cos) = math::sin_cos(r);
+            [cos, if r < 1e-4 { 1.0 - r * r / 6.0 } else { sin / r }]
         } else if x > 0.0 {
-            let r = x.sqrt();
-            [r.cosh(), if r < 1e-4 { 1.0 + x / 6.0 } else { r.sinh() / r }]
+            [math::cosh(r), if r < 1e-4 { 1.0 + r * r / 6.0 } else { math::sinh(r) / r }]
         } else {
             [1.0, 1.0]
         }
@@ -8825,11 +12207,11 @@ pub mod g3 {
         if x.abs() < 1e-3 {
             1.0 + x * (1.0 / 6.0 + x * (1.0 / 120.0 + x * (1.0 / 5040.0)))
         } else if x > 0.0 {
-            let r = x.sqrt();
-            r.sinh() / r
+            let r = math::sqrt(x);
+            math::sinh(r) / r
         } else {
-            let r = (-x).sqrt();
-            r.sin() / r
+            let r = math::sqrt(-x);
+            math::sin(r) / r
         }
     }
     /// The derivative of `sinhc_sqrt`, (cosh_sqrt - sinhc_sqrt) / 2x, by its series near 0.
@@ -8844,7 +12226,7 @@ pub mod g3 {
     /// cosh(sqrt z) and sinh(sqrt z)/sqrt z for complex z = (re, im).
     #[allow(dead_code)]
     fn complex_cosh_sinhc_sqrt(re: f32, im: f32) -> [f32; 4] {
-        let modulus = re.hypot(im);
+        let modulus = math::hypot(re, im);
         if modulus < 1e-3 {
             let (z2r, z2i) = (re * re - im * im, 2.0 * re * im);
             return [
@@ -8854,9 +12236,10 @@ pub mod g3 {
                 im / 6.0 + z2i / 120.0,
             ];
         }
-        let a = ((modulus + re) / 2.0).sqrt();
-        let b = ((modulus - re) / 2.0).sqrt().copysign(im);
-        let (ch, sh, c, s) = (a.cosh(), a.sinh(), b.cos(), b.sin());
+        let a = math::sqrt((modulus + re) / 2.0);
+        let b = math::sqrt((modulus - re) / 2.0).copysign(im);
+        let (ch, sh) = (math::cosh(a), math::sinh(a));
+        let (s, c) = math::sin_cos(b);
         let (cosh_r, cosh_i) = (ch * c, sh * s);
         let (sinh_r, sinh_i) = (sh * c, ch * s);
         let d = a * a + b * b;
@@ -8867,7 +12250,7 @@ pub mod g3 {
     #[allow(dead_code)]
     fn exp_weights(s: f32, t: f32) -> [f32; 4] {
         if t > 0.0 {
-            let r = t.sqrt();
+            let r = math::sqrt(t);
             let (cp, cm) = (cosh_sqrt(s + r), cosh_sqrt(s - r));
             let (sp, sm) = (sinhc_sqrt(s + r), sinhc_sqrt(s - r));
             [
@@ -8877,7 +12260,7 @@ pub mod g3 {
                 (sp - sm) / (2.0 * r),
             ]
         } else if t < 0.0 {
-            let r = (-t).sqrt();
+            let r = math::sqrt(-t);
             let [cr, ci, sr, si] = complex_cosh_sinhc_sqrt(s, r);
             [cr, ci / r, sr, si / r]
         } else {
@@ -8885,53 +12268,68 @@ pub mod g3 {
             [cosh_sqrt(s), weight / 2.0, weight, sinhc_sqrt_derivative(s)]
         }
     }
+    /// `[w, turn]` with `log(c + P) = w P + turn D`, where `P^2` has the sign of `x`,
+    /// `m = sqrt |P^2|` and `c^2 - P^2 = 1`; `turn` is pi for `c + P = -1` (`P` zero)
+    /// and `D` the plane chosen for it. NaN where no real logarithm exists (`c < 0`
+    /// with `P^2 >= 0` and `P` not zero).
+    #[allow(dead_code)]
+    fn log_weight(c: f32, x: f32, m: f32, p_is_zero: bool) -> [f32; 2] {
+        if p_is_zero && c < 0.0 {
+            [0.0, ::core::f32::consts::PI]
+        } else if x < 0.0 {
+            [math::atan2(m, c) / m, 0.0]
+        } else if c < 0.0 {
+            [f32::NAN, 0.0]
+        } else if x > 0.0 {
+            [if m < 1e-4 { 1.0 - m * m / 6.0 } else { math::asinh(m) / m }, 0.0]
+        } else {
+            [1.0 / c, 0.0]
+        }
+    }
     /// The weight w with log(c + P) = w P, where P^2 = p2 is a scalar and c^2 - p2 = 1.
     #[allow(dead_code)]
-    fn log_weight(c: f32, p2: f32) -> f32 {
+    fn log_weight_of_square(c: f32, p2: f32) -> f32 {
         if p2 < 0.0 {
-            let m = (-p2).sqrt();
-            m.atan2(c) / m
+            let m = math::sqrt(-p2);
+            math::atan2(m, c) / m
         } else if p2 > 0.0 {
-            let m = p2.sqrt();
-            if m < 1e-4 { 1.0 - p2 / 6.0 } else { m.asinh() / m }
+            let m = math::sqrt(p2);
+            if m < 1e-4 { 1.0 - p2 / 6.0 } else { math::asinh(m) / m }
         } else {
             1.0 / c
         }
     }
-    /// For a four-dimensional rotor c0 + P + c4 I with P^2 = p0 + p4 I and I^2 = iota:
-    /// the weights (g0, g4) with log = g0 P + g4 P I.
+    /// For a four-dimensional rotor c0 + P + c4 I with P^2 = p0 + p4 I and I^2 = iota
+    /// (-1 or 0; +1 is taken by channels in `Even::log`): the weights (g0, g4) with
+    /// log = g0 P + g4 P I.
     #[allow(dead_code)]
     fn log_weights_4d(c0: f32, c4: f32, p0: f32, p4: f32, iota: f32) -> [f32; 2] {
-        if iota > 0.0 {
-            let plus = log_weight(c0 + c4, p0 + p4);
-            let minus = log_weight(c0 - c4, p0 - p4);
-            [(plus + minus) / 2.0, (plus - minus) / 2.0]
-        } else if iota < 0.0 {
-            let modulus = p0.hypot(p4);
+        if iota < 0.0 {
+            let modulus = math::hypot(p0, p4);
             if modulus == 0.0 {
                 return [1.0, 0.0];
             }
-            let sr = ((modulus + p0) / 2.0).sqrt();
-            let si = ((modulus - p0) / 2.0).sqrt().copysign(p4);
+            let sr = math::sqrt((modulus + p0) / 2.0);
+            let si = math::sqrt((modulus - p0) / 2.0).copysign(p4);
             let (dr, di) = (c0 + 1.0, c4);
             let dd = dr * dr + di * di;
             let (qr, qi) = ((p0 * dr + p4 * di) / dd, (p4 * dr - p0 * di) / dd);
             let (ur, ui) = (qr + sr, qi + si);
-            let yr = 0.5 * (2.0 * ur + ur * ur + ui * ui).ln_1p();
-            let yi = ui.atan2(1.0 + ur);
+            let yr = 0.5 * math::ln_1p(2.0 * ur + ur * ur + ui * ui);
+            let yi = math::atan2(ui, 1.0 + ur);
             let ss = sr * sr + si * si;
             [(yr * sr + yi * si) / ss, (yi * sr - yr * si) / ss]
         } else {
-            let g0 = log_weight(c0, p0);
+            let g0 = log_weight_of_square(c0, p0);
             let h = if p0.abs() < 1e-12 {
                 -1.0 / 3.0
             } else if p0 < 0.0 {
-                let m = (-p0).sqrt();
-                let theta = m.atan2(c0);
+                let m = math::sqrt(-p0);
+                let theta = math::atan2(m, c0);
                 (theta * c0 - m) / (m * m * m)
             } else {
-                let m = p0.sqrt();
-                let y = m.asinh();
+                let m = math::sqrt(p0);
+                let y = math::asinh(m);
                 (m - y * c0) / (m * m * m)
             };
             [g0, c4 * h]

@@ -15571,7 +15571,7 @@ pub mod g4 {
         terms: &[(f64, &str)],
     ) -> ::core::fmt::Result {
         let threshold: f64 = match f.precision() {
-            Some(p) => 0.5 * (10.0 as f64).powi(-(p.min(400) as i32)),
+            Some(p) => (0..p.min(400)).fold(0.5, |t, _| t / 10.0),
             None => 0.0,
         };
         let mut first = true;
