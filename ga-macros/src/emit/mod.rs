@@ -4,6 +4,7 @@
 mod batch;
 mod exp_log;
 mod expr;
+mod integrations;
 mod operators;
 mod products;
 mod types;
@@ -64,6 +65,7 @@ pub fn module_items(spec: &Spec, plan: &Plan) -> TokenStream {
     if has_exp || has_log {
         items.extend(exp_log::emit_scalar_functions(plan));
     }
+    items.extend(integrations::emit_integrations(spec, plan));
     if plan.lanes.is_none() {
         for &lanes in &spec.lanes {
             items.extend(batch::emit_batch_module(spec, plan, lanes));

@@ -6,4 +6,6 @@ mod parse;
 mod validate;
 
 pub use parse::{RawAlgebra, RawDerive};
-pub use validate::{grade_type_name, validate, Op, Scalar, Spec, TypeRequest};
+pub use validate::{
+    grade_type_name, validate, Integration, IntegrationKind, Op, Scalar, Spec, TypeRequest,
+};
