@@ -20,7 +20,7 @@
 //! (`f64::g3` needs both `f64` and `g3`; default `g3`, `f32`, `f64`); `batch` adds the
 //! structure-of-arrays modules on `wide`; `serde`, `bytemuck`, `approx`, `mint` add those
 //! crates' traits to every type (re-exported here under the same names); `glam` (glam
-//! 0.32, re-exported as [`glam`]) and `glam-0-29` to `glam-0-32` add glam conversions.
+//! 0.32, re-exported as `ga_core::glam`) and `glam-0-29` to `glam-0-32` add glam conversions.
 #![deny(missing_docs)]
 
 #[cfg(feature = "g3")]
