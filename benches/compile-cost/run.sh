@@ -15,9 +15,9 @@ seconds() { local start end; start=$(date +%s.%N); "$@" >/dev/null 2>&1; end=$(d
 
 echo "| what | seconds |"
 echo "|---|---|"
-CARGO_TARGET_DIR="$work/core" cargo build --release -p ga-core --manifest-path "$root/Cargo.toml" >/dev/null 2>&1
+CARGO_TARGET_DIR="$work/core" cargo build --release -p ga-core --features g2,g3,g4,f32,f64,batch --manifest-path "$root/Cargo.toml" >/dev/null 2>&1
 touch "$root/ga-core/src/lib.rs"
-echo "| ga-core release build, dependencies built | $(CARGO_TARGET_DIR="$work/core" seconds cargo build --release -p ga-core --manifest-path "$root/Cargo.toml") |"
+echo "| ga-core release build, dependencies built | $(CARGO_TARGET_DIR="$work/core" seconds cargo build --release -p ga-core --features g2,g3,g4,f32,f64,batch --manifest-path "$root/Cargo.toml") |"
 
 make_crate() { # name, algebra body
     mkdir -p "$work/$1/src"

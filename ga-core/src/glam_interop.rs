@@ -4,6 +4,8 @@
 //! `w = s, x = -b23, y = b13, z = -b12` (a rotation in the e12 plane turning e1 toward e2
 //! is a positive rotation about z). See docs/derivations/rotor-quaternion.md.
 
+// Unused when no glam version or no precision is on.
+#[allow(unused_macros)]
 macro_rules! impl_glam_interop {
     ($g3:path, $vec3:ty, $quat:ty, $mat3:ty) => {
         use $g3 as g3;
@@ -49,10 +51,21 @@ macro_rules! impl_glam_interop {
     };
 }
 
-mod single {
-    impl_glam_interop!(crate::f32::g3, glam::Vec3, glam::Quat, glam::Mat3);
+/// The conversions for one glam major version, in each precision that is on.
+macro_rules! glam_version {
+    ($feature:literal, $glam:ident) => {
+        #[cfg(all(feature = $feature, feature = "f32"))]
+        const _: () = {
+            impl_glam_interop!(crate::f32::g3, $glam::Vec3, $glam::Quat, $glam::Mat3);
+        };
+        #[cfg(all(feature = $feature, feature = "f64"))]
+        const _: () = {
+            impl_glam_interop!(crate::f64::g3, $glam::DVec3, $glam::DQuat, $glam::DMat3);
+        };
+    };
 }
 
-mod double {
-    impl_glam_interop!(crate::f64::g3, glam::DVec3, glam::DQuat, glam::DMat3);
-}
+glam_version!("glam-0-29", glam_0_29);
+glam_version!("glam-0-30", glam_0_30);
+glam_version!("glam-0-31", glam_0_31);
+glam_version!("glam-0-32", glam_0_32);

@@ -207,7 +207,9 @@ macro_rules! g3_kernels {
     };
 }
 
+#[cfg(feature = "f32")]
 g3_kernels!(f32);
+#[cfg(feature = "f64")]
 g3_kernels!(f64);
 
 /// A matrix on many vectors with AVX2 and FMA: the matrix's columns in one register each,
@@ -217,6 +219,7 @@ g3_kernels!(f64);
 /// and the last vector is written by the scalar code.
 #[cfg(target_arch = "x86_64")]
 mod x86 {
+    #[cfg(feature = "f32")]
     pub mod f32 {
         use crate::f32::g3::Vector;
         use core::arch::x86_64::{
@@ -254,6 +257,7 @@ mod x86 {
         }
     }
 
+    #[cfg(feature = "f64")]
     pub mod f64 {
         use crate::f64::g3::Vector;
         use core::arch::x86_64::{

@@ -2,17 +2,25 @@
 //! [`ga_macros::algebra!`] as straight-line code specialised to the Euclidean sign table.
 //!
 //! ```
+//! # #[cfg(all(feature = "f64", feature = "g3"))] {
 //! use ga_core::f64::g3::*;
 //! // A quarter turn in the e12 plane: R = exp(-B theta / 2) turns e1 toward e2.
 //! let r = (Bivector::E12 * (-std::f64::consts::FRAC_PI_4)).exp();
 //! let y = r.sandwich(Vector::E1);
 //! assert!((y - Vector::E2).norm() < 1e-15);
+//! # }
 //! ```
 //!
 //! Conventions: components in canonical order (grade first, then lexicographic on the
 //! index list); a rotor acts as `y = R x ~R`; `*` geometric, `^` outer, `|` the lecture's
 //! inner product (lowest grade, |r - s|); contractions and the commutator are trait
 //! methods (`use ga_core::f64::g3::*`).
+//!
+//! Cargo features (see the README): `g2`, `g3`, `g4` and `f32`, `f64` choose the modules
+//! (`f64::g3` needs both `f64` and `g3`; default `g3`, `f32`, `f64`); `batch` adds the
+//! structure-of-arrays modules on `wide`; `serde`, `bytemuck`, `approx`, `mint` add those
+//! crates' traits to every type (re-exported here under the same names); `glam` (glam
+//! 0.32, re-exported as `ga_core::glam`) and `glam-0-29` to `glam-0-32` add glam conversions.
 #![deny(missing_docs)]
 #![cfg_attr(not(feature = "std"), no_std)]
 
@@ -20,49 +28,141 @@
 /// its own algebras with `math: libm(::ga_core::libm)`.
 pub use libm;
 
-#[cfg(feature = "glam")]
+#[cfg(feature = "g3")]
 mod glam_interop;
 // The slice kernels ask the CPU what it has, which needs the standard library.
-#[cfg(feature = "std")]
+#[cfg(all(feature = "std", feature = "g3", any(feature = "f32", feature = "f64")))]
 pub mod kernels;
+#[cfg(all(feature = "f32", feature = "f64"))]
 mod precision;
+#[cfg(any(feature = "g2", feature = "g3"))]
 mod rotor;
 
+#[cfg(feature = "g3")]
 pub use rotor::RotationMatrix;
 
+/// serde, as the `serde` feature's impls use it.
+#[cfg(feature = "serde")]
+pub use serde;
+
+/// bytemuck, as the `bytemuck` feature's impls use it.
+#[cfg(feature = "bytemuck")]
+pub use bytemuck;
+
+/// approx, as the `approx` feature's impls use it.
+#[cfg(feature = "approx")]
+pub use approx;
+
+/// mint, as the `mint` feature's conversions use it.
+#[cfg(feature = "mint")]
+pub use mint;
+
+/// The glam the `glam` feature converts to and from (0.32): name its types through this
+/// path so that they are the same version.
+#[cfg(feature = "glam")]
+pub use glam_0_32 as glam;
+
+/// glam 0.29 (feature `glam-0-29`).
+#[cfg(feature = "glam-0-29")]
+pub use glam_0_29;
+
+/// glam 0.30 (feature `glam-0-30`).
+#[cfg(feature = "glam-0-30")]
+pub use glam_0_30;
+
+/// glam 0.31 (feature `glam-0-31`).
+#[cfg(feature = "glam-0-31")]
+pub use glam_0_31;
+
+/// glam 0.32 (feature `glam-0-32`; `glam` turns it on).
+#[cfg(feature = "glam-0-32")]
+pub use glam_0_32;
+
+/// One algebra module, with the batch modules when the `batch` feature is on (the
+/// macro's `lanes` key cannot itself carry a `cfg`), and the integrations the crate
+/// features ask for.
+// Unused when no precision is on.
+#[allow(unused_macros)]
+macro_rules! algebra {
+    (
+        #[doc = $doc:tt]
+        $name:tt { metric: $metric:tt, scalar: $scalar:tt, lanes: $lanes:tt $(, $mint:tt)? }
+    ) => {
+        #[cfg(feature = "batch")]
+        ga_macros::algebra! {
+            #[doc = $doc]
+            pub mod $name {
+                metric: $metric,
+                scalar: $scalar,
+                lanes: $lanes,
+                math: auto,
+                derive: [
+                    #[cfg(feature = "serde")] serde,
+                    #[cfg(feature = "bytemuck")] bytemuck,
+                    #[cfg(feature = "approx")] approx,
+                    $(#[cfg(feature = "mint")] $mint,)?
+                ],
+            }
+        }
+        #[cfg(not(feature = "batch"))]
+        ga_macros::algebra! {
+            #[doc = $doc]
+            pub mod $name {
+                metric: $metric,
+                scalar: $scalar,
+                math: auto,
+                derive: [
+                    #[cfg(feature = "serde")] serde,
+                    #[cfg(feature = "bytemuck")] bytemuck,
+                    #[cfg(feature = "approx")] approx,
+                    $(#[cfg(feature = "mint")] $mint,)?
+                ],
+            }
+        }
+    };
+}
+
 /// Double-precision algebras.
+#[cfg(feature = "f64")]
 pub mod f64 {
-    ga_macros::algebra! {
-        /// The Euclidean plane, G(2, 0, 0), in `f64`.
-        pub mod g2 { metric: [1, 1], scalar: f64, math: auto }
+    #[cfg(feature = "g2")]
+    algebra! {
+        #[doc = "The Euclidean plane, G(2, 0, 0), in `f64`."]
+        g2 { metric: [1, 1], scalar: f64, lanes: [] }
     }
-    ga_macros::algebra! {
-        /// Euclidean space, G(3, 0, 0), in `f64`.
-        pub mod g3 { metric: [1, 1, 1], scalar: f64, lanes: [4], math: auto }
+    #[cfg(feature = "g3")]
+    algebra! {
+        #[doc = "Euclidean space, G(3, 0, 0), in `f64`."]
+        g3 { metric: [1, 1, 1], scalar: f64, lanes: [4], mint }
     }
-    ga_macros::algebra! {
-        /// Euclidean four-space, G(4, 0, 0), in `f64`.
-        pub mod g4 { metric: [1, 1, 1, 1], scalar: f64, math: auto }
+    #[cfg(feature = "g4")]
+    algebra! {
+        #[doc = "Euclidean four-space, G(4, 0, 0), in `f64`."]
+        g4 { metric: [1, 1, 1, 1], scalar: f64, lanes: [] }
     }
 }
 
 /// Single-precision algebras.
+#[cfg(feature = "f32")]
 pub mod f32 {
-    ga_macros::algebra! {
-        /// The Euclidean plane, G(2, 0, 0), in `f32`.
-        pub mod g2 { metric: [1, 1], scalar: f32, math: auto }
+    #[cfg(feature = "g2")]
+    algebra! {
+        #[doc = "The Euclidean plane, G(2, 0, 0), in `f32`."]
+        g2 { metric: [1, 1], scalar: f32, lanes: [] }
     }
-    ga_macros::algebra! {
-        /// Euclidean space, G(3, 0, 0), in `f32`.
-        pub mod g3 { metric: [1, 1, 1], scalar: f32, lanes: [4, 8], math: auto }
+    #[cfg(feature = "g3")]
+    algebra! {
+        #[doc = "Euclidean space, G(3, 0, 0), in `f32`."]
+        g3 { metric: [1, 1, 1], scalar: f32, lanes: [4, 8], mint }
     }
-    ga_macros::algebra! {
-        /// Euclidean four-space, G(4, 0, 0), in `f32`.
-        pub mod g4 { metric: [1, 1, 1, 1], scalar: f32, lanes: [4], math: auto }
+    #[cfg(feature = "g4")]
+    algebra! {
+        #[doc = "Euclidean four-space, G(4, 0, 0), in `f32`."]
+        g4 { metric: [1, 1, 1, 1], scalar: f32, lanes: [4] }
     }
 }
 
 /// The README's examples, compiled and run as doctests.
-#[cfg(all(doctest, feature = "glam"))]
+#[cfg(all(doctest, feature = "std", feature = "glam", feature = "g3", feature = "f32", feature = "f64"))]
 #[doc = include_str!("../../README.md")]
 struct ReadmeDoctests;

@@ -36,6 +36,9 @@ macro_rules! impl_precision_casts {
     };
 }
 
+#[cfg(feature = "g2")]
 impl_precision_casts!(g2: Vector, Bivector, Even, Odd, Multivector);
+#[cfg(feature = "g3")]
 impl_precision_casts!(g3: Vector, Bivector, Trivector, Even, Odd, Multivector);
+#[cfg(feature = "g4")]
 impl_precision_casts!(g4: Vector, Bivector, Trivector, Quadvector, Even, Odd, Multivector);

@@ -18,11 +18,13 @@
 /// let m = [[1.0f64, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
 /// assert_eq!(m.to_cols_array_2d()[1][1], 1.0);
 /// ```
+#[cfg(feature = "g3")]
 pub trait RotationMatrix<S> {
     /// The columns, each the image of e1, e2 and e3 in turn.
     fn to_cols_array_2d(&self) -> [[S; 3]; 3];
 }
 
+#[cfg(feature = "g3")]
 impl<S: Copy> RotationMatrix<S> for [[S; 3]; 3] {
     #[inline]
     fn to_cols_array_2d(&self) -> [[S; 3]; 3] {
@@ -30,19 +32,19 @@ impl<S: Copy> RotationMatrix<S> for [[S; 3]; 3] {
     }
 }
 
-#[cfg(feature = "glam")]
-impl RotationMatrix<f32> for glam::Mat3 {
+#[cfg(all(feature = "glam", feature = "g3"))]
+impl RotationMatrix<f32> for crate::glam::Mat3 {
     #[inline]
     fn to_cols_array_2d(&self) -> [[f32; 3]; 3] {
-        glam::Mat3::to_cols_array_2d(self)
+        crate::glam::Mat3::to_cols_array_2d(self)
     }
 }
 
-#[cfg(feature = "glam")]
-impl RotationMatrix<f64> for glam::DMat3 {
+#[cfg(all(feature = "glam", feature = "g3"))]
+impl RotationMatrix<f64> for crate::glam::DMat3 {
     #[inline]
     fn to_cols_array_2d(&self) -> [[f64; 3]; 3] {
-        glam::DMat3::to_cols_array_2d(self)
+        crate::glam::DMat3::to_cols_array_2d(self)
     }
 }
 
@@ -436,18 +438,22 @@ macro_rules! rotor2_toolkit {
     };
 }
 
+#[cfg(all(feature = "g3", feature = "f64"))]
 mod g3_f64 {
     rotor3_toolkit!(f64);
 }
 
+#[cfg(all(feature = "g3", feature = "f32"))]
 mod g3_f32 {
     rotor3_toolkit!(f32);
 }
 
+#[cfg(all(feature = "g2", feature = "f64"))]
 mod g2_f64 {
     rotor2_toolkit!(f64);
 }
 
+#[cfg(all(feature = "g2", feature = "f32"))]
 mod g2_f32 {
     rotor2_toolkit!(f32);
 }

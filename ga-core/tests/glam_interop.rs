@@ -1,9 +1,8 @@
 //! Conversions to glam are exact inverses and rotate the same way as glam does.
-#![cfg(feature = "glam")]
 
 use ga_core::f32::g3 as s3;
 use ga_core::f64::g3 as d3;
-use glam::{DMat3, DQuat, DVec3, Mat3, Quat, Vec3};
+use ga_core::glam::{DMat3, DQuat, DVec3, Mat3, Quat, Vec3};
 
 /// A small deterministic generator (xorshift64*), so failures reproduce.
 struct Rng(u64);
@@ -100,4 +99,31 @@ fn rotor_products_compose_like_quaternion_products() {
             p * q
         );
     }
+}
+
+/// The older glam majors behind `glam-0-29` ... `glam-0-31` convert exactly as the newest.
+#[test]
+fn older_glam_versions_convert_like_the_newest() {
+    let r = (d3::Bivector::new(0.2, -0.7, 0.5) * -0.45).exp();
+    let v = d3::Vector::new(1.0, -2.0, 0.5);
+    let q: DQuat = r.into();
+    let w: DVec3 = v.into();
+    macro_rules! same {
+        ($feature:literal, $glam:ident) => {
+            #[cfg(feature = $feature)]
+            {
+                let old: ga_core::$glam::DQuat = r.into();
+                assert_eq!(old.to_array(), q.to_array());
+                assert_eq!(d3::Rotor::from(old), r);
+                let old_v: ga_core::$glam::DVec3 = v.into();
+                assert_eq!(old_v.to_array(), w.to_array());
+                let m: ga_core::$glam::Mat3 = s3::Rotor::from(old.as_quat()).into();
+                let m_new: Mat3 = s3::Rotor::from(q.as_quat()).into();
+                assert_eq!(m.to_cols_array(), m_new.to_cols_array());
+            }
+        };
+    }
+    same!("glam-0-29", glam_0_29);
+    same!("glam-0-30", glam_0_30);
+    same!("glam-0-31", glam_0_31);
 }

@@ -6,6 +6,7 @@ mod conveniences;
 mod exp_log;
 mod expr;
 mod math;
+mod integrations;
 mod operators;
 mod products;
 mod simd;
@@ -74,6 +75,7 @@ pub fn module_items(spec: &Spec, plan: &Plan) -> TokenStream {
     if has_exp || has_log {
         items.extend(exp_log::emit_scalar_functions(plan));
     }
+    items.extend(integrations::emit_integrations(spec, plan));
     if plan.lanes.is_none() {
         for &lanes in &spec.lanes {
             items.extend(batch::emit_batch_module(spec, plan, lanes));

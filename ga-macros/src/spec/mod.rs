@@ -6,4 +6,7 @@ mod parse;
 mod validate;
 
 pub use parse::{RawAlgebra, RawDerive};
-pub use validate::{check_emitted, grade_type_name, validate, Math, Op, Scalar, Spec, TypeRequest};
+pub use validate::{
+    check_emitted, grade_type_name, validate, Integration, IntegrationKind, Math, Op, Scalar, Spec,
+    TypeRequest,
+};

@@ -234,3 +234,36 @@ impl Parse for RawLanes {
         Ok(RawLanes(counts.into_iter().collect()))
     }
 }
+
+/// One element of `derive: [...]`: `#[cfg(..)] name` or `name = path::to::crate`.
+pub struct RawIntegration {
+    pub attrs: Vec<Attribute>,
+    pub name: Ident,
+    pub path: Option<syn::Path>,
+}
+
+/// `derive: [serde, bytemuck = my::bytemuck, #[cfg(feature = "approx")] approx]`.
+pub struct RawIntegrations(pub Vec<RawIntegration>);
+
+impl Parse for RawIntegrations {
+    fn parse(input: ParseStream) -> syn::Result<Self> {
+        let content;
+        bracketed!(content in input);
+        let mut entries = Vec::new();
+        while !content.is_empty() {
+            let attrs = content.call(Attribute::parse_outer)?;
+            let name: Ident = content.parse()?;
+            let path = if content.peek(Token![=]) {
+                content.parse::<Token![=]>()?;
+                Some(content.call(syn::Path::parse_mod_style)?)
+            } else {
+                None
+            };
+            entries.push(RawIntegration { attrs, name, path });
+            if !content.is_empty() {
+                content.parse::<Token![,]>()?;
+            }
+        }
+        Ok(RawIntegrations(entries))
+    }
+}

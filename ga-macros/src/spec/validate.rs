@@ -1,10 +1,12 @@
 use std::collections::BTreeSet;
 
-use proc_macro2::Span;
+use proc_macro2::{Span, TokenStream};
 use syn::{Attribute, Expr, ExprLit, ExprUnary, Ident, Lit, UnOp, Visibility};
 
 use super::ctxt::Ctxt;
-use super::parse::{RawEntry, RawLanes, RawMetric, RawOps, RawSignature, RawTypes};
+use super::parse::{
+    RawEntry, RawIntegrations, RawLanes, RawMetric, RawOps, RawSignature, RawTypes,
+};
 use crate::algebra::{parse_blade, Blade, Metric};
 
 /// The largest dimension the generator accepts: G6 already has 4,096 terms in one full
@@ -29,6 +31,8 @@ pub struct Spec {
     pub math: Math,
     /// The `ops` entries as written, to point at one whose method cannot be emitted.
     pub op_idents: Vec<Ident>,
+    /// Trait impls for other crates' traits (`derive: [serde, bytemuck, approx, mint]`).
+    pub integrations: Vec<Integration>,
 }
 
 /// The floating-point backend of the emitted `math` module (`math: ...`).
@@ -41,6 +45,43 @@ pub enum Math {
     /// `std`'s methods when the calling crate's `std` feature is on, `libm` at this path
     /// otherwise (the crate must declare a `std` feature).
     Auto(syn::Path),
+}
+
+/// A crate whose traits or types the generated types implement or convert to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum IntegrationKind {
+    Serde,
+    Bytemuck,
+    Approx,
+    Mint,
+}
+
+impl IntegrationKind {
+    const NAMES: [(&'static str, IntegrationKind); 4] = [
+        ("serde", IntegrationKind::Serde),
+        ("bytemuck", IntegrationKind::Bytemuck),
+        ("approx", IntegrationKind::Approx),
+        ("mint", IntegrationKind::Mint),
+    ];
+
+    fn from_name(name: &str) -> Option<IntegrationKind> {
+        Self::NAMES
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|&(_, kind)| kind)
+    }
+}
+
+/// One entry of `derive: [...]`: which crate, the path its items are reached by in the
+/// user's crate, and the `#[cfg(..)]` attributes that gate the impls.
+pub struct Integration {
+    pub kind: IntegrationKind,
+    /// `::serde` (spanned at the user's `serde`, so a missing dependency is reported
+    /// there) or the path written after `=`.
+    pub path: TokenStream,
+    pub cfgs: Vec<Attribute>,
+    /// The entry's name as the user wrote it, where a missing crate is reported.
+    pub span: Span,
 }
 
 /// The scalar type of the algebra.
@@ -151,7 +192,7 @@ impl Op {
     }
 }
 
-const KEYS: &str = "metric, signature, scalar, types, ops, lanes, simd, math";
+const KEYS: &str = "metric, signature, scalar, types, ops, lanes, simd, math, derive";
 
 const GRADE_NAMES: [&str; MAX_DIMENSION] = [
     "Vector",
@@ -181,6 +222,7 @@ pub fn validate(
     let mut lanes: Option<RawLanes> = None;
     let mut simd = true;
     let mut math = Math::Std;
+    let mut integrations: Option<RawIntegrations> = None;
     for entry in entries {
         let key = entry.key.to_string();
         if seen.contains(&entry.key) {
@@ -238,6 +280,10 @@ pub fn validate(
                 Ok(backend) => math = backend,
                 Err(e) => cx.syn_error(e),
             },
+            "derive" => match syn::parse2::<RawIntegrations>(value) {
+                Ok(raw) => integrations = Some(raw),
+                Err(e) => cx.syn_error(e),
+            },
             _ => cx.error_spanned_by(
                 &entry.key,
                 format!("unknown key `{key}`: expected one of {KEYS}"),
@@ -269,6 +315,9 @@ pub fn validate(
     let lanes = lanes
         .map(|raw| check_lanes(&mut cx, scalar, raw))
         .unwrap_or_default();
+    let integrations = integrations
+        .map(|raw| check_integrations(&mut cx, squares.as_deref(), raw))
+        .unwrap_or_default();
     cx.check()?;
     let Some(squares) = squares else {
         return Err(syn::Error::new(
@@ -288,6 +337,7 @@ pub fn validate(
         simd,
         math,
         op_idents,
+        integrations,
     })
 }
 
@@ -626,4 +676,68 @@ fn check_lanes(cx: &mut Ctxt, scalar: Scalar, raw: RawLanes) -> Vec<usize> {
         }
     }
     lanes
+}
+
+/// `derive: [...]`: known crate names, each once, gated only by `#[cfg(..)]`; `mint`
+/// only where its types mean something (G3's vectors, quaternions and 3x3 matrices).
+fn check_integrations(
+    cx: &mut Ctxt,
+    squares: Option<&[i8]>,
+    raw: RawIntegrations,
+) -> Vec<Integration> {
+    let mut out: Vec<Integration> = Vec::new();
+    for entry in raw.0 {
+        let name = entry.name.to_string();
+        let Some(kind) = IntegrationKind::from_name(&name) else {
+            cx.error_spanned_by(
+                &entry.name,
+                format!("unknown derive `{name}`: expected one of serde, bytemuck, approx, mint"),
+            );
+            continue;
+        };
+        if out.iter().any(|i| i.kind == kind) {
+            cx.error_spanned_by(
+                &entry.name,
+                format!("`{name}` is listed twice in `derive`: list each crate once"),
+            );
+            continue;
+        }
+        if kind == IntegrationKind::Mint && squares.is_some_and(|s| s != [1, 1, 1]) {
+            cx.error_spanned_by(
+                &entry.name,
+                "`mint` conversions (Vector3, Quaternion, ColumnMatrix3) exist only for \
+                 Euclidean space, `metric: [1, 1, 1]`: remove `mint` here",
+            );
+            continue;
+        }
+        let mut ok = true;
+        for attr in &entry.attrs {
+            if !attr.path().is_ident("cfg") {
+                ok = false;
+                cx.error_spanned_by(
+                    attr,
+                    "only `#[cfg(..)]` may gate a derive entry, e.g. \
+                     `#[cfg(feature = \"serde\")] serde`",
+                );
+            }
+        }
+        if !ok {
+            continue;
+        }
+        let path = match entry.path {
+            Some(path) => quote::quote!(#path),
+            // Spanned at the user's token, so that a missing dependency is reported at it.
+            None => {
+                let ident = &entry.name;
+                quote::quote_spanned!(ident.span()=> ::#ident)
+            }
+        };
+        out.push(Integration {
+            kind,
+            path,
+            cfgs: entry.attrs,
+            span: entry.name.span(),
+        });
+    }
+    out
 }

@@ -1,0 +1,9 @@
+ga_macros::algebra! {
+    pub mod g3 {
+        metric: [1, 1, 1],
+        scalar: f64,
+        derive: [serde, nalgebra],
+    }
+}
+
+fn main() {}
