@@ -163,6 +163,13 @@ pub mod f32 {
 }
 
 /// The README's examples, compiled and run as doctests.
-#[cfg(all(doctest, feature = "std", feature = "glam", feature = "g3", feature = "f32", feature = "f64"))]
+#[cfg(all(
+    doctest,
+    feature = "std",
+    feature = "glam",
+    feature = "g3",
+    feature = "f32",
+    feature = "f64"
+))]
 #[doc = include_str!("../../README.md")]
 struct ReadmeDoctests;
