@@ -32,21 +32,35 @@ impl<S: Copy> RotationMatrix<S> for [[S; 3]; 3] {
     }
 }
 
-#[cfg(all(feature = "glam", feature = "g3"))]
-impl RotationMatrix<f32> for crate::glam::Mat3 {
-    #[inline]
-    fn to_cols_array_2d(&self) -> [[f32; 3]; 3] {
-        crate::glam::Mat3::to_cols_array_2d(self)
-    }
+/// glam's matrices as [`RotationMatrix`], for every glam version a feature turns on.
+macro_rules! glam_rotation_matrices {
+    ($($feature:literal => $glam:ident),*) => {
+        $(
+            #[cfg(all(feature = $feature, feature = "g3"))]
+            impl RotationMatrix<f32> for crate::$glam::Mat3 {
+                #[inline]
+                fn to_cols_array_2d(&self) -> [[f32; 3]; 3] {
+                    crate::$glam::Mat3::to_cols_array_2d(self)
+                }
+            }
+
+            #[cfg(all(feature = $feature, feature = "g3"))]
+            impl RotationMatrix<f64> for crate::$glam::DMat3 {
+                #[inline]
+                fn to_cols_array_2d(&self) -> [[f64; 3]; 3] {
+                    crate::$glam::DMat3::to_cols_array_2d(self)
+                }
+            }
+        )*
+    };
 }
 
-#[cfg(all(feature = "glam", feature = "g3"))]
-impl RotationMatrix<f64> for crate::glam::DMat3 {
-    #[inline]
-    fn to_cols_array_2d(&self) -> [[f64; 3]; 3] {
-        crate::glam::DMat3::to_cols_array_2d(self)
-    }
-}
+glam_rotation_matrices!(
+    "glam-0-29" => glam_0_29,
+    "glam-0-30" => glam_0_30,
+    "glam-0-31" => glam_0_31,
+    "glam-0-32" => glam_0_32
+);
 
 /// Without the standard library, the float functions the toolkit calls come from libm
 /// (with it, the inherent methods of the same names take precedence).
