@@ -67,6 +67,8 @@ glam_rotation_matrices!(
 #[cfg(not(feature = "std"))]
 mod no_std_math {
     /// The float functions of the toolkit, for `f32` and `f64`.
+    // Which of them a build calls depends on the algebras its features turn on.
+    #[allow(dead_code)]
     pub(crate) trait Real: Sized {
         fn sqrt(self) -> Self;
         fn sin_cos(self) -> (Self, Self);
@@ -98,6 +100,7 @@ mod no_std_math {
     }
 }
 
+#[cfg(feature = "g3")]
 macro_rules! rotor3_toolkit {
     ($s:ident) => {
         #[cfg(not(feature = "std"))]
@@ -383,6 +386,8 @@ macro_rules! rotor3_toolkit {
     };
 }
 
+// Defined only where instantiated: a G3-only build has no G2 toolkit.
+#[cfg(feature = "g2")]
 macro_rules! rotor2_toolkit {
     ($s:ident) => {
         #[cfg(not(feature = "std"))]

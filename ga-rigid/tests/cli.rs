@@ -1429,6 +1429,7 @@ fn given_step_and_method_are_recorded_beside_the_csv() {
     assert_eq!(value(&record, "samples"), "11");
 }
 
+#[test]
 fn report_out_that_is_a_file_is_rejected() {
     let dir = test_dir("report_out_file");
     write(&dir, "taken", "x");
@@ -1441,6 +1442,7 @@ fn report_out_that_is_a_file_is_rejected() {
     assert_eq!(std::fs::read_to_string(dir.join("taken")).unwrap(), "x");
 }
 
+#[test]
 fn report_scenes_without_toml_files_are_rejected() {
     let dir = test_dir("report_no_scenes");
     std::fs::create_dir(dir.join("empty")).unwrap();
@@ -1455,6 +1457,7 @@ fn report_scenes_without_toml_files_are_rejected() {
     assert!(!dir.join("r").join("results.csv").exists());
 }
 
+#[test]
 fn report_scene_with_a_bad_field_is_named() {
     let dir = test_dir("report_bad_scene");
     std::fs::create_dir(dir.join("mine")).unwrap();
@@ -1477,6 +1480,7 @@ fn report_scene_with_a_bad_field_is_named() {
     );
 }
 
+#[test]
 fn simulate_plot_writes_an_svg_of_omega_and_energy_drift() {
     let dir = test_dir("simulate_plot");
     write(&dir, "scene.toml", &scene(BODY, INITIAL, RUN));
@@ -1508,6 +1512,7 @@ fn simulate_plot_writes_an_svg_of_omega_and_energy_drift() {
     assert!(dir.join("out.csv").is_file());
 }
 
+#[test]
 fn simulate_plot_into_a_missing_directory_is_rejected() {
     let dir = test_dir("simulate_plot_missing_dir");
     write(&dir, "scene.toml", &scene(BODY, INITIAL, RUN));
@@ -1532,6 +1537,7 @@ fn simulate_plot_into_a_missing_directory_is_rejected() {
     assert!(!dir.join("out.csv").exists());
 }
 
+#[test]
 fn every_registry_name_is_a_method_on_the_command_line() {
     use ga_rigid::integrators::{Method, StepKind};
     let dir = test_dir("registry_names");
