@@ -101,11 +101,29 @@ fn clap_exit(e: &clap::Error) -> u8 {
             let line = if first.is_empty() {
                 "error: invalid arguments".to_string()
             } else {
-                cut_quoted(&first.join(" "))
+                cut_quoted(&without_possible_values(&first.join(" ")))
             };
             eprintln!("{line}");
             2
         }
+    }
+}
+
+/// clap's message without its `[possible values: ...]` list, which for `--method` alone
+/// would take the line past 200 characters: `--help` lists the values with their summaries.
+fn without_possible_values(line: &str) -> String {
+    match line.find(" [possible values:") {
+        Some(start) => {
+            let end = line[start..]
+                .find(']')
+                .map_or(line.len(), |i| start + i + 1);
+            format!(
+                "{}; see --help for the values{}",
+                &line[..start],
+                &line[end..]
+            )
+        }
+        None => line.to_string(),
     }
 }
 
