@@ -8411,95 +8411,54 @@ pub mod g3 {
     impl Sandwich<Vector> for Even {
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
-            #[cfg(target_arch = "x86_64")]
-            {
-                let v = simd::F32x4::new([self.s, self.e12, self.e13, self.e23]);
-                let xs = simd::F32x4::new([x.e1, x.e2, x.e3, 0.0]);
-                let a1 = v
-                    .swizzle::<{ simd::order(1, 1, 2, 3) }>()
-                    .negate([false, true, true, false]);
-                let b1 = a1 * simd::F32x4::splat(2.0);
-                let a2 = v
-                    .swizzle::<{ simd::order(2, 3, 3, 3) }>()
-                    .negate([false, false, true, false]);
-                let b2 = a2 * simd::F32x4::splat(2.0);
-                let c = a1 * xs.swizzle::<{ simd::order(1, 0, 0, 3) }>()
-                    + a2 * xs.swizzle::<{ simd::order(2, 2, 1, 3) }>();
-                let s = v.swizzle::<{ simd::order(0, 0, 0, 0) }>();
-                let two_s = s + s;
-                let squares = v * v;
-                let pairs = squares + squares.swizzle::<{ simd::order(1, 0, 3, 2) }>();
-                let n = pairs + pairs.swizzle::<{ simd::order(2, 3, 0, 1) }>();
-                let [e1, e2, e3, ..] = ((xs * n + two_s * c)
-                    + (b1 * c.swizzle::<{ simd::order(1, 0, 0, 3) }>()
-                        + b2 * c.swizzle::<{ simd::order(2, 2, 1, 3) }>()))
-                    .to_array();
-                Vector { e1, e2, e3 }
-            }
-            #[cfg(not(target_arch = "x86_64"))]
-            {
-                let c_e1 = self.e12 * x.e2 + self.e13 * x.e3;
-                let c_e2 = self.e23 * x.e3 - self.e12 * x.e1;
-                let c_e3 = -(self.e13 * x.e1 + self.e23 * x.e2);
-                let two_s = self.s + self.s;
-                let two_e12 = self.e12 + self.e12;
-                let two_e13 = self.e13 + self.e13;
-                let two_e23 = self.e23 + self.e23;
-                let n = (self.s * self.s + self.e12 * self.e12)
-                    + (self.e13 * self.e13 + self.e23 * self.e23);
-                Vector {
-                    e1: (n * x.e1 + two_s * c_e1) + (two_e12 * c_e2 + two_e13 * c_e3),
-                    e2: (n * x.e2 + two_s * c_e2) + (two_e23 * c_e3 - two_e12 * c_e1),
-                    e3: (n * x.e3 + two_s * c_e3) + (-(two_e13 * c_e1 + two_e23 * c_e2)),
-                }
+            let two_s = self.s + self.s;
+            let two_e12 = self.e12 + self.e12;
+            let two_e13 = self.e13 + self.e13;
+            let s_s = self.s * self.s;
+            let s_e12 = two_s * self.e12;
+            let s_e13 = two_s * self.e13;
+            let s_e23 = two_s * self.e23;
+            let e12_e12 = self.e12 * self.e12;
+            let e12_e13 = two_e12 * self.e13;
+            let e12_e23 = two_e12 * self.e23;
+            let e13_e13 = self.e13 * self.e13;
+            let e13_e23 = two_e13 * self.e23;
+            let e23_e23 = self.e23 * self.e23;
+            Vector {
+                e1: (s_s + e23_e23 - e12_e12 - e13_e13) * x.e1 + (s_e12 - e13_e23) * x.e2
+                    + (s_e13 + e12_e23) * x.e3,
+                e2: (-s_e12 - e13_e23) * x.e1
+                    + (s_s + e13_e13 - e12_e12 - e23_e23) * x.e2
+                    + (s_e23 - e12_e13) * x.e3,
+                e3: (e12_e23 - s_e13) * x.e1 + (-s_e23 - e12_e13) * x.e2
+                    + (s_s + e12_e12 - e13_e13 - e23_e23) * x.e3,
             }
         }
     }
     impl Sandwich<Bivector> for Even {
         #[inline]
         fn sandwich(self, x: Bivector) -> Bivector {
-            #[cfg(target_arch = "x86_64")]
-            {
-                let v = simd::F32x4::new([self.s, self.e12, self.e13, self.e23]);
-                let xs = simd::F32x4::new([x.e12, x.e13, x.e23, 0.0]);
-                let a1 = v
-                    .swizzle::<{ simd::order(2, 3, 1, 3) }>()
-                    .negate([true, true, true, false]);
-                let b1 = a1 * simd::F32x4::splat(2.0);
-                let a2 = v.swizzle::<{ simd::order(3, 1, 2, 3) }>();
-                let b2 = a2 * simd::F32x4::splat(2.0);
-                let c = a1 * xs.swizzle::<{ simd::order(2, 0, 1, 3) }>()
-                    + a2 * xs.swizzle::<{ simd::order(1, 2, 0, 3) }>();
-                let s = v.swizzle::<{ simd::order(0, 0, 0, 0) }>();
-                let two_s = s + s;
-                let squares = v * v;
-                let pairs = squares + squares.swizzle::<{ simd::order(1, 0, 3, 2) }>();
-                let n = pairs + pairs.swizzle::<{ simd::order(2, 3, 0, 1) }>();
-                let [e12, e13, e23, ..] = ((xs * n + two_s * c)
-                    + (b1 * c.swizzle::<{ simd::order(2, 0, 1, 3) }>()
-                        + b2 * c.swizzle::<{ simd::order(1, 2, 0, 3) }>()))
-                    .to_array();
-                Bivector { e12, e13, e23 }
-            }
-            #[cfg(not(target_arch = "x86_64"))]
-            {
-                let c_e12 = self.e23 * x.e13 - self.e13 * x.e23;
-                let c_e13 = self.e12 * x.e23 - self.e23 * x.e12;
-                let c_e23 = self.e13 * x.e12 - self.e12 * x.e13;
-                let two_s = self.s + self.s;
-                let two_e12 = self.e12 + self.e12;
-                let two_e13 = self.e13 + self.e13;
-                let two_e23 = self.e23 + self.e23;
-                let n = (self.s * self.s + self.e12 * self.e12)
-                    + (self.e13 * self.e13 + self.e23 * self.e23);
-                Bivector {
-                    e12: (n * x.e12 + two_s * c_e12)
-                        + (two_e23 * c_e13 - two_e13 * c_e23),
-                    e13: (n * x.e13 + two_s * c_e13)
-                        + (two_e12 * c_e23 - two_e23 * c_e12),
-                    e23: (n * x.e23 + two_s * c_e23)
-                        + (two_e13 * c_e12 - two_e12 * c_e13),
-                }
+            let two_s = self.s + self.s;
+            let two_e12 = self.e12 + self.e12;
+            let two_e13 = self.e13 + self.e13;
+            let s_s = self.s * self.s;
+            let s_e12 = two_s * self.e12;
+            let s_e13 = two_s * self.e13;
+            let s_e23 = two_s * self.e23;
+            let e12_e12 = self.e12 * self.e12;
+            let e12_e13 = two_e12 * self.e13;
+            let e12_e23 = two_e12 * self.e23;
+            let e13_e13 = self.e13 * self.e13;
+            let e13_e23 = two_e13 * self.e23;
+            let e23_e23 = self.e23 * self.e23;
+            Bivector {
+                e12: (s_s + e12_e12 - e13_e13 - e23_e23) * x.e12
+                    + (s_e23 + e12_e13) * x.e13 + (e12_e23 - s_e13) * x.e23,
+                e13: (e12_e13 - s_e23) * x.e12
+                    + (s_s + e13_e13 - e12_e12 - e23_e23) * x.e13
+                    + (s_e12 + e13_e23) * x.e23,
+                e23: (s_e13 + e12_e23) * x.e12 + (e13_e23 - s_e12) * x.e13
+                    + (s_s + e23_e23 - e12_e12 - e13_e13) * x.e23,
             }
         }
     }

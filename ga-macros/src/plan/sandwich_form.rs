@@ -227,10 +227,8 @@ impl Plan {
     }
 
     /// The cheapest form of `v x ~v` (exact for any versor) or, with `unit`, of the same
-    /// map for a unit versor. Throughput decides, on both port layouts ([`super::cost`]);
-    /// forms within 10% of the best throughput are ranked by their latency along `x` (what
-    /// a chain of sandwiches waits on), and a form more than twice the lowest latency is
-    /// not considered.
+    /// map for a unit versor (always the commutator form, in lanes where they are cheaper):
+    /// see [`pick`] for how the exact sandwich's form is chosen.
     pub fn sandwich_form(&self, v: TypeId, x: TypeId, unit: bool) -> Option<SandwichForm> {
         let commutator = self.commutator_terms(v, x);
         if unit {
@@ -359,8 +357,13 @@ fn sum_depth(terms: usize) -> usize {
     1 + terms.next_power_of_two().trailing_zeros() as usize
 }
 
-/// Throughput first; among forms within 10% of the best, the lowest latency along `x`;
-/// forms above twice the lowest latency are out.
+/// Latency along `x` first: of the forms within a quarter of the lowest latency, the one
+/// with the best throughput on the worse of the two port layouts. Latency leads because a
+/// chain of sandwiches cannot hide it, while LLVM packs the collected form's last stage
+/// (a small matrix times `x`) into vector instructions itself, which this count does not
+/// see: measured on AMD Zen 5, the collected G3 `f32` form took 1.73 ns a rotation in a
+/// batch and the commutator form in lanes 2.44 ns, though the count favours the lanes
+/// (BENCHMARKS.md, issue 7).
 fn pick(candidates: Vec<(FormCost, SandwichForm)>) -> Option<SandwichForm> {
     let throughput = |c: &FormCost| {
         c.counts
@@ -368,18 +371,10 @@ fn pick(candidates: Vec<(FormCost, SandwichForm)>) -> Option<SandwichForm> {
             .max(c.counts.split_pipes_cycles())
     };
     let fastest_latency = candidates.iter().map(|(c, _)| c.latency).min()?;
-    let eligible: Vec<_> = candidates
+    candidates
         .into_iter()
-        .filter(|(c, _)| c.latency <= 2 * fastest_latency)
-        .collect();
-    let best = eligible
-        .iter()
-        .map(|(c, _)| throughput(c))
-        .fold(f64::INFINITY, f64::min);
-    eligible
-        .into_iter()
-        .filter(|(c, _)| throughput(c) <= best * 1.1)
-        .min_by_key(|(c, _)| c.latency)
+        .filter(|(c, _)| 4 * c.latency <= 5 * fastest_latency)
+        .min_by(|(a, _), (b, _)| throughput(a).total_cmp(&throughput(b)))
         .map(|(_, form)| form)
 }
 
