@@ -162,16 +162,7 @@ fn product_impl(plan: &Plan, kind: ProductKind, a: TypeId, b: TypeId) -> TokenSt
         Some(form) => {
             let lanes =
                 super::simd::lane_body(plan, &form, (&quote!(self), a), (&quote!(rhs), b), output);
-            quote! {
-                #[cfg(target_arch = "x86_64")]
-                {
-                    #lanes
-                }
-                #[cfg(not(target_arch = "x86_64"))]
-                {
-                    #value
-                }
-            }
+            super::simd::target_arms(lanes, value)
         }
         None => value,
     };

@@ -35,6 +35,20 @@ pub fn module_uses_lanes(plan: &Plan) -> bool {
     products || sandwiches
 }
 
+/// A body with a SIMD arm for x86-64 and the scalar arm for every other target.
+pub fn target_arms(simd: TokenStream, scalar: TokenStream) -> TokenStream {
+    quote! {
+        #[cfg(target_arch = "x86_64")]
+        {
+            #simd
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            #scalar
+        }
+    }
+}
+
 /// The `simd` module: an SSE register of four `f32` behind arithmetic operators, a
 /// broadcast, a swizzle, a sign flip and a lane mask. Every `unsafe` block of the
 /// generated code is here.

@@ -113,16 +113,7 @@ fn commutator_body(
         None => scalar,
         Some(lanes) => {
             let simd = super::simd::commutator_sandwich_lanes(plan, v, x, lanes, unit);
-            quote! {
-                #[cfg(target_arch = "x86_64")]
-                {
-                    #simd
-                }
-                #[cfg(not(target_arch = "x86_64"))]
-                {
-                    #scalar
-                }
-            }
+            super::simd::target_arms(simd, scalar)
         }
     }
 }
