@@ -3,7 +3,7 @@
 //! instruction set this CPU selects; and they refuse slices of different lengths without
 //! writing anything.
 
-use ga_core::kernels::{self, LengthMismatch};
+use ga_core::kernels::{self, InstructionSet, LengthMismatch};
 
 struct Rng(u64);
 
@@ -86,6 +86,55 @@ macro_rules! kernel_tests {
                             (all[i] - direct).norm() <= tolerance * scale,
                             "sandwich_all against sandwich, length {len}, item {i}"
                         );
+                    }
+                }
+            }
+
+            /// Every copy of `mul_pairs` this CPU can run (not only the one it picks),
+            /// bit for bit against the one-item product, with special values in the
+            /// inputs (signed zeros, infinities, NaN) where a wrong operation order or a
+            /// fused multiply-add would show.
+            #[test]
+            fn every_copy_of_mul_pairs_equals_the_one_item_product() {
+                let mut rng = Rng(13);
+                let specials = [0.0, -0.0, 1.0, <$scalar>::INFINITY, <$scalar>::MAX, 1e-30];
+                for set in [
+                    InstructionSet::Avx512f,
+                    InstructionSet::Avx2Fma,
+                    InstructionSet::Baseline,
+                ] {
+                    for len in [0, 1, 3, 4, 5, 7, 8, 9, 15, 16, 17, 31, 33, 64, 100] {
+                        let mut a: Vec<g3::Rotor> = (0..len).map(|_| rotor(&mut rng)).collect();
+                        let b: Vec<g3::Rotor> = (0..len).map(|_| rotor(&mut rng)).collect();
+                        for (i, item) in a.iter_mut().enumerate().step_by(3) {
+                            let mut parts = item.to_array();
+                            parts[i % 4] = specials[i % specials.len()];
+                            *item = g3::Rotor::from_array(parts);
+                        }
+                        let mut out = vec![g3::Rotor::ZERO; len];
+                        let ran = kernels::$scalar::mul_pairs_on(set, &a, &b, &mut out).unwrap();
+                        // f64 has no 512-bit copy and runs the AVX2 one instead.
+                        let expected_set = match set {
+                            _ if !set.is_available() => InstructionSet::Baseline,
+                            InstructionSet::Avx512f if stringify!($scalar) == "f64" => {
+                                InstructionSet::Avx2Fma
+                            }
+                            _ => set,
+                        };
+                        assert_eq!(ran, expected_set, "{set:?}");
+                        for i in 0..len {
+                            let expected = a[i] * b[i];
+                            let same = out[i]
+                                .to_array()
+                                .iter()
+                                .zip(expected.to_array())
+                                .all(|(x, y)| x.to_bits() == y.to_bits());
+                            assert!(
+                                same,
+                                "{set:?}, length {len}, item {i}: {:?} against {expected:?}",
+                                out[i]
+                            );
+                        }
                     }
                 }
             }

@@ -77,7 +77,7 @@ pub mod g3 {
             x.ln_1p()
         }
         #[inline]
-        pub(super) fn sin_cos(x: f32) -> (f32, f32) {
+        fn sin_cos_any(x: f32) -> (f32, f32) {
             x.sin_cos()
         }
         #[inline]
@@ -87,6 +87,50 @@ pub mod g3 {
         #[inline]
         pub(super) fn hypot(x: f32, y: f32) -> f32 {
             x.hypot(y)
+        }
+        /// `(sin x, cos x)` by one reduction to `|r| <= pi/4` and two polynomials, for
+        /// `|x| <= 2^19`; beyond that, and for NaN and infinities, the library's.
+        #[inline]
+        pub(super) fn sin_cos(x: f32) -> (f32, f32) {
+            if !(x.abs() <= 524288.0) {
+                return sin_cos_any(x);
+            }
+            let x: f64 = x as f64;
+            let n = (x * ::core::f64::consts::FRAC_2_PI + 6755399441055744.0)
+                - 6755399441055744.0;
+            let r = ((x - n * 1.5707963267341256) - n * 6.077100506303966e-11)
+                - n * 2.0222662487959506e-21;
+            let z = r * r;
+            let z2 = z * z;
+            let z4 = z2 * z2;
+            let sin = r
+                + r * z
+                    * (((-0.16666666666666666 + z * 0.008333333333333333)
+                        + z2 * (-1.984126984126984e-4 + z * 2.7557319223985893e-6))
+                        + z4 * -2.505210838544172e-8);
+            let half = 0.5 * z;
+            let w = 1.0 - half;
+            let cos = w
+                + (((1.0 - w) - half)
+                    + z2
+                        * ((0.041666666666666664 + z * -0.001388888888888889)
+                            + z2 * (2.48015873015873e-5 + z * -2.755731922398589e-7)));
+            let (sin, cos) = quadrant(sin, cos, n as i64 as u64);
+            (sin as f32, cos as f32)
+        }
+        /// `(sin, cos)` of `r + q pi/2` from those of `r`: odd quadrants swap the two, and
+        /// the signs follow the quadrant, by bit operations rather than branches that
+        /// random angles would mispredict.
+        #[inline]
+        fn quadrant(sin: f64, cos: f64, q: u64) -> (f64, f64) {
+            let swap = (q & 1).wrapping_neg();
+            let (s, c) = (sin.to_bits(), cos.to_bits());
+            let first = (s & !swap) | (c & swap);
+            let second = (c & !swap) | (s & swap);
+            (
+                f64::from_bits(first ^ ((q & 2) << 62)),
+                f64::from_bits(second ^ ((q.wrapping_add(1) & 2) << 62)),
+            )
         }
     }
     /// A sum of squares at least this large lost nothing that matters to underflow: a
@@ -12072,8 +12116,14 @@ pub mod g3 {
         #[inline]
         #[must_use]
         pub fn exp(self) -> Even {
-            let [x, root] = square_and_root(self);
-            let [even, weight] = cosh_sinhc(x, root);
+            let x: f32 = -((self.e12 * self.e12 + self.e13 * self.e13)
+                + self.e23 * self.e23);
+            let [even, weight] = if x.abs() <= SERIES_MAX {
+                cosh_sinhc_series(x)
+            } else {
+                let [x, root] = square_and_root(self);
+                cosh_sinhc(x, root)
+            };
             Even {
                 s: even,
                 e12: weight * self.e12,
@@ -12116,6 +12166,30 @@ pub mod g3 {
             if log.to_array().iter().all(|c| c.is_finite()) { Some(log) } else { None }
         }
     }
+    /// The bound on `|x|` below which `cosh_sinhc_series` is exact to rounding.
+    #[allow(dead_code)]
+    const SERIES_MAX: f32 = 2.5;
+    /// `[cosh(sqrt x), sinh(sqrt x)/sqrt x]`, that is `[cos r, sin(r)/r]` for
+    /// `x = -r^2`, by their series for `|x| <= SERIES_MAX`.
+    #[allow(dead_code)]
+    #[inline]
+    fn cosh_sinhc_series(x: f32) -> [f32; 2] {
+        let z: f64 = x as f64;
+        let z2 = z * z;
+        let z4 = z2 * z2;
+        let z8 = z4 * z4;
+        let cosh = (((1.0 + z * 0.5)
+            + z2 * (0.041666666666666664 + z * 0.001388888888888889))
+            + z4
+                * ((2.48015873015873e-5 + z * 2.755731922398589e-7)
+                    + z2 * 2.08767569878681e-9));
+        let sinhc = (((1.0 + z * 0.16666666666666666)
+            + z2 * (0.008333333333333333 + z * 1.984126984126984e-4))
+            + z4
+                * ((2.7557319223985893e-6 + z * 2.505210838544172e-8)
+                    + z2 * 1.6059043836821613e-10));
+        [cosh as f32, sinhc as f32]
+    }
     /// `[x, sqrt |x|]` for `x = <B B>_0`, the root right to a few ulps at every
     /// magnitude: when the squares could overflow or underflow, `B` is first divided
     /// by its largest component, and `x` then carries only the sign of `<B B>_0`.
@@ -12146,13 +12220,16 @@ pub mod g3 {
     }
     /// `[cosh r, sinh(r)/r]` for `x > 0` and `[cos r, sin(r)/r]` for `x < 0`, where
     /// `r = sqrt |x|` is given (only the sign of `x` is read); the ratio by its series
-    /// where `r` is tiny. `sin_cos` reduces any finite angle modulo 2 pi exactly.
+    /// where `r` is tiny. `sin_cos` reduces any finite angle modulo 2 pi exactly. The
+    /// reciprocal of `r` is taken before the sine, so that the division runs beside
+    /// the series rather than after them.
     #[allow(dead_code)]
     #[inline]
     fn cosh_sinhc(x: f32, r: f32) -> [f32; 2] {
         if x < 0.0 {
+            let inverse = 1.0 / r;
             let (sin, cos) = math::sin_cos(r);
-            [cos, if r < 1e-4 { 1.0 - r * r / 6.0 } else { sin / r }]
+            [cos, if r < 1e-4 { 1.0 - r * r / 6.0 } else { sin * inverse }]
         } else if x > 0.0 {
             [math::cosh(r), if r < 1e-4 { 1.0 + r * r / 6.0 } else { math::sinh(r) / r }]
         } else {

@@ -33,8 +33,13 @@ pub fn emit_exp(plan: &Plan) -> TokenStream {
             b.blade(plan, blade).map(|c| quote!(weight * #c))
         });
         quote! {
-            let [x, root] = square_and_root(self);
-            let [even, weight] = cosh_sinhc(x, root);
+            let x: #s = #square;
+            let [even, weight] = if x.abs() <= SERIES_MAX {
+                cosh_sinhc_series(x)
+            } else {
+                let [x, root] = square_and_root(self);
+                cosh_sinhc(x, root)
+            };
             #value
         }
     } else if n == 4 && plan.metric.pseudoscalar_square() > 0 {
@@ -346,7 +351,10 @@ pub fn emit_scalar_functions(plan: &Plan) -> TokenStream {
     let indices: Vec<usize> = (0..grade_blades(plan, 2).len()).collect();
     let largest = super::unary::largest_abs(plan, &b, &indices);
     let descaled = super::unary::descaled(plan, &b, &quote!(largest));
+    let even_series = super::sin_cos::emit_even_series(plan.scalar);
     quote! {
+        #even_series
+
         /// `[x, sqrt |x|]` for `x = <B B>_0`, the root right to a few ulps at every
         /// magnitude: when the squares could overflow or underflow, `B` is first divided
         /// by its largest component, and `x` then carries only the sign of `<B B>_0`.
@@ -375,13 +383,16 @@ pub fn emit_scalar_functions(plan: &Plan) -> TokenStream {
 
         /// `[cosh r, sinh(r)/r]` for `x > 0` and `[cos r, sin(r)/r]` for `x < 0`, where
         /// `r = sqrt |x|` is given (only the sign of `x` is read); the ratio by its series
-        /// where `r` is tiny. `sin_cos` reduces any finite angle modulo 2 pi exactly.
+        /// where `r` is tiny. `sin_cos` reduces any finite angle modulo 2 pi exactly. The
+        /// reciprocal of `r` is taken before the sine, so that the division runs beside
+        /// the series rather than after them.
         #[allow(dead_code)]
         #[inline]
         fn cosh_sinhc(x: #s, r: #s) -> [#s; 2] {
             if x < 0.0 {
+                let inverse = 1.0 / r;
                 let (sin, cos) = math::sin_cos(r);
-                [cos, if r < 1e-4 { 1.0 - r * r / 6.0 } else { sin / r }]
+                [cos, if r < 1e-4 { 1.0 - r * r / 6.0 } else { sin * inverse }]
             } else if x > 0.0 {
                 [math::cosh(r), if r < 1e-4 { 1.0 + r * r / 6.0 } else { math::sinh(r) / r }]
             } else {

@@ -34,7 +34,7 @@ fn std_module(s: &TokenStream) -> TokenStream {
         #(#unary)*
 
         #[inline]
-        pub(super) fn sin_cos(x: #s) -> (#s, #s) {
+        fn sin_cos_any(x: #s) -> (#s, #s) {
             x.sin_cos()
         }
 
@@ -69,7 +69,7 @@ fn libm_module(s: &TokenStream, scalar: Scalar, path: &syn::Path) -> TokenStream
         #(#unary)*
 
         #[inline]
-        pub(super) fn sin_cos(x: #s) -> (#s, #s) {
+        fn sin_cos_any(x: #s) -> (#s, #s) {
             #path::#sincos(x)
         }
 
@@ -92,13 +92,14 @@ pub fn emit_math(plan: &Plan, math: &Math) -> TokenStream {
     let s = scalar_type(plan);
     let doc = "The floating-point functions beyond `core` that this algebra calls, in one \
                place (the `math:` key of `algebra!` chooses `std` or `libm`).";
+    let sin_cos = super::sin_cos::emit_sin_cos(plan.scalar);
     let module = match math {
         Math::Std => {
             let body = std_module(&s);
             quote! {
                 #[doc = #doc]
                 #[allow(dead_code)]
-                mod math { #body }
+                mod math { #body #sin_cos }
             }
         }
         Math::Libm(path) => {
@@ -106,7 +107,7 @@ pub fn emit_math(plan: &Plan, math: &Math) -> TokenStream {
             quote! {
                 #[doc = #doc]
                 #[allow(dead_code)]
-                mod math { #body }
+                mod math { #body #sin_cos }
             }
         }
         Math::Auto(path) => {
@@ -116,12 +117,12 @@ pub fn emit_math(plan: &Plan, math: &Math) -> TokenStream {
                 #[doc = #doc]
                 #[cfg(feature = "std")]
                 #[allow(dead_code)]
-                mod math { #with_std }
+                mod math { #with_std #sin_cos }
 
                 #[doc = #doc]
                 #[cfg(not(feature = "std"))]
                 #[allow(dead_code)]
-                mod math { #without }
+                mod math { #without #sin_cos }
             }
         }
     };

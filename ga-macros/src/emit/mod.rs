@@ -10,6 +10,7 @@ mod math;
 mod operators;
 mod products;
 mod simd;
+mod sin_cos;
 mod types;
 mod unary;
 mod versor;

@@ -52,17 +52,53 @@ fn same_length(input: usize, other: usize) -> Result<(), LengthMismatch> {
 /// The instruction set the kernels run on here: `"avx512f"`, `"avx2+fma"` or
 /// `"baseline"` (SSE2 on x86-64, the target's default elsewhere).
 pub fn instruction_set() -> &'static str {
-    #[cfg(target_arch = "x86_64")]
-    {
-        if std::arch::is_x86_feature_detected!("avx512f") {
-            return "avx512f";
-        }
-        if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma")
-        {
-            return "avx2+fma";
+    InstructionSet::detect().name()
+}
+
+/// An instruction set a kernel has a copy for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum InstructionSet {
+    /// AVX-512F (with AVX2 and FMA, which every AVX-512F CPU has).
+    Avx512f,
+    /// AVX2 and FMA.
+    Avx2Fma,
+    /// The target's baseline: SSE2 on x86-64.
+    Baseline,
+}
+
+impl InstructionSet {
+    /// The widest set this CPU has.
+    pub fn detect() -> Self {
+        [Self::Avx512f, Self::Avx2Fma]
+            .into_iter()
+            .find(|set| set.is_available())
+            .unwrap_or(Self::Baseline)
+    }
+
+    /// Whether this CPU can run the set.
+    pub fn is_available(self) -> bool {
+        match self {
+            #[cfg(target_arch = "x86_64")]
+            Self::Avx512f => std::arch::is_x86_feature_detected!("avx512f"),
+            #[cfg(target_arch = "x86_64")]
+            Self::Avx2Fma => {
+                std::arch::is_x86_feature_detected!("avx2")
+                    && std::arch::is_x86_feature_detected!("fma")
+            }
+            #[cfg(not(target_arch = "x86_64"))]
+            Self::Avx512f | Self::Avx2Fma => false,
+            Self::Baseline => true,
         }
     }
-    "baseline"
+
+    /// `"avx512f"`, `"avx2+fma"` or `"baseline"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Avx512f => "avx512f",
+            Self::Avx2Fma => "avx2+fma",
+            Self::Baseline => "baseline",
+        }
+    }
 }
 
 /// Writes one kernel in three copies (AVX-512, AVX2 + FMA, baseline) and the function that
@@ -109,7 +145,7 @@ macro_rules! g3_kernels {
     ($scalar:ident) => {
         #[doc = concat!("The kernels on `ga_core::", stringify!($scalar), "::g3`.")]
         pub mod $scalar {
-            use super::{same_length, LengthMismatch};
+            use super::{same_length, InstructionSet, LengthMismatch};
             use crate::$scalar::g3::{Rotor, Sandwich, Vector};
 
             /// `out[i] = r x[i] ~r` for every `i`: one rotor on many vectors, its matrix
@@ -153,7 +189,10 @@ macro_rules! g3_kernels {
                 )
             }
 
-            /// `out[i] = a[i] b[i]` for every `i`.
+            /// `out[i] = a[i] b[i]` for every `i`, bit for bit what `a[i] * b[i]` gives.
+            /// With AVX2 (AVX-512) the rotors are taken 8 (16) at a time for `f32`, 4
+            /// (8) for `f64`, transposed into one register per component, multiplied
+            /// with the one-item product's operations in its order, and transposed back.
             ///
             /// # Errors
             /// [`LengthMismatch`] when the three slices differ in length (nothing is
@@ -163,18 +202,48 @@ macro_rules! g3_kernels {
                 b: &[Rotor],
                 out: &mut [Rotor],
             ) -> Result<(), LengthMismatch> {
-                same_length(a.len(), b.len())?;
-                same_length(a.len(), out.len())?;
-                mul_checked(a, b, out);
-                Ok(())
+                mul_pairs_on(InstructionSet::detect(), a, b, out).map(|_| ())
             }
 
-            dispatched! {
-                /// `out[i] = a[i] b[i]`, the lengths already checked.
-                fn mul_checked(a: &[Rotor], b: &[Rotor], out: &mut [Rotor]) {
-                    for ((slot, &p), &q) in out.iter_mut().zip(a).zip(b) {
-                        *slot = p * q;
+            /// [`mul_pairs`] on the instruction set `set`, or on the baseline where this
+            /// CPU lacks it; returns the set that ran. For comparing the copies (they
+            /// agree bit for bit) and for timing each.
+            ///
+            /// # Errors
+            /// [`LengthMismatch`] when the three slices differ in length (nothing is
+            /// written).
+            pub fn mul_pairs_on(
+                set: InstructionSet,
+                a: &[Rotor],
+                b: &[Rotor],
+                out: &mut [Rotor],
+            ) -> Result<InstructionSet, LengthMismatch> {
+                same_length(a.len(), b.len())?;
+                same_length(a.len(), out.len())?;
+                #[cfg(target_arch = "x86_64")]
+                {
+                    if set == InstructionSet::Avx512f && set.is_available() {
+                        // SAFETY: the CPU has AVX-512F (checked just above); the
+                        // lengths are equal (checked above).
+                        return Ok(unsafe { super::x86::$scalar::mul_pairs_avx512(a, b, out) });
                     }
+                    if set == InstructionSet::Avx2Fma && set.is_available() {
+                        // SAFETY: the CPU has AVX2 (checked just above); the lengths
+                        // are equal (checked above).
+                        return Ok(unsafe { super::x86::$scalar::mul_pairs_avx2(a, b, out) });
+                    }
+                }
+                let _ = set;
+                mul_items(a, b, out);
+                Ok(InstructionSet::Baseline)
+            }
+
+            /// `out[i] = a[i] b[i]` one item at a time (the kernels' tails, and the
+            /// baseline).
+            #[inline(always)]
+            pub(super) fn mul_items(a: &[Rotor], b: &[Rotor], out: &mut [Rotor]) {
+                for ((slot, &p), &q) in out.iter_mut().zip(a).zip(b) {
+                    *slot = p * q;
                 }
             }
 
@@ -212,85 +281,5 @@ g3_kernels!(f32);
 #[cfg(feature = "f64")]
 g3_kernels!(f64);
 
-/// A matrix on many vectors with AVX2 and FMA: the matrix's columns in one register each,
-/// each vector's components broadcast from memory (a load, no shuffle), two fused
-/// multiply-adds, and one store of a whole register. The store is one component wider than
-/// a vector; it runs ahead into the next output slot, which the next iteration overwrites,
-/// and the last vector is written by the scalar code.
 #[cfg(target_arch = "x86_64")]
-mod x86 {
-    #[cfg(feature = "f32")]
-    pub mod f32 {
-        use crate::f32::g3::Vector;
-        use core::arch::x86_64::{
-            _mm_broadcast_ss, _mm_fmadd_ps, _mm_mul_ps, _mm_set_ps, _mm_storeu_ps,
-        };
-
-        /// `out[i] = m x[i]`.
-        ///
-        /// # Safety
-        /// The CPU has AVX2 and FMA, and `x` and `out` have the same length.
-        #[target_feature(enable = "avx2,fma")]
-        pub unsafe fn apply_matrix(m: [[f32; 3]; 3], x: &[Vector], out: &mut [Vector]) {
-            let Some(last) = x.len().checked_sub(1) else {
-                return;
-            };
-            let column = |c: usize| _mm_set_ps(0.0, m[2][c], m[1][c], m[0][c]);
-            let (c0, c1, c2) = (column(0), column(1), column(2));
-            let output = out.as_mut_ptr().cast::<f32>();
-            for (i, v) in x[..last].iter().enumerate() {
-                let y = _mm_fmadd_ps(
-                    c2,
-                    _mm_broadcast_ss(&v.e3),
-                    _mm_fmadd_ps(
-                        c1,
-                        _mm_broadcast_ss(&v.e2),
-                        _mm_mul_ps(c0, _mm_broadcast_ss(&v.e1)),
-                    ),
-                );
-                // SAFETY: `Vector` is `#[repr(C)]` of three `f32`, so slot `i` starts at
-                // float `3 i`; the four floats written are slot `i` and the first
-                // component of slot `i + 1`, which exists because `i < last`.
-                unsafe { _mm_storeu_ps(output.add(3 * i), y) };
-            }
-            out[last] = super::super::f32::apply(&m, &x[last]);
-        }
-    }
-
-    #[cfg(feature = "f64")]
-    pub mod f64 {
-        use crate::f64::g3::Vector;
-        use core::arch::x86_64::{
-            _mm256_broadcast_sd, _mm256_fmadd_pd, _mm256_mul_pd, _mm256_set_pd, _mm256_storeu_pd,
-        };
-
-        /// `out[i] = m x[i]`.
-        ///
-        /// # Safety
-        /// The CPU has AVX2 and FMA, and `x` and `out` have the same length.
-        #[target_feature(enable = "avx2,fma")]
-        pub unsafe fn apply_matrix(m: [[f64; 3]; 3], x: &[Vector], out: &mut [Vector]) {
-            let Some(last) = x.len().checked_sub(1) else {
-                return;
-            };
-            let column = |c: usize| _mm256_set_pd(0.0, m[2][c], m[1][c], m[0][c]);
-            let (c0, c1, c2) = (column(0), column(1), column(2));
-            let output = out.as_mut_ptr().cast::<f64>();
-            for (i, v) in x[..last].iter().enumerate() {
-                let y = _mm256_fmadd_pd(
-                    c2,
-                    _mm256_broadcast_sd(&v.e3),
-                    _mm256_fmadd_pd(
-                        c1,
-                        _mm256_broadcast_sd(&v.e2),
-                        _mm256_mul_pd(c0, _mm256_broadcast_sd(&v.e1)),
-                    ),
-                );
-                // SAFETY: as for f32: slot `i` starts at double `3 i`, and the fourth
-                // double written is the first component of slot `i + 1 <= last`.
-                unsafe { _mm256_storeu_pd(output.add(3 * i), y) };
-            }
-            out[last] = super::super::f64::apply(&m, &x[last]);
-        }
-    }
-}
+mod x86;

@@ -1,0 +1,236 @@
+//! Rotor products of two slices with a register per component.
+//!
+//! A G3 rotor is four components, so one item's product in lanes spends a swizzle on
+//! three of its four terms and a broadcast on each, and Intel cores have one port for
+//! shuffles. Here four registers of rotors are transposed into four registers of
+//! components (the `s`, `e12`, `e13` and `e23` of 8 `f32` items in AVX2, 16 in AVX-512,
+//! 4 `f64` items in AVX2), the product is 16 multiplies and 12 additions for all of them,
+//! and the result is transposed back: 24 shuffles per 8 (or 16) `f32` items, 12 per 4
+//! `f64` items, where the lane form needs 3 swizzles per item and 4 broadcasts.
+//!
+//! The arithmetic is the one-item product's, operation for operation and in its order,
+//! without fused multiply-adds: each result is bit for bit `a[i] * b[i]`. The `f32` and
+//! `f64` products pair the terms of `e23` differently (the `f32` one follows its lane
+//! form), so each precision has its own order below; `ga-core/tests/kernels.rs` checks
+//! every copy against the one-item product with `==`.
+
+/// `[s, e12, e13, e23]` of `a b`, component registers in, component registers out, with
+/// `add`, `sub` and `mul` the lane-wise operations; `e23` pairs its terms as the
+/// precision's one-item product does.
+macro_rules! rotor_product {
+    ($a:expr, $b:expr, $add:ident, $sub:ident, $mul:ident, e23: $e23:ident) => {{
+        let [a_s, a_12, a_13, a_23] = $a;
+        let [b_s, b_12, b_13, b_23] = $b;
+        [
+            $sub(
+                $sub($mul(a_s, b_s), $mul(a_12, b_12)),
+                $add($mul(a_13, b_13), $mul(a_23, b_23)),
+            ),
+            $add(
+                $add($mul(a_s, b_12), $mul(a_12, b_s)),
+                $sub($mul(a_23, b_13), $mul(a_13, b_23)),
+            ),
+            $add(
+                $add($mul(a_s, b_13), $mul(a_12, b_23)),
+                $sub($mul(a_13, b_s), $mul(a_23, b_12)),
+            ),
+            rotor_product!(@$e23 a_s, a_12, a_13, a_23, b_s, b_12, b_13, b_23, $add, $sub, $mul),
+        ]
+    }};
+    // (s b23 + a13 b12) + (a23 bs - a12 b13): the f64 product's order.
+    (@scalar_first $as:ident, $a12:ident, $a13:ident, $a23:ident,
+     $bs:ident, $b12:ident, $b13:ident, $b23:ident, $add:ident, $sub:ident, $mul:ident) => {
+        $add(
+            $add($mul($as, $b23), $mul($a13, $b12)),
+            $sub($mul($a23, $bs), $mul($a12, $b13)),
+        )
+    };
+    // (a23 bs + a13 b12) + (s b23 - a12 b13): the f32 lane form's order.
+    (@lane_order $as:ident, $a12:ident, $a13:ident, $a23:ident,
+     $bs:ident, $b12:ident, $b13:ident, $b23:ident, $add:ident, $sub:ident, $mul:ident) => {
+        $add(
+            $add($mul($a23, $bs), $mul($a13, $b12)),
+            $sub($mul($as, $b23), $mul($a12, $b13)),
+        )
+    };
+}
+
+/// Four registers of `f32` rotors (one rotor per 128-bit lane) to four registers of
+/// components, or back: a 4 x 4 transpose within each 128-bit lane, which is its own
+/// inverse. The items come out in a permuted order (0, 2, 4, 6, 1, 3, 5, 7 for 256 bits),
+/// the same for every component, which is all a lane-wise product needs.
+macro_rules! transpose_in_lanes {
+    ($y:expr, $lo:ident, $hi:ident, $shuffle:ident) => {{
+        let [y0, y1, y2, y3] = $y;
+        let (t0, t1) = ($lo(y0, y1), $hi(y0, y1));
+        let (t2, t3) = ($lo(y2, y3), $hi(y2, y3));
+        [
+            $shuffle::<0b01_00_01_00>(t0, t2),
+            $shuffle::<0b11_10_11_10>(t0, t2),
+            $shuffle::<0b01_00_01_00>(t1, t3),
+            $shuffle::<0b11_10_11_10>(t1, t3),
+        ]
+    }};
+}
+
+#[cfg(feature = "f32")]
+pub mod f32 {
+    use core::arch::x86_64::{
+        _mm256_add_ps, _mm256_loadu_ps, _mm256_mul_ps, _mm256_shuffle_ps, _mm256_storeu_ps,
+        _mm256_sub_ps, _mm256_unpackhi_ps, _mm256_unpacklo_ps, _mm512_add_ps, _mm512_loadu_ps,
+        _mm512_mul_ps, _mm512_shuffle_ps, _mm512_storeu_ps, _mm512_sub_ps, _mm512_unpackhi_ps,
+        _mm512_unpacklo_ps,
+    };
+
+    use crate::f32::g3::Rotor;
+    use crate::kernels::InstructionSet;
+
+    /// `out[i] = a[i] b[i]`, 8 items a round in 256-bit registers.
+    ///
+    /// # Safety
+    /// The CPU has AVX2, and the three slices have the same length.
+    #[target_feature(enable = "avx2")]
+    pub unsafe fn mul_pairs_avx2(a: &[Rotor], b: &[Rotor], out: &mut [Rotor]) -> InstructionSet {
+        const ITEMS: usize = 8;
+        let full = a.len() / ITEMS * ITEMS;
+        let (pa, pb) = (a.as_ptr().cast::<f32>(), b.as_ptr().cast::<f32>());
+        let po = out.as_mut_ptr().cast::<f32>();
+        for i in (0..full).step_by(ITEMS) {
+            // SAFETY: `Rotor` is `#[repr(C)]` of four `f32`, so items `i..i + 8` are the 32
+            // floats from `4 i`, and `i + 8 <= full <= len` in all three slices.
+            let (x, y) = unsafe {
+                (
+                    [0, 8, 16, 24].map(|k| _mm256_loadu_ps(pa.add(4 * i + k))),
+                    [0, 8, 16, 24].map(|k| _mm256_loadu_ps(pb.add(4 * i + k))),
+                )
+            };
+            let x =
+                transpose_in_lanes!(x, _mm256_unpacklo_ps, _mm256_unpackhi_ps, _mm256_shuffle_ps);
+            let y =
+                transpose_in_lanes!(y, _mm256_unpacklo_ps, _mm256_unpackhi_ps, _mm256_shuffle_ps);
+            let p =
+                rotor_product!(x, y, _mm256_add_ps, _mm256_sub_ps, _mm256_mul_ps, e23: lane_order);
+            let p =
+                transpose_in_lanes!(p, _mm256_unpacklo_ps, _mm256_unpackhi_ps, _mm256_shuffle_ps);
+            for (k, register) in p.into_iter().enumerate() {
+                // SAFETY: as for the loads.
+                unsafe { _mm256_storeu_ps(po.add(4 * i + 8 * k), register) };
+            }
+        }
+        crate::kernels::f32::mul_items(&a[full..], &b[full..], &mut out[full..]);
+        InstructionSet::Avx2Fma
+    }
+
+    /// `out[i] = a[i] b[i]`, 16 items a round in 512-bit registers.
+    ///
+    /// # Safety
+    /// The CPU has AVX-512F, and the three slices have the same length.
+    #[target_feature(enable = "avx512f")]
+    pub unsafe fn mul_pairs_avx512(a: &[Rotor], b: &[Rotor], out: &mut [Rotor]) -> InstructionSet {
+        const ITEMS: usize = 16;
+        let full = a.len() / ITEMS * ITEMS;
+        let (pa, pb) = (a.as_ptr().cast::<f32>(), b.as_ptr().cast::<f32>());
+        let po = out.as_mut_ptr().cast::<f32>();
+        for i in (0..full).step_by(ITEMS) {
+            // SAFETY: items `i..i + 16` are the 64 floats from `4 i`, and
+            // `i + 16 <= full <= len` in all three slices.
+            let (x, y) = unsafe {
+                (
+                    [0, 16, 32, 48].map(|k| _mm512_loadu_ps(pa.add(4 * i + k))),
+                    [0, 16, 32, 48].map(|k| _mm512_loadu_ps(pb.add(4 * i + k))),
+                )
+            };
+            let x =
+                transpose_in_lanes!(x, _mm512_unpacklo_ps, _mm512_unpackhi_ps, _mm512_shuffle_ps);
+            let y =
+                transpose_in_lanes!(y, _mm512_unpacklo_ps, _mm512_unpackhi_ps, _mm512_shuffle_ps);
+            let p =
+                rotor_product!(x, y, _mm512_add_ps, _mm512_sub_ps, _mm512_mul_ps, e23: lane_order);
+            let p =
+                transpose_in_lanes!(p, _mm512_unpacklo_ps, _mm512_unpackhi_ps, _mm512_shuffle_ps);
+            for (k, register) in p.into_iter().enumerate() {
+                // SAFETY: as for the loads.
+                unsafe { _mm512_storeu_ps(po.add(4 * i + 16 * k), register) };
+            }
+        }
+        crate::kernels::f32::mul_items(&a[full..], &b[full..], &mut out[full..]);
+        InstructionSet::Avx512f
+    }
+}
+
+#[cfg(feature = "f64")]
+pub mod f64 {
+    use core::arch::x86_64::{
+        _mm256_add_pd, _mm256_loadu2_m128d, _mm256_mul_pd, _mm256_storeu2_m128d, _mm256_sub_pd,
+        _mm256_unpackhi_pd, _mm256_unpacklo_pd,
+    };
+
+    use crate::f64::g3::Rotor;
+    use crate::kernels::InstructionSet;
+
+    /// `out[i] = a[i] b[i]`, 4 items a round in 256-bit registers. Each register is
+    /// loaded from two half-rotors (`[s, e12]` or `[e13, e23]` of items `k` and `k + 2`),
+    /// so that one `unpack` per register finishes the transpose without a lane-crossing
+    /// shuffle; the stores split the same way.
+    ///
+    /// # Safety
+    /// The CPU has AVX2, and the three slices have the same length.
+    #[target_feature(enable = "avx2")]
+    pub unsafe fn mul_pairs_avx2(a: &[Rotor], b: &[Rotor], out: &mut [Rotor]) -> InstructionSet {
+        const ITEMS: usize = 4;
+        let full = a.len() / ITEMS * ITEMS;
+        let (pa, pb) = (a.as_ptr().cast::<f64>(), b.as_ptr().cast::<f64>());
+        let po = out.as_mut_ptr().cast::<f64>();
+        // The half-rotors of a round start at doubles 0 (item 0's [s, e12]), 2 (its
+        // [e13, e23]), 4 (item 1's [s, e12]), ...; register `r` holds the halves at
+        // `LOW[r]` and `LOW[r] + 8`, the same half of the item two further on.
+        const LOW: [usize; 4] = [0, 4, 2, 6];
+        for i in (0..full).step_by(ITEMS) {
+            // SAFETY: `Rotor` is `#[repr(C)]` of four `f64`, so items `i..i + 4` are the 16
+            // doubles from `4 i`; every offset read is below `4 i + 16`, and
+            // `i + 4 <= full <= len` in all three slices.
+            let (x, y) = unsafe {
+                (
+                    LOW.map(|k| _mm256_loadu2_m128d(pa.add(4 * i + k + 8), pa.add(4 * i + k))),
+                    LOW.map(|k| _mm256_loadu2_m128d(pb.add(4 * i + k + 8), pb.add(4 * i + k))),
+                )
+            };
+            let x = [
+                _mm256_unpacklo_pd(x[0], x[1]),
+                _mm256_unpackhi_pd(x[0], x[1]),
+                _mm256_unpacklo_pd(x[2], x[3]),
+                _mm256_unpackhi_pd(x[2], x[3]),
+            ];
+            let y = [
+                _mm256_unpacklo_pd(y[0], y[1]),
+                _mm256_unpackhi_pd(y[0], y[1]),
+                _mm256_unpacklo_pd(y[2], y[3]),
+                _mm256_unpackhi_pd(y[2], y[3]),
+            ];
+            let [s, e12, e13, e23] = rotor_product!(x, y, _mm256_add_pd, _mm256_sub_pd, _mm256_mul_pd, e23: scalar_first);
+            let halves = [
+                _mm256_unpacklo_pd(s, e12),
+                _mm256_unpackhi_pd(s, e12),
+                _mm256_unpacklo_pd(e13, e23),
+                _mm256_unpackhi_pd(e13, e23),
+            ];
+            for (k, half) in LOW.into_iter().zip(halves) {
+                // SAFETY: as for the loads.
+                unsafe { _mm256_storeu2_m128d(po.add(4 * i + k + 8), po.add(4 * i + k), half) };
+            }
+        }
+        crate::kernels::f64::mul_items(&a[full..], &b[full..], &mut out[full..]);
+        InstructionSet::Avx2Fma
+    }
+
+    /// The AVX2 copy: `f64` has no 512-bit one (a rotor is half a 512-bit register, and
+    /// its transpose would need lane-crossing permutes), so this reports the set that ran.
+    ///
+    /// # Safety
+    /// The CPU has AVX2, and the three slices have the same length.
+    #[target_feature(enable = "avx2")]
+    pub unsafe fn mul_pairs_avx512(a: &[Rotor], b: &[Rotor], out: &mut [Rotor]) -> InstructionSet {
+        // SAFETY: the caller's guarantees are this function's.
+        unsafe { mul_pairs_avx2(a, b, out) }
+    }
+}
