@@ -58,6 +58,15 @@ macro_rules! g3_rotor_benches {
                 batch2(&mut g, "ga-core", &conv(&p, ga::Even::from_array), &conv(&q, ga::Even::from_array), |a, b| a * b);
                 kernel2(&mut g, "ga-core mul_pairs", &conv(&p, ga::Even::from_array), &conv(&q, ga::Even::from_array), ga::Even::ZERO,
                     |a, b, out| kernels::mul_pairs(a, b, out).expect("equal lengths"));
+                // Each copy by name, where this CPU has it: the AVX2 one on an AVX-512 CPU,
+                // and the SSE2 baseline every x86-64 CPU runs without AVX2.
+                for set in [ga_core::kernels::InstructionSet::Avx2Fma, ga_core::kernels::InstructionSet::Baseline] {
+                    if set.is_available() && set != ga_core::kernels::InstructionSet::detect() {
+                        kernel2(&mut g, &format!("ga-core mul_pairs {}", set.name()), &conv(&p, ga::Even::from_array),
+                            &conv(&q, ga::Even::from_array), ga::Even::ZERO,
+                            |a, b, out| { kernels::mul_pairs_on(set, a, b, out).expect("equal lengths"); });
+                    }
+                }
                 batch2(&mut g, "glam", &conv(&p, <$quat>::from_rotor3), &conv(&q, <$quat>::from_rotor3), |a, b| a * b);
                 batch2(&mut g, "nalgebra", &conv(&p, UnitQuaternion::<S>::from_rotor3), &conv(&q, UnitQuaternion::<S>::from_rotor3), |a, b| a * b);
                 batch2(&mut g, "ultraviolet", &conv(&p, <$rotor>::from_rotor3), &conv(&q, <$rotor>::from_rotor3), |a, b| a * b);
