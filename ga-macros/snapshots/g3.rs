@@ -11781,6 +11781,19 @@ pub mod g3 {
         let x: f64 = -((u.e12 * u.e12 + u.e13 * u.e13) + u.e23 * u.e23);
         [x, math::sqrt(x.abs()) * largest]
     }
+    /// `[cosh, sinhc]` of a four-dimensional channel's angle, `sqrt 2` times the root
+    /// of its square: by the series where that is small, else by the root.
+    #[allow(dead_code)]
+    #[inline]
+    fn channel_cosh_sinhc(channel: Bivector) -> [f64; 2] {
+        let b = channel;
+        let x: f64 = 2.0 * (-((b.e12 * b.e12 + b.e13 * b.e13) + b.e23 * b.e23));
+        if x.abs() <= SERIES_MAX {
+            return cosh_sinhc_series(x);
+        }
+        let [x, root] = square_and_root(channel);
+        cosh_sinhc(x, ::core::f64::consts::SQRT_2 * root)
+    }
     /// cosh(sqrt x) for x >= 0 and cos(sqrt -x) for x < 0: entire in x.
     #[allow(dead_code)]
     #[inline]

@@ -19605,10 +19605,8 @@ pub mod g4 {
                 e24: (self.e24 - dual.e24) * 0.5,
                 e34: (self.e34 - dual.e34) * 0.5,
             };
-            let [xp, rp] = square_and_root(plus);
-            let [xm, rm] = square_and_root(minus);
-            let [cp, sp] = cosh_sinhc(xp, ::core::f64::consts::SQRT_2 * rp);
-            let [cm, sm] = cosh_sinhc(xm, ::core::f64::consts::SQRT_2 * rm);
+            let [cp, sp] = channel_cosh_sinhc(plus);
+            let [cm, sm] = channel_cosh_sinhc(minus);
             Even {
                 s: (cp + cm) * 0.5,
                 e12: sp * plus.e12 + sm * minus.e12,
@@ -19767,6 +19765,21 @@ pub mod g4 {
         let x: f64 = -(((u.e12 * u.e12 + u.e13 * u.e13) + u.e14 * u.e14)
             + ((u.e23 * u.e23 + u.e24 * u.e24) + u.e34 * u.e34));
         [x, math::sqrt(x.abs()) * largest]
+    }
+    /// `[cosh, sinhc]` of a four-dimensional channel's angle, `sqrt 2` times the root
+    /// of its square: by the series where that is small, else by the root.
+    #[allow(dead_code)]
+    #[inline]
+    fn channel_cosh_sinhc(channel: Bivector) -> [f64; 2] {
+        let b = channel;
+        let x: f64 = 2.0
+            * (-(((b.e12 * b.e12 + b.e13 * b.e13) + b.e14 * b.e14)
+                + ((b.e23 * b.e23 + b.e24 * b.e24) + b.e34 * b.e34)));
+        if x.abs() <= SERIES_MAX {
+            return cosh_sinhc_series(x);
+        }
+        let [x, root] = square_and_root(channel);
+        cosh_sinhc(x, ::core::f64::consts::SQRT_2 * root)
     }
     /// cosh(sqrt x) for x >= 0 and cos(sqrt -x) for x < 0: entire in x.
     #[allow(dead_code)]

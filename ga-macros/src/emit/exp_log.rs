@@ -185,10 +185,8 @@ fn four_dimensional_exp(plan: &Plan) -> TokenStream {
     quote! {
         #split
         // A channel's own angle is sqrt(2) times the root of its scalar square.
-        let [xp, rp] = square_and_root(plus);
-        let [xm, rm] = square_and_root(minus);
-        let [cp, sp] = cosh_sinhc(xp, ::core::#s::consts::SQRT_2 * rp);
-        let [cm, sm] = cosh_sinhc(xm, ::core::#s::consts::SQRT_2 * rm);
+        let [cp, sp] = channel_cosh_sinhc(plus);
+        let [cm, sm] = channel_cosh_sinhc(minus);
         #value
     }
 }
@@ -372,6 +370,20 @@ pub fn emit_scalar_functions(plan: &Plan) -> TokenStream {
             let u = #descaled;
             let x: #s = #unit_square;
             [x, math::sqrt(x.abs()) * largest]
+        }
+
+        /// `[cosh, sinhc]` of a four-dimensional channel's angle, `sqrt 2` times the root
+        /// of its square: by the series where that is small, else by the root.
+        #[allow(dead_code)]
+        #[inline]
+        fn channel_cosh_sinhc(channel: Bivector) -> [#s; 2] {
+            let b = channel;
+            let x: #s = 2.0 * (#square);
+            if x.abs() <= SERIES_MAX {
+                return cosh_sinhc_series(x);
+            }
+            let [x, root] = square_and_root(channel);
+            cosh_sinhc(x, ::core::#s::consts::SQRT_2 * root)
         }
 
         /// cosh(sqrt x) for x >= 0 and cos(sqrt -x) for x < 0: entire in x.
