@@ -17,7 +17,7 @@ use ga_core::f64::g3::{Bivector, Rotor, Vector};
 use crate::dynamics::{omega_from_vector, Gravity, RigidBody, State};
 use crate::error::Error;
 use crate::exact_flow::free_body_orbit;
-use crate::integrators::{Method, Step, StepKind, METHODS};
+use crate::integrators::{Integrator, Method, Step, StepKind, METHODS};
 
 use super::Size;
 
@@ -203,7 +203,7 @@ const SHORT_FAT_MOMENTS: [f64; 3] = [3.0, 3.0, 9.0];
 const SHORT_FAT_MOMENTUM: [f64; 3] = [0.0, 5.0, 7.0];
 
 /// The integrator of `method` at step `h` (or [`UNIT_TOL`] for the adaptive ones).
-fn integrator(method: Method, h: f64) -> Result<Box<dyn crate::integrators::Integrator>, Error> {
+fn integrator(method: Method, h: f64) -> Result<Box<dyn Integrator>, Error> {
     let step = match method.step_kind() {
         StepKind::Fixed => Step::Fixed(h),
         StepKind::Adaptive => Step::Tolerance(UNIT_TOL),
