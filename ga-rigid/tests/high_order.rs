@@ -171,8 +171,10 @@ fn torqued_methods_reach_their_order_on_heavy_tops() {
         let reference = top.reference(t);
         let cases: [(u32, [u32; 4]); 4] = [
             (2, [10, 20, 40, 80]),
-            (4, [10, 20, 40, 80]),
-            (6, [5, 10, 20, 40]),
+            // Blanes and Moan's Nystrom splittings: at coarser steps their small leading
+            // error term still competes with the next.
+            (4, [40, 56, 80, 113]),
+            (6, [7, 10, 14, 20]),
             (8, [10, 12, 14, 16]),
         ];
         for (order, steps) in cases {
@@ -189,8 +191,9 @@ fn torqued_methods_reach_their_order_on_heavy_tops() {
             );
             // On the asymmetric top the order-eight error reaches the 1e-13 floor of the
             // elliptic flow before its local slope (8.39, 8.28, 8.15 from h = 0.2 down to
-            // 0.07) has settled at eight: allow that case 0.15.
-            let tolerance = if order == 8 && name == "asymmetric" {
+            // 0.07) has settled at eight, and so does the order-six one (6.24, 6.11, 6.05
+            // from h = 0.14 to 0.05, then 6.24 at the floor): allow those cases 0.15.
+            let tolerance = if (order == 8 || order == 6) && name == "asymmetric" {
                 0.15
             } else {
                 0.1

@@ -80,7 +80,7 @@ pub struct InertiaArgs {
 /// Arguments of `report`.
 #[derive(Debug, Args)]
 pub struct ReportArgs {
-    /// The directory to write results.csv, one SVG per scene and index.html into
+    /// The directory to write results.csv, long_runs.csv, one SVG per scene and index.html into
     /// (created if missing; files are replaced only when complete).
     #[arg(long, value_name = "DIR", default_value = "report")]
     pub out: PathBuf,

@@ -19,7 +19,7 @@ pub fn run(args: &ReportArgs) -> Result<(), Error> {
     }
     prepare_dir(&args.out)?;
     let total = report::job_count(&scenes, size);
-    let report = if std::io::stderr().is_terminal() {
+    let mut report = if std::io::stderr().is_terminal() {
         let bar = indicatif::ProgressBar::new(total);
         bar.set_style(
             indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} {elapsed} {msg}")
@@ -34,6 +34,22 @@ pub fn run(args: &ReportArgs) -> Result<(), Error> {
     } else {
         report::run(&scenes, size, &mut |_, _| {})?
     };
+    let scale = report::Scale::of(size);
+    report.long_runs = if std::io::stderr().is_terminal() {
+        let bar = indicatif::ProgressBar::new(report::long_run_count());
+        bar.set_style(
+            indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} {elapsed} {msg}")
+                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        );
+        let result = report::long_runs(scale, &mut |method| {
+            bar.set_message(format!("long runs: {method}"));
+            bar.inc(1);
+        });
+        bar.finish_and_clear();
+        result?
+    } else {
+        report::long_runs(scale, &mut |_| {})?
+    };
 
     let names: Vec<String> = report
         .scenes
@@ -45,10 +61,15 @@ pub fn run(args: &ReportArgs) -> Result<(), Error> {
         write_file(&args.out, name, &report::svg(scene)?)?;
     }
     write_file(&args.out, "results.csv", &report::csv(&report))?;
+    write_file(
+        &args.out,
+        "long_runs.csv",
+        &report::long_runs_csv(&report.long_runs),
+    )?;
     write_file(&args.out, "index.html", &report::html(&report, &names))?;
     let mut summary = report::summary(&report);
     summary.push_str(&format!(
-        "wrote {} (results.csv, {} plots, index.html)\n",
+        "wrote {} (results.csv, long_runs.csv, {} plots, index.html)\n",
         args.out.display(),
         names.len()
     ));

@@ -1,7 +1,7 @@
 //! The symmetric top's closed form (the lecture's solution, [`SymmetricTop`]) behind the
 //! [`Integrator`] trait: exact at any step, no stepping.
 
-use super::integrator::{check_finite, Integrator};
+use super::integrator::{check_finite, unit, Integrator};
 use crate::dynamics::{RigidBody, State, SymmetricTop, DEFAULT_SYMMETRY_TOLERANCE};
 use crate::error::Error;
 
@@ -41,6 +41,15 @@ impl Integrator for ClosedForm {
         dt: f64,
     ) -> Result<State, Error> {
         let top = SymmetricTop::new(body, state, self.relative_tolerance)?;
-        check_finite(self.name(), top.state(dt))
+        // Called again and again from its own result, the two exponentials' rounding
+        // would walk |R ~R| away from one (5.8e-11 over 10^6 calls on the short fat top).
+        let end = top.state(dt);
+        check_finite(
+            self.name(),
+            State {
+                rotor: unit(end.rotor),
+                omega: end.omega,
+            },
+        )
     }
 }

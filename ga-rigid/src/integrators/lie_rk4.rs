@@ -25,7 +25,7 @@ use ga_core::f64::g3::{Bivector, Commutator, Rotor};
 use crate::dynamics::{RigidBody, State};
 use crate::error::Error;
 
-use super::integrator::{check_step, fixed_steps, Integrator};
+use super::integrator::{check_step, fixed_steps, unit, Integrator};
 
 /// Runge-Kutta-Munthe-Kaas of order four with fixed step `h`; the rotor stays unit by
 /// construction.
@@ -65,8 +65,10 @@ impl LieRk4 {
         let (k3, l3) = stage(t + 0.5 * h, r0 * theta3.exp(), w0 + l2 * 0.5);
         let (k4, l4) = stage(t + h, r0 * k3.exp(), w0 + l3);
         let theta = (k1 + (k2 + k3) * 2.0 + k4) * (1.0 / 6.0) + k1.commutator(k4) * (1.0 / 6.0);
+        // exp keeps the rotor unit only to rounding, which walks over many steps (3.6e-13
+        // over 10^6 steps on the heavy top); scaling back keeps it at one rounding.
         State {
-            rotor: r0 * theta.exp(),
+            rotor: unit(r0 * theta.exp()),
             omega: w0 + (l1 + (l2 + l3) * 2.0 + l4) * (1.0 / 6.0),
         }
     }

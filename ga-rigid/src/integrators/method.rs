@@ -38,9 +38,9 @@ pub enum Method {
     Exact,
     /// Torque kick, exact free flow, torque kick (Celledoni-Fassò-Säfström-Zanna), order 2.
     ExactSplitting,
-    /// The exact-flow splitting composed to order 4 (Suzuki).
+    /// The exact-flow splitting raised to order 4 (Blanes-Moan `SRKN_6^b`).
     ExactSplitting4,
-    /// The exact-flow splitting composed to order 6 (Kahan-Li).
+    /// The exact-flow splitting raised to order 6 (Blanes-Moan `SRKN_11^b`).
     ExactSplitting6,
     /// The exact-flow splitting composed to order 8 (Kahan-Li).
     ExactSplitting8,
@@ -144,13 +144,13 @@ pub const METHODS: [MethodInfo; 15] = [
         method: Method::ExactSplitting4,
         name: "exact-splitting-4",
         kind: StepKind::Fixed,
-        summary: "the exact-flow splitting composed to order four (Suzuki)",
+        summary: "the exact-flow splitting raised to order four (Blanes-Moan SRKN_6^b)",
     },
     MethodInfo {
         method: Method::ExactSplitting6,
         name: "exact-splitting-6",
         kind: StepKind::Fixed,
-        summary: "the exact-flow splitting composed to order six (Kahan-Li)",
+        summary: "the exact-flow splitting raised to order six (Blanes-Moan SRKN_11^b)",
     },
     MethodInfo {
         method: Method::ExactSplitting8,

@@ -17,7 +17,7 @@ mod splitting;
 
 pub use closed_form::ClosedForm;
 pub use composed_splitting::ComposedSplitting;
-pub use composition::Composition;
+pub use composition::{Composition, Nystrom};
 pub use dopri::{DormandPrince, DormandPrinceStats};
 pub use exact::ExactFreeBody;
 pub use exact_splitting::ExactSplitting;

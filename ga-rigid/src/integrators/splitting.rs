@@ -26,7 +26,7 @@ use ga_core::f64::g3::Rotor;
 use crate::dynamics::{omega_from_vector, omega_to_vector, RigidBody, State};
 use crate::error::Error;
 
-use super::integrator::{check_finite, check_step, substeps, Integrator};
+use super::integrator::{check_finite, check_step, substeps, unit, Integrator};
 
 /// The DLM splitting with fixed step `h` and a chosen axis order.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -133,6 +133,10 @@ impl Integrator for Splitting {
                 Self::axis_flow(moments, middle, 0.5 * h, &mut rotor, &mut m);
                 Self::axis_flow(moments, outer, 0.5 * h, &mut rotor, &mut m);
                 Self::kick(body, t0 + h, 0.5 * h, rotor, &mut m);
+                // Five unit factors a step, each unit to rounding: scaled back once a step
+                // the rotor keeps |R ~R| = 1 to a rounding (it walked to 3.7e-13 over 10^6
+                // steps on the heavy top without).
+                rotor = unit(rotor);
             }
         } else {
             // Without kicks the outer half flows of neighbouring steps merge into one flow
@@ -144,6 +148,7 @@ impl Integrator for Splitting {
                 Self::axis_flow(moments, middle, 0.5 * h, &mut rotor, &mut m);
                 let tau = if i + 1 == n { 0.5 * h } else { h };
                 Self::axis_flow(moments, outer, tau, &mut rotor, &mut m);
+                rotor = unit(rotor);
             }
         }
         let omega = omega_from_vector(std::array::from_fn(|k| m[k] / moments[k]));

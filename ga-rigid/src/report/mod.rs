@@ -6,6 +6,7 @@
 //! writes the files.
 
 mod analysis;
+mod invariants;
 mod measure;
 mod page;
 mod plot;
@@ -13,6 +14,10 @@ mod results;
 mod scenes;
 
 pub use analysis::{cost_per_step_ns, fastest_at, observed_order, verdict, ERROR_LEVELS};
+pub use invariants::{
+    long_run_count, long_runs, long_runs_csv, verdict as long_run_verdict, LongRun, Scale,
+    ENERGY_GROWTH, LONG_RUNS_CSV_HEADER, MOMENTUM_BOUND, PERIODS, UNIT_DEFECT_BOUND, UNIT_STEPS,
+};
 pub use measure::{
     attitude_error, errors, references, sample_times, timed_run, Errors, Reference, Timing,
     MIN_REPEATS, MIN_TOTAL_TIME, TIGHTEST_TOL,
@@ -122,6 +127,9 @@ pub struct Report {
     pub cpu: String,
     /// One result per scene.
     pub scenes: Vec<SceneResult>,
+    /// The long runs of [`long_runs`], when they were run (the command runs them after the
+    /// scenes; [`run`] leaves this empty).
+    pub long_runs: Vec<LongRun>,
 }
 
 /// The CPU model from `/proc/cpuinfo`, or a plain statement that it is unknown.
@@ -184,6 +192,7 @@ pub fn run(
         size,
         cpu: cpu_model(),
         scenes: results,
+        long_runs: Vec::new(),
     })
 }
 
@@ -305,6 +314,19 @@ pub fn summary(report: &Report) -> String {
             scene.name,
             scene.check.errors.attitude_max,
             scene.elapsed.as_secs_f64()
+        );
+    }
+    if !report.long_runs.is_empty() {
+        let passed = report.long_runs.iter().filter(|r| r.passes()).count();
+        let seconds: f64 = report
+            .long_runs
+            .iter()
+            .map(|r| r.elapsed.as_secs_f64())
+            .sum();
+        let _ = writeln!(
+            out,
+            "- long runs: {passed} of {} meet the bounds ({seconds:.1} s)",
+            report.long_runs.len()
         );
     }
     out

@@ -95,6 +95,9 @@ pub fn html(report: &Report, svg_names: &[String]) -> String {
         let name = svg_names.get(i).map_or("", String::as_str);
         section(&mut out, i, scene, name);
     }
+    if !report.long_runs.is_empty() {
+        long_runs_section(&mut out, &report.long_runs);
+    }
     out.push_str("</body></html>\n");
     out
 }
@@ -194,4 +197,65 @@ fn section(out: &mut String, index: usize, scene: &SceneResult, svg_name: &str) 
         );
     }
     out.push_str("</section>\n");
+}
+
+/// The table of [`super::long_runs`]: one row per run with its verdict.
+fn long_runs_section(out: &mut String, rows: &[super::LongRun]) {
+    let full = rows
+        .iter()
+        .all(|r| r.check != "unit rotor" || r.steps >= super::UNIT_STEPS);
+    let _ = writeln!(
+        out,
+        "<section id=\"long-runs\"><h2>Long runs</h2>\n<p>Every method over {} steps \
+         (the unit-rotor check: <code>|R ~R - 1|</code> at most {:.0e} after every step), \
+         then the compositions and splittings over {} periods (the energy error is bounded \
+         when its largest value over the last tenth is at most {} times that over the first \
+         tenth, and the conserved momentum stays within {:.0e} relative). {} Details in \
+         <a href=\"long_runs.csv\">long_runs.csv</a>.</p>",
+        rows.iter().map(|r| r.steps).min().unwrap_or(0),
+        super::UNIT_DEFECT_BOUND,
+        rows.iter()
+            .filter(|r| r.check == "invariants")
+            .map(|r| r.periods)
+            .fold(0.0, f64::max),
+        super::ENERGY_GROWTH,
+        super::MOMENTUM_BOUND,
+        if full {
+            "These are the issue's scales."
+        } else {
+            "A quick run goes a hundredth as far as the issue asks; its verdicts are for \
+             that length only."
+        },
+    );
+    out.push_str(
+        "<table><tr><th>check</th><th>method</th><th>scene</th><th>steps</th>\
+         <th>max |R~R - 1|</th><th>energy, first tenth</th><th>energy, last tenth</th>\
+         <th>momentum</th><th>verdict</th></tr>\n",
+    );
+    for r in rows {
+        let invariant = r.check == "invariants";
+        let cell = |x: f64| {
+            if invariant {
+                format!("{x:.1e}")
+            } else {
+                String::new()
+            }
+        };
+        let _ = writeln!(
+            out,
+            "<tr><td>{}</td><td>{}</td><td>{}</td><td class=\"num\">{}</td>\
+             <td class=\"num\">{:.1e}</td><td class=\"num\">{}</td><td class=\"num\">{}</td>\
+             <td class=\"num\">{}</td><td>{}</td></tr>",
+            r.check,
+            r.method.name(),
+            esc(r.scene),
+            r.steps,
+            r.unit_defect,
+            cell(r.energy_first),
+            cell(r.energy_last),
+            cell(r.momentum_max),
+            esc(&super::long_run_verdict(r)),
+        );
+    }
+    out.push_str("</table></section>\n");
 }
