@@ -181,7 +181,6 @@ fn four_dimensional_exp(plan: &Plan) -> TokenStream {
         let f = field_ident(blade);
         Some(quote!(sp * plus.#f + sm * minus.#f))
     });
-    let s = scalar_type(plan);
     quote! {
         #split
         // A channel's own angle is sqrt(2) times the root of its scalar square.
