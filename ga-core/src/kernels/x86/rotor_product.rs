@@ -3,11 +3,10 @@
 //! A G3 rotor is four components, so one item's product in lanes spends a swizzle on
 //! three of its four terms and a broadcast on each, and Intel cores have one port for
 //! shuffles. Here four registers of rotors are transposed into four registers of
-//! components (the `s`, `e12`, `e13` and `e23` of 8 `f32` items in AVX2, 16 in AVX-512;
-//! 4 `f64` items in AVX2, 8 in AVX-512), the product is 16 multiplies and 12 additions
-//! for all of them, and the result is transposed back: 24 shuffles per 8 (or 16) `f32`
-//! items, 12 per 4 (or 8) `f64` items, where the lane form needs 3 swizzles per item and
-//! 4 broadcasts.
+//! components (the `s`, `e12`, `e13` and `e23` of 8 `f32` items in AVX2, 16 in AVX-512,
+//! 4 `f64` items in AVX2), the product is 16 multiplies and 12 additions for all of them,
+//! and the result is transposed back: 24 shuffles per 8 (or 16) `f32` items, 12 per 4
+//! `f64` items, where the lane form needs 3 swizzles per item and 4 broadcasts.
 //!
 //! The arithmetic is the one-item product's, operation for operation and in its order,
 //! without fused multiply-adds: each result is bit for bit `a[i] * b[i]`. The `f32` and
@@ -162,10 +161,8 @@ pub mod f32 {
 #[cfg(feature = "f64")]
 pub mod f64 {
     use core::arch::x86_64::{
-        __m512d, _mm256_add_pd, _mm256_loadu2_m128d, _mm256_mul_pd, _mm256_storeu2_m128d,
-        _mm256_sub_pd, _mm256_unpackhi_pd, _mm256_unpacklo_pd, _mm512_add_pd,
-        _mm512_castpd256_pd512, _mm512_castpd512_pd256, _mm512_extractf64x4_pd, _mm512_insertf64x4,
-        _mm512_mul_pd, _mm512_sub_pd, _mm512_unpackhi_pd, _mm512_unpacklo_pd,
+        _mm256_add_pd, _mm256_loadu2_m128d, _mm256_mul_pd, _mm256_storeu2_m128d, _mm256_sub_pd,
+        _mm256_unpackhi_pd, _mm256_unpacklo_pd,
     };
 
     use crate::f64::g3::Rotor;
@@ -226,60 +223,14 @@ pub mod f64 {
         InstructionSet::Avx2Fma
     }
 
-    /// `out[i] = a[i] b[i]`, 8 items a round in 512-bit registers, each put together from
-    /// two 256-bit halves loaded as in [`mul_pairs_avx2`] (items `k`, `k + 2`, `k + 4` and
-    /// `k + 6`), so that the transpose stays within 128-bit lanes.
+    /// The AVX2 copy: `f64` has no 512-bit one (a rotor is half a 512-bit register, and
+    /// its transpose would need lane-crossing permutes), so this reports the set that ran.
     ///
     /// # Safety
-    /// The CPU has AVX-512F, and the three slices have the same length.
-    #[target_feature(enable = "avx512f")]
+    /// The CPU has AVX2, and the three slices have the same length.
+    #[target_feature(enable = "avx2")]
     pub unsafe fn mul_pairs_avx512(a: &[Rotor], b: &[Rotor], out: &mut [Rotor]) -> InstructionSet {
-        const ITEMS: usize = 8;
-        let full = a.len() / ITEMS * ITEMS;
-        let (pa, pb) = (a.as_ptr().cast::<f64>(), b.as_ptr().cast::<f64>());
-        let po = out.as_mut_ptr().cast::<f64>();
-        const LOW: [usize; 4] = [0, 4, 2, 6];
-        // SAFETY (both): the caller's `p` points at the round's first double, and the round's
-        // 32 doubles exist; the offsets read or written are below 32.
-        let load = |p: *const f64, k: usize| unsafe {
-            let low = _mm256_loadu2_m128d(p.add(k + 8), p.add(k));
-            let high = _mm256_loadu2_m128d(p.add(k + 24), p.add(k + 16));
-            _mm512_insertf64x4::<1>(_mm512_castpd256_pd512(low), high)
-        };
-        let store = |p: *mut f64, k: usize, z: __m512d| unsafe {
-            _mm256_storeu2_m128d(p.add(k + 8), p.add(k), _mm512_castpd512_pd256(z));
-            _mm256_storeu2_m128d(p.add(k + 24), p.add(k + 16), _mm512_extractf64x4_pd::<1>(z));
-        };
-        for i in (0..full).step_by(ITEMS) {
-            // SAFETY: `Rotor` is `#[repr(C)]` of four `f64`, so items `i..i + 8` are the 32
-            // doubles from `4 i`, and `i + 8 <= full <= len` in all three slices.
-            let (ra, rb, ro) = unsafe { (pa.add(4 * i), pb.add(4 * i), po.add(4 * i)) };
-            let x = LOW.map(|k| load(ra, k));
-            let y = LOW.map(|k| load(rb, k));
-            let x = [
-                _mm512_unpacklo_pd(x[0], x[1]),
-                _mm512_unpackhi_pd(x[0], x[1]),
-                _mm512_unpacklo_pd(x[2], x[3]),
-                _mm512_unpackhi_pd(x[2], x[3]),
-            ];
-            let y = [
-                _mm512_unpacklo_pd(y[0], y[1]),
-                _mm512_unpackhi_pd(y[0], y[1]),
-                _mm512_unpacklo_pd(y[2], y[3]),
-                _mm512_unpackhi_pd(y[2], y[3]),
-            ];
-            let [s, e12, e13, e23] = rotor_product!(x, y, _mm512_add_pd, _mm512_sub_pd, _mm512_mul_pd, e23: scalar_first);
-            let halves = [
-                _mm512_unpacklo_pd(s, e12),
-                _mm512_unpackhi_pd(s, e12),
-                _mm512_unpacklo_pd(e13, e23),
-                _mm512_unpackhi_pd(e13, e23),
-            ];
-            for (k, half) in LOW.into_iter().zip(halves) {
-                store(ro, k, half);
-            }
-        }
-        crate::kernels::f64::mul_items(&a[full..], &b[full..], &mut out[full..]);
-        InstructionSet::Avx512f
+        // SAFETY: the caller's guarantees are this function's.
+        unsafe { mul_pairs_avx2(a, b, out) }
     }
 }
