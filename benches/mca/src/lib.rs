@@ -111,15 +111,3 @@ batch2!(
     |x, y| x * y
 );
 batch2!(g3_vv_f32, f::Vector, f::Vector, f::Even, |x, y| x * y);
-batch2!(b_exp_f32_ga, f::Bivector, f::Bivector, f::Even, |x, _y| x
-    .exp());
-batch2!(b_exp_f64_ga, d::Bivector, d::Bivector, d::Even, |x, _y| x
-    .exp());
-chain!(c_exp_f32_ga, f::Bivector, f::Bivector, |c, b| {
-    let r = b.exp();
-    f::Bivector::new(r.e12, r.e13, r.e23) + c * r.s
-});
-chain!(c_exp_f64_ga, d::Bivector, d::Bivector, |c, b| {
-    let r = b.exp();
-    d::Bivector::new(r.e12, r.e13, r.e23) + c * r.s
-});
