@@ -40,7 +40,7 @@
 // against the sources.
 #![allow(clippy::excessive_precision)]
 
-use ga_core::f64::g3::{Bivector, Commutator};
+use ga_core::f64::g3::{Bivector, Commutator, Rotor};
 
 use crate::dynamics::{RigidBody, State};
 use crate::error::{self, Error};
@@ -361,27 +361,41 @@ const C_SERIES: [f64; 16] = [
     6.168_422_011_293_018_676_47E-17,
 ];
 
-/// The series of `c` below `x^2 = 1`, where its sixteen terms reach rounding (the next is
-/// `6e-18` against `c = 0.089`); Estrin's scheme keeps the dependency chain four products
-/// deep instead of Horner's sixteen.
+/// `4 C_SERIES`, the series of `4 c` that the stages use (a power of two: exact).
+const C4_SERIES: [f64; 16] = {
+    let mut a = C_SERIES;
+    let mut i = 0;
+    while i < a.len() {
+        a[i] *= 4.0;
+        i += 1;
+    }
+    a
+};
+
+/// `4 c(x)` from its series below `x^2 = 1`, where sixteen terms reach rounding (the next
+/// is `6e-18` against `c = 0.089`). Estrin's scheme keeps the dependency chain four
+/// products deep instead of Horner's sixteen. (Ten terms would do below `x^2 = 1/4`, but
+/// the branch costs more than the six products it saves.)
 #[inline]
-fn c_series(x2: f64) -> f64 {
-    let a = &C_SERIES;
-    let (x4, x8) = (x2 * x2, x2 * x2 * (x2 * x2));
+fn c4_series(x2: f64) -> f64 {
+    let a = &C4_SERIES;
+    let x4 = x2 * x2;
+    let x8 = x4 * x4;
+    let x16 = x8 * x8;
     let pair = |i: usize| a[i] + a[i + 1] * x2;
     let quad = |i: usize| pair(i) + pair(i + 2) * x4;
     let oct = |i: usize| quad(i) + quad(i + 4) * x8;
-    oct(0) + oct(8) * (x8 * x8)
+    oct(0) + oct(8) * x16
 }
 
-/// `c(x) = (1 - x cot x) / (4 x^2)` from `x^2`: the series below `x^2 = 1`, `tan` above.
+/// `4 c(x) = (1 - x cot x) / x^2` from `x^2`: the series below `x^2 = 1`, `tan` above.
 #[inline]
-fn c_of(x2: f64) -> f64 {
+fn c4_of(x2: f64) -> f64 {
     if x2 < 1.0 {
-        c_series(x2)
+        c4_series(x2)
     } else {
         let x = x2.sqrt();
-        (1.0 - x / x.tan()) / (4.0 * x2)
+        (1.0 - x / x.tan()) / x2
     }
 }
 
@@ -392,7 +406,57 @@ fn c_of(x2: f64) -> f64 {
 fn dexpinv(u: Bivector, a: Bivector) -> Bivector {
     let x2 = u.e12 * u.e12 + u.e13 * u.e13 + u.e23 * u.e23;
     let g = u.commutator(a);
-    a + g + u.commutator(g) * (4.0 * c_of(x2))
+    a + g + u.commutator(g) * c4_of(x2)
+}
+
+/// The Taylor coefficients `(-1)^n / (2n + k)!`, `n = 0..9`, of `cos x` (`k = 0`) and of
+/// `sin x / x` (`k = 1`) in powers of `x^2`.
+const fn trig_series(k: u32) -> [f64; 10] {
+    let mut a = [0.0; 10];
+    let mut factorial = 1.0;
+    let mut n = 0;
+    while n < 10 {
+        a[n] = if n % 2 == 0 {
+            1.0 / factorial
+        } else {
+            -1.0 / factorial
+        };
+        let m = 2 * n as u32 + k;
+        factorial *= ((m + 1) * (m + 2)) as f64;
+        n += 1;
+    }
+    a
+}
+
+const COS_SERIES: [f64; 10] = trig_series(0);
+const SINC_SERIES: [f64; 10] = trig_series(1);
+
+/// A ten-term series in `x^2` by Estrin's scheme.
+#[inline(always)]
+fn series10(a: &[f64; 10], x2: f64) -> f64 {
+    let x4 = x2 * x2;
+    let x8 = x4 * x4;
+    let pair = |i: usize| a[i] + a[i + 1] * x2;
+    let quad = |i: usize| pair(i) + pair(i + 2) * x4;
+    (quad(0) + quad(4) * x8) + pair(8) * (x8 * x8)
+}
+
+/// `exp(u) = cos|u| + u sin|u| / |u|` from the two series below `|u| = 1`, where ten terms
+/// reach rounding (the first left out is at most `1/19! = 8e-18`), and ga-core's `exp`
+/// above: the step's end and the stages of a torqued body pay no `sin` and `cos`.
+#[inline]
+fn exp(u: Bivector) -> Rotor {
+    let x2 = u.e12 * u.e12 + u.e13 * u.e13 + u.e23 * u.e23;
+    if x2 >= 1.0 {
+        return u.exp();
+    }
+    let weight = series10(&SINC_SERIES, x2);
+    Rotor::new(
+        series10(&COS_SERIES, x2),
+        weight * u.e12,
+        weight * u.e13,
+        weight * u.e23,
+    )
 }
 
 /// A point or rate of the six coordinates `(u, Omega_B)` the stages live in, packed in
@@ -544,7 +608,7 @@ impl DenseStep {
             theta,
         ));
         Ok(State {
-            rotor: self.start.rotor * u.exp(),
+            rotor: self.start.rotor * exp(u),
             omega,
         })
     }
@@ -603,7 +667,7 @@ impl LieDop853 {
                 let (u, omega) = halves(&combine(&y0, h, A[$i], rates));
                 let stage = State {
                     rotor: if torque {
-                        state.rotor * u.exp()
+                        state.rotor * exp(u)
                     } else {
                         state.rotor
                     },
@@ -657,7 +721,7 @@ impl LieDop853 {
         let rate0 = body.omega_rate(t, &state);
         let trial = self.trial(body, t, &state, h, rate0, &mut rates);
         State {
-            rotor: state.rotor * trial.u.exp(),
+            rotor: state.rotor * exp(trial.u),
             omega: trial.omega,
         }
     }
@@ -787,7 +851,7 @@ impl LieDop853 {
         // The step's end scaled to unit, as the next step starts from it: its rate is then
         // the next step's first exactly, so a sampled run takes the steps of `advance`.
         let end = State {
-            rotor: unit(state.rotor * trial.u.exp()),
+            rotor: unit(state.rotor * exp(trial.u)),
             omega: trial.omega,
         };
         let y0 = six(Bivector::ZERO, state.omega);
@@ -800,7 +864,7 @@ impl LieDop853 {
             let (u, omega) = halves(&combine(&y0, h, row, rates));
             let stage = State {
                 rotor: if torque {
-                    state.rotor * u.exp()
+                    state.rotor * exp(u)
                 } else {
                     state.rotor
                 },
@@ -1014,7 +1078,7 @@ impl Integrator for LieDop853 {
             state = State {
                 // Unit by construction; scaling once a step keeps the rounding of the
                 // products from adding up over millions of steps.
-                rotor: unit(state.rotor * step.trial.u.exp()),
+                rotor: unit(state.rotor * exp(step.trial.u)),
                 omega: step.trial.omega,
             };
             if step.last {
@@ -1169,8 +1233,9 @@ mod tests {
     }
 
     /// `c(x) = (1 - x cot x) / (4 x^2)` against values computed to 20 digits with mpmath
-    /// (docs/references.md), on both sides of the series' cut at `x^2 = 1` and across the
-    /// range the stages see; and the two branches agree at the cut.
+    /// (docs/references.md), on both sides of the cut at `x^2 = 1` (the series below, `tan`
+    /// above) and across the range the stages see; and the series meets the closed form at
+    /// the cut.
     #[test]
     fn c_matches_high_precision_values_on_both_sides_of_the_cut() {
         let reference = [
@@ -1179,6 +1244,8 @@ mod tests {
             (1e-4, 0.083_333_888_894_179_947_09),
             (0.01, 0.083_388_941_851_905_350_515),
             (0.1, 0.083_894_233_344_144_169_744),
+            (0.249_999, 0.084_756_133_313_403_228_768),
+            (0.250_001, 0.084_756_144_974_145_993_714),
             (0.5, 0.086_250_351_839_705_822_867),
             (0.99, 0.089_408_949_132_802_225_899),
             (0.999_999, 0.089_476_839_219_475_129_048),
@@ -1189,7 +1256,7 @@ mod tests {
             (9.0, 0.612_382_157_063_988_900_23),
         ];
         for (x2, expected) in reference {
-            let c = c_of(x2);
+            let c = 0.25 * c4_of(x2);
             assert!(
                 (c / expected - 1.0).abs() < 4e-16,
                 "x^2 = {x2}: {c:e} vs {expected:e}"
@@ -1197,7 +1264,27 @@ mod tests {
         }
         let x = 1.0f64;
         let closed = (1.0 - x / x.tan()) / 4.0;
-        assert!((c_series(1.0) / closed - 1.0).abs() < 1e-15);
+        assert!((0.25 * c4_series(1.0 - 1e-16) / closed - 1.0).abs() < 1e-15);
+    }
+
+    /// The series exponential against ga-core's on both sides of its cut at `|u| = 1`.
+    #[test]
+    fn series_exponential_matches_ga_core() {
+        let mut worst = 0.0_f64;
+        for i in 0..=240 {
+            let size = f64::from(i) / 200.0;
+            let direction = Bivector::new(0.3, -0.8, 0.52);
+            let direction = direction * (1.0 / (0.09f64 + 0.64 + 0.2704).sqrt());
+            let u = direction * size;
+            let (a, b) = (exp(u), u.exp());
+            for d in [a.s - b.s, a.e12 - b.e12, a.e13 - b.e13, a.e23 - b.e23] {
+                worst = worst.max(d.abs());
+            }
+        }
+        assert!(worst < 3e-16, "{worst:e}");
+        assert_eq!(COS_SERIES[1], -0.5);
+        assert_eq!(SINC_SERIES[1], -1.0 / 6.0);
+        assert_eq!(COS_SERIES[9], -1.0 / 6_402_373_705_728_000.0);
     }
 
     #[test]
