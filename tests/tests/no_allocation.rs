@@ -69,6 +69,7 @@ fn integrator_steps() {
         Box::new(Splitting::new(0.01).unwrap()),
         Box::new(DormandPrince::new(1e-9, 1e-12).unwrap()),
         Box::new(LieDop853::new(1e-10, 1e-10).unwrap()),
+        Box::new(LieDop853::cayley(1e-10, 1e-10).unwrap()),
     ];
     let (mut exact, mut closed) = (ExactFreeBody::new(), ClosedForm::new());
     let count = allocations_during(|| {

@@ -25,7 +25,13 @@
 //! million products does not add up). The error estimate is DOP853's, on the six
 //! coordinates `(u, Omega_B)`, in which the method is an ordinary Runge-Kutta method.
 //! Without a torque `Omega_B` does not depend on `R`, so the stages skip the exponentials
-//! and only the step's end pays one.
+//! and only the step's end pays one, from the series of `cos` and `sin x / x`.
+//!
+//! [`LieDop853::cayley`] takes the same steps in Cayley coordinates, `R = R0 cay(u)`
+//! (Iserles, Munthe-Kaas, Nørsett, Zanna, "Lie-group methods", Acta Numerica 9 (2000),
+//! section 8.3): `dcay^-1` is a polynomial, so a stage pays no series and the step no
+//! sine and cosine; the order, the error estimate and the dense output are the same, the
+//! error constant is not (see its documentation).
 //!
 //! Dense output: [`LieDop853::step`] returns a [`DenseStep`] whose [`DenseStep::at`] gives
 //! the state anywhere in the step, and [`LieDop853::dense_advance`] samples a run at given
@@ -459,6 +465,50 @@ fn exp(u: Bivector) -> Rotor {
     )
 }
 
+/// The Cayley map `cay(u) = (1 + u/2)(1 - u/2)^-1 = (1 - |u|^2/4 + u) / (1 + |u|^2/4)`
+/// (A. Iserles, H. Munthe-Kaas, S. P. Nørsett, A. Zanna, "Lie-group methods", Acta
+/// Numerica 9 (2000) 215-365, section 8.3): a unit rotor for every bivector `u`
+/// (`u^2 = -|u|^2`), the identity plus `u` to first order like `exp(u)`, for one division.
+#[inline]
+fn cay(u: Bivector) -> Rotor {
+    let quarter = 0.25 * (u.e12 * u.e12 + u.e13 * u.e13 + u.e23 * u.e23);
+    let d = 1.0 / (1.0 + quarter);
+    Rotor::new((1.0 - quarter) * d, d * u.e12, d * u.e13, d * u.e23)
+}
+
+/// `dcay^-1_u(a) = (1 + u/2) a (1 - u/2) = a + 1/2 [u, a] - 1/4 u a u`, the rate of `u`
+/// for which `d/dt cay(u) = cay(u) a`. For bivectors `u a u = |u|^2 a - 2 (u . a) u` with
+/// the Euclidean dot product of the components (`u a + a u = -2 u . a`), and the
+/// commutator trait is `(xy - yx)/2`, so this is
+/// `(1 - |u|^2/4) a + u.commutator(a) + 1/2 (u . a) u`: a polynomial, no series.
+#[inline(always)]
+fn dcayinv(u: Bivector, a: Bivector) -> Bivector {
+    let x2 = u.e12 * u.e12 + u.e13 * u.e13 + u.e23 * u.e23;
+    let dot = u.e12 * a.e12 + u.e13 * a.e13 + u.e23 * a.e23;
+    a * (1.0 - 0.25 * x2) + u.commutator(a) + u * (0.5 * dot)
+}
+
+/// The coordinates of the group, chosen at compile time in the stages: the exponential
+/// (Munthe-Kaas) or the Cayley map.
+#[inline(always)]
+fn map<const CAYLEY: bool>(u: Bivector) -> Rotor {
+    if CAYLEY {
+        cay(u)
+    } else {
+        exp(u)
+    }
+}
+
+/// The inverse derivative of [`map`].
+#[inline(always)]
+fn map_rate<const CAYLEY: bool>(u: Bivector, a: Bivector) -> Bivector {
+    if CAYLEY {
+        dcayinv(u, a)
+    } else {
+        dexpinv(u, a)
+    }
+}
+
 /// A point or rate of the six coordinates `(u, Omega_B)` the stages live in, packed in
 /// one array so that the stage combinations run two coordinates an instruction.
 type Six = [f64; 6];
@@ -518,6 +568,7 @@ pub struct LieDop853 {
     max_steps: u64,
     next_step: Option<f64>,
     stats: LieDop853Stats,
+    cayley: bool,
 }
 
 /// One step's result: the Lie-algebra increment, the new `Omega_B`, and the error norm.
@@ -543,8 +594,9 @@ type Rates = [Six; SD];
 ///
 /// With `theta = (t - t0) / h`, the Lie-algebra increment `u` and `Omega_B` are
 /// polynomials of degree 7 in `theta` (DOP853's, Hairer-Nørsett-Wanner II.6) and the rotor
-/// is `R0 exp(u)`, unit by construction. Between steps the output is continuous: `theta = 0`
-/// gives the step's start and `theta = 1` its end (to rounding).
+/// is `R0 exp(u)` (`R0 cay(u)` in Cayley coordinates), unit by construction. Between steps
+/// the output is continuous: `theta = 0` gives the step's start and `theta = 1` its end
+/// (to rounding).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DenseStep {
     t0: f64,
@@ -552,6 +604,8 @@ pub struct DenseStep {
     h: f64,
     start: State,
     end: State,
+    /// Whether the step was taken in Cayley coordinates (`R0 cay(u)`) rather than `R0 exp(u)`.
+    cayley: bool,
     /// The coefficients `r2..r8` of DOP853's polynomial for `(u, Omega_B)`; `r1` is
     /// `(0, Omega_B(t0))`.
     r: [Six; 7],
@@ -608,7 +662,7 @@ impl DenseStep {
             theta,
         ));
         Ok(State {
-            rotor: self.start.rotor * exp(u),
+            rotor: self.start.rotor * if self.cayley { cay(u) } else { exp(u) },
             omega,
         })
     }
@@ -637,7 +691,27 @@ impl LieDop853 {
             max_steps: 1_000_000,
             next_step: None,
             stats: LieDop853Stats::default(),
+            cayley: false,
         })
+    }
+
+    /// The same method in Cayley coordinates, `R = R0 cay(u)` with `dcay^-1` a polynomial
+    /// (Iserles, Munthe-Kaas, Nørsett, Zanna 2000, section 8.3): the stages pay no series
+    /// for `dexp^-1` and the step no sine and cosine. Same order, tableau, error estimate,
+    /// controller and dense output, and the rotor stays unit by construction; the error
+    /// constant differs (on the Hairer-Vilmart body about twice exp's at the same
+    /// tolerance, on the Hairer-Lubich-Wanner body the same number of steps to 1e-10).
+    pub fn cayley(rtol: f64, atol: f64) -> Result<Self, Error> {
+        Ok(LieDop853 {
+            cayley: true,
+            ..LieDop853::new(rtol, atol)?
+        })
+    }
+
+    /// `R0 exp(u)` or `R0 cay(u)`, the coordinates this method steps in.
+    #[inline]
+    fn moved(&self, rotor: Rotor, u: Bivector) -> Rotor {
+        rotor * if self.cayley { cay(u) } else { exp(u) }
     }
 
     /// The work done so far.
@@ -657,6 +731,23 @@ impl LieDop853 {
         rate0: Bivector,
         rates: &mut Rates,
     ) -> Trial {
+        if self.cayley {
+            self.trial_in::<true>(body, t, state, h, rate0, rates)
+        } else {
+            self.trial_in::<false>(body, t, state, h, rate0, rates)
+        }
+    }
+
+    /// [`LieDop853::trial`] in the coordinates `CAYLEY` chooses.
+    fn trial_in<const CAYLEY: bool>(
+        &self,
+        body: &RigidBody,
+        t: f64,
+        state: &State,
+        h: f64,
+        rate0: Bivector,
+        rates: &mut Rates,
+    ) -> Trial {
         let torque = body.has_torque();
         let y0 = six(Bivector::ZERO, state.omega);
         rates[0] = six(state.omega * -0.5, rate0);
@@ -667,14 +758,14 @@ impl LieDop853 {
                 let (u, omega) = halves(&combine(&y0, h, A[$i], rates));
                 let stage = State {
                     rotor: if torque {
-                        state.rotor * exp(u)
+                        state.rotor * map::<CAYLEY>(u)
                     } else {
                         state.rotor
                     },
                     omega,
                 };
                 rates[$i] = six(
-                    dexpinv(u, omega * -0.5),
+                    map_rate::<CAYLEY>(u, omega * -0.5),
                     body.omega_rate(t + C[$i] * h, &stage),
                 );
             )*};
@@ -721,7 +812,7 @@ impl LieDop853 {
         let rate0 = body.omega_rate(t, &state);
         let trial = self.trial(body, t, &state, h, rate0, &mut rates);
         State {
-            rotor: state.rotor * exp(trial.u),
+            rotor: self.moved(state.rotor, trial.u),
             omega: trial.omega,
         }
     }
@@ -847,30 +938,52 @@ impl LieDop853 {
         trial: &Trial,
         rates: &mut Rates,
     ) -> (DenseStep, Bivector) {
+        if self.cayley {
+            self.dense_in::<true>(body, t, state, h, t1, trial, rates)
+        } else {
+            self.dense_in::<false>(body, t, state, h, t1, trial, rates)
+        }
+    }
+
+    /// [`LieDop853::dense`] in the coordinates `CAYLEY` chooses.
+    #[allow(clippy::too_many_arguments)] // As for `accepted_step`.
+    fn dense_in<const CAYLEY: bool>(
+        &self,
+        body: &RigidBody,
+        t: f64,
+        state: &State,
+        h: f64,
+        t1: f64,
+        trial: &Trial,
+        rates: &mut Rates,
+    ) -> (DenseStep, Bivector) {
         let torque = body.has_torque();
         // The step's end scaled to unit, as the next step starts from it: its rate is then
         // the next step's first exactly, so a sampled run takes the steps of `advance`.
         let end = State {
-            rotor: unit(state.rotor * exp(trial.u)),
+            rotor: unit(state.rotor * map::<CAYLEY>(trial.u)),
             omega: trial.omega,
         };
         let y0 = six(Bivector::ZERO, state.omega);
         let y1 = six(trial.u, trial.omega);
         rates[S] = six(
-            dexpinv(trial.u, trial.omega * -0.5),
+            map_rate::<CAYLEY>(trial.u, trial.omega * -0.5),
             body.omega_rate(t1, &end),
         );
         for (i, (row, c)) in A_DENSE.iter().zip(C_DENSE).enumerate() {
             let (u, omega) = halves(&combine(&y0, h, row, rates));
             let stage = State {
                 rotor: if torque {
-                    state.rotor * exp(u)
+                    state.rotor * map::<CAYLEY>(u)
                 } else {
                     state.rotor
                 },
                 omega,
             };
-            rates[S + 1 + i] = six(dexpinv(u, omega * -0.5), body.omega_rate(t + c * h, &stage));
+            rates[S + 1 + i] = six(
+                map_rate::<CAYLEY>(u, omega * -0.5),
+                body.omega_rate(t + c * h, &stage),
+            );
         }
         let r2: Six = std::array::from_fn(|c| y1[c] - y0[c]);
         let r3: Six = std::array::from_fn(|c| h * rates[0][c] - r2[c]);
@@ -882,6 +995,7 @@ impl LieDop853 {
             h,
             start: *state,
             end,
+            cayley: CAYLEY,
             r: [r2, r3, r4, r5, r6, r7, r8],
         };
         (dense, halves(&rates[S]).1)
@@ -1078,7 +1192,7 @@ impl Integrator for LieDop853 {
             state = State {
                 // Unit by construction; scaling once a step keeps the rounding of the
                 // products from adding up over millions of steps.
-                rotor: unit(state.rotor * exp(step.trial.u)),
+                rotor: unit(self.moved(state.rotor, step.trial.u)),
                 omega: step.trial.omega,
             };
             if step.last {
@@ -1285,6 +1399,34 @@ mod tests {
         assert_eq!(COS_SERIES[1], -0.5);
         assert_eq!(SINC_SERIES[1], -1.0 / 6.0);
         assert_eq!(COS_SERIES[9], -1.0 / 6_402_373_705_728_000.0);
+    }
+
+    /// `cay(u)` is a unit rotor, agrees with `exp(u)` to second order, and `dcay^-1` is its
+    /// inverse derivative: `d/de cay(u + e v) = cay(u) a` for `v = dcay^-1_u(a)`, checked by
+    /// a central difference with ga-core's geometric product.
+    #[test]
+    fn cayley_map_is_unit_and_dcayinv_inverts_its_derivative() {
+        let a = Bivector::new(0.3, -0.7, 0.2);
+        for scale in [1e-3, 0.1, 0.5, 1.0, 3.0, 20.0] {
+            let u = Bivector::new(0.6, -0.48, 0.64) * scale;
+            let r = cay(u);
+            let norm = r.s * r.s + r.e12 * r.e12 + r.e13 * r.e13 + r.e23 * r.e23;
+            assert!((norm - 1.0).abs() < 3e-16, "scale {scale}: {norm}");
+            let v = dcayinv(u, a);
+            let e = 1e-5;
+            let slope = (cay(u + v * e) - cay(u - v * e)) * (0.5 / e);
+            let gap = slope - r * a;
+            let size = [gap.s, gap.e12, gap.e13, gap.e23]
+                .into_iter()
+                .map(f64::abs)
+                .fold(0.0, f64::max);
+            assert!(size < 1e-8, "scale {scale}: {size:e}");
+        }
+        let u = Bivector::new(0.6, -0.48, 0.64) * 1e-3;
+        let (c, e) = (cay(u), u.exp());
+        for d in [c.s - e.s, c.e12 - e.e12, c.e13 - e.e13, c.e23 - e.e23] {
+            assert!(d.abs() < 1e-9, "{d:e}");
+        }
     }
 
     #[test]
