@@ -12,7 +12,8 @@
 //!   t = 10 on the Hairer-Lubich-Wanner body, each method at the cheapest setting that gets
 //!   there (searched before anything is timed, printed once, and asserted), against
 //!   ode_solvers' Dop853 on Euler's equations in matrix form. Every iteration integrates
-//!   from t = 0.
+//!   from t = 0. `lie-dop853-cayley` is lie-dop853 in Cayley coordinates
+//!   (`LieDop853::cayley`).
 //!
 //! The long-running groups (the 10^6 tops, the splitting's race) take 10 samples of a flat
 //! sampling instead of the usual 30 linear ones, so that they fit the 2 s measurement.
@@ -397,6 +398,25 @@ fn race(c: &mut Criterion) {
     let timed = || run(Box::new(lie(tol).expect("valid tolerance")));
     assert!(error_of(timed()) <= RACE_TARGET);
     g.bench_function("lie-dop853", |bencher| bencher.iter(timed));
+
+    // The same method in Cayley coordinates: no series for dexp^-1, no sine or cosine.
+    let cayley = |tol: f64| LieDop853::cayley(tol, tol);
+    let (tol, error) = loosest_tolerance(RACE_TARGET, |tol| {
+        cayley(tol).map(|m| error_of(run(Box::new(m))))
+    })
+    .expect("lie-dop853 in Cayley coordinates reaches the target");
+    let mut method = cayley(tol).expect("valid tolerance");
+    method
+        .advance(&body, 0.0, initial, RACE_T_END)
+        .expect("finite");
+    let stats = method.stats();
+    println!(
+        "  {:<18} rtol = atol = {tol:.3e}, {} steps ({} rejected), error {error:.3e}",
+        "lie-dop853-cayley", stats.accepted, stats.rejected
+    );
+    let timed = || run(Box::new(cayley(tol).expect("valid tolerance")));
+    assert!(error_of(timed()) <= RACE_TARGET);
+    g.bench_function("lie-dop853-cayley", |bencher| bencher.iter(timed));
 
     let exact = || run(Box::new(ExactFreeBody::new()));
     let error = exact().map_or(f64::INFINITY, |s| attitude_error(s.rotor, published));

@@ -25,7 +25,7 @@ pub const MILLION_GROUP: &str = "rigid/symmetric_top_1e6/f64/batch";
 /// per integration from t = 0.
 pub const RACE_GROUP: &str = "rigid/reach_1e-10/f64/hlw_t10";
 /// The geometric-algebra time-stepping methods of the race, each at its cheapest setting.
-pub const RACE_GA_METHODS: [&str; 8] = [
+pub const RACE_GA_METHODS: [&str; 9] = [
     "rk4",
     "lie-rk4",
     "dopri5",
@@ -34,6 +34,7 @@ pub const RACE_GA_METHODS: [&str; 8] = [
     "splitting-6",
     "splitting-8",
     "lie-dop853",
+    "lie-dop853-cayley",
 ];
 /// ode_solvers' Dop853 on the matrix form, in [`RACE_GROUP`].
 pub const RACE_PEER: &str = "ode_solvers dop853";

@@ -66,6 +66,22 @@ pub enum Error {
         reason: String,
     },
 
+    /// A time (or other number) outside the interval it must lie in, such as a sample
+    /// time outside the step or run it is asked of.
+    #[error(
+        "{field}: {} lies outside the interval from {} to {}",
+        num(*value), num(*start), num(*end)
+    )]
+    OutOfRange {
+        /// The field or parameter at fault.
+        field: String,
+        /// The offending value.
+        value: f64,
+        /// One end of the interval (its start, which may be the larger end).
+        start: f64,
+        /// The other end.
+        end: f64,
+    },
     /// Any other broken rule: the message after the field states it.
     #[error("{field}: {rule}")]
     Invalid {
@@ -191,6 +207,7 @@ impl Error {
             | Error::TriangleInequality { field, .. }
             | Error::ZeroRotor { field }
             | Error::Degenerate { field, .. }
+            | Error::OutOfRange { field, .. }
             | Error::Invalid { field, .. }
             | Error::OpenMesh { field, .. }
             | Error::Obj { field, .. }
@@ -207,6 +224,7 @@ impl Error {
             | Error::TriangleInequality { field, .. }
             | Error::ZeroRotor { field }
             | Error::Degenerate { field, .. }
+            | Error::OutOfRange { field, .. }
             | Error::Invalid { field, .. }
             | Error::OpenMesh { field, .. }
             | Error::Obj { field, .. }

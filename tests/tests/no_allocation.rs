@@ -8,7 +8,8 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use ga_core::f64::g3::{Rotor, Vector};
 use ga_rigid::dynamics::{omega_from_vector, Gravity, RigidBody, State};
 use ga_rigid::integrators::{
-    ClosedForm, DormandPrince, ExactFreeBody, ImplicitMidpoint, Integrator, LieRk4, Rk4, Splitting,
+    ClosedForm, DormandPrince, ExactFreeBody, ImplicitMidpoint, Integrator, LieDop853, LieRk4, Rk4,
+    Splitting,
 };
 
 struct Counting;
@@ -67,6 +68,8 @@ fn integrator_steps() {
         Box::new(ImplicitMidpoint::new(0.01).unwrap()),
         Box::new(Splitting::new(0.01).unwrap()),
         Box::new(DormandPrince::new(1e-9, 1e-12).unwrap()),
+        Box::new(LieDop853::new(1e-10, 1e-10).unwrap()),
+        Box::new(LieDop853::cayley(1e-10, 1e-10).unwrap()),
     ];
     let (mut exact, mut closed) = (ExactFreeBody::new(), ClosedForm::new());
     let count = allocations_during(|| {
@@ -76,6 +79,25 @@ fn integrator_steps() {
             }
         }
         black_box(exact.advance(&free, 0.0, state, 3.0).unwrap());
+        // Dense output: a sampled run and one step interpolated, into a caller's array.
+        let mut dense = LieDop853::new(1e-10, 1e-10).unwrap();
+        let times = [0.0, 0.1, 0.25, 0.5];
+        let mut samples = [state; 4];
+        let mut i = 0;
+        for body in [&free, &heavy] {
+            i = 0;
+            black_box(
+                dense
+                    .dense_advance(body, 0.0, state, 0.5, &times, |_, s| {
+                        samples[i] = s;
+                        i += 1;
+                    })
+                    .unwrap(),
+            );
+            let step = dense.step(body, 0.0, state, 0.5).unwrap();
+            black_box(step.at(0.5 * step.end_time()).unwrap());
+        }
+        black_box((&samples, i));
         black_box(closed.advance(&symmetric, 0.0, state, 3.0).unwrap());
     });
     assert_eq!(count, 0);
