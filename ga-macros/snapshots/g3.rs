@@ -11782,7 +11782,7 @@ pub mod g3 {
         [x, math::sqrt(x.abs()) * largest]
     }
     /// `[cosh, sinhc]` of a four-dimensional channel's angle, `sqrt 2` times the root
-    /// of its square: by the series where that is small, else by the root.
+    /// of its square: in `f64` by the series where that is small, else by the root.
     #[allow(dead_code)]
     #[inline]
     fn channel_cosh_sinhc(channel: Bivector) -> [f64; 2] {

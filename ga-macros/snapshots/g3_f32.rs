@@ -88,49 +88,11 @@ pub mod g3 {
         pub(super) fn hypot(x: f32, y: f32) -> f32 {
             x.hypot(y)
         }
-        /// `(sin x, cos x)` by one reduction to `|r| <= pi/4` and two polynomials, for
-        /// `|x| <= 2^19`; beyond that, and for NaN and infinities, the library's.
+        /// `(sin x, cos x)`: the library's, which is as fast as a written-out kernel
+        /// for `f32`.
         #[inline]
         pub(super) fn sin_cos(x: f32) -> (f32, f32) {
-            if !(x.abs() <= 524288.0) {
-                return sin_cos_any(x);
-            }
-            let x: f64 = x as f64;
-            let n = (x * ::core::f64::consts::FRAC_2_PI + 6755399441055744.0)
-                - 6755399441055744.0;
-            let r = ((x - n * 1.5707963267341256) - n * 6.077100506303966e-11)
-                - n * 2.0222662487959506e-21;
-            let z = r * r;
-            let z2 = z * z;
-            let z4 = z2 * z2;
-            let sin = r
-                + r * z
-                    * (((-0.16666666666666666 + z * 0.008333333333333333)
-                        + z2 * (-1.984126984126984e-4 + z * 2.7557319223985893e-6))
-                        + z4 * -2.505210838544172e-8);
-            let half = 0.5 * z;
-            let w = 1.0 - half;
-            let cos = w
-                + (((1.0 - w) - half)
-                    + z2
-                        * ((0.041666666666666664 + z * -0.001388888888888889)
-                            + z2 * (2.48015873015873e-5 + z * -2.755731922398589e-7)));
-            let (sin, cos) = quadrant(sin, cos, n as i64 as u64);
-            (sin as f32, cos as f32)
-        }
-        /// `(sin, cos)` of `r + q pi/2` from those of `r`: odd quadrants swap the two, and
-        /// the signs follow the quadrant, by bit operations rather than branches that
-        /// random angles would mispredict.
-        #[inline]
-        fn quadrant(sin: f64, cos: f64, q: u64) -> (f64, f64) {
-            let swap = (q & 1).wrapping_neg();
-            let (s, c) = (sin.to_bits(), cos.to_bits());
-            let first = (s & !swap) | (c & swap);
-            let second = (c & !swap) | (s & swap);
-            (
-                f64::from_bits(first ^ ((q & 2) << 62)),
-                f64::from_bits(second ^ ((q.wrapping_add(1) & 2) << 62)),
-            )
+            sin_cos_any(x)
         }
     }
     /// A sum of squares at least this large lost nothing that matters to underflow: a
@@ -12213,15 +12175,10 @@ pub mod g3 {
         [x, math::sqrt(x.abs()) * largest]
     }
     /// `[cosh, sinhc]` of a four-dimensional channel's angle, `sqrt 2` times the root
-    /// of its square: by the series where that is small, else by the root.
+    /// of its square: in `f64` by the series where that is small, else by the root.
     #[allow(dead_code)]
     #[inline]
     fn channel_cosh_sinhc(channel: Bivector) -> [f32; 2] {
-        let b = channel;
-        let x: f32 = 2.0 * (-((b.e12 * b.e12 + b.e13 * b.e13) + b.e23 * b.e23));
-        if x.abs() <= SERIES_MAX {
-            return cosh_sinhc_series(x);
-        }
         let [x, root] = square_and_root(channel);
         cosh_sinhc(x, ::core::f32::consts::SQRT_2 * root)
     }
