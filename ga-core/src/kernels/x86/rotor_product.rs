@@ -85,76 +85,67 @@ pub mod f32 {
     use crate::f32::g3::Rotor;
     use crate::kernels::InstructionSet;
 
-    /// `out[i] = a[i] b[i]`, 8 items a round in 256-bit registers.
-    ///
-    /// # Safety
-    /// The CPU has AVX2, and the three slices have the same length.
-    #[target_feature(enable = "avx2")]
-    pub unsafe fn mul_pairs_avx2(a: &[Rotor], b: &[Rotor], out: &mut [Rotor]) -> InstructionSet {
-        const ITEMS: usize = 8;
-        let full = a.len() / ITEMS * ITEMS;
-        let (pa, pb) = (a.as_ptr().cast::<f32>(), b.as_ptr().cast::<f32>());
-        let po = out.as_mut_ptr().cast::<f32>();
-        for i in (0..full).step_by(ITEMS) {
-            // SAFETY: `Rotor` is `#[repr(C)]` of four `f32`, so items `i..i + 8` are the 32
-            // floats from `4 i`, and `i + 8 <= full <= len` in all three slices.
-            let (x, y) = unsafe {
-                (
-                    [0, 8, 16, 24].map(|k| _mm256_loadu_ps(pa.add(4 * i + k))),
-                    [0, 8, 16, 24].map(|k| _mm256_loadu_ps(pb.add(4 * i + k))),
-                )
-            };
-            let x =
-                transpose_in_lanes!(x, _mm256_unpacklo_ps, _mm256_unpackhi_ps, _mm256_shuffle_ps);
-            let y =
-                transpose_in_lanes!(y, _mm256_unpacklo_ps, _mm256_unpackhi_ps, _mm256_shuffle_ps);
-            let p =
-                rotor_product!(x, y, _mm256_add_ps, _mm256_sub_ps, _mm256_mul_ps, e23: lane_order);
-            let p =
-                transpose_in_lanes!(p, _mm256_unpacklo_ps, _mm256_unpackhi_ps, _mm256_shuffle_ps);
-            for (k, register) in p.into_iter().enumerate() {
-                // SAFETY: as for the loads.
-                unsafe { _mm256_storeu_ps(po.add(4 * i + 8 * k), register) };
+    /// One `f32` copy: `$items` rotors a round, four registers of `$items / 4` rotors each,
+    /// with the width's load, store, unpacks, shuffle and arithmetic.
+    macro_rules! f32_copy {
+        (
+            $(#[$doc:meta])*
+            $name:ident, $feature:literal, $set:expr, items: $items:literal,
+            $load:ident, $store:ident, $lo:ident, $hi:ident, $shuffle:ident,
+            $add:ident, $sub:ident, $mul:ident
+        ) => {
+            $(#[$doc])*
+            #[target_feature(enable = $feature)]
+            pub unsafe fn $name(a: &[Rotor], b: &[Rotor], out: &mut [Rotor]) -> InstructionSet {
+                const ITEMS: usize = $items;
+                let full = a.len() / ITEMS * ITEMS;
+                let (pa, pb) = (a.as_ptr().cast::<f32>(), b.as_ptr().cast::<f32>());
+                let po = out.as_mut_ptr().cast::<f32>();
+                // Register `k` of a round starts at float `4 i + k ITEMS`.
+                let starts = [0, ITEMS, 2 * ITEMS, 3 * ITEMS];
+                for i in (0..full).step_by(ITEMS) {
+                    // SAFETY: `Rotor` is `#[repr(C)]` of four `f32`, so items
+                    // `i..i + ITEMS` are the `4 ITEMS` floats from `4 i`, and
+                    // `i + ITEMS <= full <= len` in all three slices.
+                    let (x, y) = unsafe {
+                        (
+                            starts.map(|k| $load(pa.add(4 * i + k))),
+                            starts.map(|k| $load(pb.add(4 * i + k))),
+                        )
+                    };
+                    let x = transpose_in_lanes!(x, $lo, $hi, $shuffle);
+                    let y = transpose_in_lanes!(y, $lo, $hi, $shuffle);
+                    let p = rotor_product!(x, y, $add, $sub, $mul, e23: lane_order);
+                    let p = transpose_in_lanes!(p, $lo, $hi, $shuffle);
+                    for (k, register) in starts.into_iter().zip(p) {
+                        // SAFETY: as for the loads.
+                        unsafe { $store(po.add(4 * i + k), register) };
+                    }
+                }
+                crate::kernels::f32::mul_items(&a[full..], &b[full..], &mut out[full..]);
+                $set
             }
-        }
-        crate::kernels::f32::mul_items(&a[full..], &b[full..], &mut out[full..]);
-        InstructionSet::Avx2Fma
+        };
     }
 
-    /// `out[i] = a[i] b[i]`, 16 items a round in 512-bit registers.
-    ///
-    /// # Safety
-    /// The CPU has AVX-512F, and the three slices have the same length.
-    #[target_feature(enable = "avx512f")]
-    pub unsafe fn mul_pairs_avx512(a: &[Rotor], b: &[Rotor], out: &mut [Rotor]) -> InstructionSet {
-        const ITEMS: usize = 16;
-        let full = a.len() / ITEMS * ITEMS;
-        let (pa, pb) = (a.as_ptr().cast::<f32>(), b.as_ptr().cast::<f32>());
-        let po = out.as_mut_ptr().cast::<f32>();
-        for i in (0..full).step_by(ITEMS) {
-            // SAFETY: items `i..i + 16` are the 64 floats from `4 i`, and
-            // `i + 16 <= full <= len` in all three slices.
-            let (x, y) = unsafe {
-                (
-                    [0, 16, 32, 48].map(|k| _mm512_loadu_ps(pa.add(4 * i + k))),
-                    [0, 16, 32, 48].map(|k| _mm512_loadu_ps(pb.add(4 * i + k))),
-                )
-            };
-            let x =
-                transpose_in_lanes!(x, _mm512_unpacklo_ps, _mm512_unpackhi_ps, _mm512_shuffle_ps);
-            let y =
-                transpose_in_lanes!(y, _mm512_unpacklo_ps, _mm512_unpackhi_ps, _mm512_shuffle_ps);
-            let p =
-                rotor_product!(x, y, _mm512_add_ps, _mm512_sub_ps, _mm512_mul_ps, e23: lane_order);
-            let p =
-                transpose_in_lanes!(p, _mm512_unpacklo_ps, _mm512_unpackhi_ps, _mm512_shuffle_ps);
-            for (k, register) in p.into_iter().enumerate() {
-                // SAFETY: as for the loads.
-                unsafe { _mm512_storeu_ps(po.add(4 * i + 16 * k), register) };
-            }
-        }
-        crate::kernels::f32::mul_items(&a[full..], &b[full..], &mut out[full..]);
-        InstructionSet::Avx512f
+    f32_copy! {
+        /// `out[i] = a[i] b[i]`, 8 items a round in 256-bit registers.
+        ///
+        /// # Safety
+        /// The CPU has AVX2, and the three slices have the same length.
+        mul_pairs_avx2, "avx2", InstructionSet::Avx2Fma, items: 8,
+        _mm256_loadu_ps, _mm256_storeu_ps, _mm256_unpacklo_ps, _mm256_unpackhi_ps,
+        _mm256_shuffle_ps, _mm256_add_ps, _mm256_sub_ps, _mm256_mul_ps
+    }
+
+    f32_copy! {
+        /// `out[i] = a[i] b[i]`, 16 items a round in 512-bit registers.
+        ///
+        /// # Safety
+        /// The CPU has AVX-512F, and the three slices have the same length.
+        mul_pairs_avx512, "avx512f", InstructionSet::Avx512f, items: 16,
+        _mm512_loadu_ps, _mm512_storeu_ps, _mm512_unpacklo_ps, _mm512_unpackhi_ps,
+        _mm512_shuffle_ps, _mm512_add_ps, _mm512_sub_ps, _mm512_mul_ps
     }
 }
 
