@@ -95,7 +95,6 @@ pub mod g4 {
             if !(x.abs() <= 524288.0) {
                 return sin_cos_any(x);
             }
-            let x: f64 = x;
             let n = (x * ::core::f64::consts::FRAC_2_PI + 6755399441055744.0)
                 - 6755399441055744.0;
             let r = ((x - n * 1.5707963267341256) - n * 6.077100506303966e-11)
@@ -121,8 +120,7 @@ pub mod g4 {
                             + z4
                                 * ((2.08767569878681e-9 + z * -1.1470745597729725e-11)
                                     + z2 * 4.779477332387385e-14)));
-            let (sin, cos) = quadrant(sin, cos, n as i64 as u64);
-            (sin, cos)
+            quadrant(sin, cos, n as i64 as u64)
         }
         /// `(sin, cos)` of `r + q pi/2` from those of `r`: odd quadrants swap the two, and
         /// the signs follow the quadrant, by bit operations rather than branches that

@@ -2,16 +2,16 @@
 //! platform's library for the angles a rotation has: `cosh_sinhc_series`, the even series
 //! of `cos r` and `sin(r)/r` in `x = -r^2` (no root, no division, no reduction) for
 //! `|x| <= 2.5`, which holds every rotor's half-angle up to a half turn; and `sin_cos`, one
-//! reduction by pi/2 and two polynomials, for the larger angles.
+//! reduction by pi/2 and two polynomials, for the larger `f64` angles.
 //!
-//! `std`'s `sin_cos` is two calls, each reducing its argument again; that pair was most of
-//! the time of a G3 exp. Here the reduction is Cody and Waite's (W. J. Cody, W. Waite,
+//! The C library's `sincos` was most of the time of a G3 exp. Here the reduction is Cody and Waite's (W. J. Cody, W. Waite,
 //! *Software Manual for the Elementary Functions*, Prentice-Hall 1980): `x - n pi/2` with
 //! pi/2 split into pieces of 33 bits, so that `n` times each of the first two is exact for
 //! `|n| < 2^20`; the polynomials are the Taylor series, long enough that the first term
 //! left out is below half an ulp on `|r| <= pi/4`. Beyond `2^19` (and for NaN and
 //! infinities) the library's own `sin_cos` runs, which reduces any finite angle exactly.
-//! `f32` angles are reduced and evaluated in `f64`, where the series can be shorter.
+//! `f32` keeps the library's `sincosf` for the larger angles: it measured faster than this
+//! kernel evaluated in `f64`.
 
 use proc_macro2::{Literal, TokenStream};
 use quote::quote;
@@ -40,9 +40,8 @@ fn readable(value: f64) -> Literal {
 }
 
 /// The odd Taylor coefficients `(-1)^k / (2k+1)!` from `k = 1`, and the even ones
-/// `(-1)^k / (2k)!` from `k = 2`, as many as a precision needs: for `f64` the first term
-/// left out, `r^19/19!` and `r^18/18!` at `r = pi/4`, is below 1e-17; for `f32`
-/// (evaluated in `f64`), `r^13/13!` and `r^12/12!` are below 2e-10.
+/// `(-1)^k / (2k)!` from `k = 2`, `terms` of each: with eight and seven the first terms
+/// left out, `r^19/19!` and `r^18/18!` at `r = pi/4`, are below 1e-17.
 fn taylor(first_power: u32, terms: u32) -> Vec<TokenStream> {
     (0..terms)
         .map(|k| {
@@ -158,30 +157,20 @@ pub fn emit_sin_cos(scalar: Scalar) -> TokenStream {
             }
         };
     }
-    let (odd_terms, even_terms) = (8, 7);
-    let sin_series = estrin(&taylor(3, odd_terms));
-    let cos_series = estrin(&taylor(4, even_terms));
+    let sin_series = estrin(&taylor(3, 8));
+    let cos_series = estrin(&taylor(4, 7));
     let pio2_1 = Literal::f64_unsuffixed(PIO2_1);
     let pio2_2 = readable(PIO2_2);
     let pio2_3 = readable(PIO2_3);
     let reduced_max = Literal::f64_unsuffixed(REDUCED_MAX);
-    let (s, widen, narrow) = match scalar {
-        Scalar::F64 => (quote!(f64), quote!(x), quote!((sin, cos))),
-        Scalar::F32 => (
-            quote!(f32),
-            quote!(x as f64),
-            quote!((sin as f32, cos as f32)),
-        ),
-    };
     quote! {
         /// `(sin x, cos x)` by one reduction to `|r| <= pi/4` and two polynomials, for
         /// `|x| <= 2^19`; beyond that, and for NaN and infinities, the library's.
         #[inline]
-        pub(super) fn sin_cos(x: #s) -> (#s, #s) {
+        pub(super) fn sin_cos(x: f64) -> (f64, f64) {
             if !(x.abs() <= #reduced_max) {
                 return sin_cos_any(x);
             }
-            let x: f64 = #widen;
             // The nearest integer to x 2/pi: adding and removing 1.5 * 2^52 rounds it.
             let n = (x * ::core::f64::consts::FRAC_2_PI + 6755399441055744.0) - 6755399441055744.0;
             let r = ((x - n * #pio2_1) - n * #pio2_2) - n * #pio2_3;
@@ -193,8 +182,7 @@ pub fn emit_sin_cos(scalar: Scalar) -> TokenStream {
             let half = 0.5 * z;
             let w = 1.0 - half;
             let cos = w + (((1.0 - w) - half) + z2 * #cos_series);
-            let (sin, cos) = quadrant(sin, cos, n as i64 as u64);
-            #narrow
+            quadrant(sin, cos, n as i64 as u64)
         }
 
         /// `(sin, cos)` of `r + q pi/2` from those of `r`: odd quadrants swap the two, and
