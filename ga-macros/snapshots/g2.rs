@@ -5033,9 +5033,10 @@ pub mod g2 {
             let e1_e1 = self.e1 * self.e1;
             let e1_e2 = two_e1 * self.e2;
             let e2_e2 = self.e2 * self.e2;
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
             Vector {
-                e1: (e2_e2 - e1_e1) * x.e1 - e1_e2 * x.e2,
-                e2: (e1_e1 - e2_e2) * x.e2 - e1_e2 * x.e1,
+                e1: -e1_e1_minus_e2_e2 * x.e1 - e1_e2 * x.e2,
+                e2: e1_e1_minus_e2_e2 * x.e2 - e1_e2 * x.e1,
             }
         }
     }
@@ -5045,7 +5046,7 @@ pub mod g2 {
             let e1_e1 = self.e1 * self.e1;
             let e2_e2 = self.e2 * self.e2;
             Bivector {
-                e12: (-e1_e1 - e2_e2) * x.e12,
+                e12: -(e1_e1 + e2_e2) * x.e12,
             }
         }
     }
@@ -5054,9 +5055,10 @@ pub mod g2 {
         fn sandwich(self, x: Even) -> Even {
             let e1_e1 = self.e1 * self.e1;
             let e2_e2 = self.e2 * self.e2;
+            let e1_e1_plus_e2_e2 = e1_e1 + e2_e2;
             Even {
-                s: (e1_e1 + e2_e2) * x.s,
-                e12: (-e1_e1 - e2_e2) * x.e12,
+                s: e1_e1_plus_e2_e2 * x.s,
+                e12: -e1_e1_plus_e2_e2 * x.e12,
             }
         }
     }
@@ -5067,9 +5069,10 @@ pub mod g2 {
             let e1_e1 = self.e1 * self.e1;
             let e1_e2 = two_e1 * self.e2;
             let e2_e2 = self.e2 * self.e2;
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
             Odd {
-                e1: (e2_e2 - e1_e1) * x.e1 - e1_e2 * x.e2,
-                e2: (e1_e1 - e2_e2) * x.e2 - e1_e2 * x.e1,
+                e1: -e1_e1_minus_e2_e2 * x.e1 - e1_e2 * x.e2,
+                e2: e1_e1_minus_e2_e2 * x.e2 - e1_e2 * x.e1,
             }
         }
     }
@@ -5080,11 +5083,13 @@ pub mod g2 {
             let e1_e1 = self.e1 * self.e1;
             let e1_e2 = two_e1 * self.e2;
             let e2_e2 = self.e2 * self.e2;
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
+            let e1_e1_plus_e2_e2 = e1_e1 + e2_e2;
             Multivector {
-                s: (e1_e1 + e2_e2) * x.s,
-                e1: (e2_e2 - e1_e1) * x.e1 - e1_e2 * x.e2,
-                e2: (e1_e1 - e2_e2) * x.e2 - e1_e2 * x.e1,
-                e12: (-e1_e1 - e2_e2) * x.e12,
+                s: e1_e1_plus_e2_e2 * x.s,
+                e1: -e1_e1_minus_e2_e2 * x.e1 - e1_e2 * x.e2,
+                e2: e1_e1_minus_e2_e2 * x.e2 - e1_e2 * x.e1,
+                e12: -e1_e1_plus_e2_e2 * x.e12,
             }
         }
     }
@@ -5100,7 +5105,8 @@ pub mod g2 {
             let e1_e1 = self.e1 * self.e1;
             let e1_e2 = two_e1 * self.e2;
             let e2_e2 = self.e2 * self.e2;
-            [[e2_e2 - e1_e1, -e1_e2], [-e1_e2, e1_e1 - e2_e2]]
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
+            [[-e1_e1_minus_e2_e2, -e1_e2], [-e1_e2, e1_e1_minus_e2_e2]]
         }
         /// Applies the sandwich to every vector in place, building its matrix once.
         #[inline]
@@ -5122,9 +5128,10 @@ pub mod g2 {
             let s_s = self.s * self.s;
             let s_e12 = two_s * self.e12;
             let e12_e12 = self.e12 * self.e12;
+            let s_s_minus_e12_e12 = s_s - e12_e12;
             Vector {
-                e1: (s_s - e12_e12) * x.e1 + s_e12 * x.e2,
-                e2: (s_s - e12_e12) * x.e2 - s_e12 * x.e1,
+                e1: s_s_minus_e12_e12 * x.e1 + s_e12 * x.e2,
+                e2: s_s_minus_e12_e12 * x.e2 - s_e12 * x.e1,
             }
         }
     }
@@ -5143,9 +5150,10 @@ pub mod g2 {
         fn sandwich(self, x: Even) -> Even {
             let s_s = self.s * self.s;
             let e12_e12 = self.e12 * self.e12;
+            let s_s_plus_e12_e12 = s_s + e12_e12;
             Even {
-                s: (s_s + e12_e12) * x.s,
-                e12: (s_s + e12_e12) * x.e12,
+                s: s_s_plus_e12_e12 * x.s,
+                e12: s_s_plus_e12_e12 * x.e12,
             }
         }
     }
@@ -5156,9 +5164,10 @@ pub mod g2 {
             let s_s = self.s * self.s;
             let s_e12 = two_s * self.e12;
             let e12_e12 = self.e12 * self.e12;
+            let s_s_minus_e12_e12 = s_s - e12_e12;
             Odd {
-                e1: (s_s - e12_e12) * x.e1 + s_e12 * x.e2,
-                e2: (s_s - e12_e12) * x.e2 - s_e12 * x.e1,
+                e1: s_s_minus_e12_e12 * x.e1 + s_e12 * x.e2,
+                e2: s_s_minus_e12_e12 * x.e2 - s_e12 * x.e1,
             }
         }
     }
@@ -5169,11 +5178,13 @@ pub mod g2 {
             let s_s = self.s * self.s;
             let s_e12 = two_s * self.e12;
             let e12_e12 = self.e12 * self.e12;
+            let s_s_minus_e12_e12 = s_s - e12_e12;
+            let s_s_plus_e12_e12 = s_s + e12_e12;
             Multivector {
-                s: (s_s + e12_e12) * x.s,
-                e1: (s_s - e12_e12) * x.e1 + s_e12 * x.e2,
-                e2: (s_s - e12_e12) * x.e2 - s_e12 * x.e1,
-                e12: (s_s + e12_e12) * x.e12,
+                s: s_s_plus_e12_e12 * x.s,
+                e1: s_s_minus_e12_e12 * x.e1 + s_e12 * x.e2,
+                e2: s_s_minus_e12_e12 * x.e2 - s_e12 * x.e1,
+                e12: s_s_plus_e12_e12 * x.e12,
             }
         }
     }
@@ -5189,7 +5200,8 @@ pub mod g2 {
             let s_s = self.s * self.s;
             let s_e12 = two_s * self.e12;
             let e12_e12 = self.e12 * self.e12;
-            [[s_s - e12_e12, s_e12], [-s_e12, s_s - e12_e12]]
+            let s_s_minus_e12_e12 = s_s - e12_e12;
+            [[s_s_minus_e12_e12, s_e12], [-s_e12, s_s_minus_e12_e12]]
         }
         /// Applies the sandwich to every vector in place, building its matrix once.
         #[inline]
@@ -5211,9 +5223,10 @@ pub mod g2 {
             let e1_e1 = self.e1 * self.e1;
             let e1_e2 = two_e1 * self.e2;
             let e2_e2 = self.e2 * self.e2;
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
             Vector {
-                e1: (e2_e2 - e1_e1) * x.e1 - e1_e2 * x.e2,
-                e2: (e1_e1 - e2_e2) * x.e2 - e1_e2 * x.e1,
+                e1: -e1_e1_minus_e2_e2 * x.e1 - e1_e2 * x.e2,
+                e2: e1_e1_minus_e2_e2 * x.e2 - e1_e2 * x.e1,
             }
         }
     }
@@ -5223,7 +5236,7 @@ pub mod g2 {
             let e1_e1 = self.e1 * self.e1;
             let e2_e2 = self.e2 * self.e2;
             Bivector {
-                e12: (-e1_e1 - e2_e2) * x.e12,
+                e12: -(e1_e1 + e2_e2) * x.e12,
             }
         }
     }
@@ -5232,9 +5245,10 @@ pub mod g2 {
         fn sandwich(self, x: Even) -> Even {
             let e1_e1 = self.e1 * self.e1;
             let e2_e2 = self.e2 * self.e2;
+            let e1_e1_plus_e2_e2 = e1_e1 + e2_e2;
             Even {
-                s: (e1_e1 + e2_e2) * x.s,
-                e12: (-e1_e1 - e2_e2) * x.e12,
+                s: e1_e1_plus_e2_e2 * x.s,
+                e12: -e1_e1_plus_e2_e2 * x.e12,
             }
         }
     }
@@ -5245,9 +5259,10 @@ pub mod g2 {
             let e1_e1 = self.e1 * self.e1;
             let e1_e2 = two_e1 * self.e2;
             let e2_e2 = self.e2 * self.e2;
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
             Odd {
-                e1: (e2_e2 - e1_e1) * x.e1 - e1_e2 * x.e2,
-                e2: (e1_e1 - e2_e2) * x.e2 - e1_e2 * x.e1,
+                e1: -e1_e1_minus_e2_e2 * x.e1 - e1_e2 * x.e2,
+                e2: e1_e1_minus_e2_e2 * x.e2 - e1_e2 * x.e1,
             }
         }
     }
@@ -5258,11 +5273,13 @@ pub mod g2 {
             let e1_e1 = self.e1 * self.e1;
             let e1_e2 = two_e1 * self.e2;
             let e2_e2 = self.e2 * self.e2;
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
+            let e1_e1_plus_e2_e2 = e1_e1 + e2_e2;
             Multivector {
-                s: (e1_e1 + e2_e2) * x.s,
-                e1: (e2_e2 - e1_e1) * x.e1 - e1_e2 * x.e2,
-                e2: (e1_e1 - e2_e2) * x.e2 - e1_e2 * x.e1,
-                e12: (-e1_e1 - e2_e2) * x.e12,
+                s: e1_e1_plus_e2_e2 * x.s,
+                e1: -e1_e1_minus_e2_e2 * x.e1 - e1_e2 * x.e2,
+                e2: e1_e1_minus_e2_e2 * x.e2 - e1_e2 * x.e1,
+                e12: -e1_e1_plus_e2_e2 * x.e12,
             }
         }
     }
@@ -5278,7 +5295,8 @@ pub mod g2 {
             let e1_e1 = self.e1 * self.e1;
             let e1_e2 = two_e1 * self.e2;
             let e2_e2 = self.e2 * self.e2;
-            [[e2_e2 - e1_e1, -e1_e2], [-e1_e2, e1_e1 - e2_e2]]
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
+            [[-e1_e1_minus_e2_e2, -e1_e2], [-e1_e2, e1_e1_minus_e2_e2]]
         }
         /// Applies the sandwich to every vector in place, building its matrix once.
         #[inline]

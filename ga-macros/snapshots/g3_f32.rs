@@ -8281,9 +8281,10 @@ pub mod g3 {
             let e2_e2 = self.e2 * self.e2;
             let e2_e3 = two_e2 * self.e3;
             let e3_e3 = self.e3 * self.e3;
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
             Vector {
-                e1: (e2_e2 + e3_e3 - e1_e1) * x.e1 - e1_e2 * x.e2 - e1_e3 * x.e3,
-                e2: (e1_e1 + e3_e3 - e2_e2) * x.e2 - e1_e2 * x.e1 - e2_e3 * x.e3,
+                e1: (e3_e3 - e1_e1_minus_e2_e2) * x.e1 - e1_e2 * x.e2 - e1_e3 * x.e3,
+                e2: (e1_e1_minus_e2_e2 + e3_e3) * x.e2 - e1_e2 * x.e1 - e2_e3 * x.e3,
                 e3: (e1_e1 + e2_e2 - e3_e3) * x.e3 - e1_e3 * x.e1 - e2_e3 * x.e2,
             }
         }
@@ -8299,10 +8300,12 @@ pub mod g3 {
             let e2_e2 = self.e2 * self.e2;
             let e2_e3 = two_e2 * self.e3;
             let e3_e3 = self.e3 * self.e3;
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
             Bivector {
                 e12: (e3_e3 - e1_e1 - e2_e2) * x.e12 + e1_e3 * x.e23 - e2_e3 * x.e13,
-                e13: (e2_e2 - e1_e1 - e3_e3) * x.e13 - e2_e3 * x.e12 - e1_e2 * x.e23,
-                e23: e1_e3 * x.e12 + (e1_e1 - e2_e2 - e3_e3) * x.e23 - e1_e2 * x.e13,
+                e13: -e2_e3 * x.e12 - (e1_e1_minus_e2_e2 + e3_e3) * x.e13
+                    - e1_e2 * x.e23,
+                e23: e1_e3 * x.e12 + (e1_e1_minus_e2_e2 - e3_e3) * x.e23 - e1_e2 * x.e13,
             }
         }
     }
@@ -8313,7 +8316,7 @@ pub mod g3 {
             let e2_e2 = self.e2 * self.e2;
             let e3_e3 = self.e3 * self.e3;
             Trivector {
-                e123: (-e1_e1 - e2_e2 - e3_e3) * x.e123,
+                e123: -(e1_e1 + e2_e2 + e3_e3) * x.e123,
             }
         }
     }
@@ -8328,11 +8331,14 @@ pub mod g3 {
             let e2_e2 = self.e2 * self.e2;
             let e2_e3 = two_e2 * self.e3;
             let e3_e3 = self.e3 * self.e3;
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
+            let e1_e1_plus_e2_e2 = e1_e1 + e2_e2;
             Even {
-                s: (e1_e1 + e2_e2 + e3_e3) * x.s,
-                e12: (e3_e3 - e1_e1 - e2_e2) * x.e12 + e1_e3 * x.e23 - e2_e3 * x.e13,
-                e13: (e2_e2 - e1_e1 - e3_e3) * x.e13 - e2_e3 * x.e12 - e1_e2 * x.e23,
-                e23: e1_e3 * x.e12 + (e1_e1 - e2_e2 - e3_e3) * x.e23 - e1_e2 * x.e13,
+                s: (e1_e1_plus_e2_e2 + e3_e3) * x.s,
+                e12: (e3_e3 - e1_e1_plus_e2_e2) * x.e12 + e1_e3 * x.e23 - e2_e3 * x.e13,
+                e13: -e2_e3 * x.e12 - (e1_e1_minus_e2_e2 + e3_e3) * x.e13
+                    - e1_e2 * x.e23,
+                e23: e1_e3 * x.e12 + (e1_e1_minus_e2_e2 - e3_e3) * x.e23 - e1_e2 * x.e13,
             }
         }
     }
@@ -8347,11 +8353,13 @@ pub mod g3 {
             let e2_e2 = self.e2 * self.e2;
             let e2_e3 = two_e2 * self.e3;
             let e3_e3 = self.e3 * self.e3;
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
+            let e1_e1_plus_e2_e2 = e1_e1 + e2_e2;
             Odd {
-                e1: (e2_e2 + e3_e3 - e1_e1) * x.e1 - e1_e2 * x.e2 - e1_e3 * x.e3,
-                e2: (e1_e1 + e3_e3 - e2_e2) * x.e2 - e1_e2 * x.e1 - e2_e3 * x.e3,
-                e3: (e1_e1 + e2_e2 - e3_e3) * x.e3 - e1_e3 * x.e1 - e2_e3 * x.e2,
-                e123: (-e1_e1 - e2_e2 - e3_e3) * x.e123,
+                e1: (e3_e3 - e1_e1_minus_e2_e2) * x.e1 - e1_e2 * x.e2 - e1_e3 * x.e3,
+                e2: (e1_e1_minus_e2_e2 + e3_e3) * x.e2 - e1_e2 * x.e1 - e2_e3 * x.e3,
+                e3: (e1_e1_plus_e2_e2 - e3_e3) * x.e3 - e1_e3 * x.e1 - e2_e3 * x.e2,
+                e123: -(e1_e1_plus_e2_e2 + e3_e3) * x.e123,
             }
         }
     }
@@ -8366,15 +8374,24 @@ pub mod g3 {
             let e2_e2 = self.e2 * self.e2;
             let e2_e3 = two_e2 * self.e3;
             let e3_e3 = self.e3 * self.e3;
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
+            let e1_e1_plus_e2_e2 = e1_e1 + e2_e2;
+            let e3_e3_minus_e1_e1_minus_e2_e2 = e3_e3 - e1_e1_minus_e2_e2;
+            let e3_e3_plus_e1_e1_minus_e2_e2 = e3_e3 + e1_e1_minus_e2_e2;
+            let e3_e3_minus_e1_e1_plus_e2_e2 = e3_e3 - e1_e1_plus_e2_e2;
+            let e3_e3_plus_e1_e1_plus_e2_e2 = e3_e3 + e1_e1_plus_e2_e2;
             Multivector {
-                s: (e1_e1 + e2_e2 + e3_e3) * x.s,
-                e1: (e2_e2 + e3_e3 - e1_e1) * x.e1 - e1_e2 * x.e2 - e1_e3 * x.e3,
-                e2: (e1_e1 + e3_e3 - e2_e2) * x.e2 - e1_e2 * x.e1 - e2_e3 * x.e3,
-                e3: (e1_e1 + e2_e2 - e3_e3) * x.e3 - e1_e3 * x.e1 - e2_e3 * x.e2,
-                e12: (e3_e3 - e1_e1 - e2_e2) * x.e12 + e1_e3 * x.e23 - e2_e3 * x.e13,
-                e13: (e2_e2 - e1_e1 - e3_e3) * x.e13 - e2_e3 * x.e12 - e1_e2 * x.e23,
-                e23: e1_e3 * x.e12 + (e1_e1 - e2_e2 - e3_e3) * x.e23 - e1_e2 * x.e13,
-                e123: (-e1_e1 - e2_e2 - e3_e3) * x.e123,
+                s: e3_e3_plus_e1_e1_plus_e2_e2 * x.s,
+                e1: e3_e3_minus_e1_e1_minus_e2_e2 * x.e1 - e1_e2 * x.e2 - e1_e3 * x.e3,
+                e2: e3_e3_plus_e1_e1_minus_e2_e2 * x.e2 - e1_e2 * x.e1 - e2_e3 * x.e3,
+                e3: -e1_e3 * x.e1 - e2_e3 * x.e2 - e3_e3_minus_e1_e1_plus_e2_e2 * x.e3,
+                e12: e3_e3_minus_e1_e1_plus_e2_e2 * x.e12 + e1_e3 * x.e23
+                    - e2_e3 * x.e13,
+                e13: -e2_e3 * x.e12 - e3_e3_plus_e1_e1_minus_e2_e2 * x.e13
+                    - e1_e2 * x.e23,
+                e23: e1_e3 * x.e12 - e1_e2 * x.e13
+                    - e3_e3_minus_e1_e1_minus_e2_e2 * x.e23,
+                e123: -e3_e3_plus_e1_e1_plus_e2_e2 * x.e123,
             }
         }
     }
@@ -8394,9 +8411,10 @@ pub mod g3 {
             let e2_e2 = self.e2 * self.e2;
             let e2_e3 = two_e2 * self.e3;
             let e3_e3 = self.e3 * self.e3;
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
             [
-                [e2_e2 + e3_e3 - e1_e1, -e1_e2, -e1_e3],
-                [-e1_e2, e1_e1 + e3_e3 - e2_e2, -e2_e3],
+                [e3_e3 - e1_e1_minus_e2_e2, -e1_e2, -e1_e3],
+                [-e1_e2, e1_e1_minus_e2_e2 + e3_e3, -e2_e3],
                 [-e1_e3, -e2_e3, e1_e1 + e2_e2 - e3_e3],
             ]
         }
@@ -8430,14 +8448,15 @@ pub mod g3 {
             let e13_e13 = self.e13 * self.e13;
             let e13_e23 = two_e13 * self.e23;
             let e23_e23 = self.e23 * self.e23;
+            let s_s_minus_e12_e12 = s_s - e12_e12;
+            let e13_e13_minus_e23_e23 = e13_e13 - e23_e23;
             Vector {
-                e1: (s_s + e23_e23 - e12_e12 - e13_e13) * x.e1 + (s_e12 - e13_e23) * x.e2
-                    + (s_e13 + e12_e23) * x.e3,
-                e2: (-s_e12 - e13_e23) * x.e1
-                    + (s_s + e13_e13 - e12_e12 - e23_e23) * x.e2
-                    + (s_e23 - e12_e13) * x.e3,
-                e3: (e12_e23 - s_e13) * x.e1 + (-s_e23 - e12_e13) * x.e2
-                    + (s_s + e12_e12 - e13_e13 - e23_e23) * x.e3,
+                e1: (s_s_minus_e12_e12 - e13_e13_minus_e23_e23) * x.e1
+                    + (s_e12 - e13_e23) * x.e2 + (s_e13 + e12_e23) * x.e3,
+                e2: (s_s_minus_e12_e12 + e13_e13_minus_e23_e23) * x.e2
+                    + (s_e23 - e12_e13) * x.e3 - (s_e12 + e13_e23) * x.e1,
+                e3: (e12_e23 - s_e13) * x.e1 + (s_s + e12_e12 - e13_e13 - e23_e23) * x.e3
+                    - (s_e23 + e12_e13) * x.e2,
             }
         }
     }
@@ -8457,14 +8476,16 @@ pub mod g3 {
             let e13_e13 = self.e13 * self.e13;
             let e13_e23 = two_e13 * self.e23;
             let e23_e23 = self.e23 * self.e23;
+            let s_s_minus_e12_e12 = s_s - e12_e12;
+            let e13_e13_minus_e23_e23 = e13_e13 - e23_e23;
             Bivector {
                 e12: (s_s + e12_e12 - e13_e13 - e23_e23) * x.e12
                     + (s_e23 + e12_e13) * x.e13 + (e12_e23 - s_e13) * x.e23,
                 e13: (e12_e13 - s_e23) * x.e12
-                    + (s_s + e13_e13 - e12_e12 - e23_e23) * x.e13
+                    + (s_s_minus_e12_e12 + e13_e13_minus_e23_e23) * x.e13
                     + (s_e12 + e13_e23) * x.e23,
                 e23: (s_e13 + e12_e23) * x.e12 + (e13_e23 - s_e12) * x.e13
-                    + (s_s + e23_e23 - e12_e12 - e13_e13) * x.e23,
+                    + (s_s_minus_e12_e12 - e13_e13_minus_e23_e23) * x.e23,
             }
         }
     }
@@ -8496,15 +8517,19 @@ pub mod g3 {
             let e13_e13 = self.e13 * self.e13;
             let e13_e23 = two_e13 * self.e23;
             let e23_e23 = self.e23 * self.e23;
+            let s_s_minus_e12_e12 = s_s - e12_e12;
+            let s_s_plus_e12_e12 = s_s + e12_e12;
+            let e13_e13_minus_e23_e23 = e13_e13 - e23_e23;
+            let e13_e13_plus_e23_e23 = e13_e13 + e23_e23;
             Even {
-                s: (s_s + e12_e12 + e13_e13 + e23_e23) * x.s,
-                e12: (s_s + e12_e12 - e13_e13 - e23_e23) * x.e12
+                s: (s_s_plus_e12_e12 + e13_e13_plus_e23_e23) * x.s,
+                e12: (s_s_plus_e12_e12 - e13_e13_plus_e23_e23) * x.e12
                     + (s_e23 + e12_e13) * x.e13 + (e12_e23 - s_e13) * x.e23,
                 e13: (e12_e13 - s_e23) * x.e12
-                    + (s_s + e13_e13 - e12_e12 - e23_e23) * x.e13
+                    + (s_s_minus_e12_e12 + e13_e13_minus_e23_e23) * x.e13
                     + (s_e12 + e13_e23) * x.e23,
                 e23: (s_e13 + e12_e23) * x.e12 + (e13_e23 - s_e12) * x.e13
-                    + (s_s + e23_e23 - e12_e12 - e13_e13) * x.e23,
+                    + (s_s_minus_e12_e12 - e13_e13_minus_e23_e23) * x.e23,
             }
         }
     }
@@ -8524,15 +8549,19 @@ pub mod g3 {
             let e13_e13 = self.e13 * self.e13;
             let e13_e23 = two_e13 * self.e23;
             let e23_e23 = self.e23 * self.e23;
+            let s_s_minus_e12_e12 = s_s - e12_e12;
+            let s_s_plus_e12_e12 = s_s + e12_e12;
+            let e13_e13_minus_e23_e23 = e13_e13 - e23_e23;
+            let e13_e13_plus_e23_e23 = e13_e13 + e23_e23;
             Odd {
-                e1: (s_s + e23_e23 - e12_e12 - e13_e13) * x.e1 + (s_e12 - e13_e23) * x.e2
-                    + (s_e13 + e12_e23) * x.e3,
-                e2: (-s_e12 - e13_e23) * x.e1
-                    + (s_s + e13_e13 - e12_e12 - e23_e23) * x.e2
-                    + (s_e23 - e12_e13) * x.e3,
-                e3: (e12_e23 - s_e13) * x.e1 + (-s_e23 - e12_e13) * x.e2
-                    + (s_s + e12_e12 - e13_e13 - e23_e23) * x.e3,
-                e123: (s_s + e12_e12 + e13_e13 + e23_e23) * x.e123,
+                e1: (s_s_minus_e12_e12 - e13_e13_minus_e23_e23) * x.e1
+                    + (s_e12 - e13_e23) * x.e2 + (s_e13 + e12_e23) * x.e3,
+                e2: (s_s_minus_e12_e12 + e13_e13_minus_e23_e23) * x.e2
+                    + (s_e23 - e12_e13) * x.e3 - (s_e12 + e13_e23) * x.e1,
+                e3: (e12_e23 - s_e13) * x.e1
+                    + (s_s_plus_e12_e12 - e13_e13_plus_e23_e23) * x.e3
+                    - (s_e23 + e12_e13) * x.e2,
+                e123: (s_s_plus_e12_e12 + e13_e13_plus_e23_e23) * x.e123,
             }
         }
     }
@@ -8552,23 +8581,35 @@ pub mod g3 {
             let e13_e13 = self.e13 * self.e13;
             let e13_e23 = two_e13 * self.e23;
             let e23_e23 = self.e23 * self.e23;
+            let s_s_minus_e12_e12 = s_s - e12_e12;
+            let s_s_plus_e12_e12 = s_s + e12_e12;
+            let e13_e13_minus_e23_e23 = e13_e13 - e23_e23;
+            let e13_e13_plus_e23_e23 = e13_e13 + e23_e23;
+            let s_e12_minus_e13_e23 = s_e12 - e13_e23;
+            let s_e12_plus_e13_e23 = s_e12 + e13_e23;
+            let s_e13_minus_e12_e23 = s_e13 - e12_e23;
+            let s_e13_plus_e12_e23 = s_e13 + e12_e23;
+            let s_e23_minus_e12_e13 = s_e23 - e12_e13;
+            let s_e23_plus_e12_e13 = s_e23 + e12_e13;
+            let shared_1 = s_s_minus_e12_e12 - e13_e13_minus_e23_e23;
+            let shared_2 = s_s_minus_e12_e12 + e13_e13_minus_e23_e23;
+            let shared_3 = s_s_plus_e12_e12 - e13_e13_plus_e23_e23;
+            let shared_4 = s_s_plus_e12_e12 + e13_e13_plus_e23_e23;
             Multivector {
-                s: (s_s + e12_e12 + e13_e13 + e23_e23) * x.s,
-                e1: (s_s + e23_e23 - e12_e12 - e13_e13) * x.e1 + (s_e12 - e13_e23) * x.e2
-                    + (s_e13 + e12_e23) * x.e3,
-                e2: (-s_e12 - e13_e23) * x.e1
-                    + (s_s + e13_e13 - e12_e12 - e23_e23) * x.e2
-                    + (s_e23 - e12_e13) * x.e3,
-                e3: (e12_e23 - s_e13) * x.e1 + (-s_e23 - e12_e13) * x.e2
-                    + (s_s + e12_e12 - e13_e13 - e23_e23) * x.e3,
-                e12: (s_s + e12_e12 - e13_e13 - e23_e23) * x.e12
-                    + (s_e23 + e12_e13) * x.e13 + (e12_e23 - s_e13) * x.e23,
-                e13: (e12_e13 - s_e23) * x.e12
-                    + (s_s + e13_e13 - e12_e12 - e23_e23) * x.e13
-                    + (s_e12 + e13_e23) * x.e23,
-                e23: (s_e13 + e12_e23) * x.e12 + (e13_e23 - s_e12) * x.e13
-                    + (s_s + e23_e23 - e12_e12 - e13_e13) * x.e23,
-                e123: (s_s + e12_e12 + e13_e13 + e23_e23) * x.e123,
+                s: shared_4 * x.s,
+                e1: shared_1 * x.e1 + s_e12_minus_e13_e23 * x.e2
+                    + s_e13_plus_e12_e23 * x.e3,
+                e2: shared_2 * x.e2 + s_e23_minus_e12_e13 * x.e3
+                    - s_e12_plus_e13_e23 * x.e1,
+                e3: shared_3 * x.e3 - s_e13_minus_e12_e23 * x.e1
+                    - s_e23_plus_e12_e13 * x.e2,
+                e12: shared_3 * x.e12 + s_e23_plus_e12_e13 * x.e13
+                    - s_e13_minus_e12_e23 * x.e23,
+                e13: shared_2 * x.e13 + s_e12_plus_e13_e23 * x.e23
+                    - s_e23_minus_e12_e13 * x.e12,
+                e23: s_e13_plus_e12_e23 * x.e12 + shared_1 * x.e23
+                    - s_e12_minus_e13_e23 * x.e13,
+                e123: shared_4 * x.e123,
             }
         }
     }
@@ -8593,9 +8634,19 @@ pub mod g3 {
             let e13_e13 = self.e13 * self.e13;
             let e13_e23 = two_e13 * self.e23;
             let e23_e23 = self.e23 * self.e23;
+            let s_s_minus_e12_e12 = s_s - e12_e12;
+            let e13_e13_minus_e23_e23 = e13_e13 - e23_e23;
             [
-                [s_s + e23_e23 - e12_e12 - e13_e13, s_e12 - e13_e23, s_e13 + e12_e23],
-                [-s_e12 - e13_e23, s_s + e13_e13 - e12_e12 - e23_e23, s_e23 - e12_e13],
+                [
+                    s_s_minus_e12_e12 - e13_e13_minus_e23_e23,
+                    s_e12 - e13_e23,
+                    s_e13 + e12_e23,
+                ],
+                [
+                    -s_e12 - e13_e23,
+                    s_s_minus_e12_e12 + e13_e13_minus_e23_e23,
+                    s_e23 - e12_e13,
+                ],
                 [e12_e23 - s_e13, -s_e23 - e12_e13, s_s + e12_e12 - e13_e13 - e23_e23],
             ]
         }
@@ -8629,14 +8680,15 @@ pub mod g3 {
             let e3_e3 = self.e3 * self.e3;
             let e3_e123 = two_e3 * self.e123;
             let e123_e123 = self.e123 * self.e123;
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
+            let e3_e3_minus_e123_e123 = e3_e3 - e123_e123;
             Vector {
-                e1: (e2_e2 + e3_e3 - e1_e1 - e123_e123) * x.e1 + (e3_e123 - e1_e2) * x.e2
-                    + (-e1_e3 - e2_e123) * x.e3,
-                e2: (-e1_e2 - e3_e123) * x.e1
-                    + (e1_e1 + e3_e3 - e2_e2 - e123_e123) * x.e2
-                    + (e1_e123 - e2_e3) * x.e3,
-                e3: (e2_e123 - e1_e3) * x.e1 + (-e1_e123 - e2_e3) * x.e2
-                    + (e1_e1 + e2_e2 - e3_e3 - e123_e123) * x.e3,
+                e1: (e3_e3_minus_e123_e123 - e1_e1_minus_e2_e2) * x.e1
+                    + (e3_e123 - e1_e2) * x.e2 - (e1_e3 + e2_e123) * x.e3,
+                e2: (e1_e1_minus_e2_e2 + e3_e3_minus_e123_e123) * x.e2
+                    + (e1_e123 - e2_e3) * x.e3 - (e1_e2 + e3_e123) * x.e1,
+                e3: (e2_e123 - e1_e3) * x.e1 + (e1_e1 + e2_e2 - e3_e3 - e123_e123) * x.e3
+                    - (e1_e123 + e2_e3) * x.e2,
             }
         }
     }
@@ -8656,14 +8708,16 @@ pub mod g3 {
             let e3_e3 = self.e3 * self.e3;
             let e3_e123 = two_e3 * self.e123;
             let e123_e123 = self.e123 * self.e123;
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
+            let e3_e3_minus_e123_e123 = e3_e3 - e123_e123;
             Bivector {
                 e12: (e3_e3 + e123_e123 - e1_e1 - e2_e2) * x.e12
-                    + (-e1_e123 - e2_e3) * x.e13 + (e1_e3 - e2_e123) * x.e23,
+                    + (e1_e3 - e2_e123) * x.e23 - (e1_e123 + e2_e3) * x.e13,
                 e13: (e1_e123 - e2_e3) * x.e12
-                    + (e2_e2 + e123_e123 - e1_e1 - e3_e3) * x.e13
-                    + (-e1_e2 - e3_e123) * x.e23,
+                    - (e1_e1_minus_e2_e2 + e3_e3_minus_e123_e123) * x.e13
+                    - (e1_e2 + e3_e123) * x.e23,
                 e23: (e1_e3 + e2_e123) * x.e12 + (e3_e123 - e1_e2) * x.e13
-                    + (e1_e1 + e123_e123 - e2_e2 - e3_e3) * x.e23,
+                    + (e1_e1_minus_e2_e2 - e3_e3_minus_e123_e123) * x.e23,
             }
         }
     }
@@ -8675,7 +8729,7 @@ pub mod g3 {
             let e3_e3 = self.e3 * self.e3;
             let e123_e123 = self.e123 * self.e123;
             Trivector {
-                e123: (-e1_e1 - e2_e2 - e3_e3 - e123_e123) * x.e123,
+                e123: -(e1_e1 + e2_e2 + e3_e3 + e123_e123) * x.e123,
             }
         }
     }
@@ -8695,15 +8749,19 @@ pub mod g3 {
             let e3_e3 = self.e3 * self.e3;
             let e3_e123 = two_e3 * self.e123;
             let e123_e123 = self.e123 * self.e123;
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
+            let e1_e1_plus_e2_e2 = e1_e1 + e2_e2;
+            let e3_e3_minus_e123_e123 = e3_e3 - e123_e123;
+            let e3_e3_plus_e123_e123 = e3_e3 + e123_e123;
             Even {
-                s: (e1_e1 + e2_e2 + e3_e3 + e123_e123) * x.s,
-                e12: (e3_e3 + e123_e123 - e1_e1 - e2_e2) * x.e12
-                    + (-e1_e123 - e2_e3) * x.e13 + (e1_e3 - e2_e123) * x.e23,
+                s: (e1_e1_plus_e2_e2 + e3_e3_plus_e123_e123) * x.s,
+                e12: (e3_e3_plus_e123_e123 - e1_e1_plus_e2_e2) * x.e12
+                    + (e1_e3 - e2_e123) * x.e23 - (e1_e123 + e2_e3) * x.e13,
                 e13: (e1_e123 - e2_e3) * x.e12
-                    + (e2_e2 + e123_e123 - e1_e1 - e3_e3) * x.e13
-                    + (-e1_e2 - e3_e123) * x.e23,
+                    - (e1_e1_minus_e2_e2 + e3_e3_minus_e123_e123) * x.e13
+                    - (e1_e2 + e3_e123) * x.e23,
                 e23: (e1_e3 + e2_e123) * x.e12 + (e3_e123 - e1_e2) * x.e13
-                    + (e1_e1 + e123_e123 - e2_e2 - e3_e3) * x.e23,
+                    + (e1_e1_minus_e2_e2 - e3_e3_minus_e123_e123) * x.e23,
             }
         }
     }
@@ -8723,15 +8781,19 @@ pub mod g3 {
             let e3_e3 = self.e3 * self.e3;
             let e3_e123 = two_e3 * self.e123;
             let e123_e123 = self.e123 * self.e123;
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
+            let e1_e1_plus_e2_e2 = e1_e1 + e2_e2;
+            let e3_e3_minus_e123_e123 = e3_e3 - e123_e123;
+            let e3_e3_plus_e123_e123 = e3_e3 + e123_e123;
             Odd {
-                e1: (e2_e2 + e3_e3 - e1_e1 - e123_e123) * x.e1 + (e3_e123 - e1_e2) * x.e2
-                    + (-e1_e3 - e2_e123) * x.e3,
-                e2: (-e1_e2 - e3_e123) * x.e1
-                    + (e1_e1 + e3_e3 - e2_e2 - e123_e123) * x.e2
-                    + (e1_e123 - e2_e3) * x.e3,
-                e3: (e2_e123 - e1_e3) * x.e1 + (-e1_e123 - e2_e3) * x.e2
-                    + (e1_e1 + e2_e2 - e3_e3 - e123_e123) * x.e3,
-                e123: (-e1_e1 - e2_e2 - e3_e3 - e123_e123) * x.e123,
+                e1: (e3_e3_minus_e123_e123 - e1_e1_minus_e2_e2) * x.e1
+                    + (e3_e123 - e1_e2) * x.e2 - (e1_e3 + e2_e123) * x.e3,
+                e2: (e1_e1_minus_e2_e2 + e3_e3_minus_e123_e123) * x.e2
+                    + (e1_e123 - e2_e3) * x.e3 - (e1_e2 + e3_e123) * x.e1,
+                e3: (e2_e123 - e1_e3) * x.e1
+                    + (e1_e1_plus_e2_e2 - e3_e3_plus_e123_e123) * x.e3
+                    - (e1_e123 + e2_e3) * x.e2,
+                e123: -(e1_e1_plus_e2_e2 + e3_e3_plus_e123_e123) * x.e123,
             }
         }
     }
@@ -8751,23 +8813,35 @@ pub mod g3 {
             let e3_e3 = self.e3 * self.e3;
             let e3_e123 = two_e3 * self.e123;
             let e123_e123 = self.e123 * self.e123;
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
+            let e1_e1_plus_e2_e2 = e1_e1 + e2_e2;
+            let e3_e3_minus_e123_e123 = e3_e3 - e123_e123;
+            let e3_e3_plus_e123_e123 = e3_e3 + e123_e123;
+            let e1_e2_minus_e3_e123 = e1_e2 - e3_e123;
+            let e1_e2_plus_e3_e123 = e1_e2 + e3_e123;
+            let e1_e3_minus_e2_e123 = e1_e3 - e2_e123;
+            let e1_e3_plus_e2_e123 = e1_e3 + e2_e123;
+            let e1_e123_minus_e2_e3 = e1_e123 - e2_e3;
+            let e1_e123_plus_e2_e3 = e1_e123 + e2_e3;
+            let shared_1 = e1_e1_minus_e2_e2 - e3_e3_minus_e123_e123;
+            let shared_2 = e1_e1_minus_e2_e2 + e3_e3_minus_e123_e123;
+            let shared_3 = e1_e1_plus_e2_e2 - e3_e3_plus_e123_e123;
+            let shared_4 = e1_e1_plus_e2_e2 + e3_e3_plus_e123_e123;
             Multivector {
-                s: (e1_e1 + e2_e2 + e3_e3 + e123_e123) * x.s,
-                e1: (e2_e2 + e3_e3 - e1_e1 - e123_e123) * x.e1 + (e3_e123 - e1_e2) * x.e2
-                    + (-e1_e3 - e2_e123) * x.e3,
-                e2: (-e1_e2 - e3_e123) * x.e1
-                    + (e1_e1 + e3_e3 - e2_e2 - e123_e123) * x.e2
-                    + (e1_e123 - e2_e3) * x.e3,
-                e3: (e2_e123 - e1_e3) * x.e1 + (-e1_e123 - e2_e3) * x.e2
-                    + (e1_e1 + e2_e2 - e3_e3 - e123_e123) * x.e3,
-                e12: (e3_e3 + e123_e123 - e1_e1 - e2_e2) * x.e12
-                    + (-e1_e123 - e2_e3) * x.e13 + (e1_e3 - e2_e123) * x.e23,
-                e13: (e1_e123 - e2_e3) * x.e12
-                    + (e2_e2 + e123_e123 - e1_e1 - e3_e3) * x.e13
-                    + (-e1_e2 - e3_e123) * x.e23,
-                e23: (e1_e3 + e2_e123) * x.e12 + (e3_e123 - e1_e2) * x.e13
-                    + (e1_e1 + e123_e123 - e2_e2 - e3_e3) * x.e23,
-                e123: (-e1_e1 - e2_e2 - e3_e3 - e123_e123) * x.e123,
+                s: shared_4 * x.s,
+                e1: -shared_1 * x.e1 - e1_e2_minus_e3_e123 * x.e2
+                    - e1_e3_plus_e2_e123 * x.e3,
+                e2: shared_2 * x.e2 + e1_e123_minus_e2_e3 * x.e3
+                    - e1_e2_plus_e3_e123 * x.e1,
+                e3: shared_3 * x.e3 - e1_e3_minus_e2_e123 * x.e1
+                    - e1_e123_plus_e2_e3 * x.e2,
+                e12: e1_e3_minus_e2_e123 * x.e23 - shared_3 * x.e12
+                    - e1_e123_plus_e2_e3 * x.e13,
+                e13: e1_e123_minus_e2_e3 * x.e12 - shared_2 * x.e13
+                    - e1_e2_plus_e3_e123 * x.e23,
+                e23: e1_e3_plus_e2_e123 * x.e12 + shared_1 * x.e23
+                    - e1_e2_minus_e3_e123 * x.e13,
+                e123: -shared_4 * x.e123,
             }
         }
     }
@@ -8792,9 +8866,19 @@ pub mod g3 {
             let e3_e3 = self.e3 * self.e3;
             let e3_e123 = two_e3 * self.e123;
             let e123_e123 = self.e123 * self.e123;
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
+            let e3_e3_minus_e123_e123 = e3_e3 - e123_e123;
             [
-                [e2_e2 + e3_e3 - e1_e1 - e123_e123, e3_e123 - e1_e2, -e1_e3 - e2_e123],
-                [-e1_e2 - e3_e123, e1_e1 + e3_e3 - e2_e2 - e123_e123, e1_e123 - e2_e3],
+                [
+                    e3_e3_minus_e123_e123 - e1_e1_minus_e2_e2,
+                    e3_e123 - e1_e2,
+                    -e1_e3 - e2_e123,
+                ],
+                [
+                    -e1_e2 - e3_e123,
+                    e1_e1_minus_e2_e2 + e3_e3_minus_e123_e123,
+                    e1_e123 - e2_e3,
+                ],
                 [e2_e123 - e1_e3, -e1_e123 - e2_e3, e1_e1 + e2_e2 - e3_e3 - e123_e123],
             ]
         }

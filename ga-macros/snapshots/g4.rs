@@ -14046,15 +14046,19 @@ pub mod g4 {
             let e3_e3 = self.e3 * self.e3;
             let e3_e4 = two_e3 * self.e4;
             let e4_e4 = self.e4 * self.e4;
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
+            let e1_e1_plus_e2_e2 = e1_e1 + e2_e2;
+            let e3_e3_minus_e4_e4 = e3_e3 - e4_e4;
+            let e3_e3_plus_e4_e4 = e3_e3 + e4_e4;
             Vector {
-                e1: (e2_e2 + e3_e3 + e4_e4 - e1_e1) * x.e1 - e1_e2 * x.e2 - e1_e3 * x.e3
-                    - e1_e4 * x.e4,
-                e2: (e1_e1 + e3_e3 + e4_e4 - e2_e2) * x.e2 - e1_e2 * x.e1 - e2_e3 * x.e3
-                    - e2_e4 * x.e4,
-                e3: (e1_e1 + e2_e2 + e4_e4 - e3_e3) * x.e3 - e1_e3 * x.e1 - e2_e3 * x.e2
-                    - e3_e4 * x.e4,
-                e4: (e1_e1 + e2_e2 + e3_e3 - e4_e4) * x.e4 - e1_e4 * x.e1 - e2_e4 * x.e2
-                    - e3_e4 * x.e3,
+                e1: (e3_e3_plus_e4_e4 - e1_e1_minus_e2_e2) * x.e1 - e1_e2 * x.e2
+                    - e1_e3 * x.e3 - e1_e4 * x.e4,
+                e2: (e1_e1_minus_e2_e2 + e3_e3_plus_e4_e4) * x.e2 - e1_e2 * x.e1
+                    - e2_e3 * x.e3 - e2_e4 * x.e4,
+                e3: (e1_e1_plus_e2_e2 - e3_e3_minus_e4_e4) * x.e3 - e1_e3 * x.e1
+                    - e2_e3 * x.e2 - e3_e4 * x.e4,
+                e4: (e1_e1_plus_e2_e2 + e3_e3_minus_e4_e4) * x.e4 - e1_e4 * x.e1
+                    - e2_e4 * x.e2 - e3_e4 * x.e3,
             }
         }
     }
@@ -14074,19 +14078,25 @@ pub mod g4 {
             let e3_e3 = self.e3 * self.e3;
             let e3_e4 = two_e3 * self.e4;
             let e4_e4 = self.e4 * self.e4;
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
+            let e3_e3_minus_e4_e4 = e3_e3 - e4_e4;
+            let e1_e1_plus_e2_e2 = e1_e1 + e2_e2;
+            let e3_e3_plus_e4_e4 = e3_e3 + e4_e4;
+            let shared_1 = e1_e1_minus_e2_e2 - e3_e3_minus_e4_e4;
+            let shared_2 = e1_e1_minus_e2_e2 + e3_e3_minus_e4_e4;
+            let shared_3 = e1_e1_plus_e2_e2 - e3_e3_plus_e4_e4;
             Bivector {
-                e12: (e3_e3 + e4_e4 - e1_e1 - e2_e2) * x.e12 + e1_e3 * x.e23
-                    + e1_e4 * x.e24 - e2_e3 * x.e13 - e2_e4 * x.e14,
-                e13: (e2_e2 + e4_e4 - e1_e1 - e3_e3) * x.e13 + e1_e4 * x.e34
-                    - e2_e3 * x.e12 - e3_e4 * x.e14 - e1_e2 * x.e23,
-                e14: (e2_e2 + e3_e3 - e1_e1 - e4_e4) * x.e14 - e2_e4 * x.e12
-                    - e3_e4 * x.e13 - e1_e2 * x.e24 - e1_e3 * x.e34,
-                e23: e1_e3 * x.e12 + (e1_e1 + e4_e4 - e2_e2 - e3_e3) * x.e23
-                    + e2_e4 * x.e34 - e1_e2 * x.e13 - e3_e4 * x.e24,
-                e24: e1_e4 * x.e12 + (e1_e1 + e3_e3 - e2_e2 - e4_e4) * x.e24
-                    - e1_e2 * x.e14 - e3_e4 * x.e23 - e2_e3 * x.e34,
-                e34: e1_e4 * x.e13 + e2_e4 * x.e23
-                    + (e1_e1 + e2_e2 - e3_e3 - e4_e4) * x.e34 - e1_e3 * x.e14
+                e12: e1_e3 * x.e23 + e1_e4 * x.e24 - shared_3 * x.e12 - e2_e3 * x.e13
+                    - e2_e4 * x.e14,
+                e13: e1_e4 * x.e34 - e2_e3 * x.e12 - shared_2 * x.e13 - e3_e4 * x.e14
+                    - e1_e2 * x.e23,
+                e14: -e2_e4 * x.e12 - e3_e4 * x.e13 - shared_1 * x.e14 - e1_e2 * x.e24
+                    - e1_e3 * x.e34,
+                e23: e1_e3 * x.e12 + shared_1 * x.e23 + e2_e4 * x.e34 - e1_e2 * x.e13
+                    - e3_e4 * x.e24,
+                e24: e1_e4 * x.e12 + shared_2 * x.e24 - e1_e2 * x.e14 - e3_e4 * x.e23
+                    - e2_e3 * x.e34,
+                e34: e1_e4 * x.e13 + e2_e4 * x.e23 + shared_3 * x.e34 - e1_e3 * x.e14
                     - e2_e3 * x.e24,
             }
         }
@@ -14107,14 +14117,18 @@ pub mod g4 {
             let e3_e3 = self.e3 * self.e3;
             let e3_e4 = two_e3 * self.e4;
             let e4_e4 = self.e4 * self.e4;
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
+            let e1_e1_plus_e2_e2 = e1_e1 + e2_e2;
+            let e3_e3_minus_e4_e4 = e3_e3 - e4_e4;
+            let e3_e3_plus_e4_e4 = e3_e3 + e4_e4;
             Trivector {
-                e123: (e4_e4 - e1_e1 - e2_e2 - e3_e3) * x.e123 + e2_e4 * x.e134
+                e123: e2_e4 * x.e134 - (e1_e1_plus_e2_e2 + e3_e3_minus_e4_e4) * x.e123
                     - e3_e4 * x.e124 - e1_e4 * x.e234,
-                e124: (e3_e3 - e1_e1 - e2_e2 - e4_e4) * x.e124 + e1_e3 * x.e234
+                e124: (e3_e3_minus_e4_e4 - e1_e1_plus_e2_e2) * x.e124 + e1_e3 * x.e234
                     - e3_e4 * x.e123 - e2_e3 * x.e134,
-                e134: e2_e4 * x.e123 + (e2_e2 - e1_e1 - e3_e3 - e4_e4) * x.e134
-                    - e2_e3 * x.e124 - e1_e2 * x.e234,
-                e234: e1_e3 * x.e124 + (e1_e1 - e2_e2 - e3_e3 - e4_e4) * x.e234
+                e134: e2_e4 * x.e123 - e2_e3 * x.e124
+                    - (e1_e1_minus_e2_e2 + e3_e3_plus_e4_e4) * x.e134 - e1_e2 * x.e234,
+                e234: e1_e3 * x.e124 + (e1_e1_minus_e2_e2 - e3_e3_plus_e4_e4) * x.e234
                     - e1_e4 * x.e123 - e1_e2 * x.e134,
             }
         }
@@ -14127,7 +14141,7 @@ pub mod g4 {
             let e3_e3 = self.e3 * self.e3;
             let e4_e4 = self.e4 * self.e4;
             Quadvector {
-                e1234: (-e1_e1 - e2_e2 - e3_e3 - e4_e4) * x.e1234,
+                e1234: -(e1_e1 + e2_e2 + e3_e3 + e4_e4) * x.e1234,
             }
         }
     }
@@ -14147,22 +14161,29 @@ pub mod g4 {
             let e3_e3 = self.e3 * self.e3;
             let e3_e4 = two_e3 * self.e4;
             let e4_e4 = self.e4 * self.e4;
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
+            let e1_e1_plus_e2_e2 = e1_e1 + e2_e2;
+            let e3_e3_minus_e4_e4 = e3_e3 - e4_e4;
+            let e3_e3_plus_e4_e4 = e3_e3 + e4_e4;
+            let shared_1 = e1_e1_minus_e2_e2 - e3_e3_minus_e4_e4;
+            let shared_2 = e1_e1_minus_e2_e2 + e3_e3_minus_e4_e4;
+            let shared_3 = e1_e1_plus_e2_e2 - e3_e3_plus_e4_e4;
+            let shared_4 = e1_e1_plus_e2_e2 + e3_e3_plus_e4_e4;
             Even {
-                s: (e1_e1 + e2_e2 + e3_e3 + e4_e4) * x.s,
-                e12: (e3_e3 + e4_e4 - e1_e1 - e2_e2) * x.e12 + e1_e3 * x.e23
-                    + e1_e4 * x.e24 - e2_e3 * x.e13 - e2_e4 * x.e14,
-                e13: (e2_e2 + e4_e4 - e1_e1 - e3_e3) * x.e13 + e1_e4 * x.e34
-                    - e2_e3 * x.e12 - e3_e4 * x.e14 - e1_e2 * x.e23,
-                e14: (e2_e2 + e3_e3 - e1_e1 - e4_e4) * x.e14 - e2_e4 * x.e12
-                    - e3_e4 * x.e13 - e1_e2 * x.e24 - e1_e3 * x.e34,
-                e23: e1_e3 * x.e12 + (e1_e1 + e4_e4 - e2_e2 - e3_e3) * x.e23
-                    + e2_e4 * x.e34 - e1_e2 * x.e13 - e3_e4 * x.e24,
-                e24: e1_e4 * x.e12 + (e1_e1 + e3_e3 - e2_e2 - e4_e4) * x.e24
-                    - e1_e2 * x.e14 - e3_e4 * x.e23 - e2_e3 * x.e34,
-                e34: e1_e4 * x.e13 + e2_e4 * x.e23
-                    + (e1_e1 + e2_e2 - e3_e3 - e4_e4) * x.e34 - e1_e3 * x.e14
+                s: shared_4 * x.s,
+                e12: e1_e3 * x.e23 + e1_e4 * x.e24 - shared_3 * x.e12 - e2_e3 * x.e13
+                    - e2_e4 * x.e14,
+                e13: e1_e4 * x.e34 - e2_e3 * x.e12 - shared_2 * x.e13 - e3_e4 * x.e14
+                    - e1_e2 * x.e23,
+                e14: -e2_e4 * x.e12 - e3_e4 * x.e13 - shared_1 * x.e14 - e1_e2 * x.e24
+                    - e1_e3 * x.e34,
+                e23: e1_e3 * x.e12 + shared_1 * x.e23 + e2_e4 * x.e34 - e1_e2 * x.e13
+                    - e3_e4 * x.e24,
+                e24: e1_e4 * x.e12 + shared_2 * x.e24 - e1_e2 * x.e14 - e3_e4 * x.e23
+                    - e2_e3 * x.e34,
+                e34: e1_e4 * x.e13 + e2_e4 * x.e23 + shared_3 * x.e34 - e1_e3 * x.e14
                     - e2_e3 * x.e24,
-                e1234: (-e1_e1 - e2_e2 - e3_e3 - e4_e4) * x.e1234,
+                e1234: -shared_4 * x.e1234,
             }
         }
     }
@@ -14182,23 +14203,27 @@ pub mod g4 {
             let e3_e3 = self.e3 * self.e3;
             let e3_e4 = two_e3 * self.e4;
             let e4_e4 = self.e4 * self.e4;
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
+            let e1_e1_plus_e2_e2 = e1_e1 + e2_e2;
+            let e3_e3_minus_e4_e4 = e3_e3 - e4_e4;
+            let e3_e3_plus_e4_e4 = e3_e3 + e4_e4;
+            let shared_1 = e1_e1_minus_e2_e2 - e3_e3_plus_e4_e4;
+            let shared_2 = e1_e1_minus_e2_e2 + e3_e3_plus_e4_e4;
+            let shared_3 = e1_e1_plus_e2_e2 - e3_e3_minus_e4_e4;
+            let shared_4 = e1_e1_plus_e2_e2 + e3_e3_minus_e4_e4;
             Odd {
-                e1: (e2_e2 + e3_e3 + e4_e4 - e1_e1) * x.e1 - e1_e2 * x.e2 - e1_e3 * x.e3
-                    - e1_e4 * x.e4,
-                e2: (e1_e1 + e3_e3 + e4_e4 - e2_e2) * x.e2 - e1_e2 * x.e1 - e2_e3 * x.e3
-                    - e2_e4 * x.e4,
-                e3: (e1_e1 + e2_e2 + e4_e4 - e3_e3) * x.e3 - e1_e3 * x.e1 - e2_e3 * x.e2
-                    - e3_e4 * x.e4,
-                e4: (e1_e1 + e2_e2 + e3_e3 - e4_e4) * x.e4 - e1_e4 * x.e1 - e2_e4 * x.e2
-                    - e3_e4 * x.e3,
-                e123: (e4_e4 - e1_e1 - e2_e2 - e3_e3) * x.e123 + e2_e4 * x.e134
-                    - e3_e4 * x.e124 - e1_e4 * x.e234,
-                e124: (e3_e3 - e1_e1 - e2_e2 - e4_e4) * x.e124 + e1_e3 * x.e234
-                    - e3_e4 * x.e123 - e2_e3 * x.e134,
-                e134: e2_e4 * x.e123 + (e2_e2 - e1_e1 - e3_e3 - e4_e4) * x.e134
-                    - e2_e3 * x.e124 - e1_e2 * x.e234,
-                e234: e1_e3 * x.e124 + (e1_e1 - e2_e2 - e3_e3 - e4_e4) * x.e234
-                    - e1_e4 * x.e123 - e1_e2 * x.e134,
+                e1: -shared_1 * x.e1 - e1_e2 * x.e2 - e1_e3 * x.e3 - e1_e4 * x.e4,
+                e2: shared_2 * x.e2 - e1_e2 * x.e1 - e2_e3 * x.e3 - e2_e4 * x.e4,
+                e3: shared_3 * x.e3 - e1_e3 * x.e1 - e2_e3 * x.e2 - e3_e4 * x.e4,
+                e4: shared_4 * x.e4 - e1_e4 * x.e1 - e2_e4 * x.e2 - e3_e4 * x.e3,
+                e123: e2_e4 * x.e134 - shared_4 * x.e123 - e3_e4 * x.e124
+                    - e1_e4 * x.e234,
+                e124: e1_e3 * x.e234 - e3_e4 * x.e123 - shared_3 * x.e124
+                    - e2_e3 * x.e134,
+                e134: e2_e4 * x.e123 - e2_e3 * x.e124 - shared_2 * x.e134
+                    - e1_e2 * x.e234,
+                e234: e1_e3 * x.e124 + shared_1 * x.e234 - e1_e4 * x.e123
+                    - e1_e2 * x.e134,
             }
         }
     }
@@ -14218,38 +14243,45 @@ pub mod g4 {
             let e3_e3 = self.e3 * self.e3;
             let e3_e4 = two_e3 * self.e4;
             let e4_e4 = self.e4 * self.e4;
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
+            let e1_e1_plus_e2_e2 = e1_e1 + e2_e2;
+            let e3_e3_minus_e4_e4 = e3_e3 - e4_e4;
+            let e3_e3_plus_e4_e4 = e3_e3 + e4_e4;
+            let shared_1 = e1_e1_minus_e2_e2 - e3_e3_minus_e4_e4;
+            let shared_2 = e1_e1_minus_e2_e2 + e3_e3_minus_e4_e4;
+            let shared_3 = e1_e1_minus_e2_e2 - e3_e3_plus_e4_e4;
+            let shared_4 = e1_e1_minus_e2_e2 + e3_e3_plus_e4_e4;
+            let shared_5 = e1_e1_plus_e2_e2 - e3_e3_minus_e4_e4;
+            let shared_6 = e1_e1_plus_e2_e2 + e3_e3_minus_e4_e4;
+            let shared_7 = e1_e1_plus_e2_e2 - e3_e3_plus_e4_e4;
+            let shared_8 = e1_e1_plus_e2_e2 + e3_e3_plus_e4_e4;
             Multivector {
-                s: (e1_e1 + e2_e2 + e3_e3 + e4_e4) * x.s,
-                e1: (e2_e2 + e3_e3 + e4_e4 - e1_e1) * x.e1 - e1_e2 * x.e2 - e1_e3 * x.e3
-                    - e1_e4 * x.e4,
-                e2: (e1_e1 + e3_e3 + e4_e4 - e2_e2) * x.e2 - e1_e2 * x.e1 - e2_e3 * x.e3
-                    - e2_e4 * x.e4,
-                e3: (e1_e1 + e2_e2 + e4_e4 - e3_e3) * x.e3 - e1_e3 * x.e1 - e2_e3 * x.e2
-                    - e3_e4 * x.e4,
-                e4: (e1_e1 + e2_e2 + e3_e3 - e4_e4) * x.e4 - e1_e4 * x.e1 - e2_e4 * x.e2
-                    - e3_e4 * x.e3,
-                e12: (e3_e3 + e4_e4 - e1_e1 - e2_e2) * x.e12 + e1_e3 * x.e23
-                    + e1_e4 * x.e24 - e2_e3 * x.e13 - e2_e4 * x.e14,
-                e13: (e2_e2 + e4_e4 - e1_e1 - e3_e3) * x.e13 + e1_e4 * x.e34
-                    - e2_e3 * x.e12 - e3_e4 * x.e14 - e1_e2 * x.e23,
-                e14: (e2_e2 + e3_e3 - e1_e1 - e4_e4) * x.e14 - e2_e4 * x.e12
-                    - e3_e4 * x.e13 - e1_e2 * x.e24 - e1_e3 * x.e34,
-                e23: e1_e3 * x.e12 + (e1_e1 + e4_e4 - e2_e2 - e3_e3) * x.e23
-                    + e2_e4 * x.e34 - e1_e2 * x.e13 - e3_e4 * x.e24,
-                e24: e1_e4 * x.e12 + (e1_e1 + e3_e3 - e2_e2 - e4_e4) * x.e24
-                    - e1_e2 * x.e14 - e3_e4 * x.e23 - e2_e3 * x.e34,
-                e34: e1_e4 * x.e13 + e2_e4 * x.e23
-                    + (e1_e1 + e2_e2 - e3_e3 - e4_e4) * x.e34 - e1_e3 * x.e14
+                s: shared_8 * x.s,
+                e1: -shared_3 * x.e1 - e1_e2 * x.e2 - e1_e3 * x.e3 - e1_e4 * x.e4,
+                e2: shared_4 * x.e2 - e1_e2 * x.e1 - e2_e3 * x.e3 - e2_e4 * x.e4,
+                e3: shared_5 * x.e3 - e1_e3 * x.e1 - e2_e3 * x.e2 - e3_e4 * x.e4,
+                e4: shared_6 * x.e4 - e1_e4 * x.e1 - e2_e4 * x.e2 - e3_e4 * x.e3,
+                e12: e1_e3 * x.e23 + e1_e4 * x.e24 - shared_7 * x.e12 - e2_e3 * x.e13
+                    - e2_e4 * x.e14,
+                e13: e1_e4 * x.e34 - e2_e3 * x.e12 - shared_2 * x.e13 - e3_e4 * x.e14
+                    - e1_e2 * x.e23,
+                e14: -e2_e4 * x.e12 - e3_e4 * x.e13 - shared_1 * x.e14 - e1_e2 * x.e24
+                    - e1_e3 * x.e34,
+                e23: e1_e3 * x.e12 + shared_1 * x.e23 + e2_e4 * x.e34 - e1_e2 * x.e13
+                    - e3_e4 * x.e24,
+                e24: e1_e4 * x.e12 + shared_2 * x.e24 - e1_e2 * x.e14 - e3_e4 * x.e23
+                    - e2_e3 * x.e34,
+                e34: e1_e4 * x.e13 + e2_e4 * x.e23 + shared_7 * x.e34 - e1_e3 * x.e14
                     - e2_e3 * x.e24,
-                e123: (e4_e4 - e1_e1 - e2_e2 - e3_e3) * x.e123 + e2_e4 * x.e134
-                    - e3_e4 * x.e124 - e1_e4 * x.e234,
-                e124: (e3_e3 - e1_e1 - e2_e2 - e4_e4) * x.e124 + e1_e3 * x.e234
-                    - e3_e4 * x.e123 - e2_e3 * x.e134,
-                e134: e2_e4 * x.e123 + (e2_e2 - e1_e1 - e3_e3 - e4_e4) * x.e134
-                    - e2_e3 * x.e124 - e1_e2 * x.e234,
-                e234: e1_e3 * x.e124 + (e1_e1 - e2_e2 - e3_e3 - e4_e4) * x.e234
-                    - e1_e4 * x.e123 - e1_e2 * x.e134,
-                e1234: (-e1_e1 - e2_e2 - e3_e3 - e4_e4) * x.e1234,
+                e123: e2_e4 * x.e134 - shared_6 * x.e123 - e3_e4 * x.e124
+                    - e1_e4 * x.e234,
+                e124: e1_e3 * x.e234 - e3_e4 * x.e123 - shared_5 * x.e124
+                    - e2_e3 * x.e134,
+                e134: e2_e4 * x.e123 - e2_e3 * x.e124 - shared_4 * x.e134
+                    - e1_e2 * x.e234,
+                e234: e1_e3 * x.e124 + shared_3 * x.e234 - e1_e4 * x.e123
+                    - e1_e2 * x.e134,
+                e1234: -shared_8 * x.e1234,
             }
         }
     }
@@ -14274,11 +14306,15 @@ pub mod g4 {
             let e3_e3 = self.e3 * self.e3;
             let e3_e4 = two_e3 * self.e4;
             let e4_e4 = self.e4 * self.e4;
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
+            let e1_e1_plus_e2_e2 = e1_e1 + e2_e2;
+            let e3_e3_minus_e4_e4 = e3_e3 - e4_e4;
+            let e3_e3_plus_e4_e4 = e3_e3 + e4_e4;
             [
-                [e2_e2 + e3_e3 + e4_e4 - e1_e1, -e1_e2, -e1_e3, -e1_e4],
-                [-e1_e2, e1_e1 + e3_e3 + e4_e4 - e2_e2, -e2_e3, -e2_e4],
-                [-e1_e3, -e2_e3, e1_e1 + e2_e2 + e4_e4 - e3_e3, -e3_e4],
-                [-e1_e4, -e2_e4, -e3_e4, e1_e1 + e2_e2 + e3_e3 - e4_e4],
+                [e3_e3_plus_e4_e4 - e1_e1_minus_e2_e2, -e1_e2, -e1_e3, -e1_e4],
+                [-e1_e2, e1_e1_minus_e2_e2 + e3_e3_plus_e4_e4, -e2_e3, -e2_e4],
+                [-e1_e3, -e2_e3, e1_e1_plus_e2_e2 - e3_e3_minus_e4_e4, -e3_e4],
+                [-e1_e4, -e2_e4, -e3_e4, e1_e1_plus_e2_e2 + e3_e3_minus_e4_e4],
             ]
         }
         /// Applies the sandwich to every vector in place, building its matrix once.
@@ -14341,27 +14377,43 @@ pub mod g4 {
             let e34_e34 = self.e34 * self.e34;
             let e34_e1234 = two_e34 * self.e1234;
             let e1234_e1234 = self.e1234 * self.e1234;
+            let s_s_minus_e1234_e1234 = s_s - e1234_e1234;
+            let e12_e12_minus_e34_e34 = e12_e12 - e34_e34;
+            let e13_e13_minus_e24_e24 = e13_e13 - e24_e24;
+            let e14_e14_minus_e23_e23 = e14_e14 - e23_e23;
+            let s_e12_plus_e34_e1234 = s_e12 + e34_e1234;
+            let s_e13_minus_e24_e1234 = s_e13 - e24_e1234;
+            let s_e14_plus_e23_e1234 = s_e14 + e23_e1234;
+            let s_e23_plus_e14_e1234 = s_e23 + e14_e1234;
+            let s_e24_minus_e13_e1234 = s_e24 - e13_e1234;
+            let s_e34_plus_e12_e1234 = s_e34 + e12_e1234;
+            let e12_e13_plus_e24_e34 = e12_e13 + e24_e34;
+            let e12_e14_minus_e23_e34 = e12_e14 - e23_e34;
+            let e12_e23_minus_e14_e34 = e12_e23 - e14_e34;
+            let e12_e24_plus_e13_e34 = e12_e24 + e13_e34;
+            let e13_e14_plus_e23_e24 = e13_e14 + e23_e24;
+            let e13_e23_plus_e14_e24 = e13_e23 + e14_e24;
+            let shared_1 = s_s_minus_e1234_e1234 - e12_e12_minus_e34_e34;
+            let shared_2 = s_s_minus_e1234_e1234 + e12_e12_minus_e34_e34;
+            let shared_3 = e13_e13_minus_e24_e24 - e14_e14_minus_e23_e23;
+            let shared_4 = e13_e13_minus_e24_e24 + e14_e14_minus_e23_e23;
             Vector {
-                e1: (s_s + e23_e23 + e24_e24 + e34_e34 - e12_e12 - e13_e13 - e14_e14
-                    - e1234_e1234) * x.e1
-                    + (s_e12 + e34_e1234 - e13_e23 - e14_e24) * x.e2
-                    + (s_e13 + e12_e23 - e14_e34 - e24_e1234) * x.e3
-                    + (s_e14 + e12_e24 + e13_e34 + e23_e1234) * x.e4,
-                e2: (-s_e12 - e13_e23 - e14_e24 - e34_e1234) * x.e1
-                    + (s_s + e13_e13 + e14_e14 + e34_e34 - e12_e12 - e23_e23 - e24_e24
-                        - e1234_e1234) * x.e2
-                    + (s_e23 + e14_e1234 - e12_e13 - e24_e34) * x.e3
-                    + (s_e24 + e23_e34 - e12_e14 - e13_e1234) * x.e4,
-                e3: (e12_e23 + e24_e1234 - s_e13 - e14_e34) * x.e1
-                    + (-s_e23 - e12_e13 - e14_e1234 - e24_e34) * x.e2
-                    + (s_s + e12_e12 + e14_e14 + e24_e24 - e13_e13 - e23_e23 - e34_e34
-                        - e1234_e1234) * x.e3
-                    + (s_e34 + e12_e1234 - e13_e14 - e23_e24) * x.e4,
-                e4: (e12_e24 + e13_e34 - s_e14 - e23_e1234) * x.e1
-                    + (e13_e1234 + e23_e34 - s_e24 - e12_e14) * x.e2
-                    + (-s_e34 - e12_e1234 - e13_e14 - e23_e24) * x.e3
-                    + (s_s + e12_e12 + e13_e13 + e23_e23 - e14_e14 - e24_e24 - e34_e34
-                        - e1234_e1234) * x.e4,
+                e1: (shared_1 - shared_4) * x.e1
+                    + (s_e12_plus_e34_e1234 - e13_e23_plus_e14_e24) * x.e2
+                    + (s_e13_minus_e24_e1234 + e12_e23_minus_e14_e34) * x.e3
+                    + (s_e14_plus_e23_e1234 + e12_e24_plus_e13_e34) * x.e4,
+                e2: (shared_1 + shared_4) * x.e2
+                    + (s_e23_plus_e14_e1234 - e12_e13_plus_e24_e34) * x.e3
+                    + (s_e24_minus_e13_e1234 - e12_e14_minus_e23_e34) * x.e4
+                    - (s_e12_plus_e34_e1234 + e13_e23_plus_e14_e24) * x.e1,
+                e3: (e12_e23_minus_e14_e34 - s_e13_minus_e24_e1234) * x.e1
+                    + (shared_2 - shared_3) * x.e3
+                    + (s_e34_plus_e12_e1234 - e13_e14_plus_e23_e24) * x.e4
+                    - (s_e23_plus_e14_e1234 + e12_e13_plus_e24_e34) * x.e2,
+                e4: (e12_e24_plus_e13_e34 - s_e14_plus_e23_e1234) * x.e1
+                    + (shared_2 + shared_3) * x.e4
+                    - (s_e24_minus_e13_e1234 + e12_e14_minus_e23_e34) * x.e2
+                    - (s_e34_plus_e12_e1234 + e13_e14_plus_e23_e24) * x.e3,
             }
         }
     }
@@ -14411,48 +14463,67 @@ pub mod g4 {
             let e34_e34 = self.e34 * self.e34;
             let e34_e1234 = two_e34 * self.e1234;
             let e1234_e1234 = self.e1234 * self.e1234;
+            let s_s_plus_e1234_e1234 = s_s + e1234_e1234;
+            let e12_e12_plus_e34_e34 = e12_e12 + e34_e34;
+            let e13_e13_plus_e24_e24 = e13_e13 + e24_e24;
+            let e14_e14_plus_e23_e23 = e14_e14 + e23_e23;
+            let s_e12_minus_e34_e1234 = s_e12 - e34_e1234;
+            let s_e13_plus_e24_e1234 = s_e13 + e24_e1234;
+            let s_e14_minus_e23_e1234 = s_e14 - e23_e1234;
+            let s_e23_minus_e14_e1234 = s_e23 - e14_e1234;
+            let s_e24_plus_e13_e1234 = s_e24 + e13_e1234;
+            let s_e34_minus_e12_e1234 = s_e34 - e12_e1234;
+            let s_e1234_plus_e12_e34 = s_e1234 + e12_e34;
+            let e12_e13_minus_e24_e34 = e12_e13 - e24_e34;
+            let e12_e14_plus_e23_e34 = e12_e14 + e23_e34;
+            let e12_e23_plus_e14_e34 = e12_e23 + e14_e34;
+            let e12_e24_minus_e13_e34 = e12_e24 - e13_e34;
+            let e13_e14_minus_e23_e24 = e13_e14 - e23_e24;
+            let e13_e23_minus_e14_e24 = e13_e23 - e14_e24;
+            let e13_e24_plus_e14_e23 = e13_e24 + e14_e23;
+            let shared_1 = s_s_plus_e1234_e1234 - e12_e12_plus_e34_e34;
+            let shared_2 = e13_e13_plus_e24_e24 - e14_e14_plus_e23_e23;
+            let s_e1234_minus_e12_e34 = s_e1234 - e12_e34;
+            let e13_e24_minus_e14_e23 = e13_e24 - e14_e23;
+            let shared_3 = s_s_plus_e1234_e1234 + e12_e12_plus_e34_e34;
+            let shared_4 = e13_e13_plus_e24_e24 + e14_e14_plus_e23_e23;
+            let shared_5 = s_e12_minus_e34_e1234 - e13_e23_minus_e14_e24;
+            let shared_6 = s_e12_minus_e34_e1234 + e13_e23_minus_e14_e24;
+            let shared_7 = s_e13_plus_e24_e1234 - e12_e23_plus_e14_e34;
+            let shared_8 = s_e13_plus_e24_e1234 + e12_e23_plus_e14_e34;
+            let shared_9 = s_e14_minus_e23_e1234 - e12_e24_minus_e13_e34;
+            let shared_10 = s_e14_minus_e23_e1234 + e12_e24_minus_e13_e34;
+            let shared_11 = s_e23_minus_e14_e1234 - e12_e13_minus_e24_e34;
+            let shared_12 = s_e23_minus_e14_e1234 + e12_e13_minus_e24_e34;
+            let shared_13 = s_e24_plus_e13_e1234 - e12_e14_plus_e23_e34;
+            let shared_14 = s_e24_plus_e13_e1234 + e12_e14_plus_e23_e34;
+            let shared_15 = s_e34_minus_e12_e1234 - e13_e14_minus_e23_e24;
+            let shared_16 = s_e34_minus_e12_e1234 + e13_e14_minus_e23_e24;
+            let shared_17 = s_e1234_plus_e12_e34 - e13_e24_plus_e14_e23;
+            let shared_18 = s_e1234_plus_e12_e34 + e13_e24_plus_e14_e23;
+            let shared_1_minus_shared_2 = shared_1 - shared_2;
+            let shared_1_plus_shared_2 = shared_1 + shared_2;
+            let shared_19 = s_e1234_minus_e12_e34 - e13_e24_minus_e14_e23;
+            let shared_3_minus_shared_4 = shared_3 - shared_4;
             Bivector {
-                e12: (s_s + e12_e12 + e34_e34 + e1234_e1234 - e13_e13 - e14_e14 - e23_e23
-                    - e24_e24) * x.e12 + (s_e23 + e12_e13 - e14_e1234 - e24_e34) * x.e13
-                    + (s_e24 + e12_e14 + e13_e1234 + e23_e34) * x.e14
-                    + (e12_e23 + e14_e34 - s_e13 - e24_e1234) * x.e23
-                    + (e12_e24 + e23_e1234 - s_e14 - e13_e34) * x.e24
-                    + (e12_e34 + e13_e24 - s_e1234 - e14_e23) * x.e34,
-                e13: (e12_e13 + e14_e1234 - s_e23 - e24_e34) * x.e12
-                    + (s_s + e13_e13 + e24_e24 + e1234_e1234 - e12_e12 - e14_e14
-                        - e23_e23 - e34_e34) * x.e13
-                    + (s_e34 + e13_e14 - e12_e1234 - e23_e24) * x.e14
-                    + (s_e12 + e13_e23 - e14_e24 - e34_e1234) * x.e23
-                    + (s_e1234 + e12_e34 + e13_e24 + e14_e23) * x.e24
-                    + (e13_e34 + e23_e1234 - s_e14 - e12_e24) * x.e34,
-                e14: (e12_e14 + e23_e34 - s_e24 - e13_e1234) * x.e12
-                    + (e12_e1234 + e13_e14 - s_e34 - e23_e24) * x.e13
-                    + (s_s + e14_e14 + e23_e23 + e1234_e1234 - e12_e12 - e13_e13
-                        - e24_e24 - e34_e34) * x.e14
-                    + (e13_e24 + e14_e23 - s_e1234 - e12_e34) * x.e23
-                    + (s_e12 + e14_e24 - e13_e23 - e34_e1234) * x.e24
-                    + (s_e13 + e12_e23 + e14_e34 + e24_e1234) * x.e34,
-                e23: (s_e13 + e12_e23 + e14_e34 + e24_e1234) * x.e12
-                    + (e13_e23 + e34_e1234 - s_e12 - e14_e24) * x.e13
-                    + (e13_e24 + e14_e23 - s_e1234 - e12_e34) * x.e14
-                    + (s_s + e14_e14 + e23_e23 + e1234_e1234 - e12_e12 - e13_e13
-                        - e24_e24 - e34_e34) * x.e23
-                    + (s_e34 + e23_e24 - e12_e1234 - e13_e14) * x.e24
-                    + (e12_e14 + e23_e34 - s_e24 - e13_e1234) * x.e34,
-                e24: (s_e14 + e12_e24 - e13_e34 - e23_e1234) * x.e12
-                    + (s_e1234 + e12_e34 + e13_e24 + e14_e23) * x.e13
-                    + (e14_e24 + e34_e1234 - s_e12 - e13_e23) * x.e14
-                    + (e12_e1234 + e23_e24 - s_e34 - e13_e14) * x.e23
-                    + (s_s + e13_e13 + e24_e24 + e1234_e1234 - e12_e12 - e14_e14
-                        - e23_e23 - e34_e34) * x.e24
-                    + (s_e23 + e24_e34 - e12_e13 - e14_e1234) * x.e34,
-                e34: (e12_e34 + e13_e24 - s_e1234 - e14_e23) * x.e12
-                    + (s_e14 + e13_e34 - e12_e24 - e23_e1234) * x.e13
-                    + (e12_e23 + e14_e34 - s_e13 - e24_e1234) * x.e14
-                    + (s_e24 + e12_e14 + e13_e1234 + e23_e34) * x.e23
-                    + (e14_e1234 + e24_e34 - s_e23 - e12_e13) * x.e24
-                    + (s_s + e12_e12 + e34_e34 + e1234_e1234 - e13_e13 - e14_e14
-                        - e23_e23 - e24_e24) * x.e34,
+                e12: shared_3_minus_shared_4 * x.e12 + shared_12 * x.e13
+                    + shared_14 * x.e14 - shared_7 * x.e23 - shared_9 * x.e24
+                    - shared_19 * x.e34,
+                e13: shared_1_plus_shared_2 * x.e13 + shared_16 * x.e14
+                    + shared_6 * x.e23 + shared_18 * x.e24 - shared_11 * x.e12
+                    - shared_10 * x.e34,
+                e14: shared_1_minus_shared_2 * x.e14 + shared_5 * x.e24
+                    + shared_8 * x.e34 - shared_13 * x.e12 - shared_15 * x.e13
+                    - shared_17 * x.e23,
+                e23: shared_8 * x.e12 + shared_1_minus_shared_2 * x.e23
+                    + shared_15 * x.e24 - shared_5 * x.e13 - shared_17 * x.e14
+                    - shared_13 * x.e34,
+                e24: shared_10 * x.e12 + shared_18 * x.e13
+                    + shared_1_plus_shared_2 * x.e24 + shared_11 * x.e34
+                    - shared_6 * x.e14 - shared_16 * x.e23,
+                e34: shared_9 * x.e13 + shared_14 * x.e23
+                    + shared_3_minus_shared_4 * x.e34 - shared_19 * x.e12
+                    - shared_7 * x.e14 - shared_12 * x.e24,
             }
         }
     }
@@ -14498,27 +14569,43 @@ pub mod g4 {
             let e34_e34 = self.e34 * self.e34;
             let e34_e1234 = two_e34 * self.e1234;
             let e1234_e1234 = self.e1234 * self.e1234;
+            let s_s_minus_e1234_e1234 = s_s - e1234_e1234;
+            let e12_e12_minus_e34_e34 = e12_e12 - e34_e34;
+            let e13_e13_minus_e24_e24 = e13_e13 - e24_e24;
+            let e14_e14_minus_e23_e23 = e14_e14 - e23_e23;
+            let s_e12_plus_e34_e1234 = s_e12 + e34_e1234;
+            let s_e13_minus_e24_e1234 = s_e13 - e24_e1234;
+            let s_e14_plus_e23_e1234 = s_e14 + e23_e1234;
+            let s_e23_plus_e14_e1234 = s_e23 + e14_e1234;
+            let s_e24_minus_e13_e1234 = s_e24 - e13_e1234;
+            let s_e34_plus_e12_e1234 = s_e34 + e12_e1234;
+            let e12_e13_plus_e24_e34 = e12_e13 + e24_e34;
+            let e12_e14_minus_e23_e34 = e12_e14 - e23_e34;
+            let e12_e23_minus_e14_e34 = e12_e23 - e14_e34;
+            let e12_e24_plus_e13_e34 = e12_e24 + e13_e34;
+            let e13_e14_plus_e23_e24 = e13_e14 + e23_e24;
+            let e13_e23_plus_e14_e24 = e13_e23 + e14_e24;
+            let shared_1 = s_s_minus_e1234_e1234 - e12_e12_minus_e34_e34;
+            let shared_2 = s_s_minus_e1234_e1234 + e12_e12_minus_e34_e34;
+            let shared_3 = e13_e13_minus_e24_e24 - e14_e14_minus_e23_e23;
+            let shared_4 = e13_e13_minus_e24_e24 + e14_e14_minus_e23_e23;
             Trivector {
-                e123: (s_s + e12_e12 + e13_e13 + e23_e23 - e14_e14 - e24_e24 - e34_e34
-                    - e1234_e1234) * x.e123
-                    + (s_e34 + e12_e1234 + e13_e14 + e23_e24) * x.e124
-                    + (e13_e1234 + e23_e34 - s_e24 - e12_e14) * x.e134
-                    + (s_e14 + e23_e1234 - e12_e24 - e13_e34) * x.e234,
-                e124: (e13_e14 + e23_e24 - s_e34 - e12_e1234) * x.e123
-                    + (s_s + e12_e12 + e14_e14 + e24_e24 - e13_e13 - e23_e23 - e34_e34
-                        - e1234_e1234) * x.e124
-                    + (s_e23 + e12_e13 + e14_e1234 + e24_e34) * x.e134
-                    + (e12_e23 + e24_e1234 - s_e13 - e14_e34) * x.e234,
-                e134: (s_e24 + e23_e34 - e12_e14 - e13_e1234) * x.e123
-                    + (e12_e13 + e24_e34 - s_e23 - e14_e1234) * x.e124
-                    + (s_s + e13_e13 + e14_e14 + e34_e34 - e12_e12 - e23_e23 - e24_e24
-                        - e1234_e1234) * x.e134
-                    + (s_e12 + e13_e23 + e14_e24 + e34_e1234) * x.e234,
-                e234: (-s_e14 - e12_e24 - e13_e34 - e23_e1234) * x.e123
-                    + (s_e13 + e12_e23 - e14_e34 - e24_e1234) * x.e124
-                    + (e13_e23 + e14_e24 - s_e12 - e34_e1234) * x.e134
-                    + (s_s + e23_e23 + e24_e24 + e34_e34 - e12_e12 - e13_e13 - e14_e14
-                        - e1234_e1234) * x.e234,
+                e123: (shared_2 + shared_3) * x.e123
+                    + (s_e34_plus_e12_e1234 + e13_e14_plus_e23_e24) * x.e124
+                    + (s_e14_plus_e23_e1234 - e12_e24_plus_e13_e34) * x.e234
+                    - (s_e24_minus_e13_e1234 + e12_e14_minus_e23_e34) * x.e134,
+                e124: (e13_e14_plus_e23_e24 - s_e34_plus_e12_e1234) * x.e123
+                    + (shared_2 - shared_3) * x.e124
+                    + (s_e23_plus_e14_e1234 + e12_e13_plus_e24_e34) * x.e134
+                    + (e12_e23_minus_e14_e34 - s_e13_minus_e24_e1234) * x.e234,
+                e134: (s_e24_minus_e13_e1234 - e12_e14_minus_e23_e34) * x.e123
+                    + (e12_e13_plus_e24_e34 - s_e23_plus_e14_e1234) * x.e124
+                    + (shared_1 + shared_4) * x.e134
+                    + (s_e12_plus_e34_e1234 + e13_e23_plus_e14_e24) * x.e234,
+                e234: (s_e13_minus_e24_e1234 + e12_e23_minus_e14_e34) * x.e124
+                    + (e13_e23_plus_e14_e24 - s_e12_plus_e34_e1234) * x.e134
+                    + (shared_1 - shared_4) * x.e234
+                    - (s_e14_plus_e23_e1234 + e12_e24_plus_e13_e34) * x.e123,
             }
         }
     }
@@ -14585,54 +14672,71 @@ pub mod g4 {
             let e34_e34 = self.e34 * self.e34;
             let e34_e1234 = two_e34 * self.e1234;
             let e1234_e1234 = self.e1234 * self.e1234;
+            let s_s_plus_e1234_e1234 = s_s + e1234_e1234;
+            let e12_e12_plus_e34_e34 = e12_e12 + e34_e34;
+            let e13_e13_plus_e24_e24 = e13_e13 + e24_e24;
+            let e14_e14_plus_e23_e23 = e14_e14 + e23_e23;
+            let s_e12_minus_e34_e1234 = s_e12 - e34_e1234;
+            let s_e13_plus_e24_e1234 = s_e13 + e24_e1234;
+            let s_e14_minus_e23_e1234 = s_e14 - e23_e1234;
+            let s_e23_minus_e14_e1234 = s_e23 - e14_e1234;
+            let s_e24_plus_e13_e1234 = s_e24 + e13_e1234;
+            let s_e34_minus_e12_e1234 = s_e34 - e12_e1234;
+            let s_e1234_minus_e12_e34 = s_e1234 - e12_e34;
+            let s_e1234_plus_e12_e34 = s_e1234 + e12_e34;
+            let e12_e13_minus_e24_e34 = e12_e13 - e24_e34;
+            let e12_e14_plus_e23_e34 = e12_e14 + e23_e34;
+            let e12_e23_plus_e14_e34 = e12_e23 + e14_e34;
+            let e12_e24_minus_e13_e34 = e12_e24 - e13_e34;
+            let e13_e14_minus_e23_e24 = e13_e14 - e23_e24;
+            let e13_e23_minus_e14_e24 = e13_e23 - e14_e24;
+            let e13_e24_minus_e14_e23 = e13_e24 - e14_e23;
+            let e13_e24_plus_e14_e23 = e13_e24 + e14_e23;
+            let shared_1 = s_s_plus_e1234_e1234 - e12_e12_plus_e34_e34;
+            let shared_2 = s_s_plus_e1234_e1234 + e12_e12_plus_e34_e34;
+            let shared_3 = e13_e13_plus_e24_e24 - e14_e14_plus_e23_e23;
+            let shared_4 = e13_e13_plus_e24_e24 + e14_e14_plus_e23_e23;
+            let shared_5 = s_e12_minus_e34_e1234 - e13_e23_minus_e14_e24;
+            let shared_6 = s_e12_minus_e34_e1234 + e13_e23_minus_e14_e24;
+            let shared_7 = s_e13_plus_e24_e1234 - e12_e23_plus_e14_e34;
+            let shared_8 = s_e13_plus_e24_e1234 + e12_e23_plus_e14_e34;
+            let shared_9 = s_e14_minus_e23_e1234 - e12_e24_minus_e13_e34;
+            let shared_10 = s_e14_minus_e23_e1234 + e12_e24_minus_e13_e34;
+            let shared_11 = s_e23_minus_e14_e1234 - e12_e13_minus_e24_e34;
+            let shared_12 = s_e23_minus_e14_e1234 + e12_e13_minus_e24_e34;
+            let shared_13 = s_e24_plus_e13_e1234 - e12_e14_plus_e23_e34;
+            let shared_14 = s_e24_plus_e13_e1234 + e12_e14_plus_e23_e34;
+            let shared_15 = s_e34_minus_e12_e1234 - e13_e14_minus_e23_e24;
+            let shared_16 = s_e34_minus_e12_e1234 + e13_e14_minus_e23_e24;
+            let shared_17 = s_e1234_minus_e12_e34 - e13_e24_minus_e14_e23;
+            let shared_18 = s_e1234_minus_e12_e34 + e13_e24_minus_e14_e23;
+            let shared_19 = s_e1234_plus_e12_e34 - e13_e24_plus_e14_e23;
+            let shared_20 = s_e1234_plus_e12_e34 + e13_e24_plus_e14_e23;
+            let shared_1_minus_shared_3 = shared_1 - shared_3;
+            let shared_1_plus_shared_3 = shared_1 + shared_3;
+            let shared_2_minus_shared_4 = shared_2 - shared_4;
+            let shared_2_plus_shared_4 = shared_2 + shared_4;
             Even {
-                s: (s_s + e12_e12 + e13_e13 + e14_e14 + e23_e23 + e24_e24 + e34_e34
-                    + e1234_e1234) * x.s
-                    + (s_e1234 + e13_e24 - e12_e34 - e14_e23) * x.e1234,
-                e12: (s_s + e12_e12 + e34_e34 + e1234_e1234 - e13_e13 - e14_e14 - e23_e23
-                    - e24_e24) * x.e12 + (s_e23 + e12_e13 - e14_e1234 - e24_e34) * x.e13
-                    + (s_e24 + e12_e14 + e13_e1234 + e23_e34) * x.e14
-                    + (e12_e23 + e14_e34 - s_e13 - e24_e1234) * x.e23
-                    + (e12_e24 + e23_e1234 - s_e14 - e13_e34) * x.e24
-                    + (e12_e34 + e13_e24 - s_e1234 - e14_e23) * x.e34,
-                e13: (e12_e13 + e14_e1234 - s_e23 - e24_e34) * x.e12
-                    + (s_s + e13_e13 + e24_e24 + e1234_e1234 - e12_e12 - e14_e14
-                        - e23_e23 - e34_e34) * x.e13
-                    + (s_e34 + e13_e14 - e12_e1234 - e23_e24) * x.e14
-                    + (s_e12 + e13_e23 - e14_e24 - e34_e1234) * x.e23
-                    + (s_e1234 + e12_e34 + e13_e24 + e14_e23) * x.e24
-                    + (e13_e34 + e23_e1234 - s_e14 - e12_e24) * x.e34,
-                e14: (e12_e14 + e23_e34 - s_e24 - e13_e1234) * x.e12
-                    + (e12_e1234 + e13_e14 - s_e34 - e23_e24) * x.e13
-                    + (s_s + e14_e14 + e23_e23 + e1234_e1234 - e12_e12 - e13_e13
-                        - e24_e24 - e34_e34) * x.e14
-                    + (e13_e24 + e14_e23 - s_e1234 - e12_e34) * x.e23
-                    + (s_e12 + e14_e24 - e13_e23 - e34_e1234) * x.e24
-                    + (s_e13 + e12_e23 + e14_e34 + e24_e1234) * x.e34,
-                e23: (s_e13 + e12_e23 + e14_e34 + e24_e1234) * x.e12
-                    + (e13_e23 + e34_e1234 - s_e12 - e14_e24) * x.e13
-                    + (e13_e24 + e14_e23 - s_e1234 - e12_e34) * x.e14
-                    + (s_s + e14_e14 + e23_e23 + e1234_e1234 - e12_e12 - e13_e13
-                        - e24_e24 - e34_e34) * x.e23
-                    + (s_e34 + e23_e24 - e12_e1234 - e13_e14) * x.e24
-                    + (e12_e14 + e23_e34 - s_e24 - e13_e1234) * x.e34,
-                e24: (s_e14 + e12_e24 - e13_e34 - e23_e1234) * x.e12
-                    + (s_e1234 + e12_e34 + e13_e24 + e14_e23) * x.e13
-                    + (e14_e24 + e34_e1234 - s_e12 - e13_e23) * x.e14
-                    + (e12_e1234 + e23_e24 - s_e34 - e13_e14) * x.e23
-                    + (s_s + e13_e13 + e24_e24 + e1234_e1234 - e12_e12 - e14_e14
-                        - e23_e23 - e34_e34) * x.e24
-                    + (s_e23 + e24_e34 - e12_e13 - e14_e1234) * x.e34,
-                e34: (e12_e34 + e13_e24 - s_e1234 - e14_e23) * x.e12
-                    + (s_e14 + e13_e34 - e12_e24 - e23_e1234) * x.e13
-                    + (e12_e23 + e14_e34 - s_e13 - e24_e1234) * x.e14
-                    + (s_e24 + e12_e14 + e13_e1234 + e23_e34) * x.e23
-                    + (e14_e1234 + e24_e34 - s_e23 - e12_e13) * x.e24
-                    + (s_s + e12_e12 + e34_e34 + e1234_e1234 - e13_e13 - e14_e14
-                        - e23_e23 - e24_e24) * x.e34,
-                e1234: (s_e1234 + e13_e24 - e12_e34 - e14_e23) * x.s
-                    + (s_s + e12_e12 + e13_e13 + e14_e14 + e23_e23 + e24_e24 + e34_e34
-                        + e1234_e1234) * x.e1234,
+                s: shared_2_plus_shared_4 * x.s + shared_18 * x.e1234,
+                e12: shared_2_minus_shared_4 * x.e12 + shared_12 * x.e13
+                    + shared_14 * x.e14 - shared_7 * x.e23 - shared_9 * x.e24
+                    - shared_17 * x.e34,
+                e13: shared_1_plus_shared_3 * x.e13 + shared_16 * x.e14
+                    + shared_6 * x.e23 + shared_20 * x.e24 - shared_11 * x.e12
+                    - shared_10 * x.e34,
+                e14: shared_1_minus_shared_3 * x.e14 + shared_5 * x.e24
+                    + shared_8 * x.e34 - shared_13 * x.e12 - shared_15 * x.e13
+                    - shared_19 * x.e23,
+                e23: shared_8 * x.e12 + shared_1_minus_shared_3 * x.e23
+                    + shared_15 * x.e24 - shared_5 * x.e13 - shared_19 * x.e14
+                    - shared_13 * x.e34,
+                e24: shared_10 * x.e12 + shared_20 * x.e13
+                    + shared_1_plus_shared_3 * x.e24 + shared_11 * x.e34
+                    - shared_6 * x.e14 - shared_16 * x.e23,
+                e34: shared_9 * x.e13 + shared_14 * x.e23
+                    + shared_2_minus_shared_4 * x.e34 - shared_17 * x.e12
+                    - shared_7 * x.e14 - shared_12 * x.e24,
+                e1234: shared_18 * x.s + shared_2_plus_shared_4 * x.e1234,
             }
         }
     }
@@ -14678,47 +14782,59 @@ pub mod g4 {
             let e34_e34 = self.e34 * self.e34;
             let e34_e1234 = two_e34 * self.e1234;
             let e1234_e1234 = self.e1234 * self.e1234;
+            let s_s_minus_e1234_e1234 = s_s - e1234_e1234;
+            let e12_e12_minus_e34_e34 = e12_e12 - e34_e34;
+            let e13_e13_minus_e24_e24 = e13_e13 - e24_e24;
+            let e14_e14_minus_e23_e23 = e14_e14 - e23_e23;
+            let s_e12_plus_e34_e1234 = s_e12 + e34_e1234;
+            let s_e13_minus_e24_e1234 = s_e13 - e24_e1234;
+            let s_e14_plus_e23_e1234 = s_e14 + e23_e1234;
+            let s_e23_plus_e14_e1234 = s_e23 + e14_e1234;
+            let s_e24_minus_e13_e1234 = s_e24 - e13_e1234;
+            let s_e34_plus_e12_e1234 = s_e34 + e12_e1234;
+            let e12_e13_plus_e24_e34 = e12_e13 + e24_e34;
+            let e12_e14_minus_e23_e34 = e12_e14 - e23_e34;
+            let e12_e23_minus_e14_e34 = e12_e23 - e14_e34;
+            let e12_e24_plus_e13_e34 = e12_e24 + e13_e34;
+            let e13_e14_plus_e23_e24 = e13_e14 + e23_e24;
+            let e13_e23_plus_e14_e24 = e13_e23 + e14_e24;
+            let shared_1 = s_s_minus_e1234_e1234 - e12_e12_minus_e34_e34;
+            let shared_2 = s_s_minus_e1234_e1234 + e12_e12_minus_e34_e34;
+            let shared_3 = e13_e13_minus_e24_e24 - e14_e14_minus_e23_e23;
+            let shared_4 = e13_e13_minus_e24_e24 + e14_e14_minus_e23_e23;
+            let shared_5 = s_e12_plus_e34_e1234 - e13_e23_plus_e14_e24;
+            let shared_6 = s_e12_plus_e34_e1234 + e13_e23_plus_e14_e24;
+            let shared_7 = s_e13_minus_e24_e1234 - e12_e23_minus_e14_e34;
+            let shared_8 = s_e13_minus_e24_e1234 + e12_e23_minus_e14_e34;
+            let shared_9 = s_e14_plus_e23_e1234 - e12_e24_plus_e13_e34;
+            let shared_10 = s_e14_plus_e23_e1234 + e12_e24_plus_e13_e34;
+            let shared_11 = s_e23_plus_e14_e1234 - e12_e13_plus_e24_e34;
+            let shared_12 = s_e23_plus_e14_e1234 + e12_e13_plus_e24_e34;
+            let shared_13 = s_e24_minus_e13_e1234 - e12_e14_minus_e23_e34;
+            let shared_14 = s_e24_minus_e13_e1234 + e12_e14_minus_e23_e34;
+            let shared_15 = s_e34_plus_e12_e1234 - e13_e14_plus_e23_e24;
+            let shared_16 = s_e34_plus_e12_e1234 + e13_e14_plus_e23_e24;
+            let shared_1_minus_shared_4 = shared_1 - shared_4;
+            let shared_1_plus_shared_4 = shared_1 + shared_4;
+            let shared_2_minus_shared_3 = shared_2 - shared_3;
+            let shared_2_plus_shared_3 = shared_2 + shared_3;
             Odd {
-                e1: (s_s + e23_e23 + e24_e24 + e34_e34 - e12_e12 - e13_e13 - e14_e14
-                    - e1234_e1234) * x.e1
-                    + (s_e12 + e34_e1234 - e13_e23 - e14_e24) * x.e2
-                    + (s_e13 + e12_e23 - e14_e34 - e24_e1234) * x.e3
-                    + (s_e14 + e12_e24 + e13_e34 + e23_e1234) * x.e4,
-                e2: (-s_e12 - e13_e23 - e14_e24 - e34_e1234) * x.e1
-                    + (s_s + e13_e13 + e14_e14 + e34_e34 - e12_e12 - e23_e23 - e24_e24
-                        - e1234_e1234) * x.e2
-                    + (s_e23 + e14_e1234 - e12_e13 - e24_e34) * x.e3
-                    + (s_e24 + e23_e34 - e12_e14 - e13_e1234) * x.e4,
-                e3: (e12_e23 + e24_e1234 - s_e13 - e14_e34) * x.e1
-                    + (-s_e23 - e12_e13 - e14_e1234 - e24_e34) * x.e2
-                    + (s_s + e12_e12 + e14_e14 + e24_e24 - e13_e13 - e23_e23 - e34_e34
-                        - e1234_e1234) * x.e3
-                    + (s_e34 + e12_e1234 - e13_e14 - e23_e24) * x.e4,
-                e4: (e12_e24 + e13_e34 - s_e14 - e23_e1234) * x.e1
-                    + (e13_e1234 + e23_e34 - s_e24 - e12_e14) * x.e2
-                    + (-s_e34 - e12_e1234 - e13_e14 - e23_e24) * x.e3
-                    + (s_s + e12_e12 + e13_e13 + e23_e23 - e14_e14 - e24_e24 - e34_e34
-                        - e1234_e1234) * x.e4,
-                e123: (s_s + e12_e12 + e13_e13 + e23_e23 - e14_e14 - e24_e24 - e34_e34
-                    - e1234_e1234) * x.e123
-                    + (s_e34 + e12_e1234 + e13_e14 + e23_e24) * x.e124
-                    + (e13_e1234 + e23_e34 - s_e24 - e12_e14) * x.e134
-                    + (s_e14 + e23_e1234 - e12_e24 - e13_e34) * x.e234,
-                e124: (e13_e14 + e23_e24 - s_e34 - e12_e1234) * x.e123
-                    + (s_s + e12_e12 + e14_e14 + e24_e24 - e13_e13 - e23_e23 - e34_e34
-                        - e1234_e1234) * x.e124
-                    + (s_e23 + e12_e13 + e14_e1234 + e24_e34) * x.e134
-                    + (e12_e23 + e24_e1234 - s_e13 - e14_e34) * x.e234,
-                e134: (s_e24 + e23_e34 - e12_e14 - e13_e1234) * x.e123
-                    + (e12_e13 + e24_e34 - s_e23 - e14_e1234) * x.e124
-                    + (s_s + e13_e13 + e14_e14 + e34_e34 - e12_e12 - e23_e23 - e24_e24
-                        - e1234_e1234) * x.e134
-                    + (s_e12 + e13_e23 + e14_e24 + e34_e1234) * x.e234,
-                e234: (-s_e14 - e12_e24 - e13_e34 - e23_e1234) * x.e123
-                    + (s_e13 + e12_e23 - e14_e34 - e24_e1234) * x.e124
-                    + (e13_e23 + e14_e24 - s_e12 - e34_e1234) * x.e134
-                    + (s_s + e23_e23 + e24_e24 + e34_e34 - e12_e12 - e13_e13 - e14_e14
-                        - e1234_e1234) * x.e234,
+                e1: shared_1_minus_shared_4 * x.e1 + shared_5 * x.e2 + shared_8 * x.e3
+                    + shared_10 * x.e4,
+                e2: shared_1_plus_shared_4 * x.e2 + shared_11 * x.e3 + shared_13 * x.e4
+                    - shared_6 * x.e1,
+                e3: shared_2_minus_shared_3 * x.e3 + shared_15 * x.e4 - shared_7 * x.e1
+                    - shared_12 * x.e2,
+                e4: shared_2_plus_shared_3 * x.e4 - shared_9 * x.e1 - shared_14 * x.e2
+                    - shared_16 * x.e3,
+                e123: shared_2_plus_shared_3 * x.e123 + shared_16 * x.e124
+                    + shared_9 * x.e234 - shared_14 * x.e134,
+                e124: shared_2_minus_shared_3 * x.e124 + shared_12 * x.e134
+                    - shared_15 * x.e123 - shared_7 * x.e234,
+                e134: shared_13 * x.e123 + shared_1_plus_shared_4 * x.e134
+                    + shared_6 * x.e234 - shared_11 * x.e124,
+                e234: shared_8 * x.e124 + shared_1_minus_shared_4 * x.e234
+                    - shared_10 * x.e123 - shared_5 * x.e134,
             }
         }
     }
@@ -14768,94 +14884,123 @@ pub mod g4 {
             let e34_e34 = self.e34 * self.e34;
             let e34_e1234 = two_e34 * self.e1234;
             let e1234_e1234 = self.e1234 * self.e1234;
+            let s_s_minus_e12_e12 = s_s - e12_e12;
+            let s_s_plus_e12_e12 = s_s + e12_e12;
+            let e13_e13_minus_e14_e14 = e13_e13 - e14_e14;
+            let e13_e13_plus_e14_e14 = e13_e13 + e14_e14;
+            let e23_e23_minus_e24_e24 = e23_e23 - e24_e24;
+            let e23_e23_plus_e24_e24 = e23_e23 + e24_e24;
+            let e34_e34_minus_e1234_e1234 = e34_e34 - e1234_e1234;
+            let e34_e34_plus_e1234_e1234 = e34_e34 + e1234_e1234;
+            let s_e12_minus_e13_e23 = s_e12 - e13_e23;
+            let s_e12_plus_e13_e23 = s_e12 + e13_e23;
+            let s_e13_minus_e12_e23 = s_e13 - e12_e23;
+            let s_e13_plus_e12_e23 = s_e13 + e12_e23;
+            let s_e14_minus_e12_e24 = s_e14 - e12_e24;
+            let s_e14_plus_e12_e24 = s_e14 + e12_e24;
+            let s_e23_minus_e12_e13 = s_e23 - e12_e13;
+            let s_e23_plus_e12_e13 = s_e23 + e12_e13;
+            let s_e24_minus_e12_e14 = s_e24 - e12_e14;
+            let s_e24_plus_e12_e14 = s_e24 + e12_e14;
+            let s_e34_minus_e12_e1234 = s_e34 - e12_e1234;
+            let s_e34_plus_e12_e1234 = s_e34 + e12_e1234;
+            let s_e1234_minus_e12_e34 = s_e1234 - e12_e34;
+            let s_e1234_plus_e12_e34 = s_e1234 + e12_e34;
+            let e13_e14_minus_e23_e24 = e13_e14 - e23_e24;
+            let e13_e14_plus_e23_e24 = e13_e14 + e23_e24;
+            let e13_e24_minus_e14_e23 = e13_e24 - e14_e23;
+            let e13_e24_plus_e14_e23 = e13_e24 + e14_e23;
+            let e13_e34_minus_e23_e1234 = e13_e34 - e23_e1234;
+            let e13_e34_plus_e23_e1234 = e13_e34 + e23_e1234;
+            let e13_e1234_minus_e23_e34 = e13_e1234 - e23_e34;
+            let e13_e1234_plus_e23_e34 = e13_e1234 + e23_e34;
+            let e14_e24_minus_e34_e1234 = e14_e24 - e34_e1234;
+            let e14_e24_plus_e34_e1234 = e14_e24 + e34_e1234;
+            let e14_e34_minus_e24_e1234 = e14_e34 - e24_e1234;
+            let e14_e34_plus_e24_e1234 = e14_e34 + e24_e1234;
+            let e14_e1234_minus_e24_e34 = e14_e1234 - e24_e34;
+            let e14_e1234_plus_e24_e34 = e14_e1234 + e24_e34;
+            let shared_1 = s_s_minus_e12_e12 - e34_e34_minus_e1234_e1234;
+            let shared_2 = s_s_minus_e12_e12 + e34_e34_minus_e1234_e1234;
+            let shared_3 = s_s_plus_e12_e12 - e34_e34_plus_e1234_e1234;
+            let shared_4 = s_s_plus_e12_e12 + e34_e34_plus_e1234_e1234;
+            let shared_5 = e13_e13_minus_e14_e14 - e23_e23_minus_e24_e24;
+            let shared_6 = e13_e13_minus_e14_e14 + e23_e23_minus_e24_e24;
+            let shared_7 = e13_e13_plus_e14_e14 - e23_e23_plus_e24_e24;
+            let shared_8 = e13_e13_plus_e14_e14 + e23_e23_plus_e24_e24;
+            let shared_9 = s_e12_minus_e13_e23 - e14_e24_minus_e34_e1234;
+            let shared_10 = s_e12_minus_e13_e23 + e14_e24_minus_e34_e1234;
+            let shared_11 = s_e12_plus_e13_e23 - e14_e24_plus_e34_e1234;
+            let shared_12 = s_e12_plus_e13_e23 + e14_e24_plus_e34_e1234;
+            let shared_13 = s_e13_minus_e12_e23 - e14_e34_minus_e24_e1234;
+            let shared_14 = s_e13_minus_e12_e23 + e14_e34_minus_e24_e1234;
+            let shared_15 = s_e13_plus_e12_e23 - e14_e34_plus_e24_e1234;
+            let shared_16 = s_e13_plus_e12_e23 + e14_e34_plus_e24_e1234;
+            let shared_17 = s_e14_minus_e12_e24 - e13_e34_minus_e23_e1234;
+            let shared_18 = s_e14_minus_e12_e24 + e13_e34_minus_e23_e1234;
+            let shared_19 = s_e14_plus_e12_e24 - e13_e34_plus_e23_e1234;
+            let shared_20 = s_e14_plus_e12_e24 + e13_e34_plus_e23_e1234;
+            let shared_21 = s_e23_minus_e12_e13 - e14_e1234_minus_e24_e34;
+            let shared_22 = s_e23_minus_e12_e13 + e14_e1234_minus_e24_e34;
+            let shared_23 = s_e23_plus_e12_e13 - e14_e1234_plus_e24_e34;
+            let shared_24 = s_e23_plus_e12_e13 + e14_e1234_plus_e24_e34;
+            let shared_25 = s_e24_minus_e12_e14 - e13_e1234_minus_e23_e34;
+            let shared_26 = s_e24_minus_e12_e14 + e13_e1234_minus_e23_e34;
+            let shared_27 = s_e24_plus_e12_e14 - e13_e1234_plus_e23_e34;
+            let shared_28 = s_e24_plus_e12_e14 + e13_e1234_plus_e23_e34;
+            let shared_29 = s_e34_minus_e12_e1234 - e13_e14_minus_e23_e24;
+            let shared_30 = s_e34_minus_e12_e1234 + e13_e14_minus_e23_e24;
+            let shared_31 = s_e34_plus_e12_e1234 - e13_e14_plus_e23_e24;
+            let shared_32 = s_e34_plus_e12_e1234 + e13_e14_plus_e23_e24;
+            let shared_33 = s_e1234_minus_e12_e34 - e13_e24_minus_e14_e23;
+            let shared_34 = s_e1234_minus_e12_e34 + e13_e24_minus_e14_e23;
+            let shared_35 = s_e1234_plus_e12_e34 - e13_e24_plus_e14_e23;
+            let shared_36 = s_e1234_plus_e12_e34 + e13_e24_plus_e14_e23;
+            let shared_1_minus_shared_5 = shared_1 - shared_5;
+            let shared_1_plus_shared_5 = shared_1 + shared_5;
+            let shared_2_minus_shared_7 = shared_2 - shared_7;
+            let shared_2_plus_shared_7 = shared_2 + shared_7;
+            let shared_3_minus_shared_6 = shared_3 - shared_6;
+            let shared_3_plus_shared_6 = shared_3 + shared_6;
+            let shared_4_minus_shared_8 = shared_4 - shared_8;
+            let shared_4_plus_shared_8 = shared_4 + shared_8;
             Multivector {
-                s: (s_s + e12_e12 + e13_e13 + e14_e14 + e23_e23 + e24_e24 + e34_e34
-                    + e1234_e1234) * x.s
-                    + (s_e1234 + e13_e24 - e12_e34 - e14_e23) * x.e1234,
-                e1: (s_s + e23_e23 + e24_e24 + e34_e34 - e12_e12 - e13_e13 - e14_e14
-                    - e1234_e1234) * x.e1
-                    + (s_e12 + e34_e1234 - e13_e23 - e14_e24) * x.e2
-                    + (s_e13 + e12_e23 - e14_e34 - e24_e1234) * x.e3
-                    + (s_e14 + e12_e24 + e13_e34 + e23_e1234) * x.e4,
-                e2: (-s_e12 - e13_e23 - e14_e24 - e34_e1234) * x.e1
-                    + (s_s + e13_e13 + e14_e14 + e34_e34 - e12_e12 - e23_e23 - e24_e24
-                        - e1234_e1234) * x.e2
-                    + (s_e23 + e14_e1234 - e12_e13 - e24_e34) * x.e3
-                    + (s_e24 + e23_e34 - e12_e14 - e13_e1234) * x.e4,
-                e3: (e12_e23 + e24_e1234 - s_e13 - e14_e34) * x.e1
-                    + (-s_e23 - e12_e13 - e14_e1234 - e24_e34) * x.e2
-                    + (s_s + e12_e12 + e14_e14 + e24_e24 - e13_e13 - e23_e23 - e34_e34
-                        - e1234_e1234) * x.e3
-                    + (s_e34 + e12_e1234 - e13_e14 - e23_e24) * x.e4,
-                e4: (e12_e24 + e13_e34 - s_e14 - e23_e1234) * x.e1
-                    + (e13_e1234 + e23_e34 - s_e24 - e12_e14) * x.e2
-                    + (-s_e34 - e12_e1234 - e13_e14 - e23_e24) * x.e3
-                    + (s_s + e12_e12 + e13_e13 + e23_e23 - e14_e14 - e24_e24 - e34_e34
-                        - e1234_e1234) * x.e4,
-                e12: (s_s + e12_e12 + e34_e34 + e1234_e1234 - e13_e13 - e14_e14 - e23_e23
-                    - e24_e24) * x.e12 + (s_e23 + e12_e13 - e14_e1234 - e24_e34) * x.e13
-                    + (s_e24 + e12_e14 + e13_e1234 + e23_e34) * x.e14
-                    + (e12_e23 + e14_e34 - s_e13 - e24_e1234) * x.e23
-                    + (e12_e24 + e23_e1234 - s_e14 - e13_e34) * x.e24
-                    + (e12_e34 + e13_e24 - s_e1234 - e14_e23) * x.e34,
-                e13: (e12_e13 + e14_e1234 - s_e23 - e24_e34) * x.e12
-                    + (s_s + e13_e13 + e24_e24 + e1234_e1234 - e12_e12 - e14_e14
-                        - e23_e23 - e34_e34) * x.e13
-                    + (s_e34 + e13_e14 - e12_e1234 - e23_e24) * x.e14
-                    + (s_e12 + e13_e23 - e14_e24 - e34_e1234) * x.e23
-                    + (s_e1234 + e12_e34 + e13_e24 + e14_e23) * x.e24
-                    + (e13_e34 + e23_e1234 - s_e14 - e12_e24) * x.e34,
-                e14: (e12_e14 + e23_e34 - s_e24 - e13_e1234) * x.e12
-                    + (e12_e1234 + e13_e14 - s_e34 - e23_e24) * x.e13
-                    + (s_s + e14_e14 + e23_e23 + e1234_e1234 - e12_e12 - e13_e13
-                        - e24_e24 - e34_e34) * x.e14
-                    + (e13_e24 + e14_e23 - s_e1234 - e12_e34) * x.e23
-                    + (s_e12 + e14_e24 - e13_e23 - e34_e1234) * x.e24
-                    + (s_e13 + e12_e23 + e14_e34 + e24_e1234) * x.e34,
-                e23: (s_e13 + e12_e23 + e14_e34 + e24_e1234) * x.e12
-                    + (e13_e23 + e34_e1234 - s_e12 - e14_e24) * x.e13
-                    + (e13_e24 + e14_e23 - s_e1234 - e12_e34) * x.e14
-                    + (s_s + e14_e14 + e23_e23 + e1234_e1234 - e12_e12 - e13_e13
-                        - e24_e24 - e34_e34) * x.e23
-                    + (s_e34 + e23_e24 - e12_e1234 - e13_e14) * x.e24
-                    + (e12_e14 + e23_e34 - s_e24 - e13_e1234) * x.e34,
-                e24: (s_e14 + e12_e24 - e13_e34 - e23_e1234) * x.e12
-                    + (s_e1234 + e12_e34 + e13_e24 + e14_e23) * x.e13
-                    + (e14_e24 + e34_e1234 - s_e12 - e13_e23) * x.e14
-                    + (e12_e1234 + e23_e24 - s_e34 - e13_e14) * x.e23
-                    + (s_s + e13_e13 + e24_e24 + e1234_e1234 - e12_e12 - e14_e14
-                        - e23_e23 - e34_e34) * x.e24
-                    + (s_e23 + e24_e34 - e12_e13 - e14_e1234) * x.e34,
-                e34: (e12_e34 + e13_e24 - s_e1234 - e14_e23) * x.e12
-                    + (s_e14 + e13_e34 - e12_e24 - e23_e1234) * x.e13
-                    + (e12_e23 + e14_e34 - s_e13 - e24_e1234) * x.e14
-                    + (s_e24 + e12_e14 + e13_e1234 + e23_e34) * x.e23
-                    + (e14_e1234 + e24_e34 - s_e23 - e12_e13) * x.e24
-                    + (s_s + e12_e12 + e34_e34 + e1234_e1234 - e13_e13 - e14_e14
-                        - e23_e23 - e24_e24) * x.e34,
-                e123: (s_s + e12_e12 + e13_e13 + e23_e23 - e14_e14 - e24_e24 - e34_e34
-                    - e1234_e1234) * x.e123
-                    + (s_e34 + e12_e1234 + e13_e14 + e23_e24) * x.e124
-                    + (e13_e1234 + e23_e34 - s_e24 - e12_e14) * x.e134
-                    + (s_e14 + e23_e1234 - e12_e24 - e13_e34) * x.e234,
-                e124: (e13_e14 + e23_e24 - s_e34 - e12_e1234) * x.e123
-                    + (s_s + e12_e12 + e14_e14 + e24_e24 - e13_e13 - e23_e23 - e34_e34
-                        - e1234_e1234) * x.e124
-                    + (s_e23 + e12_e13 + e14_e1234 + e24_e34) * x.e134
-                    + (e12_e23 + e24_e1234 - s_e13 - e14_e34) * x.e234,
-                e134: (s_e24 + e23_e34 - e12_e14 - e13_e1234) * x.e123
-                    + (e12_e13 + e24_e34 - s_e23 - e14_e1234) * x.e124
-                    + (s_s + e13_e13 + e14_e14 + e34_e34 - e12_e12 - e23_e23 - e24_e24
-                        - e1234_e1234) * x.e134
-                    + (s_e12 + e13_e23 + e14_e24 + e34_e1234) * x.e234,
-                e234: (-s_e14 - e12_e24 - e13_e34 - e23_e1234) * x.e123
-                    + (s_e13 + e12_e23 - e14_e34 - e24_e1234) * x.e124
-                    + (e13_e23 + e14_e24 - s_e12 - e34_e1234) * x.e134
-                    + (s_s + e23_e23 + e24_e24 + e34_e34 - e12_e12 - e13_e13 - e14_e14
-                        - e1234_e1234) * x.e234,
-                e1234: (s_e1234 + e13_e24 - e12_e34 - e14_e23) * x.s
-                    + (s_s + e12_e12 + e13_e13 + e14_e14 + e23_e23 + e24_e24 + e34_e34
-                        + e1234_e1234) * x.e1234,
+                s: shared_4_plus_shared_8 * x.s + shared_34 * x.e1234,
+                e1: shared_2_minus_shared_7 * x.e1 + shared_9 * x.e2 + shared_15 * x.e3
+                    + shared_20 * x.e4,
+                e2: shared_2_plus_shared_7 * x.e2 + shared_22 * x.e3 + shared_25 * x.e4
+                    - shared_12 * x.e1,
+                e3: shared_3_minus_shared_6 * x.e3 + shared_31 * x.e4 - shared_14 * x.e1
+                    - shared_24 * x.e2,
+                e4: shared_3_plus_shared_6 * x.e4 - shared_17 * x.e1 - shared_27 * x.e2
+                    - shared_32 * x.e3,
+                e12: shared_4_minus_shared_8 * x.e12 + shared_23 * x.e13
+                    + shared_28 * x.e14 - shared_13 * x.e23 - shared_18 * x.e24
+                    - shared_33 * x.e34,
+                e13: shared_1_plus_shared_5 * x.e13 + shared_30 * x.e14
+                    + shared_11 * x.e23 + shared_36 * x.e24 - shared_21 * x.e12
+                    - shared_19 * x.e34,
+                e14: shared_1_minus_shared_5 * x.e14 + shared_10 * x.e24
+                    + shared_16 * x.e34 - shared_26 * x.e12 - shared_29 * x.e13
+                    - shared_35 * x.e23,
+                e23: shared_16 * x.e12 + shared_1_minus_shared_5 * x.e23
+                    + shared_29 * x.e24 - shared_10 * x.e13 - shared_35 * x.e14
+                    - shared_26 * x.e34,
+                e24: shared_19 * x.e12 + shared_36 * x.e13
+                    + shared_1_plus_shared_5 * x.e24 + shared_21 * x.e34
+                    - shared_11 * x.e14 - shared_30 * x.e23,
+                e34: shared_18 * x.e13 + shared_28 * x.e23
+                    + shared_4_minus_shared_8 * x.e34 - shared_33 * x.e12
+                    - shared_13 * x.e14 - shared_23 * x.e24,
+                e123: shared_3_plus_shared_6 * x.e123 + shared_32 * x.e124
+                    + shared_17 * x.e234 - shared_27 * x.e134,
+                e124: shared_3_minus_shared_6 * x.e124 + shared_24 * x.e134
+                    - shared_31 * x.e123 - shared_14 * x.e234,
+                e134: shared_25 * x.e123 + shared_2_plus_shared_7 * x.e134
+                    + shared_12 * x.e234 - shared_22 * x.e124,
+                e234: shared_15 * x.e124 + shared_2_minus_shared_7 * x.e234
+                    - shared_20 * x.e123 - shared_9 * x.e134,
+                e1234: shared_34 * x.s + shared_4_plus_shared_8 * x.e1234,
             }
         }
     }
@@ -14906,34 +15051,50 @@ pub mod g4 {
             let e34_e34 = self.e34 * self.e34;
             let e34_e1234 = two_e34 * self.e1234;
             let e1234_e1234 = self.e1234 * self.e1234;
+            let s_s_minus_e1234_e1234 = s_s - e1234_e1234;
+            let e12_e12_minus_e34_e34 = e12_e12 - e34_e34;
+            let e13_e13_minus_e24_e24 = e13_e13 - e24_e24;
+            let e14_e14_minus_e23_e23 = e14_e14 - e23_e23;
+            let s_e12_plus_e34_e1234 = s_e12 + e34_e1234;
+            let s_e13_minus_e24_e1234 = s_e13 - e24_e1234;
+            let s_e14_plus_e23_e1234 = s_e14 + e23_e1234;
+            let s_e23_plus_e14_e1234 = s_e23 + e14_e1234;
+            let s_e24_minus_e13_e1234 = s_e24 - e13_e1234;
+            let s_e34_plus_e12_e1234 = s_e34 + e12_e1234;
+            let e12_e13_plus_e24_e34 = e12_e13 + e24_e34;
+            let e12_e14_minus_e23_e34 = e12_e14 - e23_e34;
+            let e12_e23_minus_e14_e34 = e12_e23 - e14_e34;
+            let e12_e24_plus_e13_e34 = e12_e24 + e13_e34;
+            let e13_e14_plus_e23_e24 = e13_e14 + e23_e24;
+            let e13_e23_plus_e14_e24 = e13_e23 + e14_e24;
+            let shared_1 = s_s_minus_e1234_e1234 - e12_e12_minus_e34_e34;
+            let shared_2 = s_s_minus_e1234_e1234 + e12_e12_minus_e34_e34;
+            let shared_3 = e13_e13_minus_e24_e24 - e14_e14_minus_e23_e23;
+            let shared_4 = e13_e13_minus_e24_e24 + e14_e14_minus_e23_e23;
             [
                 [
-                    s_s + e23_e23 + e24_e24 + e34_e34 - e12_e12 - e13_e13 - e14_e14
-                        - e1234_e1234,
-                    s_e12 + e34_e1234 - e13_e23 - e14_e24,
-                    s_e13 + e12_e23 - e14_e34 - e24_e1234,
-                    s_e14 + e12_e24 + e13_e34 + e23_e1234,
+                    shared_1 - shared_4,
+                    s_e12_plus_e34_e1234 - e13_e23_plus_e14_e24,
+                    s_e13_minus_e24_e1234 + e12_e23_minus_e14_e34,
+                    s_e14_plus_e23_e1234 + e12_e24_plus_e13_e34,
                 ],
                 [
-                    -s_e12 - e13_e23 - e14_e24 - e34_e1234,
-                    s_s + e13_e13 + e14_e14 + e34_e34 - e12_e12 - e23_e23 - e24_e24
-                        - e1234_e1234,
-                    s_e23 + e14_e1234 - e12_e13 - e24_e34,
-                    s_e24 + e23_e34 - e12_e14 - e13_e1234,
+                    -s_e12_plus_e34_e1234 - e13_e23_plus_e14_e24,
+                    shared_1 + shared_4,
+                    s_e23_plus_e14_e1234 - e12_e13_plus_e24_e34,
+                    s_e24_minus_e13_e1234 - e12_e14_minus_e23_e34,
                 ],
                 [
-                    e12_e23 + e24_e1234 - s_e13 - e14_e34,
-                    -s_e23 - e12_e13 - e14_e1234 - e24_e34,
-                    s_s + e12_e12 + e14_e14 + e24_e24 - e13_e13 - e23_e23 - e34_e34
-                        - e1234_e1234,
-                    s_e34 + e12_e1234 - e13_e14 - e23_e24,
+                    e12_e23_minus_e14_e34 - s_e13_minus_e24_e1234,
+                    -s_e23_plus_e14_e1234 - e12_e13_plus_e24_e34,
+                    shared_2 - shared_3,
+                    s_e34_plus_e12_e1234 - e13_e14_plus_e23_e24,
                 ],
                 [
-                    e12_e24 + e13_e34 - s_e14 - e23_e1234,
-                    e13_e1234 + e23_e34 - s_e24 - e12_e14,
-                    -s_e34 - e12_e1234 - e13_e14 - e23_e24,
-                    s_s + e12_e12 + e13_e13 + e23_e23 - e14_e14 - e24_e24 - e34_e34
-                        - e1234_e1234,
+                    e12_e24_plus_e13_e34 - s_e14_plus_e23_e1234,
+                    -s_e24_minus_e13_e1234 - e12_e14_minus_e23_e34,
+                    -s_e34_plus_e12_e1234 - e13_e14_plus_e23_e24,
+                    shared_2 + shared_3,
                 ],
             ]
         }
@@ -14997,26 +15158,43 @@ pub mod g4 {
             let e134_e134 = self.e134 * self.e134;
             let e134_e234 = two_e134 * self.e234;
             let e234_e234 = self.e234 * self.e234;
+            let e1_e1_minus_e234_e234 = e1_e1 - e234_e234;
+            let e2_e2_minus_e134_e134 = e2_e2 - e134_e134;
+            let e3_e3_minus_e124_e124 = e3_e3 - e124_e124;
+            let e4_e4_minus_e123_e123 = e4_e4 - e123_e123;
+            let e1_e2_plus_e134_e234 = e1_e2 + e134_e234;
+            let e1_e3_minus_e124_e234 = e1_e3 - e124_e234;
+            let e1_e4_plus_e123_e234 = e1_e4 + e123_e234;
+            let e1_e123_plus_e4_e234 = e1_e123 + e4_e234;
+            let e1_e124_minus_e3_e234 = e1_e124 - e3_e234;
+            let e1_e134_plus_e2_e234 = e1_e134 + e2_e234;
+            let e2_e3_plus_e124_e134 = e2_e3 + e124_e134;
+            let e2_e4_minus_e123_e134 = e2_e4 - e123_e134;
+            let e2_e123_minus_e4_e134 = e2_e123 - e4_e134;
+            let e2_e124_plus_e3_e134 = e2_e124 + e3_e134;
+            let e3_e4_plus_e123_e124 = e3_e4 + e123_e124;
+            let e3_e123_plus_e4_e124 = e3_e123 + e4_e124;
+            let shared_1 = e1_e1_minus_e234_e234 - e2_e2_minus_e134_e134;
+            let shared_2 = e1_e1_minus_e234_e234 + e2_e2_minus_e134_e134;
+            let shared_3 = e3_e3_minus_e124_e124 - e4_e4_minus_e123_e123;
+            let shared_4 = e3_e3_minus_e124_e124 + e4_e4_minus_e123_e123;
             Vector {
-                e1: (e2_e2 + e3_e3 + e4_e4 + e234_e234 - e1_e1 - e123_e123 - e124_e124
-                    - e134_e134) * x.e1 + (e3_e123 + e4_e124 - e1_e2 - e134_e234) * x.e2
-                    + (e4_e134 + e124_e234 - e1_e3 - e2_e123) * x.e3
-                    + (-e1_e4 - e2_e124 - e3_e134 - e123_e234) * x.e4,
-                e2: (-e1_e2 - e3_e123 - e4_e124 - e134_e234) * x.e1
-                    + (e1_e1 + e3_e3 + e4_e4 + e134_e134 - e2_e2 - e123_e123 - e124_e124
-                        - e234_e234) * x.e2
-                    + (e1_e123 + e4_e234 - e2_e3 - e124_e134) * x.e3
-                    + (e1_e124 + e123_e134 - e2_e4 - e3_e234) * x.e4,
-                e3: (e2_e123 + e124_e234 - e1_e3 - e4_e134) * x.e1
-                    + (-e1_e123 - e2_e3 - e4_e234 - e124_e134) * x.e2
-                    + (e1_e1 + e2_e2 + e4_e4 + e124_e124 - e3_e3 - e123_e123 - e134_e134
-                        - e234_e234) * x.e3
-                    + (e1_e134 + e2_e234 - e3_e4 - e123_e124) * x.e4,
-                e4: (e2_e124 + e3_e134 - e1_e4 - e123_e234) * x.e1
-                    + (e3_e234 + e123_e134 - e1_e124 - e2_e4) * x.e2
-                    + (-e1_e134 - e2_e234 - e3_e4 - e123_e124) * x.e3
-                    + (e1_e1 + e2_e2 + e3_e3 + e123_e123 - e4_e4 - e124_e124 - e134_e134
-                        - e234_e234) * x.e4,
+                e1: (shared_4 - shared_1) * x.e1
+                    + (e3_e123_plus_e4_e124 - e1_e2_plus_e134_e234) * x.e2
+                    - (e1_e3_minus_e124_e234 + e2_e123_minus_e4_e134) * x.e3
+                    - (e1_e4_plus_e123_e234 + e2_e124_plus_e3_e134) * x.e4,
+                e2: (shared_1 + shared_4) * x.e2
+                    + (e1_e123_plus_e4_e234 - e2_e3_plus_e124_e134) * x.e3
+                    + (e1_e124_minus_e3_e234 - e2_e4_minus_e123_e134) * x.e4
+                    - (e1_e2_plus_e134_e234 + e3_e123_plus_e4_e124) * x.e1,
+                e3: (e2_e123_minus_e4_e134 - e1_e3_minus_e124_e234) * x.e1
+                    + (shared_2 - shared_3) * x.e3
+                    + (e1_e134_plus_e2_e234 - e3_e4_plus_e123_e124) * x.e4
+                    - (e1_e123_plus_e4_e234 + e2_e3_plus_e124_e134) * x.e2,
+                e4: (e2_e124_plus_e3_e134 - e1_e4_plus_e123_e234) * x.e1
+                    + (shared_2 + shared_3) * x.e4
+                    - (e1_e124_minus_e3_e234 + e2_e4_minus_e123_e134) * x.e2
+                    - (e1_e134_plus_e2_e234 + e3_e4_plus_e123_e124) * x.e3,
             }
         }
     }
@@ -15066,49 +15244,67 @@ pub mod g4 {
             let e134_e134 = self.e134 * self.e134;
             let e134_e234 = two_e134 * self.e234;
             let e234_e234 = self.e234 * self.e234;
+            let e1_e1_plus_e234_e234 = e1_e1 + e234_e234;
+            let e2_e2_plus_e134_e134 = e2_e2 + e134_e134;
+            let e3_e3_plus_e124_e124 = e3_e3 + e124_e124;
+            let e4_e4_plus_e123_e123 = e4_e4 + e123_e123;
+            let e1_e2_minus_e134_e234 = e1_e2 - e134_e234;
+            let e1_e3_plus_e124_e234 = e1_e3 + e124_e234;
+            let e1_e4_minus_e123_e234 = e1_e4 - e123_e234;
+            let e1_e123_minus_e4_e234 = e1_e123 - e4_e234;
+            let e1_e124_plus_e3_e234 = e1_e124 + e3_e234;
+            let e1_e134_minus_e2_e234 = e1_e134 - e2_e234;
+            let e1_e234_plus_e2_e134 = e1_e234 + e2_e134;
+            let e2_e3_minus_e124_e134 = e2_e3 - e124_e134;
+            let e2_e4_plus_e123_e134 = e2_e4 + e123_e134;
+            let e2_e123_plus_e4_e134 = e2_e123 + e4_e134;
+            let e2_e124_minus_e3_e134 = e2_e124 - e3_e134;
+            let e3_e4_minus_e123_e124 = e3_e4 - e123_e124;
+            let e3_e123_minus_e4_e124 = e3_e123 - e4_e124;
+            let e3_e124_plus_e4_e123 = e3_e124 + e4_e123;
+            let shared_1 = e1_e1_plus_e234_e234 - e2_e2_plus_e134_e134;
+            let shared_2 = e3_e3_plus_e124_e124 - e4_e4_plus_e123_e123;
+            let e1_e234_minus_e2_e134 = e1_e234 - e2_e134;
+            let e3_e124_minus_e4_e123 = e3_e124 - e4_e123;
+            let shared_3 = e1_e1_plus_e234_e234 + e2_e2_plus_e134_e134;
+            let shared_4 = e3_e3_plus_e124_e124 + e4_e4_plus_e123_e123;
+            let shared_5 = e1_e2_minus_e134_e234 - e3_e123_minus_e4_e124;
+            let shared_6 = e1_e2_minus_e134_e234 + e3_e123_minus_e4_e124;
+            let shared_7 = e1_e3_plus_e124_e234 - e2_e123_plus_e4_e134;
+            let shared_8 = e1_e3_plus_e124_e234 + e2_e123_plus_e4_e134;
+            let shared_9 = e1_e4_minus_e123_e234 - e2_e124_minus_e3_e134;
+            let shared_10 = e1_e4_minus_e123_e234 + e2_e124_minus_e3_e134;
+            let shared_11 = e1_e123_minus_e4_e234 - e2_e3_minus_e124_e134;
+            let shared_12 = e1_e123_minus_e4_e234 + e2_e3_minus_e124_e134;
+            let shared_13 = e1_e124_plus_e3_e234 - e2_e4_plus_e123_e134;
+            let shared_14 = e1_e124_plus_e3_e234 + e2_e4_plus_e123_e134;
+            let shared_15 = e1_e134_minus_e2_e234 - e3_e4_minus_e123_e124;
+            let shared_16 = e1_e134_minus_e2_e234 + e3_e4_minus_e123_e124;
+            let shared_17 = e1_e234_plus_e2_e134 - e3_e124_plus_e4_e123;
+            let shared_18 = e1_e234_plus_e2_e134 + e3_e124_plus_e4_e123;
+            let shared_1_minus_shared_2 = shared_1 - shared_2;
+            let shared_1_plus_shared_2 = shared_1 + shared_2;
+            let shared_19 = e1_e234_minus_e2_e134 - e3_e124_minus_e4_e123;
+            let shared_3_minus_shared_4 = shared_3 - shared_4;
             Bivector {
-                e12: (e3_e3 + e4_e4 + e123_e123 + e124_e124 - e1_e1 - e2_e2 - e134_e134
-                    - e234_e234) * x.e12
-                    + (e4_e234 + e124_e134 - e1_e123 - e2_e3) * x.e13
-                    + (-e1_e124 - e2_e4 - e3_e234 - e123_e134) * x.e14
-                    + (e1_e3 + e124_e234 - e2_e123 - e4_e134) * x.e23
-                    + (e1_e4 + e3_e134 - e2_e124 - e123_e234) * x.e24
-                    + (e1_e234 + e4_e123 - e2_e134 - e3_e124) * x.e34,
-                e13: (e1_e123 + e124_e134 - e2_e3 - e4_e234) * x.e12
-                    + (e2_e2 + e4_e4 + e123_e123 + e134_e134 - e1_e1 - e3_e3 - e124_e124
-                        - e234_e234) * x.e13
-                    + (e2_e234 + e123_e124 - e1_e134 - e3_e4) * x.e14
-                    + (e4_e124 + e134_e234 - e1_e2 - e3_e123) * x.e23
-                    + (-e1_e234 - e2_e134 - e3_e124 - e4_e123) * x.e24
-                    + (e1_e4 + e2_e124 - e3_e134 - e123_e234) * x.e34,
-                e14: (e1_e124 + e3_e234 - e2_e4 - e123_e134) * x.e12
-                    + (e1_e134 + e123_e124 - e2_e234 - e3_e4) * x.e13
-                    + (e2_e2 + e3_e3 + e124_e124 + e134_e134 - e1_e1 - e4_e4 - e123_e123
-                        - e234_e234) * x.e14
-                    + (e1_e234 + e2_e134 - e3_e124 - e4_e123) * x.e23
-                    + (e3_e123 + e134_e234 - e1_e2 - e4_e124) * x.e24
-                    + (-e1_e3 - e2_e123 - e4_e134 - e124_e234) * x.e34,
-                e23: (e1_e3 + e2_e123 + e4_e134 + e124_e234) * x.e12
-                    + (e3_e123 + e134_e234 - e1_e2 - e4_e124) * x.e13
-                    + (e3_e124 + e4_e123 - e1_e234 - e2_e134) * x.e14
-                    + (e1_e1 + e4_e4 + e123_e123 + e234_e234 - e2_e2 - e3_e3 - e124_e124
-                        - e134_e134) * x.e23
-                    + (e1_e134 + e123_e124 - e2_e234 - e3_e4) * x.e24
-                    + (e2_e4 + e123_e134 - e1_e124 - e3_e234) * x.e34,
-                e24: (e1_e4 + e2_e124 - e3_e134 - e123_e234) * x.e12
-                    + (e1_e234 + e2_e134 + e3_e124 + e4_e123) * x.e13
-                    + (e4_e124 + e134_e234 - e1_e2 - e3_e123) * x.e14
-                    + (e2_e234 + e123_e124 - e1_e134 - e3_e4) * x.e23
-                    + (e1_e1 + e3_e3 + e124_e124 + e234_e234 - e2_e2 - e4_e4 - e123_e123
-                        - e134_e134) * x.e24
-                    + (e1_e123 + e124_e134 - e2_e3 - e4_e234) * x.e34,
-                e34: (e2_e134 + e3_e124 - e1_e234 - e4_e123) * x.e12
-                    + (e1_e4 + e3_e134 - e2_e124 - e123_e234) * x.e13
-                    + (e2_e123 + e4_e134 - e1_e3 - e124_e234) * x.e14
-                    + (e1_e124 + e2_e4 + e3_e234 + e123_e134) * x.e23
-                    + (e4_e234 + e124_e134 - e1_e123 - e2_e3) * x.e24
-                    + (e1_e1 + e2_e2 + e134_e134 + e234_e234 - e3_e3 - e4_e4 - e123_e123
-                        - e124_e124) * x.e34,
+                e12: shared_7 * x.e23 + shared_9 * x.e24 + shared_19 * x.e34
+                    - shared_3_minus_shared_4 * x.e12 - shared_12 * x.e13
+                    - shared_14 * x.e14,
+                e13: shared_11 * x.e12 + shared_10 * x.e34
+                    - shared_1_plus_shared_2 * x.e13 - shared_16 * x.e14
+                    - shared_6 * x.e23 - shared_18 * x.e24,
+                e14: shared_13 * x.e12 + shared_15 * x.e13 + shared_17 * x.e23
+                    - shared_1_minus_shared_2 * x.e14 - shared_5 * x.e24
+                    - shared_8 * x.e34,
+                e23: shared_8 * x.e12 + shared_1_minus_shared_2 * x.e23
+                    + shared_15 * x.e24 - shared_5 * x.e13 - shared_17 * x.e14
+                    - shared_13 * x.e34,
+                e24: shared_10 * x.e12 + shared_18 * x.e13
+                    + shared_1_plus_shared_2 * x.e24 + shared_11 * x.e34
+                    - shared_6 * x.e14 - shared_16 * x.e23,
+                e34: shared_9 * x.e13 + shared_14 * x.e23
+                    + shared_3_minus_shared_4 * x.e34 - shared_19 * x.e12
+                    - shared_7 * x.e14 - shared_12 * x.e24,
             }
         }
     }
@@ -15154,27 +15350,43 @@ pub mod g4 {
             let e134_e134 = self.e134 * self.e134;
             let e134_e234 = two_e134 * self.e234;
             let e234_e234 = self.e234 * self.e234;
+            let e1_e1_minus_e234_e234 = e1_e1 - e234_e234;
+            let e2_e2_minus_e134_e134 = e2_e2 - e134_e134;
+            let e3_e3_minus_e124_e124 = e3_e3 - e124_e124;
+            let e4_e4_minus_e123_e123 = e4_e4 - e123_e123;
+            let e1_e2_plus_e134_e234 = e1_e2 + e134_e234;
+            let e1_e3_minus_e124_e234 = e1_e3 - e124_e234;
+            let e1_e4_plus_e123_e234 = e1_e4 + e123_e234;
+            let e1_e123_plus_e4_e234 = e1_e123 + e4_e234;
+            let e1_e124_minus_e3_e234 = e1_e124 - e3_e234;
+            let e1_e134_plus_e2_e234 = e1_e134 + e2_e234;
+            let e2_e3_plus_e124_e134 = e2_e3 + e124_e134;
+            let e2_e4_minus_e123_e134 = e2_e4 - e123_e134;
+            let e2_e123_minus_e4_e134 = e2_e123 - e4_e134;
+            let e2_e124_plus_e3_e134 = e2_e124 + e3_e134;
+            let e3_e4_plus_e123_e124 = e3_e4 + e123_e124;
+            let e3_e123_plus_e4_e124 = e3_e123 + e4_e124;
+            let shared_1 = e1_e1_minus_e234_e234 - e2_e2_minus_e134_e134;
+            let shared_2 = e1_e1_minus_e234_e234 + e2_e2_minus_e134_e134;
+            let shared_3 = e3_e3_minus_e124_e124 - e4_e4_minus_e123_e123;
+            let shared_4 = e3_e3_minus_e124_e124 + e4_e4_minus_e123_e123;
             Trivector {
-                e123: (e4_e4 + e124_e124 + e134_e134 + e234_e234 - e1_e1 - e2_e2 - e3_e3
-                    - e123_e123) * x.e123
-                    + (-e1_e134 - e2_e234 - e3_e4 - e123_e124) * x.e124
-                    + (e1_e124 + e2_e4 - e3_e234 - e123_e134) * x.e134
-                    + (e2_e124 + e3_e134 - e1_e4 - e123_e234) * x.e234,
-                e124: (e1_e134 + e2_e234 - e3_e4 - e123_e124) * x.e123
-                    + (e3_e3 + e123_e123 + e134_e134 + e234_e234 - e1_e1 - e2_e2 - e4_e4
-                        - e124_e124) * x.e124
-                    + (-e1_e123 - e2_e3 - e4_e234 - e124_e134) * x.e134
-                    + (e1_e3 + e4_e134 - e2_e123 - e124_e234) * x.e234,
-                e134: (e2_e4 + e3_e234 - e1_e124 - e123_e134) * x.e123
-                    + (e1_e123 + e4_e234 - e2_e3 - e124_e134) * x.e124
-                    + (e2_e2 + e123_e123 + e124_e124 + e234_e234 - e1_e1 - e3_e3 - e4_e4
-                        - e134_e134) * x.e134
-                    + (-e1_e2 - e3_e123 - e4_e124 - e134_e234) * x.e234,
-                e234: (-e1_e4 - e2_e124 - e3_e134 - e123_e234) * x.e123
-                    + (e1_e3 + e2_e123 - e4_e134 - e124_e234) * x.e124
-                    + (e3_e123 + e4_e124 - e1_e2 - e134_e234) * x.e134
-                    + (e1_e1 + e123_e123 + e124_e124 + e134_e134 - e2_e2 - e3_e3 - e4_e4
-                        - e234_e234) * x.e234,
+                e123: (e1_e124_minus_e3_e234 + e2_e4_minus_e123_e134) * x.e134
+                    + (e2_e124_plus_e3_e134 - e1_e4_plus_e123_e234) * x.e234
+                    - (shared_2 + shared_3) * x.e123
+                    - (e1_e134_plus_e2_e234 + e3_e4_plus_e123_e124) * x.e124,
+                e124: (e1_e134_plus_e2_e234 - e3_e4_plus_e123_e124) * x.e123
+                    + (shared_3 - shared_2) * x.e124
+                    + (e1_e3_minus_e124_e234 - e2_e123_minus_e4_e134) * x.e234
+                    - (e1_e123_plus_e4_e234 + e2_e3_plus_e124_e134) * x.e134,
+                e134: (e2_e4_minus_e123_e134 - e1_e124_minus_e3_e234) * x.e123
+                    + (e1_e123_plus_e4_e234 - e2_e3_plus_e124_e134) * x.e124
+                    - (shared_1 + shared_4) * x.e134
+                    - (e1_e2_plus_e134_e234 + e3_e123_plus_e4_e124) * x.e234,
+                e234: (e1_e3_minus_e124_e234 + e2_e123_minus_e4_e134) * x.e124
+                    + (e3_e123_plus_e4_e124 - e1_e2_plus_e134_e234) * x.e134
+                    + (shared_1 - shared_4) * x.e234
+                    - (e1_e4_plus_e123_e234 + e2_e124_plus_e3_e134) * x.e123,
             }
         }
     }
@@ -15190,8 +15402,8 @@ pub mod g4 {
             let e134_e134 = self.e134 * self.e134;
             let e234_e234 = self.e234 * self.e234;
             Quadvector {
-                e1234: (-e1_e1 - e2_e2 - e3_e3 - e4_e4 - e123_e123 - e124_e124
-                    - e134_e134 - e234_e234) * x.e1234,
+                e1234: -(e1_e1 + e2_e2 + e3_e3 + e4_e4 + e123_e123 + e124_e124
+                    + e134_e134 + e234_e234) * x.e1234,
             }
         }
     }
@@ -15241,55 +15453,71 @@ pub mod g4 {
             let e134_e134 = self.e134 * self.e134;
             let e134_e234 = two_e134 * self.e234;
             let e234_e234 = self.e234 * self.e234;
+            let e1_e1_plus_e234_e234 = e1_e1 + e234_e234;
+            let e2_e2_plus_e134_e134 = e2_e2 + e134_e134;
+            let e3_e3_plus_e124_e124 = e3_e3 + e124_e124;
+            let e4_e4_plus_e123_e123 = e4_e4 + e123_e123;
+            let e1_e2_minus_e134_e234 = e1_e2 - e134_e234;
+            let e1_e3_plus_e124_e234 = e1_e3 + e124_e234;
+            let e1_e4_minus_e123_e234 = e1_e4 - e123_e234;
+            let e1_e123_minus_e4_e234 = e1_e123 - e4_e234;
+            let e1_e124_plus_e3_e234 = e1_e124 + e3_e234;
+            let e1_e134_minus_e2_e234 = e1_e134 - e2_e234;
+            let e1_e234_minus_e2_e134 = e1_e234 - e2_e134;
+            let e1_e234_plus_e2_e134 = e1_e234 + e2_e134;
+            let e2_e3_minus_e124_e134 = e2_e3 - e124_e134;
+            let e2_e4_plus_e123_e134 = e2_e4 + e123_e134;
+            let e2_e123_plus_e4_e134 = e2_e123 + e4_e134;
+            let e2_e124_minus_e3_e134 = e2_e124 - e3_e134;
+            let e3_e4_minus_e123_e124 = e3_e4 - e123_e124;
+            let e3_e123_minus_e4_e124 = e3_e123 - e4_e124;
+            let e3_e124_minus_e4_e123 = e3_e124 - e4_e123;
+            let e3_e124_plus_e4_e123 = e3_e124 + e4_e123;
+            let shared_1 = e1_e1_plus_e234_e234 - e2_e2_plus_e134_e134;
+            let shared_2 = e1_e1_plus_e234_e234 + e2_e2_plus_e134_e134;
+            let shared_3 = e3_e3_plus_e124_e124 - e4_e4_plus_e123_e123;
+            let shared_4 = e3_e3_plus_e124_e124 + e4_e4_plus_e123_e123;
+            let shared_5 = e1_e2_minus_e134_e234 - e3_e123_minus_e4_e124;
+            let shared_6 = e1_e2_minus_e134_e234 + e3_e123_minus_e4_e124;
+            let shared_7 = e1_e3_plus_e124_e234 - e2_e123_plus_e4_e134;
+            let shared_8 = e1_e3_plus_e124_e234 + e2_e123_plus_e4_e134;
+            let shared_9 = e1_e4_minus_e123_e234 - e2_e124_minus_e3_e134;
+            let shared_10 = e1_e4_minus_e123_e234 + e2_e124_minus_e3_e134;
+            let shared_11 = e1_e123_minus_e4_e234 - e2_e3_minus_e124_e134;
+            let shared_12 = e1_e123_minus_e4_e234 + e2_e3_minus_e124_e134;
+            let shared_13 = e1_e124_plus_e3_e234 - e2_e4_plus_e123_e134;
+            let shared_14 = e1_e124_plus_e3_e234 + e2_e4_plus_e123_e134;
+            let shared_15 = e1_e134_minus_e2_e234 - e3_e4_minus_e123_e124;
+            let shared_16 = e1_e134_minus_e2_e234 + e3_e4_minus_e123_e124;
+            let shared_17 = e1_e234_minus_e2_e134 - e3_e124_minus_e4_e123;
+            let shared_18 = e1_e234_minus_e2_e134 + e3_e124_minus_e4_e123;
+            let shared_19 = e1_e234_plus_e2_e134 - e3_e124_plus_e4_e123;
+            let shared_20 = e1_e234_plus_e2_e134 + e3_e124_plus_e4_e123;
+            let shared_1_minus_shared_3 = shared_1 - shared_3;
+            let shared_1_plus_shared_3 = shared_1 + shared_3;
+            let shared_2_minus_shared_4 = shared_2 - shared_4;
+            let shared_2_plus_shared_4 = shared_2 + shared_4;
             Even {
-                s: (e1_e1 + e2_e2 + e3_e3 + e4_e4 + e123_e123 + e124_e124 + e134_e134
-                    + e234_e234) * x.s
-                    + (e1_e234 + e3_e124 - e2_e134 - e4_e123) * x.e1234,
-                e12: (e3_e3 + e4_e4 + e123_e123 + e124_e124 - e1_e1 - e2_e2 - e134_e134
-                    - e234_e234) * x.e12
-                    + (e4_e234 + e124_e134 - e1_e123 - e2_e3) * x.e13
-                    + (-e1_e124 - e2_e4 - e3_e234 - e123_e134) * x.e14
-                    + (e1_e3 + e124_e234 - e2_e123 - e4_e134) * x.e23
-                    + (e1_e4 + e3_e134 - e2_e124 - e123_e234) * x.e24
-                    + (e1_e234 + e4_e123 - e2_e134 - e3_e124) * x.e34,
-                e13: (e1_e123 + e124_e134 - e2_e3 - e4_e234) * x.e12
-                    + (e2_e2 + e4_e4 + e123_e123 + e134_e134 - e1_e1 - e3_e3 - e124_e124
-                        - e234_e234) * x.e13
-                    + (e2_e234 + e123_e124 - e1_e134 - e3_e4) * x.e14
-                    + (e4_e124 + e134_e234 - e1_e2 - e3_e123) * x.e23
-                    + (-e1_e234 - e2_e134 - e3_e124 - e4_e123) * x.e24
-                    + (e1_e4 + e2_e124 - e3_e134 - e123_e234) * x.e34,
-                e14: (e1_e124 + e3_e234 - e2_e4 - e123_e134) * x.e12
-                    + (e1_e134 + e123_e124 - e2_e234 - e3_e4) * x.e13
-                    + (e2_e2 + e3_e3 + e124_e124 + e134_e134 - e1_e1 - e4_e4 - e123_e123
-                        - e234_e234) * x.e14
-                    + (e1_e234 + e2_e134 - e3_e124 - e4_e123) * x.e23
-                    + (e3_e123 + e134_e234 - e1_e2 - e4_e124) * x.e24
-                    + (-e1_e3 - e2_e123 - e4_e134 - e124_e234) * x.e34,
-                e23: (e1_e3 + e2_e123 + e4_e134 + e124_e234) * x.e12
-                    + (e3_e123 + e134_e234 - e1_e2 - e4_e124) * x.e13
-                    + (e3_e124 + e4_e123 - e1_e234 - e2_e134) * x.e14
-                    + (e1_e1 + e4_e4 + e123_e123 + e234_e234 - e2_e2 - e3_e3 - e124_e124
-                        - e134_e134) * x.e23
-                    + (e1_e134 + e123_e124 - e2_e234 - e3_e4) * x.e24
-                    + (e2_e4 + e123_e134 - e1_e124 - e3_e234) * x.e34,
-                e24: (e1_e4 + e2_e124 - e3_e134 - e123_e234) * x.e12
-                    + (e1_e234 + e2_e134 + e3_e124 + e4_e123) * x.e13
-                    + (e4_e124 + e134_e234 - e1_e2 - e3_e123) * x.e14
-                    + (e2_e234 + e123_e124 - e1_e134 - e3_e4) * x.e23
-                    + (e1_e1 + e3_e3 + e124_e124 + e234_e234 - e2_e2 - e4_e4 - e123_e123
-                        - e134_e134) * x.e24
-                    + (e1_e123 + e124_e134 - e2_e3 - e4_e234) * x.e34,
-                e34: (e2_e134 + e3_e124 - e1_e234 - e4_e123) * x.e12
-                    + (e1_e4 + e3_e134 - e2_e124 - e123_e234) * x.e13
-                    + (e2_e123 + e4_e134 - e1_e3 - e124_e234) * x.e14
-                    + (e1_e124 + e2_e4 + e3_e234 + e123_e134) * x.e23
-                    + (e4_e234 + e124_e134 - e1_e123 - e2_e3) * x.e24
-                    + (e1_e1 + e2_e2 + e134_e134 + e234_e234 - e3_e3 - e4_e4 - e123_e123
-                        - e124_e124) * x.e34,
-                e1234: (e2_e134 + e4_e123 - e1_e234 - e3_e124) * x.s
-                    + (-e1_e1 - e2_e2 - e3_e3 - e4_e4 - e123_e123 - e124_e124 - e134_e134
-                        - e234_e234) * x.e1234,
+                s: shared_2_plus_shared_4 * x.s + shared_18 * x.e1234,
+                e12: shared_7 * x.e23 + shared_9 * x.e24 + shared_17 * x.e34
+                    - shared_2_minus_shared_4 * x.e12 - shared_12 * x.e13
+                    - shared_14 * x.e14,
+                e13: shared_11 * x.e12 + shared_10 * x.e34
+                    - shared_1_plus_shared_3 * x.e13 - shared_16 * x.e14
+                    - shared_6 * x.e23 - shared_20 * x.e24,
+                e14: shared_13 * x.e12 + shared_15 * x.e13 + shared_19 * x.e23
+                    - shared_1_minus_shared_3 * x.e14 - shared_5 * x.e24
+                    - shared_8 * x.e34,
+                e23: shared_8 * x.e12 + shared_1_minus_shared_3 * x.e23
+                    + shared_15 * x.e24 - shared_5 * x.e13 - shared_19 * x.e14
+                    - shared_13 * x.e34,
+                e24: shared_10 * x.e12 + shared_20 * x.e13
+                    + shared_1_plus_shared_3 * x.e24 + shared_11 * x.e34
+                    - shared_6 * x.e14 - shared_16 * x.e23,
+                e34: shared_9 * x.e13 + shared_14 * x.e23
+                    + shared_2_minus_shared_4 * x.e34 - shared_17 * x.e12
+                    - shared_7 * x.e14 - shared_12 * x.e24,
+                e1234: -shared_18 * x.s - shared_2_plus_shared_4 * x.e1234,
             }
         }
     }
@@ -15335,46 +15563,59 @@ pub mod g4 {
             let e134_e134 = self.e134 * self.e134;
             let e134_e234 = two_e134 * self.e234;
             let e234_e234 = self.e234 * self.e234;
+            let e1_e1_minus_e234_e234 = e1_e1 - e234_e234;
+            let e2_e2_minus_e134_e134 = e2_e2 - e134_e134;
+            let e3_e3_minus_e124_e124 = e3_e3 - e124_e124;
+            let e4_e4_minus_e123_e123 = e4_e4 - e123_e123;
+            let e1_e2_plus_e134_e234 = e1_e2 + e134_e234;
+            let e1_e3_minus_e124_e234 = e1_e3 - e124_e234;
+            let e1_e4_plus_e123_e234 = e1_e4 + e123_e234;
+            let e1_e123_plus_e4_e234 = e1_e123 + e4_e234;
+            let e1_e124_minus_e3_e234 = e1_e124 - e3_e234;
+            let e1_e134_plus_e2_e234 = e1_e134 + e2_e234;
+            let e2_e3_plus_e124_e134 = e2_e3 + e124_e134;
+            let e2_e4_minus_e123_e134 = e2_e4 - e123_e134;
+            let e2_e123_minus_e4_e134 = e2_e123 - e4_e134;
+            let e2_e124_plus_e3_e134 = e2_e124 + e3_e134;
+            let e3_e4_plus_e123_e124 = e3_e4 + e123_e124;
+            let e3_e123_plus_e4_e124 = e3_e123 + e4_e124;
+            let shared_1 = e1_e1_minus_e234_e234 - e2_e2_minus_e134_e134;
+            let shared_2 = e1_e1_minus_e234_e234 + e2_e2_minus_e134_e134;
+            let shared_3 = e3_e3_minus_e124_e124 - e4_e4_minus_e123_e123;
+            let shared_4 = e3_e3_minus_e124_e124 + e4_e4_minus_e123_e123;
+            let shared_5 = e1_e2_plus_e134_e234 - e3_e123_plus_e4_e124;
+            let shared_6 = e1_e2_plus_e134_e234 + e3_e123_plus_e4_e124;
+            let shared_7 = e1_e3_minus_e124_e234 - e2_e123_minus_e4_e134;
+            let shared_8 = e1_e3_minus_e124_e234 + e2_e123_minus_e4_e134;
+            let shared_9 = e1_e4_plus_e123_e234 - e2_e124_plus_e3_e134;
+            let shared_10 = e1_e4_plus_e123_e234 + e2_e124_plus_e3_e134;
+            let shared_11 = e1_e123_plus_e4_e234 - e2_e3_plus_e124_e134;
+            let shared_12 = e1_e123_plus_e4_e234 + e2_e3_plus_e124_e134;
+            let shared_13 = e1_e124_minus_e3_e234 - e2_e4_minus_e123_e134;
+            let shared_14 = e1_e124_minus_e3_e234 + e2_e4_minus_e123_e134;
+            let shared_15 = e1_e134_plus_e2_e234 - e3_e4_plus_e123_e124;
+            let shared_16 = e1_e134_plus_e2_e234 + e3_e4_plus_e123_e124;
+            let shared_1_minus_shared_4 = shared_1 - shared_4;
+            let shared_1_plus_shared_4 = shared_1 + shared_4;
+            let shared_2_minus_shared_3 = shared_2 - shared_3;
+            let shared_2_plus_shared_3 = shared_2 + shared_3;
             Odd {
-                e1: (e2_e2 + e3_e3 + e4_e4 + e234_e234 - e1_e1 - e123_e123 - e124_e124
-                    - e134_e134) * x.e1 + (e3_e123 + e4_e124 - e1_e2 - e134_e234) * x.e2
-                    + (e4_e134 + e124_e234 - e1_e3 - e2_e123) * x.e3
-                    + (-e1_e4 - e2_e124 - e3_e134 - e123_e234) * x.e4,
-                e2: (-e1_e2 - e3_e123 - e4_e124 - e134_e234) * x.e1
-                    + (e1_e1 + e3_e3 + e4_e4 + e134_e134 - e2_e2 - e123_e123 - e124_e124
-                        - e234_e234) * x.e2
-                    + (e1_e123 + e4_e234 - e2_e3 - e124_e134) * x.e3
-                    + (e1_e124 + e123_e134 - e2_e4 - e3_e234) * x.e4,
-                e3: (e2_e123 + e124_e234 - e1_e3 - e4_e134) * x.e1
-                    + (-e1_e123 - e2_e3 - e4_e234 - e124_e134) * x.e2
-                    + (e1_e1 + e2_e2 + e4_e4 + e124_e124 - e3_e3 - e123_e123 - e134_e134
-                        - e234_e234) * x.e3
-                    + (e1_e134 + e2_e234 - e3_e4 - e123_e124) * x.e4,
-                e4: (e2_e124 + e3_e134 - e1_e4 - e123_e234) * x.e1
-                    + (e3_e234 + e123_e134 - e1_e124 - e2_e4) * x.e2
-                    + (-e1_e134 - e2_e234 - e3_e4 - e123_e124) * x.e3
-                    + (e1_e1 + e2_e2 + e3_e3 + e123_e123 - e4_e4 - e124_e124 - e134_e134
-                        - e234_e234) * x.e4,
-                e123: (e4_e4 + e124_e124 + e134_e134 + e234_e234 - e1_e1 - e2_e2 - e3_e3
-                    - e123_e123) * x.e123
-                    + (-e1_e134 - e2_e234 - e3_e4 - e123_e124) * x.e124
-                    + (e1_e124 + e2_e4 - e3_e234 - e123_e134) * x.e134
-                    + (e2_e124 + e3_e134 - e1_e4 - e123_e234) * x.e234,
-                e124: (e1_e134 + e2_e234 - e3_e4 - e123_e124) * x.e123
-                    + (e3_e3 + e123_e123 + e134_e134 + e234_e234 - e1_e1 - e2_e2 - e4_e4
-                        - e124_e124) * x.e124
-                    + (-e1_e123 - e2_e3 - e4_e234 - e124_e134) * x.e134
-                    + (e1_e3 + e4_e134 - e2_e123 - e124_e234) * x.e234,
-                e134: (e2_e4 + e3_e234 - e1_e124 - e123_e134) * x.e123
-                    + (e1_e123 + e4_e234 - e2_e3 - e124_e134) * x.e124
-                    + (e2_e2 + e123_e123 + e124_e124 + e234_e234 - e1_e1 - e3_e3 - e4_e4
-                        - e134_e134) * x.e134
-                    + (-e1_e2 - e3_e123 - e4_e124 - e134_e234) * x.e234,
-                e234: (-e1_e4 - e2_e124 - e3_e134 - e123_e234) * x.e123
-                    + (e1_e3 + e2_e123 - e4_e134 - e124_e234) * x.e124
-                    + (e3_e123 + e4_e124 - e1_e2 - e134_e234) * x.e134
-                    + (e1_e1 + e123_e123 + e124_e124 + e134_e134 - e2_e2 - e3_e3 - e4_e4
-                        - e234_e234) * x.e234,
+                e1: -shared_1_minus_shared_4 * x.e1 - shared_5 * x.e2 - shared_8 * x.e3
+                    - shared_10 * x.e4,
+                e2: shared_1_plus_shared_4 * x.e2 + shared_11 * x.e3 + shared_13 * x.e4
+                    - shared_6 * x.e1,
+                e3: shared_2_minus_shared_3 * x.e3 + shared_15 * x.e4 - shared_7 * x.e1
+                    - shared_12 * x.e2,
+                e4: shared_2_plus_shared_3 * x.e4 - shared_9 * x.e1 - shared_14 * x.e2
+                    - shared_16 * x.e3,
+                e123: shared_14 * x.e134 - shared_2_plus_shared_3 * x.e123
+                    - shared_16 * x.e124 - shared_9 * x.e234,
+                e124: shared_15 * x.e123 + shared_7 * x.e234
+                    - shared_2_minus_shared_3 * x.e124 - shared_12 * x.e134,
+                e134: shared_11 * x.e124 - shared_13 * x.e123
+                    - shared_1_plus_shared_4 * x.e134 - shared_6 * x.e234,
+                e234: shared_8 * x.e124 + shared_1_minus_shared_4 * x.e234
+                    - shared_10 * x.e123 - shared_5 * x.e134,
             }
         }
     }
@@ -15424,94 +15665,123 @@ pub mod g4 {
             let e134_e134 = self.e134 * self.e134;
             let e134_e234 = two_e134 * self.e234;
             let e234_e234 = self.e234 * self.e234;
+            let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
+            let e1_e1_plus_e2_e2 = e1_e1 + e2_e2;
+            let e3_e3_minus_e4_e4 = e3_e3 - e4_e4;
+            let e3_e3_plus_e4_e4 = e3_e3 + e4_e4;
+            let e123_e123_minus_e124_e124 = e123_e123 - e124_e124;
+            let e123_e123_plus_e124_e124 = e123_e123 + e124_e124;
+            let e134_e134_minus_e234_e234 = e134_e134 - e234_e234;
+            let e134_e134_plus_e234_e234 = e134_e134 + e234_e234;
+            let e1_e2_minus_e3_e123 = e1_e2 - e3_e123;
+            let e1_e2_plus_e3_e123 = e1_e2 + e3_e123;
+            let e1_e3_minus_e2_e123 = e1_e3 - e2_e123;
+            let e1_e3_plus_e2_e123 = e1_e3 + e2_e123;
+            let e1_e4_minus_e2_e124 = e1_e4 - e2_e124;
+            let e1_e4_plus_e2_e124 = e1_e4 + e2_e124;
+            let e1_e123_minus_e2_e3 = e1_e123 - e2_e3;
+            let e1_e123_plus_e2_e3 = e1_e123 + e2_e3;
+            let e1_e124_minus_e2_e4 = e1_e124 - e2_e4;
+            let e1_e124_plus_e2_e4 = e1_e124 + e2_e4;
+            let e1_e134_minus_e2_e234 = e1_e134 - e2_e234;
+            let e1_e134_plus_e2_e234 = e1_e134 + e2_e234;
+            let e1_e234_minus_e2_e134 = e1_e234 - e2_e134;
+            let e1_e234_plus_e2_e134 = e1_e234 + e2_e134;
+            let e3_e4_minus_e123_e124 = e3_e4 - e123_e124;
+            let e3_e4_plus_e123_e124 = e3_e4 + e123_e124;
+            let e3_e124_minus_e4_e123 = e3_e124 - e4_e123;
+            let e3_e124_plus_e4_e123 = e3_e124 + e4_e123;
+            let e3_e134_minus_e123_e234 = e3_e134 - e123_e234;
+            let e3_e134_plus_e123_e234 = e3_e134 + e123_e234;
+            let e3_e234_minus_e123_e134 = e3_e234 - e123_e134;
+            let e3_e234_plus_e123_e134 = e3_e234 + e123_e134;
+            let e4_e124_minus_e134_e234 = e4_e124 - e134_e234;
+            let e4_e124_plus_e134_e234 = e4_e124 + e134_e234;
+            let e4_e134_minus_e124_e234 = e4_e134 - e124_e234;
+            let e4_e134_plus_e124_e234 = e4_e134 + e124_e234;
+            let e4_e234_minus_e124_e134 = e4_e234 - e124_e134;
+            let e4_e234_plus_e124_e134 = e4_e234 + e124_e134;
+            let shared_1 = e1_e1_minus_e2_e2 - e134_e134_minus_e234_e234;
+            let shared_2 = e1_e1_minus_e2_e2 + e134_e134_minus_e234_e234;
+            let shared_3 = e1_e1_plus_e2_e2 - e134_e134_plus_e234_e234;
+            let shared_4 = e1_e1_plus_e2_e2 + e134_e134_plus_e234_e234;
+            let shared_5 = e3_e3_minus_e4_e4 - e123_e123_minus_e124_e124;
+            let shared_6 = e3_e3_minus_e4_e4 + e123_e123_minus_e124_e124;
+            let shared_7 = e3_e3_plus_e4_e4 - e123_e123_plus_e124_e124;
+            let shared_8 = e3_e3_plus_e4_e4 + e123_e123_plus_e124_e124;
+            let shared_9 = e1_e2_minus_e3_e123 - e4_e124_minus_e134_e234;
+            let shared_10 = e1_e2_minus_e3_e123 + e4_e124_minus_e134_e234;
+            let shared_11 = e1_e2_plus_e3_e123 - e4_e124_plus_e134_e234;
+            let shared_12 = e1_e2_plus_e3_e123 + e4_e124_plus_e134_e234;
+            let shared_13 = e1_e3_minus_e2_e123 - e4_e134_minus_e124_e234;
+            let shared_14 = e1_e3_minus_e2_e123 + e4_e134_minus_e124_e234;
+            let shared_15 = e1_e3_plus_e2_e123 - e4_e134_plus_e124_e234;
+            let shared_16 = e1_e3_plus_e2_e123 + e4_e134_plus_e124_e234;
+            let shared_17 = e1_e4_minus_e2_e124 - e3_e134_minus_e123_e234;
+            let shared_18 = e1_e4_minus_e2_e124 + e3_e134_minus_e123_e234;
+            let shared_19 = e1_e4_plus_e2_e124 - e3_e134_plus_e123_e234;
+            let shared_20 = e1_e4_plus_e2_e124 + e3_e134_plus_e123_e234;
+            let shared_21 = e1_e123_minus_e2_e3 - e4_e234_minus_e124_e134;
+            let shared_22 = e1_e123_minus_e2_e3 + e4_e234_minus_e124_e134;
+            let shared_23 = e1_e123_plus_e2_e3 - e4_e234_plus_e124_e134;
+            let shared_24 = e1_e123_plus_e2_e3 + e4_e234_plus_e124_e134;
+            let shared_25 = e1_e124_minus_e2_e4 - e3_e234_minus_e123_e134;
+            let shared_26 = e1_e124_minus_e2_e4 + e3_e234_minus_e123_e134;
+            let shared_27 = e1_e124_plus_e2_e4 - e3_e234_plus_e123_e134;
+            let shared_28 = e1_e124_plus_e2_e4 + e3_e234_plus_e123_e134;
+            let shared_29 = e1_e134_minus_e2_e234 - e3_e4_minus_e123_e124;
+            let shared_30 = e1_e134_minus_e2_e234 + e3_e4_minus_e123_e124;
+            let shared_31 = e1_e134_plus_e2_e234 - e3_e4_plus_e123_e124;
+            let shared_32 = e1_e134_plus_e2_e234 + e3_e4_plus_e123_e124;
+            let shared_33 = e1_e234_minus_e2_e134 - e3_e124_minus_e4_e123;
+            let shared_34 = e1_e234_minus_e2_e134 + e3_e124_minus_e4_e123;
+            let shared_35 = e1_e234_plus_e2_e134 - e3_e124_plus_e4_e123;
+            let shared_36 = e1_e234_plus_e2_e134 + e3_e124_plus_e4_e123;
+            let shared_1_minus_shared_5 = shared_1 - shared_5;
+            let shared_1_plus_shared_5 = shared_1 + shared_5;
+            let shared_2_minus_shared_7 = shared_2 - shared_7;
+            let shared_2_plus_shared_7 = shared_2 + shared_7;
+            let shared_3_minus_shared_6 = shared_3 - shared_6;
+            let shared_3_plus_shared_6 = shared_3 + shared_6;
+            let shared_4_minus_shared_8 = shared_4 - shared_8;
+            let shared_4_plus_shared_8 = shared_4 + shared_8;
             Multivector {
-                s: (e1_e1 + e2_e2 + e3_e3 + e4_e4 + e123_e123 + e124_e124 + e134_e134
-                    + e234_e234) * x.s
-                    + (e1_e234 + e3_e124 - e2_e134 - e4_e123) * x.e1234,
-                e1: (e2_e2 + e3_e3 + e4_e4 + e234_e234 - e1_e1 - e123_e123 - e124_e124
-                    - e134_e134) * x.e1 + (e3_e123 + e4_e124 - e1_e2 - e134_e234) * x.e2
-                    + (e4_e134 + e124_e234 - e1_e3 - e2_e123) * x.e3
-                    + (-e1_e4 - e2_e124 - e3_e134 - e123_e234) * x.e4,
-                e2: (-e1_e2 - e3_e123 - e4_e124 - e134_e234) * x.e1
-                    + (e1_e1 + e3_e3 + e4_e4 + e134_e134 - e2_e2 - e123_e123 - e124_e124
-                        - e234_e234) * x.e2
-                    + (e1_e123 + e4_e234 - e2_e3 - e124_e134) * x.e3
-                    + (e1_e124 + e123_e134 - e2_e4 - e3_e234) * x.e4,
-                e3: (e2_e123 + e124_e234 - e1_e3 - e4_e134) * x.e1
-                    + (-e1_e123 - e2_e3 - e4_e234 - e124_e134) * x.e2
-                    + (e1_e1 + e2_e2 + e4_e4 + e124_e124 - e3_e3 - e123_e123 - e134_e134
-                        - e234_e234) * x.e3
-                    + (e1_e134 + e2_e234 - e3_e4 - e123_e124) * x.e4,
-                e4: (e2_e124 + e3_e134 - e1_e4 - e123_e234) * x.e1
-                    + (e3_e234 + e123_e134 - e1_e124 - e2_e4) * x.e2
-                    + (-e1_e134 - e2_e234 - e3_e4 - e123_e124) * x.e3
-                    + (e1_e1 + e2_e2 + e3_e3 + e123_e123 - e4_e4 - e124_e124 - e134_e134
-                        - e234_e234) * x.e4,
-                e12: (e3_e3 + e4_e4 + e123_e123 + e124_e124 - e1_e1 - e2_e2 - e134_e134
-                    - e234_e234) * x.e12
-                    + (e4_e234 + e124_e134 - e1_e123 - e2_e3) * x.e13
-                    + (-e1_e124 - e2_e4 - e3_e234 - e123_e134) * x.e14
-                    + (e1_e3 + e124_e234 - e2_e123 - e4_e134) * x.e23
-                    + (e1_e4 + e3_e134 - e2_e124 - e123_e234) * x.e24
-                    + (e1_e234 + e4_e123 - e2_e134 - e3_e124) * x.e34,
-                e13: (e1_e123 + e124_e134 - e2_e3 - e4_e234) * x.e12
-                    + (e2_e2 + e4_e4 + e123_e123 + e134_e134 - e1_e1 - e3_e3 - e124_e124
-                        - e234_e234) * x.e13
-                    + (e2_e234 + e123_e124 - e1_e134 - e3_e4) * x.e14
-                    + (e4_e124 + e134_e234 - e1_e2 - e3_e123) * x.e23
-                    + (-e1_e234 - e2_e134 - e3_e124 - e4_e123) * x.e24
-                    + (e1_e4 + e2_e124 - e3_e134 - e123_e234) * x.e34,
-                e14: (e1_e124 + e3_e234 - e2_e4 - e123_e134) * x.e12
-                    + (e1_e134 + e123_e124 - e2_e234 - e3_e4) * x.e13
-                    + (e2_e2 + e3_e3 + e124_e124 + e134_e134 - e1_e1 - e4_e4 - e123_e123
-                        - e234_e234) * x.e14
-                    + (e1_e234 + e2_e134 - e3_e124 - e4_e123) * x.e23
-                    + (e3_e123 + e134_e234 - e1_e2 - e4_e124) * x.e24
-                    + (-e1_e3 - e2_e123 - e4_e134 - e124_e234) * x.e34,
-                e23: (e1_e3 + e2_e123 + e4_e134 + e124_e234) * x.e12
-                    + (e3_e123 + e134_e234 - e1_e2 - e4_e124) * x.e13
-                    + (e3_e124 + e4_e123 - e1_e234 - e2_e134) * x.e14
-                    + (e1_e1 + e4_e4 + e123_e123 + e234_e234 - e2_e2 - e3_e3 - e124_e124
-                        - e134_e134) * x.e23
-                    + (e1_e134 + e123_e124 - e2_e234 - e3_e4) * x.e24
-                    + (e2_e4 + e123_e134 - e1_e124 - e3_e234) * x.e34,
-                e24: (e1_e4 + e2_e124 - e3_e134 - e123_e234) * x.e12
-                    + (e1_e234 + e2_e134 + e3_e124 + e4_e123) * x.e13
-                    + (e4_e124 + e134_e234 - e1_e2 - e3_e123) * x.e14
-                    + (e2_e234 + e123_e124 - e1_e134 - e3_e4) * x.e23
-                    + (e1_e1 + e3_e3 + e124_e124 + e234_e234 - e2_e2 - e4_e4 - e123_e123
-                        - e134_e134) * x.e24
-                    + (e1_e123 + e124_e134 - e2_e3 - e4_e234) * x.e34,
-                e34: (e2_e134 + e3_e124 - e1_e234 - e4_e123) * x.e12
-                    + (e1_e4 + e3_e134 - e2_e124 - e123_e234) * x.e13
-                    + (e2_e123 + e4_e134 - e1_e3 - e124_e234) * x.e14
-                    + (e1_e124 + e2_e4 + e3_e234 + e123_e134) * x.e23
-                    + (e4_e234 + e124_e134 - e1_e123 - e2_e3) * x.e24
-                    + (e1_e1 + e2_e2 + e134_e134 + e234_e234 - e3_e3 - e4_e4 - e123_e123
-                        - e124_e124) * x.e34,
-                e123: (e4_e4 + e124_e124 + e134_e134 + e234_e234 - e1_e1 - e2_e2 - e3_e3
-                    - e123_e123) * x.e123
-                    + (-e1_e134 - e2_e234 - e3_e4 - e123_e124) * x.e124
-                    + (e1_e124 + e2_e4 - e3_e234 - e123_e134) * x.e134
-                    + (e2_e124 + e3_e134 - e1_e4 - e123_e234) * x.e234,
-                e124: (e1_e134 + e2_e234 - e3_e4 - e123_e124) * x.e123
-                    + (e3_e3 + e123_e123 + e134_e134 + e234_e234 - e1_e1 - e2_e2 - e4_e4
-                        - e124_e124) * x.e124
-                    + (-e1_e123 - e2_e3 - e4_e234 - e124_e134) * x.e134
-                    + (e1_e3 + e4_e134 - e2_e123 - e124_e234) * x.e234,
-                e134: (e2_e4 + e3_e234 - e1_e124 - e123_e134) * x.e123
-                    + (e1_e123 + e4_e234 - e2_e3 - e124_e134) * x.e124
-                    + (e2_e2 + e123_e123 + e124_e124 + e234_e234 - e1_e1 - e3_e3 - e4_e4
-                        - e134_e134) * x.e134
-                    + (-e1_e2 - e3_e123 - e4_e124 - e134_e234) * x.e234,
-                e234: (-e1_e4 - e2_e124 - e3_e134 - e123_e234) * x.e123
-                    + (e1_e3 + e2_e123 - e4_e134 - e124_e234) * x.e124
-                    + (e3_e123 + e4_e124 - e1_e2 - e134_e234) * x.e134
-                    + (e1_e1 + e123_e123 + e124_e124 + e134_e134 - e2_e2 - e3_e3 - e4_e4
-                        - e234_e234) * x.e234,
-                e1234: (e2_e134 + e4_e123 - e1_e234 - e3_e124) * x.s
-                    + (-e1_e1 - e2_e2 - e3_e3 - e4_e4 - e123_e123 - e124_e124 - e134_e134
-                        - e234_e234) * x.e1234,
+                s: shared_4_plus_shared_8 * x.s + shared_34 * x.e1234,
+                e1: -shared_2_minus_shared_7 * x.e1 - shared_9 * x.e2 - shared_15 * x.e3
+                    - shared_20 * x.e4,
+                e2: shared_2_plus_shared_7 * x.e2 + shared_22 * x.e3 + shared_25 * x.e4
+                    - shared_12 * x.e1,
+                e3: shared_3_minus_shared_6 * x.e3 + shared_31 * x.e4 - shared_14 * x.e1
+                    - shared_24 * x.e2,
+                e4: shared_3_plus_shared_6 * x.e4 - shared_17 * x.e1 - shared_27 * x.e2
+                    - shared_32 * x.e3,
+                e12: shared_13 * x.e23 + shared_18 * x.e24 + shared_33 * x.e34
+                    - shared_4_minus_shared_8 * x.e12 - shared_23 * x.e13
+                    - shared_28 * x.e14,
+                e13: shared_21 * x.e12 + shared_19 * x.e34
+                    - shared_1_plus_shared_5 * x.e13 - shared_30 * x.e14
+                    - shared_11 * x.e23 - shared_36 * x.e24,
+                e14: shared_26 * x.e12 + shared_29 * x.e13 + shared_35 * x.e23
+                    - shared_1_minus_shared_5 * x.e14 - shared_10 * x.e24
+                    - shared_16 * x.e34,
+                e23: shared_16 * x.e12 + shared_1_minus_shared_5 * x.e23
+                    + shared_29 * x.e24 - shared_10 * x.e13 - shared_35 * x.e14
+                    - shared_26 * x.e34,
+                e24: shared_19 * x.e12 + shared_36 * x.e13
+                    + shared_1_plus_shared_5 * x.e24 + shared_21 * x.e34
+                    - shared_11 * x.e14 - shared_30 * x.e23,
+                e34: shared_18 * x.e13 + shared_28 * x.e23
+                    + shared_4_minus_shared_8 * x.e34 - shared_33 * x.e12
+                    - shared_13 * x.e14 - shared_23 * x.e24,
+                e123: shared_27 * x.e134 - shared_3_plus_shared_6 * x.e123
+                    - shared_32 * x.e124 - shared_17 * x.e234,
+                e124: shared_31 * x.e123 + shared_14 * x.e234
+                    - shared_3_minus_shared_6 * x.e124 - shared_24 * x.e134,
+                e134: shared_22 * x.e124 - shared_25 * x.e123
+                    - shared_2_plus_shared_7 * x.e134 - shared_12 * x.e234,
+                e234: shared_15 * x.e124 + shared_2_minus_shared_7 * x.e234
+                    - shared_20 * x.e123 - shared_9 * x.e134,
+                e1234: -shared_34 * x.s - shared_4_plus_shared_8 * x.e1234,
             }
         }
     }
@@ -15562,34 +15832,50 @@ pub mod g4 {
             let e134_e134 = self.e134 * self.e134;
             let e134_e234 = two_e134 * self.e234;
             let e234_e234 = self.e234 * self.e234;
+            let e1_e1_minus_e234_e234 = e1_e1 - e234_e234;
+            let e2_e2_minus_e134_e134 = e2_e2 - e134_e134;
+            let e3_e3_minus_e124_e124 = e3_e3 - e124_e124;
+            let e4_e4_minus_e123_e123 = e4_e4 - e123_e123;
+            let e1_e2_plus_e134_e234 = e1_e2 + e134_e234;
+            let e1_e3_minus_e124_e234 = e1_e3 - e124_e234;
+            let e1_e4_plus_e123_e234 = e1_e4 + e123_e234;
+            let e1_e123_plus_e4_e234 = e1_e123 + e4_e234;
+            let e1_e124_minus_e3_e234 = e1_e124 - e3_e234;
+            let e1_e134_plus_e2_e234 = e1_e134 + e2_e234;
+            let e2_e3_plus_e124_e134 = e2_e3 + e124_e134;
+            let e2_e4_minus_e123_e134 = e2_e4 - e123_e134;
+            let e2_e123_minus_e4_e134 = e2_e123 - e4_e134;
+            let e2_e124_plus_e3_e134 = e2_e124 + e3_e134;
+            let e3_e4_plus_e123_e124 = e3_e4 + e123_e124;
+            let e3_e123_plus_e4_e124 = e3_e123 + e4_e124;
+            let shared_1 = e1_e1_minus_e234_e234 - e2_e2_minus_e134_e134;
+            let shared_2 = e1_e1_minus_e234_e234 + e2_e2_minus_e134_e134;
+            let shared_3 = e3_e3_minus_e124_e124 - e4_e4_minus_e123_e123;
+            let shared_4 = e3_e3_minus_e124_e124 + e4_e4_minus_e123_e123;
             [
                 [
-                    e2_e2 + e3_e3 + e4_e4 + e234_e234 - e1_e1 - e123_e123 - e124_e124
-                        - e134_e134,
-                    e3_e123 + e4_e124 - e1_e2 - e134_e234,
-                    e4_e134 + e124_e234 - e1_e3 - e2_e123,
-                    -e1_e4 - e2_e124 - e3_e134 - e123_e234,
+                    shared_4 - shared_1,
+                    e3_e123_plus_e4_e124 - e1_e2_plus_e134_e234,
+                    -e1_e3_minus_e124_e234 - e2_e123_minus_e4_e134,
+                    -e1_e4_plus_e123_e234 - e2_e124_plus_e3_e134,
                 ],
                 [
-                    -e1_e2 - e3_e123 - e4_e124 - e134_e234,
-                    e1_e1 + e3_e3 + e4_e4 + e134_e134 - e2_e2 - e123_e123 - e124_e124
-                        - e234_e234,
-                    e1_e123 + e4_e234 - e2_e3 - e124_e134,
-                    e1_e124 + e123_e134 - e2_e4 - e3_e234,
+                    -e1_e2_plus_e134_e234 - e3_e123_plus_e4_e124,
+                    shared_1 + shared_4,
+                    e1_e123_plus_e4_e234 - e2_e3_plus_e124_e134,
+                    e1_e124_minus_e3_e234 - e2_e4_minus_e123_e134,
                 ],
                 [
-                    e2_e123 + e124_e234 - e1_e3 - e4_e134,
-                    -e1_e123 - e2_e3 - e4_e234 - e124_e134,
-                    e1_e1 + e2_e2 + e4_e4 + e124_e124 - e3_e3 - e123_e123 - e134_e134
-                        - e234_e234,
-                    e1_e134 + e2_e234 - e3_e4 - e123_e124,
+                    e2_e123_minus_e4_e134 - e1_e3_minus_e124_e234,
+                    -e1_e123_plus_e4_e234 - e2_e3_plus_e124_e134,
+                    shared_2 - shared_3,
+                    e1_e134_plus_e2_e234 - e3_e4_plus_e123_e124,
                 ],
                 [
-                    e2_e124 + e3_e134 - e1_e4 - e123_e234,
-                    e3_e234 + e123_e134 - e1_e124 - e2_e4,
-                    -e1_e134 - e2_e234 - e3_e4 - e123_e124,
-                    e1_e1 + e2_e2 + e3_e3 + e123_e123 - e4_e4 - e124_e124 - e134_e134
-                        - e234_e234,
+                    e2_e124_plus_e3_e134 - e1_e4_plus_e123_e234,
+                    -e1_e124_minus_e3_e234 - e2_e4_minus_e123_e134,
+                    -e1_e134_plus_e2_e234 - e3_e4_plus_e123_e124,
+                    shared_2 + shared_3,
                 ],
             ]
         }

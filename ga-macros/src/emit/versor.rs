@@ -11,6 +11,7 @@ use super::expr::{
 };
 use super::products::product_value;
 use crate::algebra::{blade_name, Involution, ProductKind};
+use crate::plan::collected::{CollectedSums, Summand};
 use crate::plan::sandwich_form::CommutatorTerms;
 use crate::plan::{
     bilinear, sandwich, Output, PairColumns, Plan, Quadratic, SandwichForm, TypeId, TypeKind,
@@ -243,47 +244,36 @@ fn commutator_scalar_body(
 /// components, and for each output blade and component `k` of `x` the coefficient of
 /// `x_k`: a signed sum of those products. Its sums are running sums, not the balanced
 /// trees of the products: measured on a chain of G3 rotations, the trees made the
-/// sandwich's latency 30% worse (f32), the sums being short and off the path through `x`. A pair whose coefficients are all even is
-/// computed as `(v_i + v_i) * v_j`: the factor 2 costs an add once per component instead
-/// of a multiply per use. See docs/derivations/sandwich.md.
+/// sandwich's latency 30% worse (f32), the sums being short and off the path through `x`.
+/// A pair whose coefficients are all even is computed as `(v_i + v_i) * v_j`: the factor 2
+/// costs an add once per component instead of a multiply per use. Partial sums that
+/// several coefficients share are computed once ([`CollectedSums`]). See
+/// docs/derivations/sandwich.md.
 struct FusedParts {
     lets: TokenStream,
     coefficients: BTreeMap<(u32, usize), Vec<(i32, TokenStream)>>,
 }
 
+/// The `let`s of a collected sandwich (doubled components, pair products, shared partial
+/// sums) and each coefficient as signed names of them.
 fn fused_parts(plan: &Plan, v: TypeId, x: TypeId, q: &Quadratic) -> FusedParts {
     let versor = &plan.types.get(v).blades;
-    let operand = &plan.types.get(x).blades;
     let this = Operand::new(quote!(self), v);
-    let mut uses: BTreeMap<(usize, usize), Vec<i32>> = BTreeMap::new();
-    for (blade, per_k) in q {
-        if operand.contains(blade) {
-            for pairs in per_k.values() {
-                for (&pair, &c) in pairs {
-                    uses.entry(pair).or_default().push(c);
-                }
-            }
-        }
-    }
-    let doubled: BTreeSet<(usize, usize)> = uses
-        .iter()
-        .filter(|(_, cs)| cs.iter().all(|c| c % 2 == 0))
-        .map(|(&pair, _)| pair)
-        .collect();
-    let doubled_components: BTreeSet<usize> = doubled.iter().map(|&(i, _)| i).collect();
+    let sums = CollectedSums::new(q, &plan.types.get(x).blades);
     let pair_name = |(i, j): (usize, usize)| {
         format_ident!("{}_{}", blade_name(versor[i]), blade_name(versor[j]))
     };
     let two_name = |i: usize| format_ident!("two_{}", blade_name(versor[i]));
+    let doubled_components: BTreeSet<usize> = sums.doubled.iter().map(|&(i, _)| i).collect();
     let two_lets = doubled_components.iter().map(|&i| {
         let name = two_name(i);
         let a = this.component(plan, i);
         quote!(let #name = #a + #a;)
     });
-    let pair_lets = uses.keys().map(|&(i, j)| {
+    let pair_lets = sums.pairs.iter().map(|&(i, j)| {
         let name = pair_name((i, j));
         let b = this.component(plan, j);
-        if doubled.contains(&(i, j)) {
+        if sums.doubled.contains(&(i, j)) {
             let two = two_name(i);
             quote!(let #name = #two * #b;)
         } else {
@@ -291,27 +281,54 @@ fn fused_parts(plan: &Plan, v: TypeId, x: TypeId, q: &Quadratic) -> FusedParts {
             quote!(let #name = #a * #b;)
         }
     });
-    let mut coefficients = BTreeMap::new();
-    for (&blade, per_k) in q {
-        if !operand.contains(&blade) {
-            continue;
-        }
-        for (&k, pairs) in per_k {
-            let terms: Vec<(i32, TokenStream)> = pairs
+    // A shared sum is named after its summands (`s_s_minus_e12_e12`) while that stays
+    // short enough to read, and numbered otherwise.
+    let mut shared_names: Vec<proc_macro2::Ident> = Vec::new();
+    let mut shared_lets = TokenStream::new();
+    let mut numbered = 0;
+    for shared in &sums.shared {
+        let name_of = |s: Summand, names: &[proc_macro2::Ident]| match s {
+            Summand::Pair(i, j) => pair_name((i, j)),
+            Summand::Shared(k) => names[k].clone(),
+        };
+        let (first, second) = (
+            name_of(shared.first, &shared_names),
+            name_of(shared.second, &shared_names),
+        );
+        let (op, word) = if shared.sign > 0 {
+            (quote!(+), "plus")
+        } else {
+            (quote!(-), "minus")
+        };
+        let long = format!("{first}_{word}_{second}");
+        let name = if long.len() <= 32 {
+            format_ident!("{long}")
+        } else {
+            numbered += 1;
+            format_ident!("shared_{numbered}")
+        };
+        shared_lets.extend(quote!(let #name = #first #op #second;));
+        shared_names.push(name);
+    }
+    let coefficients = sums
+        .coefficients
+        .iter()
+        .map(|(&key, terms)| {
+            let terms = terms
                 .iter()
-                .map(|(&pair, &c)| {
-                    let name = pair_name(pair);
-                    (
-                        if doubled.contains(&pair) { c / 2 } else { c },
-                        quote!(#name),
-                    )
+                .map(|&(c, s)| {
+                    let name = match s {
+                        Summand::Pair(i, j) => pair_name((i, j)),
+                        Summand::Shared(k) => shared_names[k].clone(),
+                    };
+                    (c, quote!(#name))
                 })
                 .collect();
-            coefficients.insert((blade, k), terms);
-        }
-    }
+            (key, terms)
+        })
+        .collect();
     FusedParts {
-        lets: quote!(#(#two_lets)* #(#pair_lets)*),
+        lets: quote!(#(#two_lets)* #(#pair_lets)* #shared_lets),
         coefficients,
     }
 }
@@ -327,6 +344,14 @@ fn fused_body(plan: &Plan, v: TypeId, x: TypeId, q: &Quadratic) -> TokenStream {
                 let xk = arg.component(plan, k);
                 match coefficient.as_slice() {
                     [(c @ (1 | -1), single)] => (*c, quote!(#single * #xk)),
+                    // `(-a - b) x` is `-((a + b) x)`: subtracted from the output's sum,
+                    // it costs no negation.
+                    _ if coefficient.iter().all(|&(c, _)| c < 0) => {
+                        let flipped: Vec<(i32, TokenStream)> =
+                            coefficient.iter().map(|(c, t)| (-c, t.clone())).collect();
+                        let sum = signed_sum_linear(&flipped);
+                        (-1, quote!((#sum) * #xk))
+                    }
                     _ => {
                         let sum = signed_sum_linear(coefficient);
                         (1, quote!((#sum) * #xk))

@@ -1,6 +1,7 @@
 //! The product plan: which types exist, which products and operations are emitted, and
 //! for each product the exact list of non-zero terms. Plain data, no syn or quote.
 
+pub mod collected;
 pub mod cost;
 pub mod lanes;
 pub mod sandwich_form;

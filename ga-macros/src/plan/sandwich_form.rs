@@ -12,6 +12,7 @@
 
 use std::collections::BTreeMap;
 
+use super::collected::CollectedSums;
 use super::cost::{scalar_product_counts, OpCounts};
 use super::lanes::LANES;
 use super::terms::{bilinear, Term};
@@ -378,25 +379,25 @@ fn pick(candidates: Vec<(FormCost, SandwichForm)>) -> Option<SandwichForm> {
         .map(|(_, form)| form)
 }
 
-/// The collected form: the pair products (one multiply each, plus the doubling adds), one
+/// The collected form: the pair products (one multiply each), the additions of
+/// [`CollectedSums`] (doublings, shared partial sums, the rest of each coefficient), one
 /// multiply per coefficient, and the sums; along `x`, one multiply and the final sum.
 pub fn collected_cost(q: &Quadratic, operand: &[Blade]) -> FormCost {
-    let mut pairs = std::collections::BTreeSet::new();
-    let mut counts = OpCounts::default();
+    let sums = CollectedSums::new(q, operand);
+    let mut counts = OpCounts {
+        mul: sums.pairs.len() + sums.coefficients.len(),
+        add: sums.additions(),
+        ..OpCounts::default()
+    };
     let mut widest = 1;
-    for (blade, per_k) in q {
-        if !operand.contains(blade) {
-            continue;
-        }
-        counts.add += per_k.len().saturating_sub(1);
-        widest = widest.max(per_k.len());
-        for pairs_k in per_k.values() {
-            counts.mul += 1;
-            counts.add += pairs_k.len().saturating_sub(1);
-            pairs.extend(pairs_k.keys().copied());
-        }
+    for blade in operand {
+        let per_blade = sums
+            .coefficients
+            .range((*blade, 0)..=(*blade, usize::MAX))
+            .count();
+        counts.add += per_blade.saturating_sub(1);
+        widest = widest.max(per_blade);
     }
-    counts.mul += pairs.len();
     FormCost {
         counts,
         latency: arithmetic_latency(0, sum_depth(widest)),
