@@ -5035,8 +5035,8 @@ pub mod g2 {
             let e2_e2 = self.e2 * self.e2;
             let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
             Vector {
-                e1: -e1_e1_minus_e2_e2 * x.e1 - e1_e2 * x.e2,
-                e2: e1_e1_minus_e2_e2 * x.e2 - e1_e2 * x.e1,
+                e1: -(e1_e1_minus_e2_e2) * x.e1 - e1_e2 * x.e2,
+                e2: -(e1_e2) * x.e1 + e1_e1_minus_e2_e2 * x.e2,
             }
         }
     }
@@ -5058,7 +5058,7 @@ pub mod g2 {
             let e1_e1_plus_e2_e2 = e1_e1 + e2_e2;
             Even {
                 s: e1_e1_plus_e2_e2 * x.s,
-                e12: -e1_e1_plus_e2_e2 * x.e12,
+                e12: -(e1_e1_plus_e2_e2) * x.e12,
             }
         }
     }
@@ -5071,8 +5071,8 @@ pub mod g2 {
             let e2_e2 = self.e2 * self.e2;
             let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
             Odd {
-                e1: -e1_e1_minus_e2_e2 * x.e1 - e1_e2 * x.e2,
-                e2: e1_e1_minus_e2_e2 * x.e2 - e1_e2 * x.e1,
+                e1: -(e1_e1_minus_e2_e2) * x.e1 - e1_e2 * x.e2,
+                e2: -(e1_e2) * x.e1 + e1_e1_minus_e2_e2 * x.e2,
             }
         }
     }
@@ -5087,9 +5087,9 @@ pub mod g2 {
             let e1_e1_plus_e2_e2 = e1_e1 + e2_e2;
             Multivector {
                 s: e1_e1_plus_e2_e2 * x.s,
-                e1: -e1_e1_minus_e2_e2 * x.e1 - e1_e2 * x.e2,
-                e2: e1_e1_minus_e2_e2 * x.e2 - e1_e2 * x.e1,
-                e12: -e1_e1_plus_e2_e2 * x.e12,
+                e1: -(e1_e1_minus_e2_e2) * x.e1 - e1_e2 * x.e2,
+                e2: -(e1_e2) * x.e1 + e1_e1_minus_e2_e2 * x.e2,
+                e12: -(e1_e1_plus_e2_e2) * x.e12,
             }
         }
     }
@@ -5131,7 +5131,7 @@ pub mod g2 {
             let s_s_minus_e12_e12 = s_s - e12_e12;
             Vector {
                 e1: s_s_minus_e12_e12 * x.e1 + s_e12 * x.e2,
-                e2: s_s_minus_e12_e12 * x.e2 - s_e12 * x.e1,
+                e2: -(s_e12) * x.e1 + s_s_minus_e12_e12 * x.e2,
             }
         }
     }
@@ -5167,7 +5167,7 @@ pub mod g2 {
             let s_s_minus_e12_e12 = s_s - e12_e12;
             Odd {
                 e1: s_s_minus_e12_e12 * x.e1 + s_e12 * x.e2,
-                e2: s_s_minus_e12_e12 * x.e2 - s_e12 * x.e1,
+                e2: -(s_e12) * x.e1 + s_s_minus_e12_e12 * x.e2,
             }
         }
     }
@@ -5183,7 +5183,7 @@ pub mod g2 {
             Multivector {
                 s: s_s_plus_e12_e12 * x.s,
                 e1: s_s_minus_e12_e12 * x.e1 + s_e12 * x.e2,
-                e2: s_s_minus_e12_e12 * x.e2 - s_e12 * x.e1,
+                e2: -(s_e12) * x.e1 + s_s_minus_e12_e12 * x.e2,
                 e12: s_s_plus_e12_e12 * x.e12,
             }
         }
@@ -5225,8 +5225,8 @@ pub mod g2 {
             let e2_e2 = self.e2 * self.e2;
             let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
             Vector {
-                e1: -e1_e1_minus_e2_e2 * x.e1 - e1_e2 * x.e2,
-                e2: e1_e1_minus_e2_e2 * x.e2 - e1_e2 * x.e1,
+                e1: -(e1_e1_minus_e2_e2) * x.e1 - e1_e2 * x.e2,
+                e2: -(e1_e2) * x.e1 + e1_e1_minus_e2_e2 * x.e2,
             }
         }
     }
@@ -5248,7 +5248,7 @@ pub mod g2 {
             let e1_e1_plus_e2_e2 = e1_e1 + e2_e2;
             Even {
                 s: e1_e1_plus_e2_e2 * x.s,
-                e12: -e1_e1_plus_e2_e2 * x.e12,
+                e12: -(e1_e1_plus_e2_e2) * x.e12,
             }
         }
     }
@@ -5261,8 +5261,8 @@ pub mod g2 {
             let e2_e2 = self.e2 * self.e2;
             let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
             Odd {
-                e1: -e1_e1_minus_e2_e2 * x.e1 - e1_e2 * x.e2,
-                e2: e1_e1_minus_e2_e2 * x.e2 - e1_e2 * x.e1,
+                e1: -(e1_e1_minus_e2_e2) * x.e1 - e1_e2 * x.e2,
+                e2: -(e1_e2) * x.e1 + e1_e1_minus_e2_e2 * x.e2,
             }
         }
     }
@@ -5277,9 +5277,9 @@ pub mod g2 {
             let e1_e1_plus_e2_e2 = e1_e1 + e2_e2;
             Multivector {
                 s: e1_e1_plus_e2_e2 * x.s,
-                e1: -e1_e1_minus_e2_e2 * x.e1 - e1_e2 * x.e2,
-                e2: e1_e1_minus_e2_e2 * x.e2 - e1_e2 * x.e1,
-                e12: -e1_e1_plus_e2_e2 * x.e12,
+                e1: -(e1_e1_minus_e2_e2) * x.e1 - e1_e2 * x.e2,
+                e2: -(e1_e2) * x.e1 + e1_e1_minus_e2_e2 * x.e2,
+                e12: -(e1_e1_plus_e2_e2) * x.e12,
             }
         }
     }

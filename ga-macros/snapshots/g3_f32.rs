@@ -8284,8 +8284,8 @@ pub mod g3 {
             let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
             Vector {
                 e1: (e3_e3 - e1_e1_minus_e2_e2) * x.e1 - e1_e2 * x.e2 - e1_e3 * x.e3,
-                e2: (e1_e1_minus_e2_e2 + e3_e3) * x.e2 - e1_e2 * x.e1 - e2_e3 * x.e3,
-                e3: (e1_e1 + e2_e2 - e3_e3) * x.e3 - e1_e3 * x.e1 - e2_e3 * x.e2,
+                e2: -(e1_e2) * x.e1 + (e1_e1_minus_e2_e2 + e3_e3) * x.e2 - e2_e3 * x.e3,
+                e3: -(e1_e3) * x.e1 - e2_e3 * x.e2 + (e1_e1 + e2_e2 - e3_e3) * x.e3,
             }
         }
     }
@@ -8302,10 +8302,10 @@ pub mod g3 {
             let e3_e3 = self.e3 * self.e3;
             let e1_e1_minus_e2_e2 = e1_e1 - e2_e2;
             Bivector {
-                e12: (e3_e3 - e1_e1 - e2_e2) * x.e12 + e1_e3 * x.e23 - e2_e3 * x.e13,
-                e13: -e2_e3 * x.e12 - (e1_e1_minus_e2_e2 + e3_e3) * x.e13
+                e12: (e3_e3 - e1_e1 - e2_e2) * x.e12 - e2_e3 * x.e13 + e1_e3 * x.e23,
+                e13: -(e2_e3) * x.e12 - (e1_e1_minus_e2_e2 + e3_e3) * x.e13
                     - e1_e2 * x.e23,
-                e23: e1_e3 * x.e12 + (e1_e1_minus_e2_e2 - e3_e3) * x.e23 - e1_e2 * x.e13,
+                e23: e1_e3 * x.e12 - e1_e2 * x.e13 + (e1_e1_minus_e2_e2 - e3_e3) * x.e23,
             }
         }
     }
@@ -8335,10 +8335,10 @@ pub mod g3 {
             let e1_e1_plus_e2_e2 = e1_e1 + e2_e2;
             Even {
                 s: (e1_e1_plus_e2_e2 + e3_e3) * x.s,
-                e12: (e3_e3 - e1_e1_plus_e2_e2) * x.e12 + e1_e3 * x.e23 - e2_e3 * x.e13,
-                e13: -e2_e3 * x.e12 - (e1_e1_minus_e2_e2 + e3_e3) * x.e13
+                e12: (e3_e3 - e1_e1_plus_e2_e2) * x.e12 - e2_e3 * x.e13 + e1_e3 * x.e23,
+                e13: -(e2_e3) * x.e12 - (e1_e1_minus_e2_e2 + e3_e3) * x.e13
                     - e1_e2 * x.e23,
-                e23: e1_e3 * x.e12 + (e1_e1_minus_e2_e2 - e3_e3) * x.e23 - e1_e2 * x.e13,
+                e23: e1_e3 * x.e12 - e1_e2 * x.e13 + (e1_e1_minus_e2_e2 - e3_e3) * x.e23,
             }
         }
     }
@@ -8357,8 +8357,8 @@ pub mod g3 {
             let e1_e1_plus_e2_e2 = e1_e1 + e2_e2;
             Odd {
                 e1: (e3_e3 - e1_e1_minus_e2_e2) * x.e1 - e1_e2 * x.e2 - e1_e3 * x.e3,
-                e2: (e1_e1_minus_e2_e2 + e3_e3) * x.e2 - e1_e2 * x.e1 - e2_e3 * x.e3,
-                e3: (e1_e1_plus_e2_e2 - e3_e3) * x.e3 - e1_e3 * x.e1 - e2_e3 * x.e2,
+                e2: -(e1_e2) * x.e1 + (e1_e1_minus_e2_e2 + e3_e3) * x.e2 - e2_e3 * x.e3,
+                e3: -(e1_e3) * x.e1 - e2_e3 * x.e2 + (e1_e1_plus_e2_e2 - e3_e3) * x.e3,
                 e123: -(e1_e1_plus_e2_e2 + e3_e3) * x.e123,
             }
         }
@@ -8383,15 +8383,15 @@ pub mod g3 {
             Multivector {
                 s: e3_e3_plus_e1_e1_plus_e2_e2 * x.s,
                 e1: e3_e3_minus_e1_e1_minus_e2_e2 * x.e1 - e1_e2 * x.e2 - e1_e3 * x.e3,
-                e2: e3_e3_plus_e1_e1_minus_e2_e2 * x.e2 - e1_e2 * x.e1 - e2_e3 * x.e3,
-                e3: -e1_e3 * x.e1 - e2_e3 * x.e2 - e3_e3_minus_e1_e1_plus_e2_e2 * x.e3,
-                e12: e3_e3_minus_e1_e1_plus_e2_e2 * x.e12 + e1_e3 * x.e23
-                    - e2_e3 * x.e13,
-                e13: -e2_e3 * x.e12 - e3_e3_plus_e1_e1_minus_e2_e2 * x.e13
+                e2: -(e1_e2) * x.e1 + e3_e3_plus_e1_e1_minus_e2_e2 * x.e2 - e2_e3 * x.e3,
+                e3: -(e1_e3) * x.e1 - e2_e3 * x.e2 - e3_e3_minus_e1_e1_plus_e2_e2 * x.e3,
+                e12: e3_e3_minus_e1_e1_plus_e2_e2 * x.e12 - e2_e3 * x.e13
+                    + e1_e3 * x.e23,
+                e13: -(e2_e3) * x.e12 - e3_e3_plus_e1_e1_minus_e2_e2 * x.e13
                     - e1_e2 * x.e23,
                 e23: e1_e3 * x.e12 - e1_e2 * x.e13
                     - e3_e3_minus_e1_e1_minus_e2_e2 * x.e23,
-                e123: -e3_e3_plus_e1_e1_plus_e2_e2 * x.e123,
+                e123: -(e3_e3_plus_e1_e1_plus_e2_e2) * x.e123,
             }
         }
     }
@@ -8453,10 +8453,11 @@ pub mod g3 {
             Vector {
                 e1: (s_s_minus_e12_e12 - e13_e13_minus_e23_e23) * x.e1
                     + (s_e12 - e13_e23) * x.e2 + (s_e13 + e12_e23) * x.e3,
-                e2: (s_s_minus_e12_e12 + e13_e13_minus_e23_e23) * x.e2
-                    + (s_e23 - e12_e13) * x.e3 - (s_e12 + e13_e23) * x.e1,
-                e3: (e12_e23 - s_e13) * x.e1 + (s_s + e12_e12 - e13_e13 - e23_e23) * x.e3
-                    - (s_e23 + e12_e13) * x.e2,
+                e2: -(s_e12 + e13_e23) * x.e1
+                    + (s_s_minus_e12_e12 + e13_e13_minus_e23_e23) * x.e2
+                    + (s_e23 - e12_e13) * x.e3,
+                e3: (e12_e23 - s_e13) * x.e1 - (s_e23 + e12_e13) * x.e2
+                    + (s_s + e12_e12 - e13_e13 - e23_e23) * x.e3,
             }
         }
     }
@@ -8556,11 +8557,11 @@ pub mod g3 {
             Odd {
                 e1: (s_s_minus_e12_e12 - e13_e13_minus_e23_e23) * x.e1
                     + (s_e12 - e13_e23) * x.e2 + (s_e13 + e12_e23) * x.e3,
-                e2: (s_s_minus_e12_e12 + e13_e13_minus_e23_e23) * x.e2
-                    + (s_e23 - e12_e13) * x.e3 - (s_e12 + e13_e23) * x.e1,
-                e3: (e12_e23 - s_e13) * x.e1
-                    + (s_s_plus_e12_e12 - e13_e13_plus_e23_e23) * x.e3
-                    - (s_e23 + e12_e13) * x.e2,
+                e2: -(s_e12 + e13_e23) * x.e1
+                    + (s_s_minus_e12_e12 + e13_e13_minus_e23_e23) * x.e2
+                    + (s_e23 - e12_e13) * x.e3,
+                e3: (e12_e23 - s_e13) * x.e1 - (s_e23 + e12_e13) * x.e2
+                    + (s_s_plus_e12_e12 - e13_e13_plus_e23_e23) * x.e3,
                 e123: (s_s_plus_e12_e12 + e13_e13_plus_e23_e23) * x.e123,
             }
         }
@@ -8599,16 +8600,16 @@ pub mod g3 {
                 s: shared_4 * x.s,
                 e1: shared_1 * x.e1 + s_e12_minus_e13_e23 * x.e2
                     + s_e13_plus_e12_e23 * x.e3,
-                e2: shared_2 * x.e2 + s_e23_minus_e12_e13 * x.e3
-                    - s_e12_plus_e13_e23 * x.e1,
-                e3: shared_3 * x.e3 - s_e13_minus_e12_e23 * x.e1
-                    - s_e23_plus_e12_e13 * x.e2,
+                e2: -(s_e12_plus_e13_e23) * x.e1 + shared_2 * x.e2
+                    + s_e23_minus_e12_e13 * x.e3,
+                e3: -(s_e13_minus_e12_e23) * x.e1 - s_e23_plus_e12_e13 * x.e2
+                    + shared_3 * x.e3,
                 e12: shared_3 * x.e12 + s_e23_plus_e12_e13 * x.e13
                     - s_e13_minus_e12_e23 * x.e23,
-                e13: shared_2 * x.e13 + s_e12_plus_e13_e23 * x.e23
-                    - s_e23_minus_e12_e13 * x.e12,
-                e23: s_e13_plus_e12_e23 * x.e12 + shared_1 * x.e23
-                    - s_e12_minus_e13_e23 * x.e13,
+                e13: -(s_e23_minus_e12_e13) * x.e12 + shared_2 * x.e13
+                    + s_e12_plus_e13_e23 * x.e23,
+                e23: s_e13_plus_e12_e23 * x.e12 - s_e12_minus_e13_e23 * x.e13
+                    + shared_1 * x.e23,
                 e123: shared_4 * x.e123,
             }
         }
@@ -8685,10 +8686,11 @@ pub mod g3 {
             Vector {
                 e1: (e3_e3_minus_e123_e123 - e1_e1_minus_e2_e2) * x.e1
                     + (e3_e123 - e1_e2) * x.e2 - (e1_e3 + e2_e123) * x.e3,
-                e2: (e1_e1_minus_e2_e2 + e3_e3_minus_e123_e123) * x.e2
-                    + (e1_e123 - e2_e3) * x.e3 - (e1_e2 + e3_e123) * x.e1,
-                e3: (e2_e123 - e1_e3) * x.e1 + (e1_e1 + e2_e2 - e3_e3 - e123_e123) * x.e3
-                    - (e1_e123 + e2_e3) * x.e2,
+                e2: -(e1_e2 + e3_e123) * x.e1
+                    + (e1_e1_minus_e2_e2 + e3_e3_minus_e123_e123) * x.e2
+                    + (e1_e123 - e2_e3) * x.e3,
+                e3: (e2_e123 - e1_e3) * x.e1 - (e1_e123 + e2_e3) * x.e2
+                    + (e1_e1 + e2_e2 - e3_e3 - e123_e123) * x.e3,
             }
         }
     }
@@ -8712,7 +8714,7 @@ pub mod g3 {
             let e3_e3_minus_e123_e123 = e3_e3 - e123_e123;
             Bivector {
                 e12: (e3_e3 + e123_e123 - e1_e1 - e2_e2) * x.e12
-                    + (e1_e3 - e2_e123) * x.e23 - (e1_e123 + e2_e3) * x.e13,
+                    - (e1_e123 + e2_e3) * x.e13 + (e1_e3 - e2_e123) * x.e23,
                 e13: (e1_e123 - e2_e3) * x.e12
                     - (e1_e1_minus_e2_e2 + e3_e3_minus_e123_e123) * x.e13
                     - (e1_e2 + e3_e123) * x.e23,
@@ -8756,7 +8758,7 @@ pub mod g3 {
             Even {
                 s: (e1_e1_plus_e2_e2 + e3_e3_plus_e123_e123) * x.s,
                 e12: (e3_e3_plus_e123_e123 - e1_e1_plus_e2_e2) * x.e12
-                    + (e1_e3 - e2_e123) * x.e23 - (e1_e123 + e2_e3) * x.e13,
+                    - (e1_e123 + e2_e3) * x.e13 + (e1_e3 - e2_e123) * x.e23,
                 e13: (e1_e123 - e2_e3) * x.e12
                     - (e1_e1_minus_e2_e2 + e3_e3_minus_e123_e123) * x.e13
                     - (e1_e2 + e3_e123) * x.e23,
@@ -8788,11 +8790,11 @@ pub mod g3 {
             Odd {
                 e1: (e3_e3_minus_e123_e123 - e1_e1_minus_e2_e2) * x.e1
                     + (e3_e123 - e1_e2) * x.e2 - (e1_e3 + e2_e123) * x.e3,
-                e2: (e1_e1_minus_e2_e2 + e3_e3_minus_e123_e123) * x.e2
-                    + (e1_e123 - e2_e3) * x.e3 - (e1_e2 + e3_e123) * x.e1,
-                e3: (e2_e123 - e1_e3) * x.e1
-                    + (e1_e1_plus_e2_e2 - e3_e3_plus_e123_e123) * x.e3
-                    - (e1_e123 + e2_e3) * x.e2,
+                e2: -(e1_e2 + e3_e123) * x.e1
+                    + (e1_e1_minus_e2_e2 + e3_e3_minus_e123_e123) * x.e2
+                    + (e1_e123 - e2_e3) * x.e3,
+                e3: (e2_e123 - e1_e3) * x.e1 - (e1_e123 + e2_e3) * x.e2
+                    + (e1_e1_plus_e2_e2 - e3_e3_plus_e123_e123) * x.e3,
                 e123: -(e1_e1_plus_e2_e2 + e3_e3_plus_e123_e123) * x.e123,
             }
         }
@@ -8829,19 +8831,19 @@ pub mod g3 {
             let shared_4 = e1_e1_plus_e2_e2 + e3_e3_plus_e123_e123;
             Multivector {
                 s: shared_4 * x.s,
-                e1: -shared_1 * x.e1 - e1_e2_minus_e3_e123 * x.e2
+                e1: -(shared_1) * x.e1 - e1_e2_minus_e3_e123 * x.e2
                     - e1_e3_plus_e2_e123 * x.e3,
-                e2: shared_2 * x.e2 + e1_e123_minus_e2_e3 * x.e3
-                    - e1_e2_plus_e3_e123 * x.e1,
-                e3: shared_3 * x.e3 - e1_e3_minus_e2_e123 * x.e1
-                    - e1_e123_plus_e2_e3 * x.e2,
-                e12: e1_e3_minus_e2_e123 * x.e23 - shared_3 * x.e12
-                    - e1_e123_plus_e2_e3 * x.e13,
+                e2: -(e1_e2_plus_e3_e123) * x.e1 + shared_2 * x.e2
+                    + e1_e123_minus_e2_e3 * x.e3,
+                e3: -(e1_e3_minus_e2_e123) * x.e1 - e1_e123_plus_e2_e3 * x.e2
+                    + shared_3 * x.e3,
+                e12: -(shared_3) * x.e12 - e1_e123_plus_e2_e3 * x.e13
+                    + e1_e3_minus_e2_e123 * x.e23,
                 e13: e1_e123_minus_e2_e3 * x.e12 - shared_2 * x.e13
                     - e1_e2_plus_e3_e123 * x.e23,
-                e23: e1_e3_plus_e2_e123 * x.e12 + shared_1 * x.e23
-                    - e1_e2_minus_e3_e123 * x.e13,
-                e123: -shared_4 * x.e123,
+                e23: e1_e3_plus_e2_e123 * x.e12 - e1_e2_minus_e3_e123 * x.e13
+                    + shared_1 * x.e23,
+                e123: -(shared_4) * x.e123,
             }
         }
     }

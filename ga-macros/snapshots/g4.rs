@@ -14053,12 +14053,12 @@ pub mod g4 {
             Vector {
                 e1: (e3_e3_plus_e4_e4 - e1_e1_minus_e2_e2) * x.e1 - e1_e2 * x.e2
                     - e1_e3 * x.e3 - e1_e4 * x.e4,
-                e2: (e1_e1_minus_e2_e2 + e3_e3_plus_e4_e4) * x.e2 - e1_e2 * x.e1
+                e2: -(e1_e2) * x.e1 + (e1_e1_minus_e2_e2 + e3_e3_plus_e4_e4) * x.e2
                     - e2_e3 * x.e3 - e2_e4 * x.e4,
-                e3: (e1_e1_plus_e2_e2 - e3_e3_minus_e4_e4) * x.e3 - e1_e3 * x.e1
-                    - e2_e3 * x.e2 - e3_e4 * x.e4,
-                e4: (e1_e1_plus_e2_e2 + e3_e3_minus_e4_e4) * x.e4 - e1_e4 * x.e1
-                    - e2_e4 * x.e2 - e3_e4 * x.e3,
+                e3: -(e1_e3) * x.e1 - e2_e3 * x.e2
+                    + (e1_e1_plus_e2_e2 - e3_e3_minus_e4_e4) * x.e3 - e3_e4 * x.e4,
+                e4: -(e1_e4) * x.e1 - e2_e4 * x.e2 - e3_e4 * x.e3
+                    + (e1_e1_plus_e2_e2 + e3_e3_minus_e4_e4) * x.e4,
             }
         }
     }
@@ -14086,18 +14086,18 @@ pub mod g4 {
             let shared_2 = e1_e1_minus_e2_e2 + e3_e3_minus_e4_e4;
             let shared_3 = e1_e1_plus_e2_e2 - e3_e3_plus_e4_e4;
             Bivector {
-                e12: e1_e3 * x.e23 + e1_e4 * x.e24 - shared_3 * x.e12 - e2_e3 * x.e13
-                    - e2_e4 * x.e14,
-                e13: e1_e4 * x.e34 - e2_e3 * x.e12 - shared_2 * x.e13 - e3_e4 * x.e14
-                    - e1_e2 * x.e23,
-                e14: -e2_e4 * x.e12 - e3_e4 * x.e13 - shared_1 * x.e14 - e1_e2 * x.e24
+                e12: -(shared_3) * x.e12 - e2_e3 * x.e13 - e2_e4 * x.e14 + e1_e3 * x.e23
+                    + e1_e4 * x.e24,
+                e13: -(e2_e3) * x.e12 - shared_2 * x.e13 - e3_e4 * x.e14 - e1_e2 * x.e23
+                    + e1_e4 * x.e34,
+                e14: -(e2_e4) * x.e12 - e3_e4 * x.e13 - shared_1 * x.e14 - e1_e2 * x.e24
                     - e1_e3 * x.e34,
-                e23: e1_e3 * x.e12 + shared_1 * x.e23 + e2_e4 * x.e34 - e1_e2 * x.e13
-                    - e3_e4 * x.e24,
-                e24: e1_e4 * x.e12 + shared_2 * x.e24 - e1_e2 * x.e14 - e3_e4 * x.e23
+                e23: e1_e3 * x.e12 - e1_e2 * x.e13 + shared_1 * x.e23 - e3_e4 * x.e24
+                    + e2_e4 * x.e34,
+                e24: e1_e4 * x.e12 - e1_e2 * x.e14 - e3_e4 * x.e23 + shared_2 * x.e24
                     - e2_e3 * x.e34,
-                e34: e1_e4 * x.e13 + e2_e4 * x.e23 + shared_3 * x.e34 - e1_e3 * x.e14
-                    - e2_e3 * x.e24,
+                e34: e1_e4 * x.e13 - e1_e3 * x.e14 + e2_e4 * x.e23 - e2_e3 * x.e24
+                    + shared_3 * x.e34,
             }
         }
     }
@@ -14122,14 +14122,14 @@ pub mod g4 {
             let e3_e3_minus_e4_e4 = e3_e3 - e4_e4;
             let e3_e3_plus_e4_e4 = e3_e3 + e4_e4;
             Trivector {
-                e123: e2_e4 * x.e134 - (e1_e1_plus_e2_e2 + e3_e3_minus_e4_e4) * x.e123
-                    - e3_e4 * x.e124 - e1_e4 * x.e234,
-                e124: (e3_e3_minus_e4_e4 - e1_e1_plus_e2_e2) * x.e124 + e1_e3 * x.e234
-                    - e3_e4 * x.e123 - e2_e3 * x.e134,
+                e123: -(e1_e1_plus_e2_e2 + e3_e3_minus_e4_e4) * x.e123 - e3_e4 * x.e124
+                    + e2_e4 * x.e134 - e1_e4 * x.e234,
+                e124: -(e3_e4) * x.e123 + (e3_e3_minus_e4_e4 - e1_e1_plus_e2_e2) * x.e124
+                    - e2_e3 * x.e134 + e1_e3 * x.e234,
                 e134: e2_e4 * x.e123 - e2_e3 * x.e124
                     - (e1_e1_minus_e2_e2 + e3_e3_plus_e4_e4) * x.e134 - e1_e2 * x.e234,
-                e234: e1_e3 * x.e124 + (e1_e1_minus_e2_e2 - e3_e3_plus_e4_e4) * x.e234
-                    - e1_e4 * x.e123 - e1_e2 * x.e134,
+                e234: -(e1_e4) * x.e123 + e1_e3 * x.e124 - e1_e2 * x.e134
+                    + (e1_e1_minus_e2_e2 - e3_e3_plus_e4_e4) * x.e234,
             }
         }
     }
@@ -14171,19 +14171,19 @@ pub mod g4 {
             let shared_4 = e1_e1_plus_e2_e2 + e3_e3_plus_e4_e4;
             Even {
                 s: shared_4 * x.s,
-                e12: e1_e3 * x.e23 + e1_e4 * x.e24 - shared_3 * x.e12 - e2_e3 * x.e13
-                    - e2_e4 * x.e14,
-                e13: e1_e4 * x.e34 - e2_e3 * x.e12 - shared_2 * x.e13 - e3_e4 * x.e14
-                    - e1_e2 * x.e23,
-                e14: -e2_e4 * x.e12 - e3_e4 * x.e13 - shared_1 * x.e14 - e1_e2 * x.e24
+                e12: -(shared_3) * x.e12 - e2_e3 * x.e13 - e2_e4 * x.e14 + e1_e3 * x.e23
+                    + e1_e4 * x.e24,
+                e13: -(e2_e3) * x.e12 - shared_2 * x.e13 - e3_e4 * x.e14 - e1_e2 * x.e23
+                    + e1_e4 * x.e34,
+                e14: -(e2_e4) * x.e12 - e3_e4 * x.e13 - shared_1 * x.e14 - e1_e2 * x.e24
                     - e1_e3 * x.e34,
-                e23: e1_e3 * x.e12 + shared_1 * x.e23 + e2_e4 * x.e34 - e1_e2 * x.e13
-                    - e3_e4 * x.e24,
-                e24: e1_e4 * x.e12 + shared_2 * x.e24 - e1_e2 * x.e14 - e3_e4 * x.e23
+                e23: e1_e3 * x.e12 - e1_e2 * x.e13 + shared_1 * x.e23 - e3_e4 * x.e24
+                    + e2_e4 * x.e34,
+                e24: e1_e4 * x.e12 - e1_e2 * x.e14 - e3_e4 * x.e23 + shared_2 * x.e24
                     - e2_e3 * x.e34,
-                e34: e1_e4 * x.e13 + e2_e4 * x.e23 + shared_3 * x.e34 - e1_e3 * x.e14
-                    - e2_e3 * x.e24,
-                e1234: -shared_4 * x.e1234,
+                e34: e1_e4 * x.e13 - e1_e3 * x.e14 + e2_e4 * x.e23 - e2_e3 * x.e24
+                    + shared_3 * x.e34,
+                e1234: -(shared_4) * x.e1234,
             }
         }
     }
@@ -14212,18 +14212,18 @@ pub mod g4 {
             let shared_3 = e1_e1_plus_e2_e2 - e3_e3_minus_e4_e4;
             let shared_4 = e1_e1_plus_e2_e2 + e3_e3_minus_e4_e4;
             Odd {
-                e1: -shared_1 * x.e1 - e1_e2 * x.e2 - e1_e3 * x.e3 - e1_e4 * x.e4,
-                e2: shared_2 * x.e2 - e1_e2 * x.e1 - e2_e3 * x.e3 - e2_e4 * x.e4,
-                e3: shared_3 * x.e3 - e1_e3 * x.e1 - e2_e3 * x.e2 - e3_e4 * x.e4,
-                e4: shared_4 * x.e4 - e1_e4 * x.e1 - e2_e4 * x.e2 - e3_e4 * x.e3,
-                e123: e2_e4 * x.e134 - shared_4 * x.e123 - e3_e4 * x.e124
+                e1: -(shared_1) * x.e1 - e1_e2 * x.e2 - e1_e3 * x.e3 - e1_e4 * x.e4,
+                e2: -(e1_e2) * x.e1 + shared_2 * x.e2 - e2_e3 * x.e3 - e2_e4 * x.e4,
+                e3: -(e1_e3) * x.e1 - e2_e3 * x.e2 + shared_3 * x.e3 - e3_e4 * x.e4,
+                e4: -(e1_e4) * x.e1 - e2_e4 * x.e2 - e3_e4 * x.e3 + shared_4 * x.e4,
+                e123: -(shared_4) * x.e123 - e3_e4 * x.e124 + e2_e4 * x.e134
                     - e1_e4 * x.e234,
-                e124: e1_e3 * x.e234 - e3_e4 * x.e123 - shared_3 * x.e124
-                    - e2_e3 * x.e134,
+                e124: -(e3_e4) * x.e123 - shared_3 * x.e124 - e2_e3 * x.e134
+                    + e1_e3 * x.e234,
                 e134: e2_e4 * x.e123 - e2_e3 * x.e124 - shared_2 * x.e134
                     - e1_e2 * x.e234,
-                e234: e1_e3 * x.e124 + shared_1 * x.e234 - e1_e4 * x.e123
-                    - e1_e2 * x.e134,
+                e234: -(e1_e4) * x.e123 + e1_e3 * x.e124 - e1_e2 * x.e134
+                    + shared_1 * x.e234,
             }
         }
     }
@@ -14257,31 +14257,31 @@ pub mod g4 {
             let shared_8 = e1_e1_plus_e2_e2 + e3_e3_plus_e4_e4;
             Multivector {
                 s: shared_8 * x.s,
-                e1: -shared_3 * x.e1 - e1_e2 * x.e2 - e1_e3 * x.e3 - e1_e4 * x.e4,
-                e2: shared_4 * x.e2 - e1_e2 * x.e1 - e2_e3 * x.e3 - e2_e4 * x.e4,
-                e3: shared_5 * x.e3 - e1_e3 * x.e1 - e2_e3 * x.e2 - e3_e4 * x.e4,
-                e4: shared_6 * x.e4 - e1_e4 * x.e1 - e2_e4 * x.e2 - e3_e4 * x.e3,
-                e12: e1_e3 * x.e23 + e1_e4 * x.e24 - shared_7 * x.e12 - e2_e3 * x.e13
-                    - e2_e4 * x.e14,
-                e13: e1_e4 * x.e34 - e2_e3 * x.e12 - shared_2 * x.e13 - e3_e4 * x.e14
-                    - e1_e2 * x.e23,
-                e14: -e2_e4 * x.e12 - e3_e4 * x.e13 - shared_1 * x.e14 - e1_e2 * x.e24
+                e1: -(shared_3) * x.e1 - e1_e2 * x.e2 - e1_e3 * x.e3 - e1_e4 * x.e4,
+                e2: -(e1_e2) * x.e1 + shared_4 * x.e2 - e2_e3 * x.e3 - e2_e4 * x.e4,
+                e3: -(e1_e3) * x.e1 - e2_e3 * x.e2 + shared_5 * x.e3 - e3_e4 * x.e4,
+                e4: -(e1_e4) * x.e1 - e2_e4 * x.e2 - e3_e4 * x.e3 + shared_6 * x.e4,
+                e12: -(shared_7) * x.e12 - e2_e3 * x.e13 - e2_e4 * x.e14 + e1_e3 * x.e23
+                    + e1_e4 * x.e24,
+                e13: -(e2_e3) * x.e12 - shared_2 * x.e13 - e3_e4 * x.e14 - e1_e2 * x.e23
+                    + e1_e4 * x.e34,
+                e14: -(e2_e4) * x.e12 - e3_e4 * x.e13 - shared_1 * x.e14 - e1_e2 * x.e24
                     - e1_e3 * x.e34,
-                e23: e1_e3 * x.e12 + shared_1 * x.e23 + e2_e4 * x.e34 - e1_e2 * x.e13
-                    - e3_e4 * x.e24,
-                e24: e1_e4 * x.e12 + shared_2 * x.e24 - e1_e2 * x.e14 - e3_e4 * x.e23
+                e23: e1_e3 * x.e12 - e1_e2 * x.e13 + shared_1 * x.e23 - e3_e4 * x.e24
+                    + e2_e4 * x.e34,
+                e24: e1_e4 * x.e12 - e1_e2 * x.e14 - e3_e4 * x.e23 + shared_2 * x.e24
                     - e2_e3 * x.e34,
-                e34: e1_e4 * x.e13 + e2_e4 * x.e23 + shared_7 * x.e34 - e1_e3 * x.e14
-                    - e2_e3 * x.e24,
-                e123: e2_e4 * x.e134 - shared_6 * x.e123 - e3_e4 * x.e124
+                e34: e1_e4 * x.e13 - e1_e3 * x.e14 + e2_e4 * x.e23 - e2_e3 * x.e24
+                    + shared_7 * x.e34,
+                e123: -(shared_6) * x.e123 - e3_e4 * x.e124 + e2_e4 * x.e134
                     - e1_e4 * x.e234,
-                e124: e1_e3 * x.e234 - e3_e4 * x.e123 - shared_5 * x.e124
-                    - e2_e3 * x.e134,
+                e124: -(e3_e4) * x.e123 - shared_5 * x.e124 - e2_e3 * x.e134
+                    + e1_e3 * x.e234,
                 e134: e2_e4 * x.e123 - e2_e3 * x.e124 - shared_4 * x.e134
                     - e1_e2 * x.e234,
-                e234: e1_e3 * x.e124 + shared_3 * x.e234 - e1_e4 * x.e123
-                    - e1_e2 * x.e134,
-                e1234: -shared_8 * x.e1234,
+                e234: -(e1_e4) * x.e123 + e1_e3 * x.e124 - e1_e2 * x.e134
+                    + shared_3 * x.e234,
+                e1234: -(shared_8) * x.e1234,
             }
         }
     }
@@ -14402,18 +14402,18 @@ pub mod g4 {
                     + (s_e12_plus_e34_e1234 - e13_e23_plus_e14_e24) * x.e2
                     + (s_e13_minus_e24_e1234 + e12_e23_minus_e14_e34) * x.e3
                     + (s_e14_plus_e23_e1234 + e12_e24_plus_e13_e34) * x.e4,
-                e2: (shared_1 + shared_4) * x.e2
+                e2: -(s_e12_plus_e34_e1234 + e13_e23_plus_e14_e24) * x.e1
+                    + (shared_1 + shared_4) * x.e2
                     + (s_e23_plus_e14_e1234 - e12_e13_plus_e24_e34) * x.e3
-                    + (s_e24_minus_e13_e1234 - e12_e14_minus_e23_e34) * x.e4
-                    - (s_e12_plus_e34_e1234 + e13_e23_plus_e14_e24) * x.e1,
+                    + (s_e24_minus_e13_e1234 - e12_e14_minus_e23_e34) * x.e4,
                 e3: (e12_e23_minus_e14_e34 - s_e13_minus_e24_e1234) * x.e1
+                    - (s_e23_plus_e14_e1234 + e12_e13_plus_e24_e34) * x.e2
                     + (shared_2 - shared_3) * x.e3
-                    + (s_e34_plus_e12_e1234 - e13_e14_plus_e23_e24) * x.e4
-                    - (s_e23_plus_e14_e1234 + e12_e13_plus_e24_e34) * x.e2,
+                    + (s_e34_plus_e12_e1234 - e13_e14_plus_e23_e24) * x.e4,
                 e4: (e12_e24_plus_e13_e34 - s_e14_plus_e23_e1234) * x.e1
-                    + (shared_2 + shared_3) * x.e4
                     - (s_e24_minus_e13_e1234 + e12_e14_minus_e23_e34) * x.e2
-                    - (s_e34_plus_e12_e1234 + e13_e14_plus_e23_e24) * x.e3,
+                    - (s_e34_plus_e12_e1234 + e13_e14_plus_e23_e24) * x.e3
+                    + (shared_2 + shared_3) * x.e4,
             }
         }
     }
@@ -14509,21 +14509,21 @@ pub mod g4 {
                 e12: shared_3_minus_shared_4 * x.e12 + shared_12 * x.e13
                     + shared_14 * x.e14 - shared_7 * x.e23 - shared_9 * x.e24
                     - shared_19 * x.e34,
-                e13: shared_1_plus_shared_2 * x.e13 + shared_16 * x.e14
-                    + shared_6 * x.e23 + shared_18 * x.e24 - shared_11 * x.e12
+                e13: -(shared_11) * x.e12 + shared_1_plus_shared_2 * x.e13
+                    + shared_16 * x.e14 + shared_6 * x.e23 + shared_18 * x.e24
                     - shared_10 * x.e34,
-                e14: shared_1_minus_shared_2 * x.e14 + shared_5 * x.e24
-                    + shared_8 * x.e34 - shared_13 * x.e12 - shared_15 * x.e13
-                    - shared_17 * x.e23,
-                e23: shared_8 * x.e12 + shared_1_minus_shared_2 * x.e23
-                    + shared_15 * x.e24 - shared_5 * x.e13 - shared_17 * x.e14
+                e14: -(shared_13) * x.e12 - shared_15 * x.e13
+                    + shared_1_minus_shared_2 * x.e14 - shared_17 * x.e23
+                    + shared_5 * x.e24 + shared_8 * x.e34,
+                e23: shared_8 * x.e12 - shared_5 * x.e13 - shared_17 * x.e14
+                    + shared_1_minus_shared_2 * x.e23 + shared_15 * x.e24
                     - shared_13 * x.e34,
-                e24: shared_10 * x.e12 + shared_18 * x.e13
-                    + shared_1_plus_shared_2 * x.e24 + shared_11 * x.e34
-                    - shared_6 * x.e14 - shared_16 * x.e23,
-                e34: shared_9 * x.e13 + shared_14 * x.e23
-                    + shared_3_minus_shared_4 * x.e34 - shared_19 * x.e12
-                    - shared_7 * x.e14 - shared_12 * x.e24,
+                e24: shared_10 * x.e12 + shared_18 * x.e13 - shared_6 * x.e14
+                    - shared_16 * x.e23 + shared_1_plus_shared_2 * x.e24
+                    + shared_11 * x.e34,
+                e34: -(shared_19) * x.e12 + shared_9 * x.e13 - shared_7 * x.e14
+                    + shared_14 * x.e23 - shared_12 * x.e24
+                    + shared_3_minus_shared_4 * x.e34,
             }
         }
     }
@@ -14592,8 +14592,8 @@ pub mod g4 {
             Trivector {
                 e123: (shared_2 + shared_3) * x.e123
                     + (s_e34_plus_e12_e1234 + e13_e14_plus_e23_e24) * x.e124
-                    + (s_e14_plus_e23_e1234 - e12_e24_plus_e13_e34) * x.e234
-                    - (s_e24_minus_e13_e1234 + e12_e14_minus_e23_e34) * x.e134,
+                    - (s_e24_minus_e13_e1234 + e12_e14_minus_e23_e34) * x.e134
+                    + (s_e14_plus_e23_e1234 - e12_e24_plus_e13_e34) * x.e234,
                 e124: (e13_e14_plus_e23_e24 - s_e34_plus_e12_e1234) * x.e123
                     + (shared_2 - shared_3) * x.e124
                     + (s_e23_plus_e14_e1234 + e12_e13_plus_e24_e34) * x.e134
@@ -14602,10 +14602,10 @@ pub mod g4 {
                     + (e12_e13_plus_e24_e34 - s_e23_plus_e14_e1234) * x.e124
                     + (shared_1 + shared_4) * x.e134
                     + (s_e12_plus_e34_e1234 + e13_e23_plus_e14_e24) * x.e234,
-                e234: (s_e13_minus_e24_e1234 + e12_e23_minus_e14_e34) * x.e124
+                e234: -(s_e14_plus_e23_e1234 + e12_e24_plus_e13_e34) * x.e123
+                    + (s_e13_minus_e24_e1234 + e12_e23_minus_e14_e34) * x.e124
                     + (e13_e23_plus_e14_e24 - s_e12_plus_e34_e1234) * x.e134
-                    + (shared_1 - shared_4) * x.e234
-                    - (s_e14_plus_e23_e1234 + e12_e24_plus_e13_e34) * x.e123,
+                    + (shared_1 - shared_4) * x.e234,
             }
         }
     }
@@ -14721,21 +14721,21 @@ pub mod g4 {
                 e12: shared_2_minus_shared_4 * x.e12 + shared_12 * x.e13
                     + shared_14 * x.e14 - shared_7 * x.e23 - shared_9 * x.e24
                     - shared_17 * x.e34,
-                e13: shared_1_plus_shared_3 * x.e13 + shared_16 * x.e14
-                    + shared_6 * x.e23 + shared_20 * x.e24 - shared_11 * x.e12
+                e13: -(shared_11) * x.e12 + shared_1_plus_shared_3 * x.e13
+                    + shared_16 * x.e14 + shared_6 * x.e23 + shared_20 * x.e24
                     - shared_10 * x.e34,
-                e14: shared_1_minus_shared_3 * x.e14 + shared_5 * x.e24
-                    + shared_8 * x.e34 - shared_13 * x.e12 - shared_15 * x.e13
-                    - shared_19 * x.e23,
-                e23: shared_8 * x.e12 + shared_1_minus_shared_3 * x.e23
-                    + shared_15 * x.e24 - shared_5 * x.e13 - shared_19 * x.e14
+                e14: -(shared_13) * x.e12 - shared_15 * x.e13
+                    + shared_1_minus_shared_3 * x.e14 - shared_19 * x.e23
+                    + shared_5 * x.e24 + shared_8 * x.e34,
+                e23: shared_8 * x.e12 - shared_5 * x.e13 - shared_19 * x.e14
+                    + shared_1_minus_shared_3 * x.e23 + shared_15 * x.e24
                     - shared_13 * x.e34,
-                e24: shared_10 * x.e12 + shared_20 * x.e13
-                    + shared_1_plus_shared_3 * x.e24 + shared_11 * x.e34
-                    - shared_6 * x.e14 - shared_16 * x.e23,
-                e34: shared_9 * x.e13 + shared_14 * x.e23
-                    + shared_2_minus_shared_4 * x.e34 - shared_17 * x.e12
-                    - shared_7 * x.e14 - shared_12 * x.e24,
+                e24: shared_10 * x.e12 + shared_20 * x.e13 - shared_6 * x.e14
+                    - shared_16 * x.e23 + shared_1_plus_shared_3 * x.e24
+                    + shared_11 * x.e34,
+                e34: -(shared_17) * x.e12 + shared_9 * x.e13 - shared_7 * x.e14
+                    + shared_14 * x.e23 - shared_12 * x.e24
+                    + shared_2_minus_shared_4 * x.e34,
                 e1234: shared_18 * x.s + shared_2_plus_shared_4 * x.e1234,
             }
         }
@@ -14821,20 +14821,20 @@ pub mod g4 {
             Odd {
                 e1: shared_1_minus_shared_4 * x.e1 + shared_5 * x.e2 + shared_8 * x.e3
                     + shared_10 * x.e4,
-                e2: shared_1_plus_shared_4 * x.e2 + shared_11 * x.e3 + shared_13 * x.e4
-                    - shared_6 * x.e1,
-                e3: shared_2_minus_shared_3 * x.e3 + shared_15 * x.e4 - shared_7 * x.e1
-                    - shared_12 * x.e2,
-                e4: shared_2_plus_shared_3 * x.e4 - shared_9 * x.e1 - shared_14 * x.e2
-                    - shared_16 * x.e3,
+                e2: -(shared_6) * x.e1 + shared_1_plus_shared_4 * x.e2 + shared_11 * x.e3
+                    + shared_13 * x.e4,
+                e3: -(shared_7) * x.e1 - shared_12 * x.e2
+                    + shared_2_minus_shared_3 * x.e3 + shared_15 * x.e4,
+                e4: -(shared_9) * x.e1 - shared_14 * x.e2 - shared_16 * x.e3
+                    + shared_2_plus_shared_3 * x.e4,
                 e123: shared_2_plus_shared_3 * x.e123 + shared_16 * x.e124
-                    + shared_9 * x.e234 - shared_14 * x.e134,
-                e124: shared_2_minus_shared_3 * x.e124 + shared_12 * x.e134
-                    - shared_15 * x.e123 - shared_7 * x.e234,
-                e134: shared_13 * x.e123 + shared_1_plus_shared_4 * x.e134
-                    + shared_6 * x.e234 - shared_11 * x.e124,
-                e234: shared_8 * x.e124 + shared_1_minus_shared_4 * x.e234
-                    - shared_10 * x.e123 - shared_5 * x.e134,
+                    - shared_14 * x.e134 + shared_9 * x.e234,
+                e124: -(shared_15) * x.e123 + shared_2_minus_shared_3 * x.e124
+                    + shared_12 * x.e134 - shared_7 * x.e234,
+                e134: shared_13 * x.e123 - shared_11 * x.e124
+                    + shared_1_plus_shared_4 * x.e134 + shared_6 * x.e234,
+                e234: -(shared_10) * x.e123 + shared_8 * x.e124 - shared_5 * x.e134
+                    + shared_1_minus_shared_4 * x.e234,
             }
         }
     }
@@ -14968,38 +14968,38 @@ pub mod g4 {
                 s: shared_4_plus_shared_8 * x.s + shared_34 * x.e1234,
                 e1: shared_2_minus_shared_7 * x.e1 + shared_9 * x.e2 + shared_15 * x.e3
                     + shared_20 * x.e4,
-                e2: shared_2_plus_shared_7 * x.e2 + shared_22 * x.e3 + shared_25 * x.e4
-                    - shared_12 * x.e1,
-                e3: shared_3_minus_shared_6 * x.e3 + shared_31 * x.e4 - shared_14 * x.e1
-                    - shared_24 * x.e2,
-                e4: shared_3_plus_shared_6 * x.e4 - shared_17 * x.e1 - shared_27 * x.e2
-                    - shared_32 * x.e3,
+                e2: -(shared_12) * x.e1 + shared_2_plus_shared_7 * x.e2
+                    + shared_22 * x.e3 + shared_25 * x.e4,
+                e3: -(shared_14) * x.e1 - shared_24 * x.e2
+                    + shared_3_minus_shared_6 * x.e3 + shared_31 * x.e4,
+                e4: -(shared_17) * x.e1 - shared_27 * x.e2 - shared_32 * x.e3
+                    + shared_3_plus_shared_6 * x.e4,
                 e12: shared_4_minus_shared_8 * x.e12 + shared_23 * x.e13
                     + shared_28 * x.e14 - shared_13 * x.e23 - shared_18 * x.e24
                     - shared_33 * x.e34,
-                e13: shared_1_plus_shared_5 * x.e13 + shared_30 * x.e14
-                    + shared_11 * x.e23 + shared_36 * x.e24 - shared_21 * x.e12
+                e13: -(shared_21) * x.e12 + shared_1_plus_shared_5 * x.e13
+                    + shared_30 * x.e14 + shared_11 * x.e23 + shared_36 * x.e24
                     - shared_19 * x.e34,
-                e14: shared_1_minus_shared_5 * x.e14 + shared_10 * x.e24
-                    + shared_16 * x.e34 - shared_26 * x.e12 - shared_29 * x.e13
-                    - shared_35 * x.e23,
-                e23: shared_16 * x.e12 + shared_1_minus_shared_5 * x.e23
-                    + shared_29 * x.e24 - shared_10 * x.e13 - shared_35 * x.e14
+                e14: -(shared_26) * x.e12 - shared_29 * x.e13
+                    + shared_1_minus_shared_5 * x.e14 - shared_35 * x.e23
+                    + shared_10 * x.e24 + shared_16 * x.e34,
+                e23: shared_16 * x.e12 - shared_10 * x.e13 - shared_35 * x.e14
+                    + shared_1_minus_shared_5 * x.e23 + shared_29 * x.e24
                     - shared_26 * x.e34,
-                e24: shared_19 * x.e12 + shared_36 * x.e13
-                    + shared_1_plus_shared_5 * x.e24 + shared_21 * x.e34
-                    - shared_11 * x.e14 - shared_30 * x.e23,
-                e34: shared_18 * x.e13 + shared_28 * x.e23
-                    + shared_4_minus_shared_8 * x.e34 - shared_33 * x.e12
-                    - shared_13 * x.e14 - shared_23 * x.e24,
+                e24: shared_19 * x.e12 + shared_36 * x.e13 - shared_11 * x.e14
+                    - shared_30 * x.e23 + shared_1_plus_shared_5 * x.e24
+                    + shared_21 * x.e34,
+                e34: -(shared_33) * x.e12 + shared_18 * x.e13 - shared_13 * x.e14
+                    + shared_28 * x.e23 - shared_23 * x.e24
+                    + shared_4_minus_shared_8 * x.e34,
                 e123: shared_3_plus_shared_6 * x.e123 + shared_32 * x.e124
-                    + shared_17 * x.e234 - shared_27 * x.e134,
-                e124: shared_3_minus_shared_6 * x.e124 + shared_24 * x.e134
-                    - shared_31 * x.e123 - shared_14 * x.e234,
-                e134: shared_25 * x.e123 + shared_2_plus_shared_7 * x.e134
-                    + shared_12 * x.e234 - shared_22 * x.e124,
-                e234: shared_15 * x.e124 + shared_2_minus_shared_7 * x.e234
-                    - shared_20 * x.e123 - shared_9 * x.e134,
+                    - shared_27 * x.e134 + shared_17 * x.e234,
+                e124: -(shared_31) * x.e123 + shared_3_minus_shared_6 * x.e124
+                    + shared_24 * x.e134 - shared_14 * x.e234,
+                e134: shared_25 * x.e123 - shared_22 * x.e124
+                    + shared_2_plus_shared_7 * x.e134 + shared_12 * x.e234,
+                e234: -(shared_20) * x.e123 + shared_15 * x.e124 - shared_9 * x.e134
+                    + shared_2_minus_shared_7 * x.e234,
                 e1234: shared_34 * x.s + shared_4_plus_shared_8 * x.e1234,
             }
         }
@@ -15183,18 +15183,18 @@ pub mod g4 {
                     + (e3_e123_plus_e4_e124 - e1_e2_plus_e134_e234) * x.e2
                     - (e1_e3_minus_e124_e234 + e2_e123_minus_e4_e134) * x.e3
                     - (e1_e4_plus_e123_e234 + e2_e124_plus_e3_e134) * x.e4,
-                e2: (shared_1 + shared_4) * x.e2
+                e2: -(e1_e2_plus_e134_e234 + e3_e123_plus_e4_e124) * x.e1
+                    + (shared_1 + shared_4) * x.e2
                     + (e1_e123_plus_e4_e234 - e2_e3_plus_e124_e134) * x.e3
-                    + (e1_e124_minus_e3_e234 - e2_e4_minus_e123_e134) * x.e4
-                    - (e1_e2_plus_e134_e234 + e3_e123_plus_e4_e124) * x.e1,
+                    + (e1_e124_minus_e3_e234 - e2_e4_minus_e123_e134) * x.e4,
                 e3: (e2_e123_minus_e4_e134 - e1_e3_minus_e124_e234) * x.e1
+                    - (e1_e123_plus_e4_e234 + e2_e3_plus_e124_e134) * x.e2
                     + (shared_2 - shared_3) * x.e3
-                    + (e1_e134_plus_e2_e234 - e3_e4_plus_e123_e124) * x.e4
-                    - (e1_e123_plus_e4_e234 + e2_e3_plus_e124_e134) * x.e2,
+                    + (e1_e134_plus_e2_e234 - e3_e4_plus_e123_e124) * x.e4,
                 e4: (e2_e124_plus_e3_e134 - e1_e4_plus_e123_e234) * x.e1
-                    + (shared_2 + shared_3) * x.e4
                     - (e1_e124_minus_e3_e234 + e2_e4_minus_e123_e134) * x.e2
-                    - (e1_e134_plus_e2_e234 + e3_e4_plus_e123_e124) * x.e3,
+                    - (e1_e134_plus_e2_e234 + e3_e4_plus_e123_e124) * x.e3
+                    + (shared_2 + shared_3) * x.e4,
             }
         }
     }
@@ -15287,24 +15287,24 @@ pub mod g4 {
             let shared_19 = e1_e234_minus_e2_e134 - e3_e124_minus_e4_e123;
             let shared_3_minus_shared_4 = shared_3 - shared_4;
             Bivector {
-                e12: shared_7 * x.e23 + shared_9 * x.e24 + shared_19 * x.e34
-                    - shared_3_minus_shared_4 * x.e12 - shared_12 * x.e13
-                    - shared_14 * x.e14,
-                e13: shared_11 * x.e12 + shared_10 * x.e34
-                    - shared_1_plus_shared_2 * x.e13 - shared_16 * x.e14
-                    - shared_6 * x.e23 - shared_18 * x.e24,
-                e14: shared_13 * x.e12 + shared_15 * x.e13 + shared_17 * x.e23
-                    - shared_1_minus_shared_2 * x.e14 - shared_5 * x.e24
-                    - shared_8 * x.e34,
-                e23: shared_8 * x.e12 + shared_1_minus_shared_2 * x.e23
-                    + shared_15 * x.e24 - shared_5 * x.e13 - shared_17 * x.e14
+                e12: -(shared_3_minus_shared_4) * x.e12 - shared_12 * x.e13
+                    - shared_14 * x.e14 + shared_7 * x.e23 + shared_9 * x.e24
+                    + shared_19 * x.e34,
+                e13: shared_11 * x.e12 - shared_1_plus_shared_2 * x.e13
+                    - shared_16 * x.e14 - shared_6 * x.e23 - shared_18 * x.e24
+                    + shared_10 * x.e34,
+                e14: shared_13 * x.e12 + shared_15 * x.e13
+                    - shared_1_minus_shared_2 * x.e14 + shared_17 * x.e23
+                    - shared_5 * x.e24 - shared_8 * x.e34,
+                e23: shared_8 * x.e12 - shared_5 * x.e13 - shared_17 * x.e14
+                    + shared_1_minus_shared_2 * x.e23 + shared_15 * x.e24
                     - shared_13 * x.e34,
-                e24: shared_10 * x.e12 + shared_18 * x.e13
-                    + shared_1_plus_shared_2 * x.e24 + shared_11 * x.e34
-                    - shared_6 * x.e14 - shared_16 * x.e23,
-                e34: shared_9 * x.e13 + shared_14 * x.e23
-                    + shared_3_minus_shared_4 * x.e34 - shared_19 * x.e12
-                    - shared_7 * x.e14 - shared_12 * x.e24,
+                e24: shared_10 * x.e12 + shared_18 * x.e13 - shared_6 * x.e14
+                    - shared_16 * x.e23 + shared_1_plus_shared_2 * x.e24
+                    + shared_11 * x.e34,
+                e34: -(shared_19) * x.e12 + shared_9 * x.e13 - shared_7 * x.e14
+                    + shared_14 * x.e23 - shared_12 * x.e24
+                    + shared_3_minus_shared_4 * x.e34,
             }
         }
     }
@@ -15371,22 +15371,22 @@ pub mod g4 {
             let shared_3 = e3_e3_minus_e124_e124 - e4_e4_minus_e123_e123;
             let shared_4 = e3_e3_minus_e124_e124 + e4_e4_minus_e123_e123;
             Trivector {
-                e123: (e1_e124_minus_e3_e234 + e2_e4_minus_e123_e134) * x.e134
-                    + (e2_e124_plus_e3_e134 - e1_e4_plus_e123_e234) * x.e234
-                    - (shared_2 + shared_3) * x.e123
-                    - (e1_e134_plus_e2_e234 + e3_e4_plus_e123_e124) * x.e124,
+                e123: -(shared_2 + shared_3) * x.e123
+                    - (e1_e134_plus_e2_e234 + e3_e4_plus_e123_e124) * x.e124
+                    + (e1_e124_minus_e3_e234 + e2_e4_minus_e123_e134) * x.e134
+                    + (e2_e124_plus_e3_e134 - e1_e4_plus_e123_e234) * x.e234,
                 e124: (e1_e134_plus_e2_e234 - e3_e4_plus_e123_e124) * x.e123
                     + (shared_3 - shared_2) * x.e124
-                    + (e1_e3_minus_e124_e234 - e2_e123_minus_e4_e134) * x.e234
-                    - (e1_e123_plus_e4_e234 + e2_e3_plus_e124_e134) * x.e134,
+                    - (e1_e123_plus_e4_e234 + e2_e3_plus_e124_e134) * x.e134
+                    + (e1_e3_minus_e124_e234 - e2_e123_minus_e4_e134) * x.e234,
                 e134: (e2_e4_minus_e123_e134 - e1_e124_minus_e3_e234) * x.e123
                     + (e1_e123_plus_e4_e234 - e2_e3_plus_e124_e134) * x.e124
                     - (shared_1 + shared_4) * x.e134
                     - (e1_e2_plus_e134_e234 + e3_e123_plus_e4_e124) * x.e234,
-                e234: (e1_e3_minus_e124_e234 + e2_e123_minus_e4_e134) * x.e124
+                e234: -(e1_e4_plus_e123_e234 + e2_e124_plus_e3_e134) * x.e123
+                    + (e1_e3_minus_e124_e234 + e2_e123_minus_e4_e134) * x.e124
                     + (e3_e123_plus_e4_e124 - e1_e2_plus_e134_e234) * x.e134
-                    + (shared_1 - shared_4) * x.e234
-                    - (e1_e4_plus_e123_e234 + e2_e124_plus_e3_e134) * x.e123,
+                    + (shared_1 - shared_4) * x.e234,
             }
         }
     }
@@ -15499,25 +15499,25 @@ pub mod g4 {
             let shared_2_plus_shared_4 = shared_2 + shared_4;
             Even {
                 s: shared_2_plus_shared_4 * x.s + shared_18 * x.e1234,
-                e12: shared_7 * x.e23 + shared_9 * x.e24 + shared_17 * x.e34
-                    - shared_2_minus_shared_4 * x.e12 - shared_12 * x.e13
-                    - shared_14 * x.e14,
-                e13: shared_11 * x.e12 + shared_10 * x.e34
-                    - shared_1_plus_shared_3 * x.e13 - shared_16 * x.e14
-                    - shared_6 * x.e23 - shared_20 * x.e24,
-                e14: shared_13 * x.e12 + shared_15 * x.e13 + shared_19 * x.e23
-                    - shared_1_minus_shared_3 * x.e14 - shared_5 * x.e24
-                    - shared_8 * x.e34,
-                e23: shared_8 * x.e12 + shared_1_minus_shared_3 * x.e23
-                    + shared_15 * x.e24 - shared_5 * x.e13 - shared_19 * x.e14
+                e12: -(shared_2_minus_shared_4) * x.e12 - shared_12 * x.e13
+                    - shared_14 * x.e14 + shared_7 * x.e23 + shared_9 * x.e24
+                    + shared_17 * x.e34,
+                e13: shared_11 * x.e12 - shared_1_plus_shared_3 * x.e13
+                    - shared_16 * x.e14 - shared_6 * x.e23 - shared_20 * x.e24
+                    + shared_10 * x.e34,
+                e14: shared_13 * x.e12 + shared_15 * x.e13
+                    - shared_1_minus_shared_3 * x.e14 + shared_19 * x.e23
+                    - shared_5 * x.e24 - shared_8 * x.e34,
+                e23: shared_8 * x.e12 - shared_5 * x.e13 - shared_19 * x.e14
+                    + shared_1_minus_shared_3 * x.e23 + shared_15 * x.e24
                     - shared_13 * x.e34,
-                e24: shared_10 * x.e12 + shared_20 * x.e13
-                    + shared_1_plus_shared_3 * x.e24 + shared_11 * x.e34
-                    - shared_6 * x.e14 - shared_16 * x.e23,
-                e34: shared_9 * x.e13 + shared_14 * x.e23
-                    + shared_2_minus_shared_4 * x.e34 - shared_17 * x.e12
-                    - shared_7 * x.e14 - shared_12 * x.e24,
-                e1234: -shared_18 * x.s - shared_2_plus_shared_4 * x.e1234,
+                e24: shared_10 * x.e12 + shared_20 * x.e13 - shared_6 * x.e14
+                    - shared_16 * x.e23 + shared_1_plus_shared_3 * x.e24
+                    + shared_11 * x.e34,
+                e34: -(shared_17) * x.e12 + shared_9 * x.e13 - shared_7 * x.e14
+                    + shared_14 * x.e23 - shared_12 * x.e24
+                    + shared_2_minus_shared_4 * x.e34,
+                e1234: -(shared_18) * x.s - shared_2_plus_shared_4 * x.e1234,
             }
         }
     }
@@ -15600,22 +15600,22 @@ pub mod g4 {
             let shared_2_minus_shared_3 = shared_2 - shared_3;
             let shared_2_plus_shared_3 = shared_2 + shared_3;
             Odd {
-                e1: -shared_1_minus_shared_4 * x.e1 - shared_5 * x.e2 - shared_8 * x.e3
+                e1: -(shared_1_minus_shared_4) * x.e1 - shared_5 * x.e2 - shared_8 * x.e3
                     - shared_10 * x.e4,
-                e2: shared_1_plus_shared_4 * x.e2 + shared_11 * x.e3 + shared_13 * x.e4
-                    - shared_6 * x.e1,
-                e3: shared_2_minus_shared_3 * x.e3 + shared_15 * x.e4 - shared_7 * x.e1
-                    - shared_12 * x.e2,
-                e4: shared_2_plus_shared_3 * x.e4 - shared_9 * x.e1 - shared_14 * x.e2
-                    - shared_16 * x.e3,
-                e123: shared_14 * x.e134 - shared_2_plus_shared_3 * x.e123
-                    - shared_16 * x.e124 - shared_9 * x.e234,
-                e124: shared_15 * x.e123 + shared_7 * x.e234
-                    - shared_2_minus_shared_3 * x.e124 - shared_12 * x.e134,
-                e134: shared_11 * x.e124 - shared_13 * x.e123
+                e2: -(shared_6) * x.e1 + shared_1_plus_shared_4 * x.e2 + shared_11 * x.e3
+                    + shared_13 * x.e4,
+                e3: -(shared_7) * x.e1 - shared_12 * x.e2
+                    + shared_2_minus_shared_3 * x.e3 + shared_15 * x.e4,
+                e4: -(shared_9) * x.e1 - shared_14 * x.e2 - shared_16 * x.e3
+                    + shared_2_plus_shared_3 * x.e4,
+                e123: -(shared_2_plus_shared_3) * x.e123 - shared_16 * x.e124
+                    + shared_14 * x.e134 - shared_9 * x.e234,
+                e124: shared_15 * x.e123 - shared_2_minus_shared_3 * x.e124
+                    - shared_12 * x.e134 + shared_7 * x.e234,
+                e134: -(shared_13) * x.e123 + shared_11 * x.e124
                     - shared_1_plus_shared_4 * x.e134 - shared_6 * x.e234,
-                e234: shared_8 * x.e124 + shared_1_minus_shared_4 * x.e234
-                    - shared_10 * x.e123 - shared_5 * x.e134,
+                e234: -(shared_10) * x.e123 + shared_8 * x.e124 - shared_5 * x.e134
+                    + shared_1_minus_shared_4 * x.e234,
             }
         }
     }
@@ -15747,41 +15747,41 @@ pub mod g4 {
             let shared_4_plus_shared_8 = shared_4 + shared_8;
             Multivector {
                 s: shared_4_plus_shared_8 * x.s + shared_34 * x.e1234,
-                e1: -shared_2_minus_shared_7 * x.e1 - shared_9 * x.e2 - shared_15 * x.e3
-                    - shared_20 * x.e4,
-                e2: shared_2_plus_shared_7 * x.e2 + shared_22 * x.e3 + shared_25 * x.e4
-                    - shared_12 * x.e1,
-                e3: shared_3_minus_shared_6 * x.e3 + shared_31 * x.e4 - shared_14 * x.e1
-                    - shared_24 * x.e2,
-                e4: shared_3_plus_shared_6 * x.e4 - shared_17 * x.e1 - shared_27 * x.e2
-                    - shared_32 * x.e3,
-                e12: shared_13 * x.e23 + shared_18 * x.e24 + shared_33 * x.e34
-                    - shared_4_minus_shared_8 * x.e12 - shared_23 * x.e13
-                    - shared_28 * x.e14,
-                e13: shared_21 * x.e12 + shared_19 * x.e34
-                    - shared_1_plus_shared_5 * x.e13 - shared_30 * x.e14
-                    - shared_11 * x.e23 - shared_36 * x.e24,
-                e14: shared_26 * x.e12 + shared_29 * x.e13 + shared_35 * x.e23
-                    - shared_1_minus_shared_5 * x.e14 - shared_10 * x.e24
-                    - shared_16 * x.e34,
-                e23: shared_16 * x.e12 + shared_1_minus_shared_5 * x.e23
-                    + shared_29 * x.e24 - shared_10 * x.e13 - shared_35 * x.e14
+                e1: -(shared_2_minus_shared_7) * x.e1 - shared_9 * x.e2
+                    - shared_15 * x.e3 - shared_20 * x.e4,
+                e2: -(shared_12) * x.e1 + shared_2_plus_shared_7 * x.e2
+                    + shared_22 * x.e3 + shared_25 * x.e4,
+                e3: -(shared_14) * x.e1 - shared_24 * x.e2
+                    + shared_3_minus_shared_6 * x.e3 + shared_31 * x.e4,
+                e4: -(shared_17) * x.e1 - shared_27 * x.e2 - shared_32 * x.e3
+                    + shared_3_plus_shared_6 * x.e4,
+                e12: -(shared_4_minus_shared_8) * x.e12 - shared_23 * x.e13
+                    - shared_28 * x.e14 + shared_13 * x.e23 + shared_18 * x.e24
+                    + shared_33 * x.e34,
+                e13: shared_21 * x.e12 - shared_1_plus_shared_5 * x.e13
+                    - shared_30 * x.e14 - shared_11 * x.e23 - shared_36 * x.e24
+                    + shared_19 * x.e34,
+                e14: shared_26 * x.e12 + shared_29 * x.e13
+                    - shared_1_minus_shared_5 * x.e14 + shared_35 * x.e23
+                    - shared_10 * x.e24 - shared_16 * x.e34,
+                e23: shared_16 * x.e12 - shared_10 * x.e13 - shared_35 * x.e14
+                    + shared_1_minus_shared_5 * x.e23 + shared_29 * x.e24
                     - shared_26 * x.e34,
-                e24: shared_19 * x.e12 + shared_36 * x.e13
-                    + shared_1_plus_shared_5 * x.e24 + shared_21 * x.e34
-                    - shared_11 * x.e14 - shared_30 * x.e23,
-                e34: shared_18 * x.e13 + shared_28 * x.e23
-                    + shared_4_minus_shared_8 * x.e34 - shared_33 * x.e12
-                    - shared_13 * x.e14 - shared_23 * x.e24,
-                e123: shared_27 * x.e134 - shared_3_plus_shared_6 * x.e123
-                    - shared_32 * x.e124 - shared_17 * x.e234,
-                e124: shared_31 * x.e123 + shared_14 * x.e234
-                    - shared_3_minus_shared_6 * x.e124 - shared_24 * x.e134,
-                e134: shared_22 * x.e124 - shared_25 * x.e123
+                e24: shared_19 * x.e12 + shared_36 * x.e13 - shared_11 * x.e14
+                    - shared_30 * x.e23 + shared_1_plus_shared_5 * x.e24
+                    + shared_21 * x.e34,
+                e34: -(shared_33) * x.e12 + shared_18 * x.e13 - shared_13 * x.e14
+                    + shared_28 * x.e23 - shared_23 * x.e24
+                    + shared_4_minus_shared_8 * x.e34,
+                e123: -(shared_3_plus_shared_6) * x.e123 - shared_32 * x.e124
+                    + shared_27 * x.e134 - shared_17 * x.e234,
+                e124: shared_31 * x.e123 - shared_3_minus_shared_6 * x.e124
+                    - shared_24 * x.e134 + shared_14 * x.e234,
+                e134: -(shared_25) * x.e123 + shared_22 * x.e124
                     - shared_2_plus_shared_7 * x.e134 - shared_12 * x.e234,
-                e234: shared_15 * x.e124 + shared_2_minus_shared_7 * x.e234
-                    - shared_20 * x.e123 - shared_9 * x.e134,
-                e1234: -shared_34 * x.s - shared_4_plus_shared_8 * x.e1234,
+                e234: -(shared_20) * x.e123 + shared_15 * x.e124 - shared_9 * x.e134
+                    + shared_2_minus_shared_7 * x.e234,
+                e1234: -(shared_34) * x.s - shared_4_plus_shared_8 * x.e1234,
             }
         }
     }

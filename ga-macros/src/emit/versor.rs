@@ -333,33 +333,47 @@ fn fused_parts(plan: &Plan, v: TypeId, x: TypeId, q: &Quadratic) -> FusedParts {
     }
 }
 
+/// `x -> v x ~v` as one sum per output component over the components of `x`, in their
+/// order: the sums of neighbouring outputs then line up term by term, which is how LLVM's
+/// SLP vectoriser pairs them into one register in a chain of rotations. A coefficient whose
+/// summands are all negative is subtracted as a positive sum, `- (p + q) x`, which saves
+/// its negation, except as an output's first term, which is `-(p + q) * x` (the negated
+/// sum times `x`) so that the order holds. Measured on AMD Zen 5 for the G3 `f64` rotor on
+/// a vector, that first term written `(-p - q) * x` made LLVM pair the outputs so that a
+/// chain of rotations took 1.7x as long.
 fn fused_body(plan: &Plan, v: TypeId, x: TypeId, q: &Quadratic) -> TokenStream {
     let parts = fused_parts(plan, v, x, q);
     let arg = Operand::new(quote!(x), x);
     let value = construct(plan, Output::Type(x), |blade| {
-        let terms: Vec<(i32, TokenStream)> = parts
-            .coefficients
-            .range((blade, 0)..=(blade, usize::MAX))
-            .map(|(&(_, k), coefficient)| {
-                let xk = arg.component(plan, k);
-                match coefficient.as_slice() {
-                    [(c @ (1 | -1), single)] => (*c, quote!(#single * #xk)),
-                    // `(-a - b) x` is `-((a + b) x)`: subtracted from the output's sum,
-                    // it costs no negation.
-                    _ if coefficient.iter().all(|&(c, _)| c < 0) => {
-                        let flipped: Vec<(i32, TokenStream)> =
-                            coefficient.iter().map(|(c, t)| (-c, t.clone())).collect();
-                        let sum = signed_sum_linear(&flipped);
-                        (-1, quote!((#sum) * #xk))
-                    }
-                    _ => {
-                        let sum = signed_sum_linear(coefficient);
-                        (1, quote!((#sum) * #xk))
+        let mut sum = TokenStream::new();
+        for (&(_, k), coefficient) in parts.coefficients.range((blade, 0)..=(blade, usize::MAX)) {
+            let xk = arg.component(plan, k);
+            let first = sum.is_empty();
+            let (positive, term) = match coefficient.as_slice() {
+                [(1, single)] => (true, quote!(#single * #xk)),
+                [(-1, single)] if !first => (false, quote!(#single * #xk)),
+                _ if coefficient.iter().all(|&(c, _)| c < 0) => {
+                    let flipped: Vec<(i32, TokenStream)> =
+                        coefficient.iter().map(|(c, t)| (-c, t.clone())).collect();
+                    let inner = signed_sum_linear(&flipped);
+                    if first {
+                        (true, quote!(-(#inner) * #xk))
+                    } else {
+                        (false, quote!((#inner) * #xk))
                     }
                 }
-            })
-            .collect();
-        (!terms.is_empty()).then(|| signed_sum_linear(&terms))
+                _ => {
+                    let inner = signed_sum_linear(coefficient);
+                    (true, quote!((#inner) * #xk))
+                }
+            };
+            sum.extend(match (first, positive) {
+                (true, _) => term,
+                (false, true) => quote!(+ #term),
+                (false, false) => quote!(- #term),
+            });
+        }
+        (!sum.is_empty()).then_some(sum)
     });
     let lets = parts.lets;
     quote! {
