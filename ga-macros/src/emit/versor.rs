@@ -13,9 +13,7 @@ use super::products::product_value;
 use crate::algebra::{blade_name, Involution, ProductKind};
 use crate::plan::collected::{CollectedSums, Summand};
 use crate::plan::sandwich_form::CommutatorTerms;
-use crate::plan::{
-    bilinear, sandwich, Output, PairColumns, Plan, Quadratic, SandwichForm, TypeId, TypeKind,
-};
+use crate::plan::{bilinear, sandwich, Output, PairColumns, Plan, SandwichForm, TypeId, TypeKind};
 
 /// The `Sandwich` trait and its impls for every versor type on every emitted type, and
 /// `SandwichUnit` where the unit versor has a cheaper form.
@@ -67,7 +65,7 @@ fn sandwich_impl(plan: &Plan, v: TypeId, x: TypeId) -> TokenStream {
     let (v_ty, x_ty) = (type_tokens(plan, v), type_tokens(plan, x));
     let odd = is_odd(plan, v);
     let body = match plan.sandwich_form(v, x, false) {
-        Some(SandwichForm::Collected(q)) => fused_body(plan, v, x, &q),
+        Some(SandwichForm::Collected(sums)) => fused_body(plan, v, x, &sums),
         Some(SandwichForm::Commutator { terms, lanes }) => {
             commutator_body(plan, v, x, &terms, lanes.as_ref(), false)
         }
@@ -256,10 +254,9 @@ struct FusedParts {
 
 /// The `let`s of a collected sandwich (doubled components, pair products, shared partial
 /// sums) and each coefficient as signed names of them.
-fn fused_parts(plan: &Plan, v: TypeId, x: TypeId, q: &Quadratic) -> FusedParts {
+fn fused_parts(plan: &Plan, v: TypeId, sums: &CollectedSums) -> FusedParts {
     let versor = &plan.types.get(v).blades;
     let this = Operand::new(quote!(self), v);
-    let sums = CollectedSums::new(q, &plan.types.get(x).blades);
     let pair_name = |(i, j): (usize, usize)| {
         format_ident!("{}_{}", blade_name(versor[i]), blade_name(versor[j]))
     };
@@ -341,8 +338,8 @@ fn fused_parts(plan: &Plan, v: TypeId, x: TypeId, q: &Quadratic) -> FusedParts {
 /// sum times `x`) so that the order holds. Measured on AMD Zen 5 for the G3 `f64` rotor on
 /// a vector, that first term written `(-p - q) * x` made LLVM pair the outputs so that a
 /// chain of rotations took 1.7x as long.
-fn fused_body(plan: &Plan, v: TypeId, x: TypeId, q: &Quadratic) -> TokenStream {
-    let parts = fused_parts(plan, v, x, q);
+fn fused_body(plan: &Plan, v: TypeId, x: TypeId, sums: &CollectedSums) -> TokenStream {
+    let parts = fused_parts(plan, v, sums);
     let arg = Operand::new(quote!(x), x);
     let value = construct(plan, Output::Type(x), |blade| {
         let mut sum = TokenStream::new();
@@ -394,7 +391,7 @@ pub fn emit_sandwich_matrix(plan: &Plan, v: TypeId) -> TokenStream {
         is_odd(plan, v),
         &blades,
     );
-    let parts = fused_parts(plan, v, vector, &q);
+    let parts = fused_parts(plan, v, &CollectedSums::new(&q, &blades));
     let s = scalar_type(plan);
     let zero = super::expr::zero(plan);
     let rows = blades.iter().map(|&blade| {

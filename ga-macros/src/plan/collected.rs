@@ -9,13 +9,13 @@
 //! greedily, the most shared first, until no pair of summands appears in two coefficients.
 //! The coefficients do not depend on `x`, so sharing never lengthens the path through `x`.
 
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::{BTreeMap, BTreeSet, HashMap};
 
 use super::Quadratic;
 use crate::algebra::Blade;
 
 /// One summand of a coefficient: a pair product `v[i] v[j]` (`i <= j`) or a shared sum.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Summand {
     /// `v[i] v[j]`, doubled where [`CollectedSums::doubled`] says so.
     Pair(usize, usize),
@@ -112,11 +112,18 @@ impl CollectedSums {
     /// The pair of unit-coefficient summands (with their relative sign) found in the most
     /// coefficients, if some pair is found in two or more; ties go to the first in order.
     fn most_shared_pair(&self) -> Option<SharedSum> {
-        let mut counts: BTreeMap<(Summand, Summand, i32), usize> = BTreeMap::new();
+        // A hash map: this runs once per shared sum over every coefficient of every
+        // collected sandwich, at expansion time. The pick below does not depend on its order.
+        let mut counts: HashMap<(Summand, Summand, i32), usize> = HashMap::new();
         for terms in self.coefficients.values() {
-            let units: Vec<&(i32, Summand)> = terms.iter().filter(|(c, _)| c.abs() == 1).collect();
-            for (a, &&(ca, first)) in units.iter().enumerate() {
-                for &&(cb, second) in &units[a + 1..] {
+            for (a, &(ca, first)) in terms.iter().enumerate() {
+                if ca.abs() != 1 {
+                    continue;
+                }
+                for &(cb, second) in &terms[a + 1..] {
+                    if cb.abs() != 1 {
+                        continue;
+                    }
                     let (first, second) = if first < second {
                         (first, second)
                     } else {
@@ -126,15 +133,15 @@ impl CollectedSums {
                 }
             }
         }
-        let best = counts.values().copied().max().filter(|&n| n >= 2)?;
-        counts
-            .into_iter()
-            .find(|&(_, n)| n == best)
-            .map(|((first, second, sign), _)| SharedSum {
-                first,
-                second,
-                sign,
-            })
+        let (&(first, second, sign), _) = counts
+            .iter()
+            .filter(|&(_, &n)| n >= 2)
+            .max_by(|(key_a, n_a), (key_b, n_b)| n_a.cmp(n_b).then(key_b.cmp(key_a)))?;
+        Some(SharedSum {
+            first,
+            second,
+            sign,
+        })
     }
 
     /// Defines `shared` and puts it in place of its two summands wherever they appear with

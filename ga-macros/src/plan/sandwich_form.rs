@@ -191,8 +191,8 @@ fn assemble(
 /// The form of one sandwich.
 #[derive(Clone, Debug)]
 pub enum SandwichForm {
-    /// The collected quadratic form.
-    Collected(Quadratic),
+    /// The collected quadratic form, as its coefficients' sums.
+    Collected(CollectedSums),
     /// Two chained products.
     Chained,
     /// Commutators, in scalar code or (with columns) in SIMD lanes.
@@ -239,8 +239,10 @@ impl Plan {
         }
         let mut candidates: Vec<(FormCost, SandwichForm)> = Vec::new();
         if let Some(q) = self.collected_sandwich(v, x) {
-            let cost = collected_cost(&q, &self.types.get(x).blades);
-            candidates.push((cost, SandwichForm::Collected(q)));
+            let operand = &self.types.get(x).blades;
+            let sums = CollectedSums::new(&q, operand);
+            let cost = collected_cost(&sums, operand);
+            candidates.push((cost, SandwichForm::Collected(sums)));
         }
         candidates.push((self.chained_cost(v, x), SandwichForm::Chained));
         if let Some(terms) = commutator {
@@ -382,8 +384,7 @@ fn pick(candidates: Vec<(FormCost, SandwichForm)>) -> Option<SandwichForm> {
 /// The collected form: the pair products (one multiply each), the additions of
 /// [`CollectedSums`] (doublings, shared partial sums, the rest of each coefficient), one
 /// multiply per coefficient, and the sums; along `x`, one multiply and the final sum.
-pub fn collected_cost(q: &Quadratic, operand: &[Blade]) -> FormCost {
-    let sums = CollectedSums::new(q, operand);
+pub fn collected_cost(sums: &CollectedSums, operand: &[Blade]) -> FormCost {
     let mut counts = OpCounts {
         mul: sums.pairs.len() + sums.coefficients.len(),
         add: sums.additions(),
