@@ -59,10 +59,12 @@ for n in names:
     body = loop_body(funcs[n], main_loop='rotor_product' in n)
     if not body: print(n, 'no loop'); continue
     items = 1
-    if n.startswith('b_') and tail and store_bytes(tail):
+    # A batch loop, or a kernel whose loop LLVM vectorised across items (the per-item
+    # sandwich in `sandwich_pairs`): the main loop, per item.
+    if (n.startswith('b_') or (KERNELS and 'rotor_product' not in n)) and tail and store_bytes(tail):
         main = loop_body(funcs[n], main_loop=True)
         across = store_bytes(main) // store_bytes(tail)
-        if main != tail and across in (2, 4, 8) and store_bytes(main) == across * store_bytes(tail):
+        if main != tail and across in (2, 4, 8, 16) and store_bytes(main) == across * store_bytes(tail):
             body, items = main, across
     open(BODY,'w').write('\n'.join(body)+'\n')
     row = f"{n:<16}"
