@@ -283,11 +283,11 @@ fn fused_parts(plan: &Plan, v: TypeId, sums: &CollectedSums) -> FusedParts {
     let mut shared_names: Vec<proc_macro2::Ident> = Vec::new();
     let mut shared_lets = TokenStream::new();
     let mut numbered = 0;
+    let name_of = |s: Summand, names: &[proc_macro2::Ident]| match s {
+        Summand::Pair(i, j) => pair_name((i, j)),
+        Summand::Shared(k) => names[k].clone(),
+    };
     for shared in &sums.shared {
-        let name_of = |s: Summand, names: &[proc_macro2::Ident]| match s {
-            Summand::Pair(i, j) => pair_name((i, j)),
-            Summand::Shared(k) => names[k].clone(),
-        };
         let (first, second) = (
             name_of(shared.first, &shared_names),
             name_of(shared.second, &shared_names),
@@ -314,10 +314,7 @@ fn fused_parts(plan: &Plan, v: TypeId, sums: &CollectedSums) -> FusedParts {
             let terms = terms
                 .iter()
                 .map(|&(c, s)| {
-                    let name = match s {
-                        Summand::Pair(i, j) => pair_name((i, j)),
-                        Summand::Shared(k) => shared_names[k].clone(),
-                    };
+                    let name = name_of(s, &shared_names);
                     (c, quote!(#name))
                 })
                 .collect();
