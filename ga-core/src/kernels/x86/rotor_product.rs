@@ -275,8 +275,9 @@ pub mod f64 {
             };
             let (x, y) = (to_components(x), to_components(y));
             let [s, e12, e13, e23] = rotor_product!(x, y, _mm512_add_pd, _mm512_sub_pd, _mm512_mul_pd, e23: scalar_first);
-            // Back: the first round's inverse is the second round's permutes (they swap
-            // halves), the second round's inverse is the first's transpose of indices.
+            // Back: the same two rounds in the opposite order. Each round is a transpose
+            // (of 4 x 4 elements across a pair of registers, or of their halves), so it
+            // undoes itself.
             let [low, high] = one_component;
             let (first01, last01) = (
                 _mm512_permutex2var_pd(s, low, e12),
