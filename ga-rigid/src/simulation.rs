@@ -209,4 +209,18 @@ impl<T: Integrator + ?Sized> Integrator for Box<T> {
     fn advance(&mut self, body: &RigidBody, t: f64, state: State, dt: f64) -> Result<State, Error> {
         (**self).advance(body, t, state, dt)
     }
+
+    fn accepted_steps(&self) -> Option<u64> {
+        (**self).accepted_steps()
+    }
+
+    fn advance_to_each(
+        &mut self,
+        body: &RigidBody,
+        t: f64,
+        state: State,
+        times: &[f64],
+    ) -> Result<Vec<State>, Error> {
+        (**self).advance_to_each(body, t, state, times)
+    }
 }

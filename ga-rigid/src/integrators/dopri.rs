@@ -55,6 +55,20 @@ const E: [f64; 7] = [
     -1.0 / 40.0,
 ];
 
+/// The weights of the continuous extension of order four (Hairer, Nørsett, Wanner,
+/// section II.6, the DOPRI5 code's `CONTD5`): with `theta = (t - t0) / h`,
+/// `y(t) = y0 + theta (dy + (1 - theta) (b + theta (c + (1 - theta) d)))`, where
+/// `dy = y1 - y0`, `b = h k1 - dy`, `c = dy - h k7 - b` and `d = h sum_j D_j k_j`.
+const D: [f64; 7] = [
+    -12715105075.0 / 11282082432.0,
+    0.0,
+    87487479700.0 / 32700410799.0,
+    -10690763975.0 / 1880347072.0,
+    701980252875.0 / 199316789632.0,
+    -1453857185.0 / 822651844.0,
+    69997945.0 / 29380423.0,
+];
+
 const SAFETY: f64 = 0.9;
 const MIN_RATIO: f64 = 0.2;
 const MAX_RATIO: f64 = 10.0;
@@ -207,11 +221,98 @@ impl Integrator for DormandPrince {
         "dopri"
     }
 
+    fn accepted_steps(&self) -> Option<u64> {
+        Some(self.stats.accepted)
+    }
+
     fn advance(&mut self, body: &RigidBody, t: f64, state: State, dt: f64) -> Result<State, Error> {
         error::finite("dt", "time step", dt)?;
         if dt == 0.0 {
             return check_finite(self.name(), state);
         }
+        self.integrate(body, t, state, dt, |_, _, _, _, _| {})
+    }
+
+    fn advance_to_each(
+        &mut self,
+        body: &RigidBody,
+        t: f64,
+        state: State,
+        times: &[f64],
+    ) -> Result<Vec<State>, Error> {
+        let Some(&last) = times.last() else {
+            return Ok(Vec::new());
+        };
+        error::finite("dt", "time step", last - t)?;
+        let dir = if last < t { -1.0 } else { 1.0 };
+        if let Some((i, &ti)) = times
+            .iter()
+            .enumerate()
+            .find(|&(i, &ti)| (ti - t) * dir < 0.0 || (i > 0 && (ti - times[i - 1]) * dir < 0.0))
+        {
+            return Err(Error::invalid(
+                format!("times[{i}]"),
+                format!(
+                    "sample times must follow the direction of travel from {}, got {}",
+                    error::num(t),
+                    error::num(ti)
+                ),
+            ));
+        }
+        let mut out = Vec::with_capacity(times.len());
+        let mut pending = times;
+        if last == t {
+            out.resize(times.len(), check_finite(self.name(), state)?);
+            return Ok(out);
+        }
+        let end = self.integrate(body, t, state, last - t, |t0, h, y0, y1, k| {
+            while let Some((&ti, rest)) = pending.split_first() {
+                if (ti - t0) * dir > h.abs() || rest.is_empty() {
+                    break;
+                }
+                out.push(to_state(&dense(t0, h, y0, y1, k, ti)));
+                pending = rest;
+            }
+        })?;
+        // The last sample is the end state itself, not its interpolation.
+        out.resize(times.len(), end);
+        for state in &mut out {
+            *state = check_finite(self.name(), *state)?;
+        }
+        Ok(out)
+    }
+}
+
+/// The continuous extension at `t` inside the step from `(t0, y0)` of length `h` to `y1`
+/// with stages `k`, its rotor scaled to unit norm.
+fn dense(t0: f64, h: f64, y0: &Y, y1: &Y, k: &[Y; 7], t: f64) -> Y {
+    let theta = (t - t0) / h;
+    let rest = 1.0 - theta;
+    let mut y: Y = std::array::from_fn(|i| {
+        let dy = y1[i] - y0[i];
+        let b = h * k[0][i] - dy;
+        let c = dy - h * k[6][i] - b;
+        let d = h * (0..7).map(|j| D[j] * k[j][i]).sum::<f64>();
+        y0[i] + theta * (dy + rest * (b + theta * (c + rest * d)))
+    });
+    let norm = (y[0] * y[0] + y[1] * y[1] + y[2] * y[2] + y[3] * y[3]).sqrt();
+    for x in &mut y[..4] {
+        *x /= norm;
+    }
+    y
+}
+
+impl DormandPrince {
+    /// Integrate from `state` at `t` over `dt` (finite, non-zero), calling
+    /// `accepted(t0, h, y0, y1, k)` for each accepted step before its rotor is scaled.
+    fn integrate(
+        &mut self,
+        body: &RigidBody,
+        t: f64,
+        state: State,
+        dt: f64,
+        mut accepted: impl FnMut(f64, f64, &Y, &Y, &[Y; 7]),
+    ) -> Result<State, Error> {
         let dir = dt.signum();
         let t_end = t + dt;
         let mut t = t;
@@ -267,7 +368,7 @@ impl Integrator for DormandPrince {
             let err = (err / 7.0).sqrt();
             if !err.is_finite() {
                 return Err(Error::NotFinite {
-                    field: self.name().to_string(),
+                    field: "dopri".to_string(),
                     what: "the integrated state",
                     value: err,
                 });
@@ -283,6 +384,7 @@ impl Integrator for DormandPrince {
                 }
                 self.previous_error = err.max(1e-4);
                 self.stats.accepted += 1;
+                accepted(t, hs, &y, &y1, &k);
                 // Scale the rotor back to unit norm; its rate is linear in R, so the FSAL
                 // stage scales with it unless a torque reads the attitude.
                 let norm = (y1[0] * y1[0] + y1[1] * y1[1] + y1[2] * y1[2] + y1[3] * y1[3]).sqrt();

@@ -18,6 +18,35 @@ pub trait Integrator {
     /// not finite, if the method cannot treat this body, or if the solution stops being
     /// finite.
     fn advance(&mut self, body: &RigidBody, t: f64, state: State, dt: f64) -> Result<State, Error>;
+
+    /// The steps accepted so far by a method that chooses its own steps; `None` for
+    /// methods whose steps follow from their step size (or that take none). The report
+    /// reads its step counts here, so that what it counts is what the named method did.
+    fn accepted_steps(&self) -> Option<u64> {
+        None
+    }
+
+    /// The states at each of `times` (in order, in the direction of travel from `t`),
+    /// starting from `state` at `t`. By default one [`Integrator::advance`] to each time;
+    /// adaptive methods with a continuous extension override it so that the sample times
+    /// do not cut their steps, as a user asking for dense output would run them (the
+    /// report measures every method through this call).
+    fn advance_to_each(
+        &mut self,
+        body: &RigidBody,
+        t: f64,
+        state: State,
+        times: &[f64],
+    ) -> Result<Vec<State>, Error> {
+        let mut out = Vec::with_capacity(times.len());
+        let (mut t, mut state) = (t, state);
+        for &ti in times {
+            state = self.advance(body, t, state, ti - t)?;
+            t = ti;
+            out.push(state);
+        }
+        Ok(out)
+    }
 }
 
 /// Check a method's step size: finite and positive.

@@ -1176,6 +1176,25 @@ impl Integrator for LieDop853 {
         "lie-dop853"
     }
 
+    fn accepted_steps(&self) -> Option<u64> {
+        Some(self.stats.accepted)
+    }
+
+    fn advance_to_each(
+        &mut self,
+        body: &RigidBody,
+        t: f64,
+        state: State,
+        times: &[f64],
+    ) -> Result<Vec<State>, Error> {
+        let Some(&last) = times.last() else {
+            return Ok(Vec::new());
+        };
+        let mut out = Vec::with_capacity(times.len());
+        self.dense_advance(body, t, state, last - t, times, |_, s| out.push(s))?;
+        Ok(out)
+    }
+
     fn advance(&mut self, body: &RigidBody, t: f64, state: State, dt: f64) -> Result<State, Error> {
         error::finite("dt", "time step", dt)?;
         if dt == 0.0 {

@@ -118,7 +118,8 @@ fn at_each_sample(
         .collect()
 }
 
-/// Advance from the scene's start through each of `times`, keeping the states there.
+/// Advance from the scene's start through each of `times`, keeping the states there: a
+/// reference lands on every sample time, where a measured run may interpolate.
 fn advance_through(
     integrator: &mut dyn Integrator,
     scene: &TestScene,
@@ -190,37 +191,31 @@ pub fn run_once(scene: &TestScene, method: Method, setting: f64) -> Result<Run, 
 }
 
 /// [`run_once`] over `[0, t_end]` instead of the scene's own end time.
+///
+/// Every method is built by the registry ([`Method::integrator`]), exactly as the command
+/// and the library build it, so that a row named after a method is that method's run.
 fn run_until(scene: &TestScene, method: Method, setting: f64, t_end: f64) -> Result<Run, Error> {
     let times = sample_times(t_end);
-    match method.step_kind() {
-        StepKind::Adaptive => {
-            let mut dopri = DormandPrince::new(setting, setting * DOPRI_ABSOLUTE_TOLERANCE_RATIO)?
-                .with_max_steps(100_000_000);
-            let states = advance_through(&mut dopri, scene, &times)?;
-            Ok(Run {
-                states,
-                steps: dopri.stats().accepted,
-            })
-        }
-        StepKind::Fixed => {
-            // A hair above h, so that rounding in dt / h never adds a sub-step: every
-            // sample interval is a whole number of steps of exactly h.
-            let mut integrator = method.integrator(Step::Fixed(setting * (1.0 + 1e-9)))?;
-            let states = advance_through(integrator.as_mut(), scene, &times)?;
-            Ok(Run {
-                states,
-                steps: (t_end / setting).round() as u64,
-            })
-        }
-        StepKind::AtSamples => {
-            let mut integrator = method.integrator(Step::AtSamples)?;
-            let states = advance_through(integrator.as_mut(), scene, &times)?;
-            Ok(Run {
-                states,
-                steps: SAMPLES,
-            })
-        }
-    }
+    let step = match method.step_kind() {
+        StepKind::Adaptive => Step::Tolerance(setting),
+        // A hair above h, so that rounding in dt / h never adds a sub-step: every
+        // sample interval is a whole number of steps of exactly h.
+        StepKind::Fixed => Step::Fixed(setting * (1.0 + 1e-9)),
+        StepKind::AtSamples => Step::AtSamples,
+    };
+    let mut integrator = method.integrator(step)?;
+    let states = integrator.advance_to_each(&scene.body, 0.0, scene.initial, &times)?;
+    let steps = match method.step_kind() {
+        StepKind::Adaptive => integrator.accepted_steps().ok_or_else(|| {
+            Error::invalid(
+                method.name(),
+                "an adaptive method must count its accepted steps",
+            )
+        })?,
+        StepKind::Fixed => (t_end / setting).round() as u64,
+        StepKind::AtSamples => SAMPLES,
+    };
+    Ok(Run { states, steps })
 }
 
 /// Wall-clock times of repeated runs.

@@ -184,9 +184,20 @@ pub fn run(
     size: Size,
     progress: &mut dyn FnMut(&str, &str),
 ) -> Result<Report, Error> {
+    run_methods(scenes, size, &Method::ALL, progress)
+}
+
+/// [`run`] with only the methods in `only` (those that apply to each scene); the others
+/// are neither run nor listed as left out.
+pub fn run_methods(
+    scenes: &[TestScene],
+    size: Size,
+    only: &[Method],
+    progress: &mut dyn FnMut(&str, &str),
+) -> Result<Report, Error> {
     let mut results = Vec::with_capacity(scenes.len());
     for scene in scenes {
-        results.push(run_scene(scene, size, progress)?);
+        results.push(run_scene(scene, size, only, progress)?);
     }
     Ok(Report {
         size,
@@ -199,6 +210,7 @@ pub fn run(
 fn run_scene(
     scene: &TestScene,
     size: Size,
+    only: &[Method],
     progress: &mut dyn FnMut(&str, &str),
 ) -> Result<SceneResult, Error> {
     let started = std::time::Instant::now();
@@ -208,9 +220,11 @@ fn run_scene(
         secondary: secondary.label.clone(),
         errors: errors(scene, &primary.states, &secondary.states),
     };
-    let (methods, left) = scene.methods();
+    let (mut methods, left) = scene.methods();
+    methods.retain(|m| only.contains(m));
     let mut left_out: Vec<(String, String)> = left
         .into_iter()
+        .filter(|(m, _)| only.contains(m))
         .map(|(m, why)| (m.name().to_string(), why))
         .collect();
     let mut rows = Vec::new();
