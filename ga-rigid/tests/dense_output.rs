@@ -7,7 +7,7 @@ mod support;
 use ga_core::f64::g3::*;
 use ga_rigid::dynamics::{omega_from_vector, Gravity, RigidBody, State};
 use ga_rigid::error::Error;
-use ga_rigid::integrators::{DenseStep, Integrator, LieDop853};
+use ga_rigid::integrators::{DenseStep, DormandPrince, Integrator, LieDop853};
 use support::*;
 
 /// A body with its matrix reference from `state` at t = 0.
@@ -202,6 +202,44 @@ fn dense_advance_samples_meet_the_tolerance_and_take_the_steps_of_advance() {
             "{}: {worst:e}",
             problem.name
         );
+    }
+}
+
+/// Dormand-Prince's samples through its continuous extension of order four
+/// (`advance_to_each`, what the report runs): the same steps and end state as one
+/// `advance` over the whole run, every sample within a few tolerances of the reference,
+/// and far more accurate than the step ends' linear interpolation would be.
+#[test]
+fn dopri_samples_through_its_continuous_extension() {
+    for (problem, t_end) in [(free_body(), 10.0), (heavy_top(), 2.0)] {
+        let tol = 1e-9;
+        let times: Vec<f64> = (1..=200).map(|i| t_end * f64::from(i) / 200.0).collect();
+        let reference = problem.reference(&times);
+        let mut sampled = DormandPrince::new(tol, tol).unwrap();
+        let samples = sampled
+            .advance_to_each(&problem.body, 0.0, problem.state, &times)
+            .unwrap();
+        let mut plain = DormandPrince::new(tol, tol).unwrap();
+        let end = plain
+            .advance(&problem.body, 0.0, problem.state, t_end)
+            .unwrap();
+        assert_eq!(sampled.stats(), plain.stats(), "{}", problem.name);
+        assert_eq!(*samples.last().unwrap(), end, "{}", problem.name);
+        let worst = samples
+            .iter()
+            .zip(&reference)
+            .map(|(state, r)| {
+                assert!(unit_defect(state.rotor) < 1e-15);
+                error(&problem.body, state, r)
+            })
+            .fold(0.0_f64, f64::max);
+        let end_error = error(&problem.body, &end, reference.last().unwrap());
+        println!(
+            "{}: {} steps, worst sample error {worst:.2e}, end error {end_error:.2e}",
+            problem.name,
+            sampled.stats().accepted
+        );
+        assert!(worst < 100.0 * tol, "{}: {worst:e}", problem.name);
     }
 }
 
