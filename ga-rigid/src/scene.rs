@@ -50,7 +50,11 @@ pub const MAX_SCENE_BYTES: u64 = 16 << 20;
 pub struct Scene {
     /// How the body was described in the file.
     pub body: BodySpec,
-    /// The body's inertia about its centre of mass, computed from `body`.
+    /// The body's inertia about the point it turns about, computed from `body`: the centre
+    /// of mass, or for a heavy top (`torque`) whose body is a shape, points or a mesh, the
+    /// fixed point `com_offset` below the centre of mass (parallel-axis theorem, principal
+    /// frame found afresh). `moments` are taken as given: about the fixed point when there
+    /// is a torque, about the centre of mass otherwise.
     pub inertia: Inertia,
     /// The initial attitude and angular velocity.
     pub initial: Initial,
@@ -313,7 +317,9 @@ impl Scene {
 
     /// [`Scene::new`] with an inertia computed by the caller (for instance
     /// [`Inertia::from_principal_unphysical`] for the literature's test bodies); `body`
-    /// only records how it was described. The rotor is normalised.
+    /// only records how it was described. The rotor is normalised. As in a file, the
+    /// inertia of a body other than `Moments` is taken about its centre of mass and, with a
+    /// torque, shifted to the fixed point ([`Inertia::about_point`]).
     pub fn with_inertia(
         body: BodySpec,
         inertia: Inertia,
@@ -351,6 +357,17 @@ impl Scene {
             }
         };
 
+        // A solid's inertia is about its centre of mass; a heavy top turns about its
+        // fixed point, `com_offset` away from it.
+        let inertia = match (&body, torque) {
+            (BodySpec::Moments(_), _) | (_, None) => inertia,
+            (_, Some(gravity)) => inertia.about_point(gravity.com_offset).map_err(|e| {
+                Error::invalid(
+                    "torque.com_offset",
+                    format!("the inertia about the fixed point: {e}"),
+                )
+            })?,
+        };
         let scene = Scene {
             body,
             inertia,

@@ -15,6 +15,22 @@ pub fn describe(scene: &Scene) -> String {
         Some(m) => writeln!(out, "mass: {m}"),
         None => writeln!(out, "mass: unknown (the scene gives moments only)"),
     };
+    // Which point the moments are about: a heavy top built from a solid turns about its
+    // fixed point, and its moments were shifted there.
+    let _ = match (&scene.body, scene.torque) {
+        (crate::scene::BodySpec::Moments(_), Some(_)) => {
+            writeln!(out, "about: the fixed point (moments as given)")
+        }
+        (_, Some(t)) => {
+            let c = t.com_offset;
+            writeln!(
+                out,
+                "about: the fixed point, at -com_offset = [{}, {}, {}] from the centre of mass",
+                -c.e1, -c.e2, -c.e3
+            )
+        }
+        (_, None) => writeln!(out, "about: the centre of mass"),
+    };
     let c = inertia.centre_of_mass();
     let _ = writeln!(out, "centre_of_mass: [{}, {}, {}]", c.e1, c.e2, c.e3);
     let [i1, i2, i3] = inertia.moments();

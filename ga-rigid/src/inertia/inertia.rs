@@ -199,6 +199,37 @@ impl Inertia {
         self.scaled(b, self.moments)
     }
 
+    /// The inertia about another point, by the parallel-axis theorem:
+    /// `J_p = J_c + m (|c|^2 1 - c c^T)`, where `c` (`offset`, in the reference frame) runs
+    /// from that point to the centre of mass, then diagonalised afresh (the principal frame
+    /// turns when `c` is off a principal axis). Needs the mass: an error naming `mass` for
+    /// an inertia given by its moments alone, which are taken to be about the point already.
+    pub fn about_point(&self, offset: Vector) -> Result<Self, Error> {
+        let Some(mass) = self.mass else {
+            return Err(Error::invalid(
+                "mass",
+                "moments alone have no mass to shift them to another point; \
+                 give them about that point",
+            ));
+        };
+        let c = finite3("offset", "offset", offset.to_array())?;
+        let squared = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+        let mut j = self.matrix();
+        for (a, row) in j.iter_mut().enumerate() {
+            for (b, x) in row.iter_mut().enumerate() {
+                let diagonal = if a == b { squared } else { 0.0 };
+                *x += mass * (diagonal - c[a] * c[b]);
+            }
+        }
+        // Symmetric up to the rounding of `matrix()`'s products: make it exactly so.
+        for (a, b) in [(0, 1), (0, 2), (1, 2)] {
+            let mean = 0.5 * (j[a][b] + j[b][a]);
+            j[a][b] = mean;
+            j[b][a] = mean;
+        }
+        Inertia::from_matrix(&j, Some(mass), self.centre_of_mass)
+    }
+
     /// The inverse map `I^-1(B)`: the angular velocity bivector of angular momentum `B`.
     #[must_use]
     pub fn apply_inverse(&self, b: Bivector) -> Bivector {
