@@ -1357,7 +1357,8 @@ fn value<'a>(pairs: &'a [(String, String)], key: &str) -> &'a str {
 #[test]
 fn default_dt_is_a_two_hundredth_of_the_fastest_period_and_recorded() {
     let dir = test_dir("default_dt");
-    // Moments (1, 2, 2.5), w = (0, 0, 2): |w|max = |L| / i_min = 2.5 * 2 / 1 = 5.
+    // Moments (1, 2, 2.5), w = (0, 0, 2): a steady spin about the major axis, so the
+    // fastest rate the body reaches is 2 (|L| / i_min = 5 would take steps 2.5 x smaller).
     write(
         &dir,
         "scene.toml",
@@ -1387,7 +1388,7 @@ fn default_dt_is_a_two_hundredth_of_the_fastest_period_and_recorded() {
     assert!(out.stderr.is_empty());
     let record = sidecar(&dir);
     let dt: f64 = value(&record, "dt").parse().unwrap();
-    let expected = 2.0 * std::f64::consts::PI / 5.0 / 200.0;
+    let expected = 2.0 * std::f64::consts::PI / 2.0 / 200.0;
     assert!((dt - expected).abs() < 1e-15, "{dt} vs {expected}");
     assert_eq!(value(&record, "method"), "\"rk4\"");
     assert_eq!(value(&record, "scene"), "\"scene.toml\"");
@@ -1559,4 +1560,164 @@ fn every_registry_name_is_a_method_on_the_command_line() {
         assert_eq!(out.status.code(), Some(0), "{}: {stderr}", method.name());
         assert_eq!(String::from_utf8_lossy(&out.stdout).lines().count(), 12);
     }
+}
+
+/// The README's symmetric top.
+const README_TOP: &str = "[body]\nmoments = [2.0, 2.0, 1.0]\n[initial]\nrotor = [1, 0, 0, 0]\n\
+                          omega = [0.3, 0.0, 5.0]\n";
+
+/// `exact` and `closed-form` take no steps, so no step limit stopped them; at t_end = 1e16
+/// their attitudes were random (2.9 rad apart) and printed with 17 digits, exit 0. Rounding
+/// alone costs about |w|max t_end eps rad, so such runs are refused, naming t_end and the
+/// bound, and the bound can be raised.
+#[test]
+fn runs_whose_phase_rounding_exceeds_the_bound_are_refused() {
+    let far = format!("{README_TOP}[run]\nt_end = 1e16\nsamples = 3\n");
+    for method in ["exact", "closed-form", "lie-dop853"] {
+        expect_short_rejection(
+            &format!("phase_{method}"),
+            &far,
+            &["--method", method],
+            "run.t_end: ",
+            "above the bound 0.001",
+        );
+    }
+    let dir = test_dir("phase_raised");
+    write(
+        &dir,
+        "scene.toml",
+        &format!("{README_TOP}[run]\nt_end = 1e12\nsamples = 3\n"),
+    );
+    // 5 rad/s for 1e12 s: about 1.1e-3 rad of rounding.
+    let refused = run(&dir, &["simulate", "scene.toml", "--method", "exact"]);
+    assert_eq!(refused.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&refused.stderr);
+    assert!(
+        stderr.contains("t_end = 1.00e12") && stderr.contains("--max-phase-error"),
+        "{stderr}"
+    );
+    let allowed = run(
+        &dir,
+        &[
+            "simulate",
+            "scene.toml",
+            "--method",
+            "exact",
+            "--max-phase-error",
+            "0.01",
+        ],
+    );
+    assert_eq!(
+        allowed.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&allowed.stderr)
+    );
+    let bad = run(
+        &dir,
+        &[
+            "simulate",
+            "scene.toml",
+            "--method",
+            "exact",
+            "--max-phase-error",
+            "-1",
+        ],
+    );
+    assert_eq!(bad.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&bad.stderr).starts_with("--max-phase-error: "));
+}
+
+/// `rk4 --dt 1e308` ran to energy 9.6e12 and exited 0; a step past a method's measured
+/// stability limit (the registry's `h |w|max`) is refused naming the limit, unless
+/// `--allow-unstable` is given.
+#[test]
+fn steps_past_the_stability_limit_are_refused() {
+    let top = format!("{README_TOP}[run]\nt_end = 10\nsamples = 3\n");
+    expect_short_rejection(
+        "unstable_rk4",
+        &top,
+        &["--method", "rk4", "--dt", "1e308"],
+        "--dt: ",
+        "beyond rk4's stability limit 2",
+    );
+    expect_short_rejection(
+        "unstable_splitting",
+        &top,
+        &["--method", "splitting", "--dt", "1e308"],
+        "--dt: ",
+        "beyond splitting's stability limit 3",
+    );
+    // |w|max = 5 for this top (|w| is constant): h = 0.45 is h |w| = 2.25 > 2.
+    expect_short_rejection(
+        "unstable_lie_rk4",
+        &top,
+        &["--method", "lie-rk4", "--dt", "0.45"],
+        "--dt: ",
+        "take dt <= 0.399 or pass --allow-unstable",
+    );
+    let dir = test_dir("allow_unstable");
+    write(&dir, "scene.toml", &top);
+    let allowed = run(
+        &dir,
+        &[
+            "simulate",
+            "scene.toml",
+            "--method",
+            "lie-rk4",
+            "--dt",
+            "0.45",
+            "--allow-unstable",
+        ],
+    );
+    assert_eq!(
+        allowed.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&allowed.stderr)
+    );
+    // At the limit itself the step is taken.
+    let at_limit = run(
+        &dir,
+        &["simulate", "scene.toml", "--method", "rk4", "--dt", "0.39"],
+    );
+    assert_eq!(at_limit.status.code(), Some(0));
+}
+
+/// A needle (moments 1, 1, 1e-6) turning slowly: its rates stay near 5 rad/s, but
+/// `|L| / i_min` put |w|max at 5e6 and the default step at 1.3e-9, and a 1 s run was
+/// refused as 1.6e8 steps. The default step now follows the rates the body reaches.
+#[test]
+fn a_slow_needle_gets_a_step_from_the_rates_it_reaches() {
+    let dir = test_dir("slow_needle");
+    write(
+        &dir,
+        "scene.toml",
+        "[body]\nmoments = [1.0, 1.0, 1e-6]\n[initial]\nrotor = [1, 0, 0, 0]\n\
+         omega = [3.0, 4.0, 0.0]\n[run]\nt_end = 1.0\nsamples = 3\n",
+    );
+    let out = run(
+        &dir,
+        &[
+            "simulate",
+            "scene.toml",
+            "--method",
+            "rk4",
+            "--out",
+            "out.csv",
+        ],
+    );
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let dt: f64 = value(&sidecar(&dir), "dt").parse().unwrap();
+    // |w| = 5 stays 5 (w3 = 0 and i1 = i2: the needle turns end over end).
+    let expected = 2.0 * std::f64::consts::PI / 5.0 / 200.0;
+    assert!(
+        (dt - expected).abs() < 1e-12 * expected,
+        "{dt} vs {expected}"
+    );
 }

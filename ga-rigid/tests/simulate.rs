@@ -137,7 +137,9 @@ com_offset = [0.0, 0.0, 0.75]
     let solid = scene(&format!(
         "[body]\nshape = {{ kind = \"cone\", mass = 1.0, radius = 0.5, height = 1.0 }}\n{rest}"
     ));
-    let twin = scene(&format!("[body]\nmoments = [0.6375, 0.6375, 0.075]\n{rest}"));
+    let twin = scene(&format!(
+        "[body]\nmoments = [0.6375, 0.6375, 0.075]\n{rest}"
+    ));
     let mut moments = solid.inertia.moments();
     moments.sort_by(f64::total_cmp);
     for (i, expected) in moments.iter().zip([0.075, 0.6375, 0.6375]) {
@@ -147,7 +149,10 @@ com_offset = [0.0, 0.0, 0.75]
         let a = run_simulation(&solid, method, Step::Fixed(1e-3)).unwrap();
         let b = run_simulation(&twin, method, Step::Fixed(1e-3)).unwrap();
         let difference = max_row_difference(&a, &b);
-        assert!(difference < 1e-12, "{method}: rows differ by {difference:e}");
+        assert!(
+            difference < 1e-12,
+            "{method}: rows differ by {difference:e}"
+        );
     }
 }
 
@@ -189,5 +194,8 @@ fn an_off_axis_pivot_gets_the_parallel_axis_matrix() {
     let torque = solid.inertia.rotor().sandwich(body.torque(0.0, &start));
     let c = Vector::new(offset[0], offset[1], offset[2]);
     let expected = c ^ (Vector::new(0.0, 0.0, -9.81) * mass);
-    assert!((torque - expected).norm() < 1e-14, "{torque:?} vs {expected:?}");
+    assert!(
+        (torque - expected).norm() < 1e-14,
+        "{torque:?} vs {expected:?}"
+    );
 }

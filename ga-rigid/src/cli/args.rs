@@ -60,6 +60,14 @@ pub struct SimulateArgs {
     /// sample for fixed steps; a rough estimate for dopri).
     #[arg(long, value_name = "N", default_value_t = super::simulate::DEFAULT_MAX_STEPS)]
     pub max_steps: u64,
+    /// Refuse runs whose attitude at t_end rounding alone would put further off than this
+    /// many radians (about |w|max t_end 2.2e-16, for every method, the exact ones too).
+    #[arg(long, value_name = "RAD", default_value_t = super::simulate::DEFAULT_MAX_PHASE_ERROR, allow_hyphen_values = true)]
+    pub max_phase_error: f64,
+    /// Run a fixed step beyond the method's stability limit h |w|max (see --help of
+    /// --method for the limits) instead of refusing it.
+    #[arg(long)]
+    pub allow_unstable: bool,
     /// Refuse runs whose CSV may be larger than this many megabytes (300 bytes a row).
     #[arg(long, value_name = "MB", default_value_t = super::simulate::DEFAULT_MAX_OUTPUT_MB)]
     pub max_output_mb: u64,

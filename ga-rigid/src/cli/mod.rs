@@ -168,6 +168,11 @@ fn simulate(args: &SimulateArgs) -> Result<(), Error> {
         Some(step) => (step, simulate::StepSource::Given),
         None => simulate::default_step(&scene, args.method),
     };
+    crate::error::positive("--max-phase-error", "the bound", args.max_phase_error)?;
+    simulate::check_phase_error(&scene, args.max_phase_error)?;
+    if !args.allow_unstable {
+        simulate::check_stability(&scene, args.method, step)?;
+    }
     let work = simulate::check_work(&scene, step, args.max_steps, args.max_output_mb)?;
     let mut progress = progress::Progress::new(scene.run.t_end, work.steps);
     let rows = simulate::run_simulation_with_progress(&scene, args.method, step, &mut |t| {

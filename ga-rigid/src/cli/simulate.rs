@@ -40,23 +40,130 @@ pub struct Work {
     pub output_bytes: f64,
 }
 
-/// A bound on the body's angular speed over the run, in radians per unit time: the
-/// angular momentum over the smallest moment (`|w| <= |L| / i_min` for a free body), plus
-/// the speed the potential energy could add under gravity.
+/// A bound on the body's angular speed over the run, in radians per unit time, from the
+/// rates it can actually reach. A free body keeps its kinetic energy `E` and `|L|`, so
+/// `|w|^2 = sum L_k^2 / i_k^2` is bounded by its largest value on the set of `L` with those
+/// two invariants (found exactly: [`free_rate_bound`]); a needle spinning about its axis is
+/// bounded by that spin, not by `|L| / i_min`, which is a million times more for moments
+/// (1, 1, 1e-6). Under gravity the kinetic energy can grow by at most `2 m |g| |c|`, and
+/// `|w|^2 <= 2 E_kin / i_min`.
 #[must_use]
 pub fn angular_speed_bound(scene: &Scene) -> f64 {
     let moments = scene.inertia.moments();
+    let w = omega_to_vector(scene.principal_state().omega);
+    let squares = [0, 1, 2].map(|k| (moments[k] * w[k]) * (moments[k] * w[k]));
+    let two_e: f64 = (0..3).map(|k| squares[k] / moments[k]).sum();
     let smallest = moments.iter().copied().fold(f64::INFINITY, f64::min);
-    let largest = moments.iter().copied().fold(0.0, f64::max);
-    let w = scene.initial.omega;
-    let speed = (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]).sqrt();
-    let mut bound = speed * largest / smallest;
-    if let Some(gravity) = scene.torque {
-        let mass = scene.inertia.mass().unwrap_or(1.0);
-        let potential = mass * gravity.g.norm() * gravity.com_offset.norm();
-        bound += (4.0 * potential / smallest).sqrt();
+    match scene.torque {
+        None => free_rate_bound(moments, squares, two_e)
+            .max(w.iter().map(|x| x * x).sum::<f64>().sqrt()),
+        Some(gravity) => {
+            let mass = scene.inertia.mass().unwrap_or(1.0);
+            let potential = mass * gravity.g.norm() * gravity.com_offset.norm();
+            ((two_e + 4.0 * potential) / smallest).sqrt()
+        }
     }
-    bound
+}
+
+/// The largest `|w|` a free body with principal moments `i` reaches, from its squared body
+/// momenta `L_k^2` and twice its energy. With `x_k = L_k^2 >= 0`, `sum x_k = |L|^2` and
+/// `sum x_k / i_k = 2E` fix a segment, and `|w|^2 = sum x_k / i_k^2` is linear on it, so its
+/// largest value is at an end of the segment, where at most two `x_k` are non-zero.
+#[must_use]
+pub fn free_rate_bound(i: [f64; 3], squares: [f64; 3], two_e: f64) -> f64 {
+    let l2: f64 = squares.iter().sum();
+    let smallest = i.iter().copied().fold(f64::INFINITY, f64::min);
+    // Rounding may put an end a hair outside `x >= 0`.
+    let slack = 1e-9 * l2;
+    let mut best: Option<f64> = None;
+    for (a, b) in [(0, 1), (0, 2), (1, 2)] {
+        let (ja, jb) = (1.0 / i[a], 1.0 / i[b]);
+        if (ja - jb).abs() <= 1e-12 * ja.max(jb) {
+            continue;
+        }
+        let xa = (two_e - l2 * jb) / (ja - jb);
+        let xb = l2 - xa;
+        if xa >= -slack && xb >= -slack {
+            let w2 = xa.max(0.0) * ja * ja + xb.max(0.0) * jb * jb;
+            best = Some(best.map_or(w2, |b: f64| b.max(w2)));
+        }
+    }
+    // A sphere has no ends (`|w|` is constant); `|w|^2 <= 2E / i_min` always holds.
+    let fallback = two_e / smallest;
+    best.unwrap_or(fallback).min(fallback).sqrt()
+}
+
+/// The attitude error rounding alone causes by the end of a run when `--max-phase-error`
+/// is not given (rad).
+pub const DEFAULT_MAX_PHASE_ERROR: f64 = 1e-3;
+
+/// The phase every method loses to rounding by `t_end`: the angle `|w|max t_end` is known
+/// to about one part in `2^52`, so even the exact flow is off by about `|w|max t_end eps`.
+#[must_use]
+pub fn phase_error(scene: &Scene) -> f64 {
+    angular_speed_bound(scene) * scene.run.t_end * f64::EPSILON
+}
+
+/// Refuse a run whose attitude at `t_end` rounding alone would put more than
+/// `max_phase_error` rad off ([`phase_error`]), whatever the method: 17 digits of a random
+/// attitude look like a result.
+pub fn check_phase_error(scene: &Scene, max_phase_error: f64) -> Result<f64, Error> {
+    let error = phase_error(scene);
+    if error.is_nan() || error > max_phase_error {
+        return Err(Error::invalid(
+            "run.t_end",
+            format!(
+                "t_end = {} at |w|max = {} loses about {:.1e} rad of attitude to rounding \
+                 (|w|max t_end eps), above the bound {}; shorten the run or raise \
+                 --max-phase-error",
+                short(scene.run.t_end),
+                short(angular_speed_bound(scene)),
+                error,
+                short(max_phase_error)
+            ),
+        ));
+    }
+    Ok(error)
+}
+
+/// A number to three significant digits, for messages: `5.01`, `0.399`, `1.1e16`.
+fn short(x: f64) -> String {
+    if x != 0.0 && (x.abs() < 1e-3 || x.abs() >= 1e6) || !x.is_finite() {
+        return format!("{x:.2e}");
+    }
+    let digits = (2 - x.abs().log10().floor() as i32).max(0) as usize;
+    let text = format!("{x:.digits$}");
+    if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        text
+    }
+}
+
+/// Refuse a fixed step beyond the method's stability limit `h |w|max` (the registry's
+/// [`crate::integrators::StepLimit`]), naming the limit and the largest stable step.
+pub fn check_stability(scene: &Scene, method: Method, step: Step) -> Result<(), Error> {
+    let (Step::Fixed(h), Some(limit)) = (step, method.stable_step_rate(scene.torque.is_some()))
+    else {
+        return Ok(());
+    };
+    let rate = angular_speed_bound(scene);
+    let hw = h * rate;
+    if hw.is_nan() || hw > limit {
+        return Err(Error::invalid(
+            "--dt",
+            format!(
+                "h |w|max = {} is beyond {}'s stability limit {} (|w|max = {}): take dt <= {} \
+                 or pass --allow-unstable",
+                short(hw),
+                method.name(),
+                short(limit),
+                short(rate),
+                short(limit / rate)
+            ),
+        ));
+    }
+    Ok(())
 }
 
 /// Estimate the steps and output size of a run: `t_end / dt` plus one per sample for
@@ -320,6 +427,16 @@ fn row(principal: Rotor, sample: &Sample) -> Row {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn short_numbers_keep_three_digits() {
+        assert_eq!(short(5.008991914547277), "5.01");
+        assert_eq!(short(0.3992819381863115), "0.399");
+        assert_eq!(short(2.0), "2");
+        assert_eq!(short(1e16), "1.00e16");
+        assert_eq!(short(0.001), "0.001");
+        assert_eq!(short(123.456), "123");
+    }
 
     #[test]
     fn a_row_with_an_infinite_energy_is_an_error_naming_the_method_and_column() {

@@ -77,6 +77,22 @@ pub enum Step {
     AtSamples,
 }
 
+/// The largest step a fixed-step method stays stable at, as `h |w|max`: the step times
+/// the fastest rate the body can reach. Measured on the report's bodies (the Hairer-Vilmart
+/// and Dzhanibekov bodies, a symmetric top, a needle, the heavy top): at the limit every
+/// one keeps its energy within half of its start over 300 steps (and a symmetric top its
+/// conserved `w3`); above it some do not (`tests/stability_limits.rs`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum StepLimit {
+    /// No step makes the method unstable, or it takes no steps.
+    None,
+    /// Stable up to this `h |w|max`.
+    Rate(f64),
+    /// Stable up to this `h |w|max` under a torque; without one each step is the exact
+    /// free flow, stable at any step.
+    RateUnderTorque(f64),
+}
+
 /// One row of the registry.
 #[derive(Clone, Copy, Debug)]
 pub struct MethodInfo {
@@ -88,6 +104,8 @@ pub struct MethodInfo {
     pub kind: StepKind,
     /// One line for `--help` and the report.
     pub summary: &'static str,
+    /// The step beyond which the method is unstable.
+    pub step_limit: StepLimit,
 }
 
 /// The registry: one row per method, in the order tables list them.
@@ -97,90 +115,105 @@ pub const METHODS: [MethodInfo; 15] = [
         name: "closed-form",
         kind: StepKind::AtSamples,
         summary: "the closed-form solution (torque-free symmetric top)",
+        step_limit: StepLimit::None,
     },
     MethodInfo {
         method: Method::Exact,
         name: "exact",
         kind: StepKind::AtSamples,
         summary: "the exact flow of the free body (Jacobi elliptic functions)",
+        step_limit: StepLimit::None,
     },
     MethodInfo {
         method: Method::Rk4,
         name: "rk4",
         kind: StepKind::Fixed,
         summary: "classical fourth-order Runge-Kutta, rotor renormalised",
+        step_limit: StepLimit::Rate(2.0),
     },
     MethodInfo {
         method: Method::LieRk4,
         name: "lie-rk4",
         kind: StepKind::Fixed,
         summary: "fourth-order Runge-Kutta-Munthe-Kaas on the rotor group",
+        step_limit: StepLimit::Rate(2.0),
     },
     MethodInfo {
         method: Method::Midpoint,
         name: "midpoint",
         kind: StepKind::Fixed,
         summary: "the implicit midpoint rule (symplectic, order two)",
+        step_limit: StepLimit::Rate(2.5),
     },
     MethodInfo {
         method: Method::Splitting,
         name: "splitting",
         kind: StepKind::Fixed,
         summary: "splitting into exact axis rotations (Dullweber-Leimkuhler-McLachlan)",
+        step_limit: StepLimit::Rate(3.0),
     },
     MethodInfo {
         method: Method::Dopri,
         name: "dopri",
         kind: StepKind::Adaptive,
         summary: "adaptive Dormand-Prince 5(4)",
+        step_limit: StepLimit::None,
     },
     MethodInfo {
         method: Method::ExactSplitting,
         name: "exact-splitting",
         kind: StepKind::Fixed,
         summary: "torque kick, exact free flow, torque kick (Celledoni et al. 2008), order two",
+        step_limit: StepLimit::RateUnderTorque(30.0),
     },
     MethodInfo {
         method: Method::ExactSplitting4,
         name: "exact-splitting-4",
         kind: StepKind::Fixed,
         summary: "the exact-flow splitting raised to order four (Blanes-Moan SRKN_6^b)",
+        step_limit: StepLimit::RateUnderTorque(30.0),
     },
     MethodInfo {
         method: Method::ExactSplitting6,
         name: "exact-splitting-6",
         kind: StepKind::Fixed,
         summary: "the exact-flow splitting raised to order six (Blanes-Moan SRKN_11^b)",
+        step_limit: StepLimit::RateUnderTorque(30.0),
     },
     MethodInfo {
         method: Method::ExactSplitting8,
         name: "exact-splitting-8",
         kind: StepKind::Fixed,
         summary: "the exact-flow splitting composed to order eight (Kahan-Li)",
+        step_limit: StepLimit::RateUnderTorque(30.0),
     },
     MethodInfo {
         method: Method::Splitting4,
         name: "splitting-4",
         kind: StepKind::Fixed,
         summary: "the axis-rotation splitting composed to order four (Suzuki)",
+        step_limit: StepLimit::Rate(4.0),
     },
     MethodInfo {
         method: Method::Splitting6,
         name: "splitting-6",
         kind: StepKind::Fixed,
         summary: "the axis-rotation splitting composed to order six (Kahan-Li)",
+        step_limit: StepLimit::Rate(4.0),
     },
     MethodInfo {
         method: Method::Splitting8,
         name: "splitting-8",
         kind: StepKind::Fixed,
         summary: "the axis-rotation splitting composed to order eight (Kahan-Li)",
+        step_limit: StepLimit::Rate(4.0),
     },
     MethodInfo {
         method: Method::LieDop853,
         name: "lie-dop853",
         kind: StepKind::Adaptive,
         summary: "adaptive order-8 Runge-Kutta-Munthe-Kaas on the rotor group (DOP853 pair)",
+        step_limit: StepLimit::None,
     },
 ];
 
@@ -216,6 +249,17 @@ impl Method {
     #[must_use]
     pub fn step_kind(self) -> StepKind {
         self.info().kind
+    }
+
+    /// The largest stable `h |w|max` on a body with or without a torque, if any step is
+    /// unstable (see [`StepLimit`]).
+    #[must_use]
+    pub fn stable_step_rate(self, torque: bool) -> Option<f64> {
+        match self.info().step_limit {
+            StepLimit::None => None,
+            StepLimit::Rate(rate) => Some(rate),
+            StepLimit::RateUnderTorque(rate) => torque.then_some(rate),
+        }
     }
 
     /// The method with this name, if there is one.

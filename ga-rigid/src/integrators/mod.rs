@@ -24,7 +24,9 @@ pub use exact_splitting::ExactSplitting;
 pub use integrator::Integrator;
 pub use lie_dop853::{DenseStep, LieDop853, LieDop853Stats};
 pub use lie_rk4::LieRk4;
-pub use method::{Method, MethodInfo, Step, StepKind, DOPRI_ABSOLUTE_TOLERANCE_RATIO, METHODS};
+pub use method::{
+    Method, MethodInfo, Step, StepKind, StepLimit, DOPRI_ABSOLUTE_TOLERANCE_RATIO, METHODS,
+};
 pub use midpoint::ImplicitMidpoint;
 pub use rk4::Rk4;
 pub use splitting::Splitting;
