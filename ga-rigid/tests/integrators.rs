@@ -661,3 +661,26 @@ fn midpoint_reports_a_step_with_no_solution() {
     let mut method = ImplicitMidpoint::new(0.05).unwrap();
     assert!(method.advance(&body, 0.0, state, 10.0).is_ok());
 }
+
+/// A torque so large that the state stays finite while its energy overflows: the
+/// simulation's samples are checked and the run fails naming the method, where it would
+/// otherwise hand out a sample with an infinite energy.
+#[test]
+fn a_sample_whose_energy_overflows_is_an_error() {
+    struct Huge;
+    impl ga_rigid::dynamics::Torque for Huge {
+        fn torque(&self, _t: f64, _r: Rotor, _w: Bivector) -> Bivector {
+            Bivector::new(1e170, 0.0, 0.0)
+        }
+    }
+    let body = RigidBody::new([1.0, 1.0, 1.0]).unwrap().with_torque(Huge);
+    let state = State {
+        rotor: Rotor::ONE,
+        omega: Bivector::ZERO,
+    };
+    // The splitting's rotations keep the rotor unit at any rate: only the energy overflows.
+    let mut simulation =
+        ga_rigid::simulation::Simulation::new(body, state, Splitting::new(0.1).unwrap());
+    let e = simulation.run_until(1.0, 3).unwrap_err().to_string();
+    assert!(e.starts_with("splitting: the energy is not finite"), "{e}");
+}

@@ -241,3 +241,105 @@ fn no_two_methods_give_identical_rows() {
         }
     }
 }
+
+/// A measurement with the given time (µs) and largest attitude and momentum errors.
+fn row(method: Method, dt: f64, time_us: f64, attitude: f64, momentum: f64) -> report::Measurement {
+    let time = std::time::Duration::from_secs_f64(time_us * 1e-6);
+    report::Measurement {
+        method,
+        param_kind: "dt",
+        param: dt,
+        steps: (10.0 / dt).round() as u64,
+        errors: Some(report::Errors {
+            attitude_end: attitude,
+            attitude_max: attitude,
+            momentum_end: momentum,
+            momentum_max: momentum,
+            ..Default::default()
+        }),
+        timing: Some(report::Timing {
+            median: time,
+            min: time,
+            repeats: 3,
+        }),
+        failure: None,
+        reference: Method::Exact,
+    }
+}
+
+/// A scene result over `t_end = 10` at rate 1 with these rows.
+fn scene_with(rows: Vec<report::Measurement>) -> report::SceneResult {
+    report::SceneResult {
+        name: "made up".into(),
+        source: "a test".into(),
+        t_end: 10.0,
+        rate: 1.0,
+        sweep: report::Sweep::WorkPrecision,
+        check: report::ReferenceCheck {
+            primary: "exact".into(),
+            secondary: "dopri".into(),
+            errors: report::Errors::default(),
+        },
+        rows,
+        left_out: Vec::new(),
+        elapsed: std::time::Duration::ZERO,
+    }
+}
+
+/// The fastest method at an error level is the fastest of those that reach it: not the
+/// slowest, and not one that misses the level.
+#[test]
+fn the_fastest_method_at_a_level_is_the_fastest_that_reaches_it() {
+    let scene = scene_with(vec![
+        row(Method::Rk4, 0.1, 30.0, 1e-7, 1e-7),
+        row(Method::LieRk4, 0.1, 20.0, 1e-7, 1e-7),
+        row(Method::Splitting, 0.1, 5.0, 1e-3, 1e-3),
+        row(Method::Midpoint, 0.1, 50.0, 1e-7, 1e-7),
+    ]);
+    assert_eq!(
+        report::fastest_at(&scene, 1e-6).unwrap().method,
+        Method::LieRk4
+    );
+    assert_eq!(
+        report::fastest_at(&scene, 1e-2).unwrap().method,
+        Method::Splitting
+    );
+    assert!(report::fastest_at(&scene, 1e-9).is_none());
+}
+
+/// A run that keeps the momentum but loses the attitude has lost the solution: the
+/// verdict needs both errors small, not either.
+#[test]
+fn a_run_that_loses_the_attitude_but_keeps_momentum_is_not_stable() {
+    let scene = scene_with(vec![
+        row(Method::Splitting, 0.01, 1.0, 1e-4, 1e-6),
+        row(Method::Splitting, 1.0, 1.0, 2.0, 1e-15),
+    ]);
+    let verdict = report::verdict(&scene, Method::Splitting);
+    assert!(verdict.starts_with("loses the solution"), "{verdict}");
+    let scene = scene_with(vec![row(Method::Rk4, 0.01, 1.0, 1e-9, 0.5)]);
+    let verdict = report::verdict(&scene, Method::Rk4);
+    assert!(verdict.contains("loses the solution"), "{verdict}");
+}
+
+/// The energy error is the run's own energy against the start's: a run whose angular
+/// velocity is 10 % too large has 21 % too much kinetic energy, measured against an exact
+/// reference whose energy is right.
+#[test]
+fn the_energy_error_is_measured_on_the_run_not_the_reference() {
+    let scene = &cheap_scenes()[0];
+    let (reference, _) = report::references(scene).unwrap();
+    let run: Vec<_> = reference
+        .states
+        .iter()
+        .map(|s| ga_rigid::dynamics::State {
+            rotor: s.rotor,
+            omega: s.omega * 1.1,
+        })
+        .collect();
+    let errors = report::errors(scene, &run, &reference.states);
+    assert!((errors.energy_end - 0.21).abs() < 1e-9, "{errors:?}");
+    assert!((errors.energy_max - 0.21).abs() < 1e-9, "{errors:?}");
+    assert!((errors.momentum_end - 0.1).abs() < 1e-9, "{errors:?}");
+    assert_eq!(errors.attitude_end, 0.0);
+}

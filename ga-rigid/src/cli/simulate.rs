@@ -388,7 +388,7 @@ pub fn run_simulation_with_progress(
     let mut rows = Vec::with_capacity(scene.run.samples);
     for sample in simulation.samples(scene.run.t_end, scene.run.samples) {
         let sample = sample.map_err(body_field)?;
-        rows.push(finite_row(method, row(principal, &sample))?);
+        rows.push(scene_row(method, principal, &sample)?);
         progress(sample.t);
     }
     Ok(rows)
@@ -412,6 +412,12 @@ fn finite_row(method: Method, row: Row) -> Result<Row, Error> {
     }
 }
 
+/// A sample as a row in the scene's frame, checked finite ([`finite_row`]): turning a
+/// finite principal-frame state into the scene's frame can still overflow.
+fn scene_row(method: Method, principal: Rotor, sample: &Sample) -> Result<Row, Error> {
+    finite_row(method, row(principal, sample))
+}
+
 /// A sample of the principal-frame simulation as a row in the scene's frame.
 fn row(principal: Rotor, sample: &Sample) -> Row {
     let state = &sample.state;
@@ -427,6 +433,41 @@ fn row(principal: Rotor, sample: &Sample) -> Row {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A finite principal-frame sample whose angular velocity overflows when turned into
+    /// the scene's frame is an error, not a row of `inf`.
+    #[test]
+    fn a_sample_that_overflows_in_the_scene_frame_is_an_error() {
+        use crate::dynamics::State;
+        use ga_core::f64::g3::Bivector;
+        let sample = Sample {
+            t: 2.0,
+            state: State {
+                rotor: Rotor::ONE,
+                omega: Bivector::new(1.5e308, 1.5e308, 0.0),
+            },
+            energy: 1.0,
+            momentum: Bivector::new(0.0, 0.0, 1.0),
+        };
+        // A quarter turn in the e12-e13 plane mixes the two huge components.
+        let principal = (Bivector::new(0.0, 0.0, 1.0) * -std::f64::consts::FRAC_PI_8).exp();
+        let e = scene_row(Method::Rk4, principal, &sample)
+            .unwrap_err()
+            .to_string();
+        assert!(e.starts_with("rk4: w"), "{e}");
+        assert!(
+            e.contains("is not finite (") && e.contains("inf) at t = 2e0"),
+            "{e}"
+        );
+        let fine = Sample {
+            state: State {
+                rotor: Rotor::ONE,
+                omega: Bivector::new(1.0, 1.0, 0.0),
+            },
+            ..sample
+        };
+        assert!(scene_row(Method::Rk4, principal, &fine).is_ok());
+    }
 
     #[test]
     fn short_numbers_keep_three_digits() {
