@@ -275,6 +275,7 @@ fn scene_with(rows: Vec<report::Measurement>) -> report::SceneResult {
         t_end: 10.0,
         rate: 1.0,
         sweep: report::Sweep::WorkPrecision,
+        kind: report::SceneKind::FreeAsymmetric,
         check: report::ReferenceCheck {
             primary: "exact".into(),
             secondary: "dopri".into(),

@@ -11,7 +11,8 @@ pub const ERROR_LEVELS: [f64; 5] = [1e-2, 1e-4, 1e-6, 1e-8, 1e-10];
 /// An error (rad or relative) above which a run has lost the solution.
 const LOST: f64 = 0.1;
 
-/// Errors below this are rounding, not truncation: left out of the order fit.
+/// Errors below this are rounding, not truncation: left out of the order fit whatever
+/// the references' agreement.
 const ROUNDING_FLOOR: f64 = 1e-12;
 
 /// The fastest row (by median time) whose largest attitude error is at most `level`.
@@ -29,23 +30,49 @@ pub fn fastest_at(scene: &SceneResult, level: f64) -> Option<&Measurement> {
         })
 }
 
-/// The least-squares slope of log(largest attitude error) against log(mean step) over a
-/// method's runs whose error lies between rounding (1e-12) and 0.1; `None` with fewer than
-/// two such runs.
+/// The error below which a scene's runs are not resolved: ten times the disagreement of
+/// its two references (the page prints it), and never below rounding (1e-12).
 #[must_use]
-pub fn observed_order(scene: &SceneResult, method: Method) -> Option<f64> {
-    let points: Vec<(f64, f64)> = scene
+pub fn error_floor(scene: &SceneResult) -> f64 {
+    (10.0 * scene.check.errors.attitude_max).max(ROUNDING_FLOOR)
+}
+
+/// A method's runs that an order can be fitted to: (log mean step, log largest attitude
+/// error) for errors above the scene's [`error_floor`] and below 0.1.
+fn order_points(scene: &SceneResult, method: Method) -> Vec<(f64, f64)> {
+    let floor = error_floor(scene);
+    scene
         .rows
         .iter()
         .filter(|r| r.method == method)
         .filter_map(|r| {
             let e = r.errors?.attitude_max;
-            (e > ROUNDING_FLOOR && e < LOST && e.is_finite())
+            (e > floor && e < LOST && e.is_finite())
                 .then(|| (r.mean_step(scene.t_end).ln(), e.ln()))
         })
-        .collect();
-    if points.len() < 2 {
-        return None;
+        .collect()
+}
+
+/// The fewest runs between the floor and 0.1 an order is fitted to.
+pub const MIN_ORDER_POINTS: usize = 3;
+
+/// What the page can say of a method's order on a scene.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Order {
+    /// The fitted slope, from this many runs.
+    Fitted(f64, usize),
+    /// Only this many runs lie between the floor and 0.1: no fit.
+    TooFewPoints(usize),
+}
+
+/// The least-squares slope of log(largest attitude error) against log(mean step) over a
+/// method's runs whose error lies between the scene's [`error_floor`] and 0.1, when there
+/// are at least [`MIN_ORDER_POINTS`] of them.
+#[must_use]
+pub fn order(scene: &SceneResult, method: Method) -> Order {
+    let points = order_points(scene, method);
+    if points.len() < MIN_ORDER_POINTS {
+        return Order::TooFewPoints(points.len());
     }
     let n = points.len() as f64;
     let (mx, my) = points
@@ -54,7 +81,20 @@ pub fn observed_order(scene: &SceneResult, method: Method) -> Option<f64> {
     let (sxy, sxx) = points.iter().fold((0.0, 0.0), |(a, b), (x, y)| {
         (a + (x - mx) * (y - my), b + (x - mx) * (x - mx))
     });
-    (sxx > 0.0).then(|| sxy / sxx)
+    if sxx > 0.0 {
+        Order::Fitted(sxy / sxx, points.len())
+    } else {
+        Order::TooFewPoints(1)
+    }
+}
+
+/// The fitted order of [`order`], `None` when there are too few runs to fit.
+#[must_use]
+pub fn observed_order(scene: &SceneResult, method: Method) -> Option<f64> {
+    match order(scene, method) {
+        Order::Fitted(p, _) => Some(p),
+        Order::TooFewPoints(_) => None,
+    }
 }
 
 /// The median cost of one step (or evaluation) over a method's finished runs, in ns.
@@ -122,4 +162,102 @@ pub fn verdict(scene: &SceneResult, method: Method) -> String {
     } else {
         format!("{what} from h|w| = {least_bad:.3}; keeps it up to h|w| = {coarsest_good:.3}")
     }
+}
+
+/// The kinds of scene the page's summary answers for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum SceneKind {
+    /// A free body with three distinct moments.
+    FreeAsymmetric,
+    /// A free body with two moments within 1e-6 of each other, not equal.
+    NearSymmetric,
+    /// A free body with two equal moments.
+    Symmetric,
+    /// A body under a torque.
+    Torqued,
+    /// The stiff and extreme cases (needles, a flat disk, huge and tiny scales).
+    StiffOrExtreme,
+    /// One long run: not part of the summary (one setting a method).
+    Long,
+}
+
+impl SceneKind {
+    /// The kind's name on the page.
+    #[must_use]
+    pub fn label(self) -> &'static str {
+        match self {
+            SceneKind::FreeAsymmetric => "free, asymmetric",
+            SceneKind::NearSymmetric => "free, near-symmetric",
+            SceneKind::Symmetric => "free, symmetric",
+            SceneKind::Torqued => "torqued (heavy top)",
+            SceneKind::StiffOrExtreme => "stiff or extreme",
+            SceneKind::Long => "long run",
+        }
+    }
+}
+
+/// The kind of a measured scene, from its sweep and its body.
+#[must_use]
+pub fn scene_kind(scene: &super::TestScene) -> SceneKind {
+    use super::Sweep;
+    match scene.sweep {
+        Sweep::Long => return SceneKind::Long,
+        Sweep::Stress => return SceneKind::StiffOrExtreme,
+        Sweep::WorkPrecision => {}
+    }
+    if scene.body.has_torque() {
+        return SceneKind::Torqued;
+    }
+    if scene.body.symmetry_axis(1e-12).is_some() {
+        return SceneKind::Symmetric;
+    }
+    if scene.body.symmetry_axis(1e-6).is_some() {
+        return SceneKind::NearSymmetric;
+    }
+    SceneKind::FreeAsymmetric
+}
+
+/// One cell of the summary: the fastest method that reaches an error level on every scene
+/// of a kind, and its time summed over those scenes.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Pick {
+    /// The method.
+    pub method: Method,
+    /// The sum over the kind's scenes of its fastest run that reaches the level (µs).
+    pub time_us: f64,
+}
+
+/// The fastest method of those `eligible` that reaches `level` on every one of `scenes`,
+/// by the sum over the scenes of its fastest run at that level.
+#[must_use]
+pub fn fastest_over(
+    scenes: &[&SceneResult],
+    level: f64,
+    eligible: impl Fn(Method) -> bool,
+) -> Option<Pick> {
+    let mut best: Option<Pick> = None;
+    for method in Method::ALL.into_iter().filter(|&m| eligible(m)) {
+        let mut total = 0.0;
+        let mut everywhere = !scenes.is_empty();
+        for scene in scenes {
+            let fastest = scene
+                .rows
+                .iter()
+                .filter(|r| r.method == method)
+                .filter(|r| r.errors.is_some_and(|e| e.attitude_max <= level))
+                .filter_map(Measurement::time_us)
+                .min_by(f64::total_cmp);
+            match fastest {
+                Some(t) => total += t,
+                None => everywhere = false,
+            }
+        }
+        if everywhere && best.as_ref().is_none_or(|b| total < b.time_us) {
+            best = Some(Pick {
+                method,
+                time_us: total,
+            });
+        }
+    }
+    best
 }

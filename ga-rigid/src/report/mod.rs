@@ -13,7 +13,10 @@ mod plot;
 mod results;
 mod scenes;
 
-pub use analysis::{cost_per_step_ns, fastest_at, observed_order, verdict, ERROR_LEVELS};
+pub use analysis::{
+    cost_per_step_ns, error_floor, fastest_at, fastest_over, observed_order, order, scene_kind,
+    verdict, Order, Pick, SceneKind, ERROR_LEVELS, MIN_ORDER_POINTS,
+};
 pub use invariants::{
     long_run_count, long_runs, long_runs_csv, verdict as long_run_verdict, LongRun, Scale,
     ENERGY_GROWTH, LONG_RUNS_CSV_HEADER, MOMENTUM_BOUND, PERIODS, UNIT_DEFECT_BOUND, UNIT_STEPS,
@@ -109,6 +112,8 @@ pub struct SceneResult {
     pub rate: f64,
     /// How it was swept.
     pub sweep: Sweep,
+    /// The kind of body and case, for the page's summary.
+    pub kind: SceneKind,
     /// The references and their agreement.
     pub check: ReferenceCheck,
     /// One row per method and setting.
@@ -290,6 +295,7 @@ fn run_scene(
         t_end: scene.t_end,
         rate: scene.rate(),
         sweep: scene.sweep,
+        kind: scene_kind(scene),
         check,
         rows,
         left_out,

@@ -3,9 +3,12 @@
 
 use std::fmt::Write as _;
 
-use crate::integrators::{Method, METHODS};
+use crate::integrators::{Method, StepKind, METHODS};
 
-use super::analysis::{cost_per_step_ns, fastest_at, observed_order, verdict, ERROR_LEVELS};
+use super::analysis::{
+    cost_per_step_ns, error_floor, fastest_at, fastest_over, order, verdict, Order, SceneKind,
+    ERROR_LEVELS, MIN_ORDER_POINTS,
+};
 use super::measure::{MIN_REPEATS, MIN_TOTAL_TIME};
 use super::{Report, SceneResult, Size};
 
@@ -71,6 +74,7 @@ pub fn html(report: &Report, svg_names: &[String]) -> String {
         reps = MIN_REPEATS,
         cpu = esc(&report.cpu),
     );
+    summary_section(&mut out, report);
     out.push_str("<p>Colours, the same in every plot: ");
     for row in METHODS {
         let c = super::method_colour(row.method);
@@ -100,6 +104,69 @@ pub fn html(report: &Report, svg_names: &[String]) -> String {
     }
     out.push_str("</body></html>\n");
     out
+}
+
+/// The answer first: per kind of scene and error level, the fastest stepping method over
+/// all the kind's scenes, and the exact or closed form where one applies.
+fn summary_section(out: &mut String, report: &Report) {
+    let mut kinds: Vec<SceneKind> = report
+        .scenes
+        .iter()
+        .map(|s| s.kind)
+        .filter(|k| *k != SceneKind::Long)
+        .collect();
+    kinds.sort();
+    kinds.dedup();
+    out.push_str(
+        "<h2>Which method to use</h2>\n<p>For each kind of scene and each largest attitude \
+         error, the stepping method that reaches that error on <i>every</i> scene of the kind \
+         in the least time (its fastest run at that error on each scene, summed over the \
+         scenes). Below it, where the body has one, the exact or closed-form solution: it \
+         takes no steps and is evaluated at the sample times.</p>\n<table><tr><th>kind \
+         (scenes)</th>",
+    );
+    for level in ERROR_LEVELS {
+        let _ = write!(out, "<th>≤ {level:.0e} rad</th>");
+    }
+    out.push_str("</tr>\n");
+    for kind in kinds {
+        let scenes: Vec<&SceneResult> = report.scenes.iter().filter(|s| s.kind == kind).collect();
+        let names: Vec<String> = scenes.iter().map(|s| esc(&s.name)).collect();
+        let _ = write!(
+            out,
+            "<tr><td>{} ({})<br><span class=\"note\">{}</span></td>",
+            kind.label(),
+            scenes.len(),
+            names.join("; ")
+        );
+        for level in ERROR_LEVELS {
+            let stepper = fastest_over(&scenes, level, |m| m.step_kind() != StepKind::AtSamples);
+            let exact = fastest_over(&scenes, level, |m| m.step_kind() == StepKind::AtSamples);
+            out.push_str("<td>");
+            match stepper {
+                Some(pick) => {
+                    let _ = write!(
+                        out,
+                        "<b>{}</b><br>{:.1} µs",
+                        pick.method.name(),
+                        pick.time_us
+                    );
+                }
+                None => out.push_str("no stepper reached it everywhere"),
+            }
+            if let Some(pick) = exact {
+                let _ = write!(
+                    out,
+                    "<br><span class=\"note\">{} (no steps): {:.1} µs</span>",
+                    pick.method.name(),
+                    pick.time_us
+                );
+            }
+            out.push_str("</td>");
+        }
+        out.push_str("</tr>\n");
+    }
+    out.push_str("</table>\n");
 }
 
 fn section(out: &mut String, index: usize, scene: &SceneResult, svg_name: &str) {
@@ -156,7 +223,12 @@ fn section(out: &mut String, index: usize, scene: &SceneResult, svg_name: &str) 
     let mut methods: Vec<Method> = scene.rows.iter().map(|r| r.method).collect();
     methods.dedup();
     for method in methods {
-        let order = observed_order(scene, method).map_or("–".to_string(), |p| format!("{p:.2}"));
+        let order = match order(scene, method) {
+            Order::Fitted(p, n) => format!("{p:.2} ({n} runs)"),
+            Order::TooFewPoints(n) => {
+                format!("– ({n} runs above the floor, {MIN_ORDER_POINTS} needed)")
+            }
+        };
         let cost = cost_per_step_ns(scene, method).map_or("–".to_string(), |c| format!("{c:.0}"));
         // The last row of a method is its finest step or tightest tolerance.
         let drift = scene
@@ -173,7 +245,16 @@ fn section(out: &mut String, index: usize, scene: &SceneResult, svg_name: &str) 
             esc(&verdict(scene, method))
         );
     }
-    out.push_str("</table>\n<p class=\"note\">Observed order: slope of log error against log mean step, over runs whose error lies between 1e-12 and 0.1. Cost per step: median time over steps (evaluations for methods without steps), median over settings. Energy drift: the largest relative drift over the run. Stability: a run keeps the solution while its attitude and relative momentum errors stay below 0.1 over the whole run; h|w| is the (mean) step times the initial rate.</p>\n");
+    let _ = write!(
+        out,
+        "</table>\n<p class=\"note\">Observed order: slope of log error against log mean \
+         step, over runs whose error lies between this scene's floor, {:.1e} (ten times the \
+         references' disagreement, at least 1e-12), and 0.1, fitted with at least {} such \
+         runs.",
+        error_floor(scene),
+        MIN_ORDER_POINTS
+    );
+    out.push_str(" Cost per step: median time over steps (evaluations for methods without steps), median over settings. Energy drift: the largest relative drift over the run. Stability: a run keeps the solution while its attitude and relative momentum errors stay below 0.1 over the whole run; h|w| is the (mean) step times the initial rate.</p>\n");
     for (what, why) in &scene.left_out {
         let _ = writeln!(
             out,
@@ -201,30 +282,45 @@ fn section(out: &mut String, index: usize, scene: &SceneResult, svg_name: &str) 
 
 /// The table of [`super::long_runs`]: one row per run with its verdict.
 fn long_runs_section(out: &mut String, rows: &[super::LongRun]) {
-    let full = rows
+    let unit: Vec<u64> = rows
         .iter()
-        .all(|r| r.check != "unit rotor" || r.steps >= super::UNIT_STEPS);
+        .filter(|r| r.check == "unit rotor")
+        .map(|r| r.steps)
+        .collect();
+    let full = unit.iter().all(|&steps| steps >= super::UNIT_STEPS);
+    let range = |values: &[f64]| {
+        let lo = values.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = values.iter().copied().fold(0.0, f64::max);
+        if lo == hi {
+            format!("{lo}")
+        } else {
+            format!("{lo} to {hi}")
+        }
+    };
+    let unit_steps: Vec<f64> = unit.iter().map(|&s| s as f64).collect();
+    let periods: Vec<f64> = rows
+        .iter()
+        .filter(|r| r.check == "invariants")
+        .map(|r| r.periods)
+        .collect();
     let _ = writeln!(
         out,
-        "<section id=\"long-runs\"><h2>Long runs</h2>\n<p>Every method over {} steps \
-         (the unit-rotor check: <code>|R ~R - 1|</code> at most {:.0e} after every step), \
-         then the compositions and splittings over {} periods (the energy error is bounded \
-         when its largest value over the last tenth is at most {} times that over the first \
-         tenth, and the conserved momentum stays within {:.0e} relative). {} Details in \
-         <a href=\"long_runs.csv\">long_runs.csv</a>.</p>",
-        rows.iter().map(|r| r.steps).min().unwrap_or(0),
+        "<section id=\"long-runs\"><h2>Long runs</h2>\n<p>The unit-rotor check runs every \
+         method over {} steps (<code>|R ~R - 1|</code> at most {:.0e} after every step); the \
+         invariant check runs the compositions and splittings over {} periods (the energy \
+         error is bounded when its largest value over the last tenth is at most {} times \
+         that over the first tenth, and the conserved momentum stays within {:.0e} \
+         relative). {}Details in <a href=\"long_runs.csv\">long_runs.csv</a>.</p>",
+        range(&unit_steps),
         super::UNIT_DEFECT_BOUND,
-        rows.iter()
-            .filter(|r| r.check == "invariants")
-            .map(|r| r.periods)
-            .fold(0.0, f64::max),
+        range(&periods),
         super::ENERGY_GROWTH,
         super::MOMENTUM_BOUND,
         if full {
-            "These are the issue's scales."
+            ""
         } else {
-            "A quick run goes a hundredth as far as the issue asks; its verdicts are for \
-             that length only."
+            "This quick run goes a hundredth as far as the full report; its verdicts are for \
+             that length only. "
         },
     );
     out.push_str(

@@ -115,11 +115,19 @@ fn draw(scene: &SceneResult, text: &mut String) -> DrawResult {
             pts.iter().map(|(t, e, _)| (*t, *e)),
             colour.stroke_width(2),
         ))?;
-        chart.draw_series(pts.iter().map(|(t, e, label)| {
+        // Only a line's two ends are labelled (its coarsest and finest setting): a label on
+        // every point crowded the plot; the CSV has every setting.
+        let last = pts.len().saturating_sub(1);
+        chart.draw_series(pts.iter().enumerate().map(|(k, (t, e, label))| {
+            let text = if k == 0 || k == last {
+                label.clone()
+            } else {
+                String::new()
+            };
             EmptyElement::at((*t, *e))
                 + Circle::new((0, 0), 4, colour.filled())
                 + Text::new(
-                    label.clone(),
+                    text,
                     (6, label_dy),
                     ("sans-serif", 11).into_font().color(&colour),
                 )
