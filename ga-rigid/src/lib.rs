@@ -8,6 +8,7 @@ pub mod exact_flow;
 pub mod inertia;
 mod input;
 pub mod integrators;
+pub mod peers;
 pub mod report;
 pub mod scene;
 pub mod simulation;

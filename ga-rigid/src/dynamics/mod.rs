@@ -9,4 +9,4 @@ mod torque;
 pub use body::RigidBody;
 pub use state::{omega_from_vector, omega_to_vector, State};
 pub use symmetric_top::{SymmetricTop, DEFAULT_SYMMETRY_TOLERANCE};
-pub use torque::{Gravity, Torque};
+pub use torque::{Gravity, GravityGradient, Torque};

@@ -14,6 +14,7 @@ use super::{
     ClosedForm, ComposedSplitting, DormandPrince, ExactFreeBody, ExactSplitting, ImplicitMidpoint,
     Integrator, LieDop853, LieRk4, Rk4, Splitting,
 };
+use crate::peers::{Buss, ExplicitGyroscopicEuler, ImplicitGyroscopicEuler};
 
 /// The absolute tolerance paired with a relative tolerance `tol` for Dormand-Prince, as a
 /// fraction of `tol`.
@@ -53,6 +54,16 @@ pub enum Method {
     /// Adaptive Runge-Kutta-Munthe-Kaas on the rotor group with the Dormand-Prince 8(5,3)
     /// pair.
     LieDop853,
+    /// Peer: ode_solvers' Dop853 on the quaternion form.
+    Dop853Quaternion,
+    /// Peer: ode_solvers' Dopri5 on the quaternion form.
+    Dopri5Quaternion,
+    /// Peer: the explicit gyroscopic Euler step of game engines.
+    EulerGyroExplicit,
+    /// Peer: the implicit gyroscopic Euler step (one Newton iteration) of Bullet and Jolt.
+    EulerGyroImplicit,
+    /// Peer: Buss's augmented second-order rotation update.
+    Buss2,
 }
 
 /// The kind of step control a method takes.
@@ -106,16 +117,28 @@ pub struct MethodInfo {
     pub summary: &'static str,
     /// The step beyond which the method is unstable.
     pub step_limit: StepLimit,
+    /// For a method people use today rather than one of ours (a peer in the report), where
+    /// it comes from.
+    pub peer: Option<&'static str>,
 }
 
-/// The registry: one row per method, in the order tables list them.
-pub const METHODS: [MethodInfo; 15] = [
+/// The engines' explicit step's stability limit `h |w|max` (see [`StepLimit`]).
+const STEP_LIMIT_EULER_EXPLICIT: f64 = 0.1;
+/// The engines' implicit step's stability limit `h |w|max`.
+const STEP_LIMIT_EULER_IMPLICIT: f64 = 0.2;
+/// Buss's method's stability limit `h |w|max`.
+const STEP_LIMIT_BUSS: f64 = 0.5;
+
+/// The registry: one row per method, in the order tables list them; ours first, then the
+/// peers (`peer` set).
+pub const METHODS: [MethodInfo; 20] = [
     MethodInfo {
         method: Method::ClosedForm,
         name: "closed-form",
         kind: StepKind::AtSamples,
         summary: "the closed-form solution (torque-free symmetric top)",
         step_limit: StepLimit::None,
+        peer: None,
     },
     MethodInfo {
         method: Method::Exact,
@@ -123,6 +146,7 @@ pub const METHODS: [MethodInfo; 15] = [
         kind: StepKind::AtSamples,
         summary: "the exact flow of the free body (Jacobi elliptic functions)",
         step_limit: StepLimit::None,
+        peer: None,
     },
     MethodInfo {
         method: Method::Rk4,
@@ -130,6 +154,7 @@ pub const METHODS: [MethodInfo; 15] = [
         kind: StepKind::Fixed,
         summary: "classical fourth-order Runge-Kutta, rotor renormalised",
         step_limit: StepLimit::Rate(2.0),
+        peer: None,
     },
     MethodInfo {
         method: Method::LieRk4,
@@ -137,6 +162,7 @@ pub const METHODS: [MethodInfo; 15] = [
         kind: StepKind::Fixed,
         summary: "fourth-order Runge-Kutta-Munthe-Kaas on the rotor group",
         step_limit: StepLimit::Rate(2.0),
+        peer: None,
     },
     MethodInfo {
         method: Method::Midpoint,
@@ -144,6 +170,7 @@ pub const METHODS: [MethodInfo; 15] = [
         kind: StepKind::Fixed,
         summary: "the implicit midpoint rule (symplectic, order two)",
         step_limit: StepLimit::Rate(2.5),
+        peer: None,
     },
     MethodInfo {
         method: Method::Splitting,
@@ -151,6 +178,7 @@ pub const METHODS: [MethodInfo; 15] = [
         kind: StepKind::Fixed,
         summary: "splitting into exact axis rotations (Dullweber-Leimkuhler-McLachlan)",
         step_limit: StepLimit::Rate(3.0),
+        peer: None,
     },
     MethodInfo {
         method: Method::Dopri,
@@ -158,6 +186,7 @@ pub const METHODS: [MethodInfo; 15] = [
         kind: StepKind::Adaptive,
         summary: "adaptive Dormand-Prince 5(4)",
         step_limit: StepLimit::None,
+        peer: None,
     },
     MethodInfo {
         method: Method::ExactSplitting,
@@ -165,6 +194,7 @@ pub const METHODS: [MethodInfo; 15] = [
         kind: StepKind::Fixed,
         summary: "torque kick, exact free flow, torque kick (Celledoni et al. 2008), order two",
         step_limit: StepLimit::RateUnderTorque(30.0),
+        peer: None,
     },
     MethodInfo {
         method: Method::ExactSplitting4,
@@ -172,6 +202,7 @@ pub const METHODS: [MethodInfo; 15] = [
         kind: StepKind::Fixed,
         summary: "the exact-flow splitting raised to order four (Blanes-Moan SRKN_6^b)",
         step_limit: StepLimit::RateUnderTorque(30.0),
+        peer: None,
     },
     MethodInfo {
         method: Method::ExactSplitting6,
@@ -179,6 +210,7 @@ pub const METHODS: [MethodInfo; 15] = [
         kind: StepKind::Fixed,
         summary: "the exact-flow splitting raised to order six (Blanes-Moan SRKN_11^b)",
         step_limit: StepLimit::RateUnderTorque(30.0),
+        peer: None,
     },
     MethodInfo {
         method: Method::ExactSplitting8,
@@ -186,6 +218,7 @@ pub const METHODS: [MethodInfo; 15] = [
         kind: StepKind::Fixed,
         summary: "the exact-flow splitting composed to order eight (Kahan-Li)",
         step_limit: StepLimit::RateUnderTorque(30.0),
+        peer: None,
     },
     MethodInfo {
         method: Method::Splitting4,
@@ -193,6 +226,7 @@ pub const METHODS: [MethodInfo; 15] = [
         kind: StepKind::Fixed,
         summary: "the axis-rotation splitting composed to order four (Suzuki)",
         step_limit: StepLimit::Rate(4.0),
+        peer: None,
     },
     MethodInfo {
         method: Method::Splitting6,
@@ -200,6 +234,7 @@ pub const METHODS: [MethodInfo; 15] = [
         kind: StepKind::Fixed,
         summary: "the axis-rotation splitting composed to order six (Kahan-Li)",
         step_limit: StepLimit::Rate(4.0),
+        peer: None,
     },
     MethodInfo {
         method: Method::Splitting8,
@@ -207,6 +242,7 @@ pub const METHODS: [MethodInfo; 15] = [
         kind: StepKind::Fixed,
         summary: "the axis-rotation splitting composed to order eight (Kahan-Li)",
         step_limit: StepLimit::Rate(4.0),
+        peer: None,
     },
     MethodInfo {
         method: Method::LieDop853,
@@ -214,6 +250,47 @@ pub const METHODS: [MethodInfo; 15] = [
         kind: StepKind::Adaptive,
         summary: "adaptive order-8 Runge-Kutta-Munthe-Kaas on the rotor group (DOP853 pair)",
         step_limit: StepLimit::None,
+        peer: None,
+    },
+    MethodInfo {
+        method: Method::Dop853Quaternion,
+        name: "dop853-quaternion",
+        kind: StepKind::Adaptive,
+        summary: "peer: ode_solvers' Dop853 on body momentum and a unit quaternion",
+        step_limit: StepLimit::None,
+        peer: Some("ode_solvers 0.6 Dop853 (Hairer's DOP853), 7-unknown quaternion form"),
+    },
+    MethodInfo {
+        method: Method::Dopri5Quaternion,
+        name: "dopri5-quaternion",
+        kind: StepKind::Adaptive,
+        summary: "peer: ode_solvers' Dopri5 on body momentum and a unit quaternion",
+        step_limit: StepLimit::None,
+        peer: Some("ode_solvers 0.6 Dopri5 (Hairer's DOPRI5), 7-unknown quaternion form"),
+    },
+    MethodInfo {
+        method: Method::EulerGyroExplicit,
+        name: "euler-gyro-explicit",
+        kind: StepKind::Fixed,
+        summary: "peer: game engines' explicit gyroscopic Euler step",
+        step_limit: StepLimit::Rate(STEP_LIMIT_EULER_EXPLICIT),
+        peer: Some("engines' explicit gyroscopic Euler (Catto, GDC 2015)"),
+    },
+    MethodInfo {
+        method: Method::EulerGyroImplicit,
+        name: "euler-gyro-implicit",
+        kind: StepKind::Fixed,
+        summary: "peer: Bullet's and Jolt's implicit gyroscopic Euler step (one Newton iteration)",
+        step_limit: StepLimit::Rate(STEP_LIMIT_EULER_IMPLICIT),
+        peer: Some("Bullet computeGyroscopicImpulseImplicit_Body, Jolt (Catto, GDC 2015)"),
+    },
+    MethodInfo {
+        method: Method::Buss2,
+        name: "buss-2",
+        kind: StepKind::Fixed,
+        summary: "peer: Buss's augmented second-order rotation update",
+        step_limit: StepLimit::Rate(STEP_LIMIT_BUSS),
+        peer: Some("Buss, J. Comput. Phys. 164 (2000), augmented second-order method"),
     },
 ];
 
@@ -362,8 +439,44 @@ impl Method {
             Method::Splitting8 => {
                 Box::new(ComposedSplitting::new(fixed()?, 8).map_err(|e| e.at("dt"))?)
             }
+            Method::Dop853Quaternion | Method::Dopri5Quaternion => {
+                quaternion_ode(self, tolerance()?)?
+            }
+            Method::EulerGyroExplicit => {
+                Box::new(ExplicitGyroscopicEuler::new(fixed()?).map_err(|e| e.at("dt"))?)
+            }
+            Method::EulerGyroImplicit => {
+                Box::new(ImplicitGyroscopicEuler::new(fixed()?).map_err(|e| e.at("dt"))?)
+            }
+            Method::Buss2 => Box::new(Buss::new(fixed()?).map_err(|e| e.at("dt"))?),
         })
     }
+}
+
+/// ode_solvers' pairs, with the `peers` feature.
+#[cfg(feature = "peers")]
+fn quaternion_ode(method: Method, tol: f64) -> Result<Box<dyn Integrator>, Error> {
+    use crate::peers::{QuaternionOde, QuaternionSolver};
+    let solver = if method == Method::Dop853Quaternion {
+        QuaternionSolver::Dop853
+    } else {
+        QuaternionSolver::Dopri5
+    };
+    Ok(Box::new(
+        QuaternionOde::new(solver, tol).map_err(|e| e.at("tol"))?,
+    ))
+}
+
+/// Without the `peers` feature ode_solvers is not built: say so.
+#[cfg(not(feature = "peers"))]
+fn quaternion_ode(method: Method, _tol: f64) -> Result<Box<dyn Integrator>, Error> {
+    Err(Error::invalid(
+        "method",
+        format!(
+            "{} needs ga-rigid's `peers` feature (ode_solvers)",
+            method.name()
+        ),
+    ))
 }
 
 impl fmt::Display for Method {
@@ -392,7 +505,7 @@ mod tests {
 
     /// Every variant, listed by hand: the match below has no wildcard, so a new variant
     /// fails to compile here until it is listed, and then needs its row in `METHODS`.
-    const EVERY_VARIANT: [Method; 15] = [
+    const EVERY_VARIANT: [Method; 20] = [
         Method::ClosedForm,
         Method::Rk4,
         Method::LieRk4,
@@ -408,6 +521,11 @@ mod tests {
         Method::Splitting6,
         Method::Splitting8,
         Method::LieDop853,
+        Method::Dop853Quaternion,
+        Method::Dopri5Quaternion,
+        Method::EulerGyroExplicit,
+        Method::EulerGyroImplicit,
+        Method::Buss2,
     ];
 
     #[test]
@@ -428,7 +546,12 @@ mod tests {
                 | Method::Splitting4
                 | Method::Splitting6
                 | Method::Splitting8
-                | Method::LieDop853 => {}
+                | Method::LieDop853
+                | Method::Dop853Quaternion
+                | Method::Dopri5Quaternion
+                | Method::EulerGyroExplicit
+                | Method::EulerGyroImplicit
+                | Method::Buss2 => {}
             }
         }
         let count = |m: Method| METHODS.iter().filter(|r| r.method == m).count();

@@ -81,8 +81,16 @@ pub fn html(report: &Report, svg_names: &[String]) -> String {
         let _ = write!(
             out,
             "<span style=\"white-space:nowrap;margin-right:1em\"><span class=\"swatch\" \
-             style=\"background:rgb({},{},{})\"></span>{}</span> ",
-            c.0, c.1, c.2, row.name
+             style=\"background:rgb({},{},{})\"></span>{}{}</span> ",
+            c.0,
+            c.1,
+            c.2,
+            row.name,
+            if row.peer.is_some() {
+                " (peer, dashed)"
+            } else {
+                ""
+            }
         );
     }
     out.push_str("</p>\n<p>Scenes: ");
@@ -140,10 +148,14 @@ fn summary_section(out: &mut String, report: &Report) {
             names.join("; ")
         );
         for level in ERROR_LEVELS {
-            let stepper = fastest_over(&scenes, level, |m| m.step_kind() != StepKind::AtSamples);
+            let ours = |m: Method| m.info().peer.is_none();
+            let stepper = fastest_over(&scenes, level, |m| {
+                ours(m) && m.step_kind() != StepKind::AtSamples
+            });
             let exact = fastest_over(&scenes, level, |m| m.step_kind() == StepKind::AtSamples);
+            let peer = fastest_over(&scenes, level, |m| !ours(m));
             out.push_str("<td>");
-            match stepper {
+            match &stepper {
                 Some(pick) => {
                     let _ = write!(
                         out,
@@ -152,7 +164,27 @@ fn summary_section(out: &mut String, report: &Report) {
                         pick.time_us
                     );
                 }
-                None => out.push_str("no stepper reached it everywhere"),
+                None => out.push_str("none of ours reached it everywhere"),
+            }
+            match (&peer, &stepper) {
+                (Some(p), Some(s)) => {
+                    let _ = write!(
+                        out,
+                        "<br><span class=\"note\">best peer {}: {:.1} µs; ours take {:.2}x</span>",
+                        p.method.name(),
+                        p.time_us,
+                        s.time_us / p.time_us
+                    );
+                }
+                (Some(p), None) => {
+                    let _ = write!(
+                        out,
+                        "<br><span class=\"note\">best peer {}: {:.1} µs</span>",
+                        p.method.name(),
+                        p.time_us
+                    );
+                }
+                (None, _) => out.push_str("<br><span class=\"note\">no peer reached it</span>"),
             }
             if let Some(pick) = exact {
                 let _ = write!(
@@ -239,9 +271,14 @@ fn section(out: &mut String, index: usize, scene: &SceneResult, svg_name: &str) 
             .map_or("–".to_string(), |e| format!("{:.1e}", e.energy_max));
         let _ = writeln!(
             out,
-            "<tr><td>{}</td><td class=\"num\">{order}</td><td class=\"num\">{cost}</td>\
+            "<tr><td>{}{}</td><td class=\"num\">{order}</td><td class=\"num\">{cost}</td>\
              <td class=\"num\">{drift}</td><td>{}</td></tr>",
             method.name(),
+            if method.info().peer.is_some() {
+                " (peer)"
+            } else {
+                ""
+            },
             esc(&verdict(scene, method))
         );
     }

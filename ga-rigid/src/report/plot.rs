@@ -17,7 +17,7 @@ const ERROR_FLOOR: f64 = 1e-17;
 /// [`Method::ALL`]; a method added later takes the next colour of the palette).
 #[must_use]
 pub fn method_colour(method: Method) -> RGBColor {
-    const PALETTE: [RGBColor; 16] = [
+    const PALETTE: [RGBColor; 21] = [
         RGBColor(140, 86, 75),   // brown
         RGBColor(0, 0, 0),       // black
         RGBColor(214, 39, 40),   // red
@@ -35,6 +35,12 @@ pub fn method_colour(method: Method) -> RGBColor {
         RGBColor(127, 39, 4),  // rust
         RGBColor(63, 0, 125),  // indigo
         RGBColor(0, 109, 119), // teal
+        // The peers (drawn dashed): greys and muted tones.
+        RGBColor(110, 110, 110), // grey
+        RGBColor(184, 134, 11),  // dark gold
+        RGBColor(170, 0, 170),   // magenta
+        RGBColor(90, 160, 0),    // lime
+        RGBColor(80, 80, 140),   // slate
     ];
     let index = Method::ALL.iter().position(|&m| m == method).unwrap_or(0);
     PALETTE[index % PALETTE.len()]
@@ -86,7 +92,7 @@ fn draw(scene: &SceneResult, text: &mut String) -> DrawResult {
     let x_range = widen(t_lo / 2.0, t_hi * 6.0);
     let y_range = widen(e_lo / 5.0, e_hi * 5.0);
 
-    let root = SVGBackend::with_string(text, (960, 560)).into_drawing_area();
+    let root = SVGBackend::with_string(text, (1000, 640)).into_drawing_area();
     root.fill(&WHITE)?;
     let (plot_area, legend_area) = root.split_horizontally(760);
     let mut chart = ChartBuilder::on(&plot_area)
@@ -111,10 +117,20 @@ fn draw(scene: &SceneResult, text: &mut String) -> DrawResult {
         // Labels above the points for every other method, below for the rest: lines that
         // run close together keep their labels apart.
         let label_dy = if i % 2 == 0 { -13 } else { 5 };
-        chart.draw_series(LineSeries::new(
-            pts.iter().map(|(t, e, _)| (*t, *e)),
-            colour.stroke_width(2),
-        ))?;
+        // Peers dashed, ours solid: which line is whose shows without the legend.
+        if method.info().peer.is_some() {
+            chart.draw_series(DashedLineSeries::new(
+                pts.iter().map(|(t, e, _)| (*t, *e)),
+                6,
+                4,
+                colour.stroke_width(2),
+            ))?;
+        } else {
+            chart.draw_series(LineSeries::new(
+                pts.iter().map(|(t, e, _)| (*t, *e)),
+                colour.stroke_width(2),
+            ))?;
+        }
         // Only a line's two ends are labelled (its coarsest and finest setting): a label on
         // every point crowded the plot; the CSV has every setting.
         let last = pts.len().saturating_sub(1);
@@ -138,7 +154,7 @@ fn draw(scene: &SceneResult, text: &mut String) -> DrawResult {
     let font = ("sans-serif", 15).into_font();
     legend_area.draw(&Text::new("method", (10, 40), font.clone()))?;
     for (i, &method) in methods.iter().enumerate() {
-        let y = 70 + 26 * i as i32;
+        let y = 70 + 24 * i as i32;
         let colour = method_colour(method);
         legend_area.draw(&Rectangle::new([(10, y), (34, y + 4)], colour.filled()))?;
         let failed = scene
@@ -146,10 +162,15 @@ fn draw(scene: &SceneResult, text: &mut String) -> DrawResult {
             .iter()
             .filter(|r| r.method == method && r.failure.is_some())
             .count();
-        let name = if failed > 0 {
-            format!("{} ({failed} failed)", method.name())
+        let peer = if method.info().peer.is_some() {
+            " (peer)"
         } else {
-            method.name().to_string()
+            ""
+        };
+        let name = if failed > 0 {
+            format!("{}{peer} ({failed} failed)", method.name())
+        } else {
+            format!("{}{peer}", method.name())
         };
         legend_area.draw(&Text::new(name, (42, y - 6), font.clone()))?;
     }

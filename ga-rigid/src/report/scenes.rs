@@ -3,7 +3,9 @@
 
 use ga_core::f64::g3::{Bivector, Rotor, Vector};
 
-use crate::dynamics::{omega_from_vector, omega_to_vector, Gravity, RigidBody, State};
+use crate::dynamics::{
+    omega_from_vector, omega_to_vector, Gravity, GravityGradient, RigidBody, State,
+};
 use crate::error::Error;
 use crate::exact_flow::free_body_orbit;
 use crate::integrators::{Method, StepKind};
@@ -195,7 +197,7 @@ impl TestScene {
     }
 }
 
-/// The whole built-in suite: the five reference scenes, then the stiff and extreme cases.
+/// The whole built-in suite: the seven reference scenes, then the stiff and extreme cases.
 pub fn suite() -> Result<Vec<TestScene>, Error> {
     let mut scenes = reference_scenes()?;
     scenes.extend(stability_scenes()?);
@@ -244,7 +246,55 @@ pub fn reference_scenes() -> Result<Vec<TestScene>, Error> {
             wp,
         )?,
         heavy_top()?,
+        asymmetric_heavy_top()?,
+        satellite()?,
     ])
+}
+
+/// A heavy top with three different moments and its centre of mass off every axis: no
+/// closed form, and the free part of a splitting is a full elliptic flow.
+fn asymmetric_heavy_top() -> Result<TestScene, Error> {
+    let body = RigidBody::new([1.0, 1.4, 0.6])?.with_torque(Gravity {
+        mass: 1.0,
+        g: Vector::new(0.0, 0.0, -9.81),
+        com_offset: Vector::new(0.05, -0.02, 0.3),
+    });
+    Ok(TestScene::new(
+        "asymmetric heavy top",
+        "moments (1, 1.4, 0.6) about the pivot, centre of mass (0.05, -0.02, 0.3), mass 1, \
+         tilted 0.3 rad, w(0) = (0.3, -0.2, 8)",
+        body,
+        State {
+            rotor: (Bivector::E23 * -0.15).exp(),
+            omega: omega_from_vector([0.3, -0.2, 8.0]),
+        },
+        4.0,
+        100,
+        Sweep::WorkPrecision,
+    ))
+}
+
+/// A satellite under the gravity-gradient torque of a circular orbit (time in units of
+/// the inverse orbital rate), tumbling at a few times the orbital rate for two orbits.
+fn satellite() -> Result<TestScene, Error> {
+    let moments = [1.0, 1.5, 2.0];
+    let body = RigidBody::new(moments)?.with_torque(GravityGradient {
+        orbit_rate: 1.0,
+        moments,
+    });
+    Ok(TestScene::new(
+        "gravity-gradient satellite",
+        "moments (1, 1.5, 2), circular orbit at rate 1, w(0) = (0.2, 0.5, 3) for two orbits \
+         (t_end = 4 pi); the standard attitude problem (Hughes 1986, section 8.2)",
+        body,
+        State {
+            rotor: Rotor::ONE,
+            omega: omega_from_vector([0.2, 0.5, 3.0]),
+        },
+        4.0 * std::f64::consts::PI,
+        100,
+        Sweep::WorkPrecision,
+    ))
 }
 
 fn free_with_momentum(
