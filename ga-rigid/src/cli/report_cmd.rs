@@ -51,6 +51,8 @@ pub fn run(args: &ReportArgs) -> Result<(), Error> {
         report::long_runs(scale, &mut |_| {})?
     };
 
+    report.engine_runs = report::engine_runs(size, &mut |_| {})?;
+
     let names: Vec<String> = report
         .scenes
         .iter()
@@ -66,10 +68,15 @@ pub fn run(args: &ReportArgs) -> Result<(), Error> {
         "long_runs.csv",
         &report::long_runs_csv(&report.long_runs),
     )?;
+    write_file(
+        &args.out,
+        "engine_runs.csv",
+        &report::engine_runs_csv(&report.engine_runs),
+    )?;
     write_file(&args.out, "index.html", &report::html(&report, &names))?;
     let mut summary = report::summary(&report);
     summary.push_str(&format!(
-        "wrote {} (results.csv, long_runs.csv, {} plots, index.html)\n",
+        "wrote {} (results.csv, long_runs.csv, engine_runs.csv, {} plots, index.html)\n",
         args.out.display(),
         names.len()
     ));

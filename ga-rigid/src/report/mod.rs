@@ -6,6 +6,7 @@
 //! writes the files.
 
 mod analysis;
+mod engine_steps;
 mod invariants;
 mod measure;
 mod page;
@@ -16,6 +17,10 @@ mod scenes;
 pub use analysis::{
     cost_per_step_ns, error_floor, fastest_at, fastest_over, observed_order, order, scene_kind,
     verdict, Order, Pick, SceneKind, ERROR_LEVELS, MIN_ORDER_POINTS,
+};
+pub use engine_steps::{
+    engine_run, engine_runs, engine_runs_csv, exact_flip_period, EngineRun, ENGINE_METHODS,
+    ENGINE_RATES, ENGINE_RUNS_CSV_HEADER, ENGINE_STEPS,
 };
 pub use invariants::{
     long_run_count, long_runs, long_runs_csv, verdict as long_run_verdict, LongRun, Scale,
@@ -135,6 +140,9 @@ pub struct Report {
     /// The long runs of [`long_runs`], when they were run (the command runs them after the
     /// scenes; [`run`] leaves this empty).
     pub long_runs: Vec<LongRun>,
+    /// The runs at engine step sizes of [`engine_runs`], when they were run (the command
+    /// runs them after the long runs; [`run`] leaves this empty).
+    pub engine_runs: Vec<EngineRun>,
 }
 
 /// The CPU model from `/proc/cpuinfo`, or a plain statement that it is unknown.
@@ -209,6 +217,7 @@ pub fn run_methods(
         cpu: cpu_model(),
         scenes: results,
         long_runs: Vec::new(),
+        engine_runs: Vec::new(),
     })
 }
 

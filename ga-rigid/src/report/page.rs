@@ -110,6 +110,9 @@ pub fn html(report: &Report, svg_names: &[String]) -> String {
     if !report.long_runs.is_empty() {
         long_runs_section(&mut out, &report.long_runs);
     }
+    if !report.engine_runs.is_empty() {
+        engine_runs_section(&mut out, &report.engine_runs);
+    }
     out.push_str("</body></html>\n");
     out
 }
@@ -388,6 +391,57 @@ fn long_runs_section(out: &mut String, rows: &[super::LongRun]) {
             cell(r.energy_last),
             cell(r.momentum_max),
             esc(&super::long_run_verdict(r)),
+        );
+    }
+    out.push_str("</table></section>\n");
+}
+
+/// The table of [`super::engine_runs`]: per method and engine step size, the energy and
+/// momentum errors and the flip period against the exact one.
+fn engine_runs_section(out: &mut String, rows: &[super::EngineRun]) {
+    let exact = super::exact_flip_period();
+    let steps = rows.iter().map(|r| r.steps).max().unwrap_or(0);
+    let _ = writeln!(
+        out,
+        "<section id=\"engine-steps\"><h2>At engine step sizes: the T-handle</h2>\n<p>The \
+         Dzhanibekov body (moments 3, 5, 9; body momentum (0, 2, 0.01)) stepped {steps} times \
+         at <code>h |w(0)|</code> from {} to {}, as an engine steps at a fixed frame rate. \
+         The exact flow flips the handle every {exact:.3} s. Largest relative errors of the \
+         energy and of the space angular momentum over the run; the mean time between flips \
+         against the exact one. Peers are the engines' steps and Buss's. Details in \
+         <a href=\"engine_runs.csv\">engine_runs.csv</a>.</p>",
+        super::ENGINE_RATES[0],
+        super::ENGINE_RATES[super::ENGINE_RATES.len() - 1],
+    );
+    out.push_str(
+        "<table><tr><th>method</th><th>h|w|</th><th>energy error</th><th>|L| error</th>\
+         <th>flips</th><th>flip period error</th><th>status</th></tr>\n",
+    );
+    for r in rows {
+        let flip = match r.flip_error() {
+            Some(e) => format!("{:+.2} %", 100.0 * e),
+            None => "fewer than two flips".to_string(),
+        };
+        let status = match &r.failure {
+            Some(why) => format!("stopped: {why}"),
+            None => "ran".to_string(),
+        };
+        let _ = writeln!(
+            out,
+            "<tr><td>{}{}</td><td class=\"num\">{}</td><td class=\"num\">{:.1e}</td>\
+             <td class=\"num\">{:.1e}</td><td class=\"num\">{}</td><td class=\"num\">{flip}</td>\
+             <td>{}</td></tr>",
+            r.method.name(),
+            if r.method.info().peer.is_some() {
+                " (peer)"
+            } else {
+                ""
+            },
+            r.rate,
+            r.energy_max,
+            r.momentum_max,
+            r.flips,
+            esc(&status),
         );
     }
     out.push_str("</table></section>\n");
