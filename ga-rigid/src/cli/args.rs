@@ -60,6 +60,10 @@ pub struct SimulateArgs {
     /// sample for fixed steps; a rough estimate for dopri).
     #[arg(long, value_name = "N", default_value_t = super::simulate::DEFAULT_MAX_STEPS)]
     pub max_steps: u64,
+    /// Refuse runs estimated to take longer than this many seconds in a release build (the
+    /// step estimate times the method's cost per step, from the registry).
+    #[arg(long, value_name = "S", default_value_t = super::budget::DEFAULT_MAX_SECONDS)]
+    pub max_seconds: u64,
     /// Refuse runs whose CSV may be larger than this many megabytes (300 bytes a row).
     #[arg(long, value_name = "MB", default_value_t = super::simulate::DEFAULT_MAX_OUTPUT_MB)]
     pub max_output_mb: u64,
@@ -90,6 +94,10 @@ pub struct ReportArgs {
     /// Add every `*.toml` scene (the `simulate` format) in this directory to the suite.
     #[arg(long, value_name = "DIR")]
     pub scenes: Option<PathBuf>,
+    /// Refuse `--scenes` whose runs are estimated to take longer than this many seconds
+    /// together (steps times each method's cost per step, the timing repeats included).
+    #[arg(long, value_name = "S", default_value_t = super::budget::DEFAULT_REPORT_MAX_SECONDS)]
+    pub max_seconds: u64,
 }
 
 // clap learns the method names from the library's registry: one table, one name each.

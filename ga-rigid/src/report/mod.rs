@@ -6,6 +6,7 @@
 //! writes the files.
 
 mod analysis;
+mod estimate;
 mod invariants;
 mod measure;
 mod page;
@@ -14,6 +15,7 @@ mod results;
 mod scenes;
 
 pub use analysis::{cost_per_step_ns, fastest_at, observed_order, verdict, ERROR_LEVELS};
+pub use estimate::scene_seconds;
 pub use invariants::{
     long_run_count, long_runs, long_runs_csv, verdict as long_run_verdict, LongRun, Scale,
     ENERGY_GROWTH, LONG_RUNS_CSV_HEADER, MOMENTUM_BOUND, PERIODS, UNIT_DEFECT_BOUND, UNIT_STEPS,
