@@ -68,7 +68,7 @@ impl Mesh {
     /// ([`Error::Obj`], field `mesh`) give the line; more than [`MAX_MESH_TRIANGLES`]
     /// triangles or [`MAX_MESH_VERTICES`] vertices are refused as they are counted.
     pub fn parse_obj(text: &str, path: &Path) -> Result<Mesh, Error> {
-        parse_lines(text.as_bytes(), path, u64::MAX)
+        parse_lines(text.as_bytes(), path, u64::MAX, MAX_MESH_TRIANGLES)
     }
 
     /// Read and parse an OBJ file (see [`Mesh::parse_obj`]) line by line, so that only
@@ -78,7 +78,7 @@ impl Mesh {
         let file = crate::input::open_regular("mesh", path, MAX_MESH_BYTES)?;
         // One byte past the limit tells a file that grew after the check from one that fits.
         let reader = std::io::BufReader::new(file.take(MAX_MESH_BYTES + 1));
-        parse_lines(reader, path, MAX_MESH_BYTES)
+        parse_lines(reader, path, MAX_MESH_BYTES, MAX_MESH_TRIANGLES)
     }
 
     /// Check that the mesh is a closed, consistently oriented surface: every edge is
@@ -330,8 +330,14 @@ fn resolve_index(token: &str, count: usize) -> Result<usize, String> {
 /// The streaming OBJ parser behind [`Mesh::parse_obj`] and [`Mesh::read_obj`]: each line is
 /// checked as it is read, each face's triangles counted against [`MAX_MESH_TRIANGLES`]
 /// vertex by vertex before any is stored, and a face that repeats a vertex refused at its
-/// line. `limit` bounds the bytes read.
-fn parse_lines<R: BufRead>(mut reader: R, path: &Path, limit: u64) -> Result<Mesh, Error> {
+/// line. `limit` bounds the bytes read, `max_triangles` the triangles (a parameter so
+/// that a test can reach it with a small file).
+fn parse_lines<R: BufRead>(
+    mut reader: R,
+    path: &Path,
+    limit: u64,
+    max_triangles: usize,
+) -> Result<Mesh, Error> {
     let err = |line: usize, message: String| Error::Obj {
         field: "mesh".to_string(),
         path: path.to_path_buf(),
@@ -445,11 +451,12 @@ fn parse_lines<R: BufRead>(mut reader: R, path: &Path, limit: u64) -> Result<Mes
                 for t in tokens {
                     let i = resolve_index(t, count).map_err(|m| err(line_no, m))?;
                     // The triangles this face adds, counted before any is built.
-                    if mesh.triangles.len() + polygon.len().saturating_sub(1) > MAX_MESH_TRIANGLES {
+                    if mesh.triangles.len() + polygon.len().saturating_sub(1) > max_triangles {
                         return Err(err(
                             line_no,
                             format!(
-                                "more than {MAX_MESH_TRIANGLES} triangles (polygons count                                  as their fans), the limit"
+                                "more than {max_triangles} triangles (polygons count as their fans), \
+                                 the limit"
                             ),
                         ));
                     }
@@ -548,5 +555,87 @@ impl Inertia {
         let [x, y, z] = moments.centroid;
         Inertia::from_matrix(&j, Some(rho * moments.volume), Vector::new(x, y, z))
             .map_err(|e| e.at("mesh"))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_polygon_past_the_triangle_limit_is_refused_before_it_is_built() {
+        // Ten distinct vertices make an 8-triangle fan; the limit of 5 stops it at the
+        // seventh vertex, naming the line.
+        let mut text = String::new();
+        for k in 0..10 {
+            text.push_str(&format!("v {k} {} 0\n", k * k));
+        }
+        text.push_str("f 1 2 3 4 5 6 7 8 9 10\n");
+        let e = parse_lines(text.as_bytes(), Path::new("m.obj"), u64::MAX, 5)
+            .unwrap_err()
+            .to_string();
+        assert_eq!(
+            e,
+            "mesh: m.obj:11: more than 5 triangles (polygons count as their fans), the limit"
+        );
+        // At the limit it is accepted.
+        let mesh = parse_lines(text.as_bytes(), Path::new("m.obj"), u64::MAX, 8).unwrap();
+        assert_eq!(mesh.triangles.len(), 8);
+    }
+
+    #[test]
+    fn triangles_of_many_faces_count_toward_the_limit() {
+        let text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\nf 1 3 4\n";
+        let e = parse_lines(text.as_bytes(), Path::new("m.obj"), u64::MAX, 2)
+            .unwrap_err()
+            .to_string();
+        assert!(e.starts_with("mesh: m.obj:7: more than 2 triangles"), "{e}");
+    }
+
+    #[test]
+    fn a_long_face_that_repeats_a_vertex_is_refused_at_the_repeat() {
+        // `f 1 2 3 1 2 3 ...`, the shape of issue 22's 250 MiB file, and a long face
+        // (past the direct search) whose repeat comes late.
+        let mut text = String::from("v 0 0 0\nv 1 0 0\nv 0 1 0\nf");
+        for _ in 0..1000 {
+            text.push_str(" 1 2 3");
+        }
+        let e = Mesh::parse_obj(&text, Path::new("m.obj"))
+            .unwrap_err()
+            .to_string();
+        assert_eq!(
+            e,
+            "mesh: m.obj:4: the face repeats vertex 1 (vertex 4 of the face)"
+        );
+        let mut text = String::new();
+        for k in 0..40 {
+            text.push_str(&format!("v {k} {} 0\n", k * k));
+        }
+        text.push_str("f");
+        for k in 1..=40 {
+            text.push_str(&format!(" {k}"));
+        }
+        text.push_str(" 17\n");
+        let e = Mesh::parse_obj(&text, Path::new("m.obj"))
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.ends_with("the face repeats vertex 17 (vertex 41 of the face)"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn an_index_past_the_vertex_limit_is_refused_as_it_is_read() {
+        let text = "v 0 0 0\nf 1 2 99999999999\n";
+        let e = Mesh::parse_obj(text, Path::new("m.obj"))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("above the limit of 4000000 vertices"), "{e}");
+        let text = "v 0 0 0\nf 1 2 -9223372036854775808\n";
+        let e = Mesh::parse_obj(text, Path::new("m.obj"))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("points before the first vertex"), "{e}");
     }
 }
