@@ -1841,12 +1841,13 @@ fn report_scenes_refuse_unreadable_entries_by_name() {
     // Issue 22, finding 5: these were skipped in silence.
     let dir = test_dir("report_scenes_unreadable");
     let mine = scenes_dir(&dir);
-    let setups: [(&str, &dyn Fn(&Path)); 3] = [
-        ("loop.toml", &|p| {
-            std::os::unix::fs::symlink("loop.toml", p).unwrap()
-        }),
-        ("pipe.toml", &|p| make_fifo(p)),
-        ("folder.toml", &|p| std::fs::create_dir(p).unwrap()),
+    let loop_link = |p: &Path| std::os::unix::fs::symlink("loop.toml", p).unwrap();
+    let folder = |p: &Path| std::fs::create_dir(p).unwrap();
+    type Make<'a> = &'a dyn Fn(&Path);
+    let setups: [(&str, Make); 3] = [
+        ("loop.toml", &loop_link),
+        ("pipe.toml", &make_fifo),
+        ("folder.toml", &folder),
     ];
     for (name, make) in setups {
         let path = mine.join(name);

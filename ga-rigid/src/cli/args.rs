@@ -51,9 +51,10 @@ pub struct SimulateArgs {
     /// default 1e-9.
     #[arg(long, value_name = "TOL", allow_hyphen_values = true)]
     pub tol: Option<f64>,
-    /// Write the CSV to this regular file instead of standard output, only on success, by
-    /// temporary file and rename; a symbolic link is followed and its target replaced; a
-    /// directory, FIFO, socket or device is refused (use standard output to reach one).
+    /// Write the CSV to this regular file instead of standard output (and a record to
+    /// FILE.json), only on success, by temporary file and rename; a symbolic link is
+    /// followed and its target replaced; a directory, FIFO, socket or device, the scene or
+    /// another output is refused (use standard output to reach a pipe or device).
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
     /// Refuse runs estimated to take more steps than this (t_end / dt plus one per

@@ -2,11 +2,11 @@
 //!
 //! Every failure ends the same way: nothing on standard output, one line on standard
 //! error naming the field or argument and the rule it broke, no output file, and exit
-//! status 2 for bad input (1 for a failed write or a missing feature). Output is
-//! buffered and written only when the command has succeeded; `--out FILE` is written to
-//! a temporary file in the same directory and renamed into place, and only ever to a
-//! regular file (a symbolic link is followed to one; a directory, FIFO, socket or device
-//! is refused with status 2; see the README).
+//! status 2 for bad input (1 for a failed write or a missing feature). Every output file
+//! is checked before any work (a regular file or missing, a symbolic link followed to
+//! one; never a directory, FIFO, socket or device, the scene, its mesh or another output)
+//! and written only when the command has succeeded: all to temporary files first, then
+//! renamed into place together ([`output::OutputPlan`]; see the README).
 
 mod args;
 mod budget;

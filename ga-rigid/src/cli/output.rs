@@ -1,6 +1,7 @@
-//! Where `--out` may write, and the atomic write itself.
+//! Where the outputs may go, and how they are written together.
 //!
-//! The rule: output goes only to a regular file, never through it to something else.
+//! The rule: output goes only to a regular file, never through it to something else, and
+//! never onto an input or onto another output of the same command ([`OutputPlan`]).
 //!
 //! - A missing path, or an existing regular file, is written by creating a fresh
 //!   temporary file beside it (`O_EXCL`, so a planted file or link at the temporary name
@@ -15,6 +16,9 @@
 //!   `--out /dev/null` would turn the device into a regular file); streaming into it
 //!   instead would make the command's success depend on a reader at the other end. To
 //!   write into a pipe or device, use standard output and the shell's redirection.
+//! - A command's outputs (`simulate`'s CSV, record and plot; every file of the report)
+//!   are all written to their temporary files before any is renamed, so a failed write
+//!   leaves every existing file as it was.
 
 use std::ffi::OsString;
 use std::fs::{File, OpenOptions};

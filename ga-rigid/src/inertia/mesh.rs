@@ -611,7 +611,7 @@ mod tests {
         for k in 0..40 {
             text.push_str(&format!("v {k} {} 0\n", k * k));
         }
-        text.push_str("f");
+        text.push('f');
         for k in 1..=40 {
             text.push_str(&format!(" {k}"));
         }
