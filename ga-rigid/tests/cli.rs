@@ -2106,3 +2106,24 @@ fn adaptive_methods_take_a_first_step_for_huge_angular_velocity() {
         assert!((last[5] / 1e80 - 1.0).abs() < 1e-6, "{method}: {stdout}");
     }
 }
+
+#[cfg(unix)]
+#[test]
+fn report_files_may_not_lead_to_a_scene_it_reads() {
+    // Issue 22, finding 8, for the report: a link in --out to a --scenes file would have
+    // been followed and the scene replaced by results.csv.
+    let dir = test_dir("report_link_to_scene");
+    let mine = scenes_dir(&dir);
+    let text = std::fs::read_to_string(mine.join("cheap.toml")).unwrap();
+    std::fs::create_dir(dir.join("r")).unwrap();
+    std::os::unix::fs::symlink("../mine/cheap.toml", dir.join("r/results.csv")).unwrap();
+    let out = run_with_deadline(
+        &dir,
+        &["report", "--quick", "--out", "r", "--scenes", "mine"],
+    );
+    expect_refusal(&out, "--out: ", "r/results.csv is a --scenes file");
+    assert_eq!(
+        std::fs::read_to_string(mine.join("cheap.toml")).unwrap(),
+        text
+    );
+}

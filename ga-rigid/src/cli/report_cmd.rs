@@ -25,8 +25,10 @@ pub fn run(args: &ReportArgs) -> Result<(), Error> {
     let size = if args.quick { Size::Quick } else { Size::Full };
     let exists = check_dir(&args.out)?;
     let mut scenes = report::suite()?;
+    let mut inputs = Vec::new();
     if let Some(dir) = &args.scenes {
-        let mine = user_scenes(dir)?;
+        let (mine, paths) = user_scenes(dir)?;
+        inputs = paths;
         check_time(&mine, size, args.max_seconds)?;
         scenes.extend(mine);
     }
@@ -39,7 +41,7 @@ pub fn run(args: &ReportArgs) -> Result<(), Error> {
     names.extend(["results.csv", "long_runs.csv", "index.html"].map(String::from));
     if exists {
         // Obstacles in the directory are found now, not after the suite.
-        plan(&args.out, &names)?;
+        plan(&args.out, &names, &inputs)?;
     }
 
     let total = report::job_count(&scenes, size);
@@ -87,7 +89,7 @@ pub fn run(args: &ReportArgs) -> Result<(), Error> {
     texts.push(report::csv(&report));
     texts.push(report::long_runs_csv(&report.long_runs));
     texts.push(report::html(&report, &names[..plots]));
-    write_files(&args.out, exists, &names, &texts)?;
+    write_files(&args.out, exists, &names, &inputs, &texts)?;
 
     let mut summary = report::summary(&report);
     summary.push_str(&format!(
@@ -146,9 +148,13 @@ fn check_dir(dir: &Path) -> Result<bool, Error> {
     }
 }
 
-/// The report's files in `dir`, checked (see [`OutputPlan::add`]).
-fn plan(dir: &Path, names: &[String]) -> Result<OutputPlan, Error> {
+/// The report's files in `dir`, checked (see [`OutputPlan::add`]): none may lead to one of
+/// the `inputs` (a link named `results.csv` to a scene file).
+fn plan(dir: &Path, names: &[String], inputs: &[PathBuf]) -> Result<OutputPlan, Error> {
     let mut plan = OutputPlan::new();
+    for input in inputs {
+        plan.input("a --scenes file", input)?;
+    }
     for name in names {
         plan.add("--out", &dir.join(name))?;
     }
@@ -157,7 +163,13 @@ fn plan(dir: &Path, names: &[String]) -> Result<OutputPlan, Error> {
 
 /// Write every file at once: a missing `dir` is created now, and removed again if the
 /// write fails.
-fn write_files(dir: &Path, exists: bool, names: &[String], texts: &[String]) -> Result<(), Error> {
+fn write_files(
+    dir: &Path,
+    exists: bool,
+    names: &[String],
+    inputs: &[PathBuf],
+    texts: &[String],
+) -> Result<(), Error> {
     if !exists {
         std::fs::create_dir(dir).map_err(|source| Error::Write {
             field: "--out".to_string(),
@@ -166,7 +178,7 @@ fn write_files(dir: &Path, exists: bool, names: &[String], texts: &[String]) -> 
         })?;
     }
     let texts: Vec<&str> = texts.iter().map(String::as_str).collect();
-    let result = plan(dir, names).and_then(|plan| plan.write_all(&texts));
+    let result = plan(dir, names, inputs).and_then(|plan| plan.write_all(&texts));
     if result.is_err() && !exists {
         // Best effort: the directory is ours and, the write having failed, empty.
         let _ = std::fs::remove_dir(dir);
@@ -204,8 +216,8 @@ fn check_time(scenes: &[TestScene], size: Size, max_seconds: u64) -> Result<(), 
 
 /// The `*.toml` entries of `dir`, in name order, as scenes named after their files. An
 /// entry that cannot be read as a regular file (a directory, a FIFO, a dangling link or
-/// a link loop) is refused by name rather than skipped.
-fn user_scenes(dir: &Path) -> Result<Vec<TestScene>, Error> {
+/// a link loop) is refused by name rather than skipped. The paths come back too.
+fn user_scenes(dir: &Path) -> Result<(Vec<TestScene>, Vec<PathBuf>), Error> {
     let read_err = |path: &Path, source| Error::Read {
         field: "--scenes".to_string(),
         path: path.to_path_buf(),
@@ -242,7 +254,7 @@ fn user_scenes(dir: &Path) -> Result<Vec<TestScene>, Error> {
             format!("{} holds no .toml scene files", echo_path(dir)),
         ));
     }
-    paths
+    let scenes = paths
         .iter()
         .map(|path| {
             let file = path
@@ -256,5 +268,6 @@ fn user_scenes(dir: &Path) -> Result<Vec<TestScene>, Error> {
             TestScene::from_scene(&name, &scene)
                 .map_err(|e| Error::invalid("--scenes", format!("{}: {e}", echo(&file))))
         })
-        .collect()
+        .collect::<Result<Vec<_>, Error>>()?;
+    Ok((scenes, paths))
 }
