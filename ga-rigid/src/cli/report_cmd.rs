@@ -203,9 +203,12 @@ fn check_time(scenes: &[TestScene], size: Size, max_seconds: u64) -> Result<(), 
         return Err(Error::invalid(
             "--scenes",
             format!(
-                "{} scenes would take about {} ({dearest}.toml alone {}), above the limit \
+                "{} would take about {} ({dearest}.toml alone {}), above the limit \
                  of {max_seconds} s; raise it with --max-seconds",
-                scenes.len(),
+                match scenes.len() {
+                    1 => "1 scene".to_string(),
+                    n => format!("{n} scenes"),
+                },
                 seconds(total),
                 seconds(most)
             ),
