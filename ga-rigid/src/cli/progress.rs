@@ -80,16 +80,44 @@ impl Ticker {
     /// Say that `done` of `total` runs are finished, the last one `what`, if the interval
     /// has passed since the last line.
     pub fn tick(&mut self, done: u64, total: u64, what: &str) {
+        if let Some(line) = self.line(done, total, what) {
+            let _ = writeln!(std::io::stderr(), "{line}");
+        }
+    }
+
+    /// The line [`Ticker::tick`] would print now, if one is due.
+    fn line(&mut self, done: u64, total: u64, what: &str) -> Option<String> {
         if self.last.elapsed() < PLAIN_INTERVAL {
-            return;
+            return None;
         }
         self.last = Instant::now();
-        let _ = writeln!(
-            std::io::stderr(),
+        Some(format!(
             "{}: {done} of {total} runs, {:.0} s ({})",
             self.label,
             self.started.elapsed().as_secs_f64(),
             crate::error::echo(what)
+        ))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_ticker_is_silent_for_short_jobs_then_writes_one_line_per_interval() {
+        let mut ticker = Ticker::new("report");
+        assert_eq!(ticker.line(1, 10, "a: rk4"), None);
+        // As if the job had started seven seconds ago.
+        let Some(past) = Instant::now().checked_sub(Duration::from_secs(7)) else {
+            return; // A clock this close to its start cannot be wound back; nothing to test.
+        };
+        ticker.started = past;
+        ticker.last = past;
+        assert_eq!(
+            ticker.line(3, 10, "a: rk4").as_deref(),
+            Some("report: 3 of 10 runs, 7 s (a: rk4)")
         );
+        assert_eq!(ticker.line(4, 10, "a: dopri"), None);
     }
 }
