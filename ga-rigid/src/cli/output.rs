@@ -237,6 +237,7 @@ impl OutputPlan {
     /// file. Nothing is replaced yet: [`Staged::publish`] renames them all, and dropping the
     /// [`Staged`] instead removes them.
     pub fn stage(&self, texts: &[&str]) -> Result<Staged, Error> {
+        debug_assert_eq!(texts.len(), self.outputs.len(), "one text per output");
         let mut staged = Staged {
             files: Vec::with_capacity(self.outputs.len()),
         };
