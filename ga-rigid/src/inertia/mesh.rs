@@ -526,8 +526,9 @@ impl Inertia {
     /// centre of mass, at the given `density`.
     ///
     /// Errors: a non-positive or non-finite `density`; an open or inconsistently wound
-    /// mesh ([`Mesh::check_closed`]); a non-positive enclosed volume (inward-wound faces,
-    /// or a flat mesh); a singular inertia (`mesh`).
+    /// mesh ([`Mesh::check_closed`]); shells that overlap ([`Mesh::check_shells`]); a
+    /// non-positive enclosed volume (inward-wound faces, or a flat mesh); a singular
+    /// inertia (`mesh`).
     pub fn from_mesh(mesh: &Mesh, density: f64) -> Result<Self, Error> {
         let rho = positive("density", "density", density)?;
         mesh.check_closed()?;
