@@ -49,3 +49,34 @@ pub(crate) fn read_text(field: &str, path: &Path, limit: u64) -> Result<String, 
     String::from_utf8(bytes)
         .map_err(|_| Error::invalid(field, format!("{} is not UTF-8 text", echo_path(path))))
 }
+
+/// The regular file at `path` (a symbolic link is followed), opened, if it is at most
+/// `limit` bytes now; the caller reads at most `limit + 1` bytes of it to notice growth.
+pub(crate) fn open_regular(field: &str, path: &Path, limit: u64) -> Result<std::fs::File, Error> {
+    let read_err = |source| Error::Read {
+        field: field.to_string(),
+        path: path.to_path_buf(),
+        source,
+    };
+    let meta = std::fs::metadata(path).map_err(read_err)?;
+    if !meta.is_file() {
+        return Err(Error::invalid(
+            field,
+            format!(
+                "{} is not a regular file; only regular files are read",
+                echo_path(path)
+            ),
+        ));
+    }
+    if meta.len() > limit {
+        return Err(Error::invalid(
+            field,
+            format!(
+                "{} is {} bytes, more than the limit of {limit} bytes",
+                echo_path(path),
+                meta.len()
+            ),
+        ));
+    }
+    std::fs::File::open(path).map_err(read_err)
+}

@@ -149,7 +149,14 @@ impl Run {
                 if k == last {
                     self.t_end
                 } else {
-                    self.t_end * k as f64 / last as f64
+                    // As in `Simulation::samples`: the fraction first only where
+                    // `t_end * k` would overflow.
+                    let scaled = self.t_end * k as f64;
+                    if scaled.is_finite() {
+                        scaled / last as f64
+                    } else {
+                        self.t_end * (k as f64 / last as f64)
+                    }
                 }
             })
             .collect()
@@ -259,6 +266,7 @@ impl Scene {
     /// to resolve a relative `mesh` path).
     pub fn parse(text: &str, path: &Path) -> Result<Scene, Error> {
         let table: toml::Table = toml::from_str(text).map_err(|e| syntax_error(&e, text, path))?;
+        sections_are_tables(&table)?;
         let file: SceneFile = toml::Value::Table(table)
             .try_into()
             .map_err(|e: toml::de::Error| field_error(&e))?;
@@ -548,6 +556,27 @@ fn load_body(body: BodyFile, scene_path: &Path) -> Result<(BodySpec, Inertia), E
     let mesh = Mesh::read_obj(&path).map_err(|e| e.within("body"))?;
     let inertia = Inertia::from_mesh(&mesh, density).map_err(|e| e.within("body"))?;
     Ok((BodySpec::Mesh { path, density }, inertia))
+}
+
+/// Refuse a section written as something other than one table: serde would read
+/// `[[run]]` (an array of tables) as a sequence of the section's fields in order, and
+/// complain that `t_end` got a table ("invalid type: map, expected f64").
+fn sections_are_tables(table: &toml::Table) -> Result<(), Error> {
+    // Unknown names are left to serde, which names them as unknown fields.
+    for name in ["body", "initial", "run", "torque"] {
+        let got = match table.get(name) {
+            None | Some(toml::Value::Table(_)) => continue,
+            Some(toml::Value::Array(items)) if items.iter().all(toml::Value::is_table) => {
+                format!("an array of tables [[{name}]]")
+            }
+            Some(other) => format!("a value of type {}", other.type_str()),
+        };
+        return Err(Error::invalid(
+            name,
+            format!("a section must be one table [{name}], got {got}"),
+        ));
+    }
+    Ok(())
 }
 
 /// A TOML syntax error as one line with its position; a duplicated key (which the

@@ -181,7 +181,15 @@ impl<I: Integrator> Iterator for Samples<'_, I> {
             let t = if k == last {
                 self.t_end
             } else {
-                self.start + (self.t_end - self.start) * k as f64 / last as f64
+                let span = self.t_end - self.start;
+                // Near f64::MAX `span * k` overflows: then the fraction first (the usual
+                // order otherwise, so that ordinary sample times keep their last bit).
+                let scaled = span * k as f64;
+                if scaled.is_finite() {
+                    self.start + scaled / last as f64
+                } else {
+                    self.start + span * (k as f64 / last as f64)
+                }
             };
             self.simulation.advance_to(t)
         };

@@ -1562,6 +1562,573 @@ fn every_registry_name_is_a_method_on_the_command_line() {
     }
 }
 
+// ---- Issue 22: outputs a failed run must not touch, bounded meshes and work, messages ----
+
+/// A scene whose body is the mesh `obj` (a file beside it), at unit density.
+fn mesh_scene(obj: &str) -> String {
+    scene(
+        &format!("[body]\nmesh = \"{obj}\"\ndensity = 1.0\n"),
+        INITIAL,
+        RUN,
+    )
+}
+
+/// An axis-aligned cube from `low` with edge `size`, as OBJ lines whose vertex numbers start
+/// after `base`, faces wound counter-clockwise seen from outside.
+fn cube_obj(low: [f64; 3], size: f64, base: usize) -> String {
+    let mut text = String::new();
+    for x in [0.0, size] {
+        for y in [0.0, size] {
+            for z in [0.0, size] {
+                text.push_str(&format!("v {} {} {}\n", low[0] + x, low[1] + y, low[2] + z));
+            }
+        }
+    }
+    // Vertex k + 1 sits at the corner with bits (x, y, z) = k.
+    for face in [
+        [1, 2, 4, 3],
+        [5, 7, 8, 6],
+        [1, 5, 6, 2],
+        [3, 4, 8, 7],
+        [1, 3, 7, 5],
+        [2, 6, 8, 4],
+    ] {
+        let ids: Vec<String> = face.iter().map(|i| (i + base).to_string()).collect();
+        text.push_str(&format!("f {}\n", ids.join(" ")));
+    }
+    text
+}
+
+/// The names in `dir` that look like our temporary files.
+fn temporaries(dir: &Path) -> Vec<String> {
+    std::fs::read_dir(dir)
+        .unwrap()
+        .filter_map(|e| e.ok())
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|n| n.contains(".tmp-"))
+        .collect()
+}
+
+/// Check the refusal contract of any command: status 2, nothing on stdout, one line on
+/// stderr of at most 200 characters starting with `field` and containing `rule`.
+fn expect_refusal(out: &Output, field: &str, rule: &str) -> String {
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(out.stdout.is_empty(), "stdout: {:?}", out.stdout);
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    let chars = stderr.trim_end().chars().count();
+    assert!(chars <= 200, "a {chars}-character message: {stderr}");
+    assert!(
+        stderr.starts_with(field),
+        "expected {field:?} first: {stderr}"
+    );
+    assert!(stderr.contains(rule), "expected {rule:?} in {stderr}");
+    stderr
+}
+
+#[cfg(unix)]
+#[test]
+fn a_failed_write_replaces_and_deletes_nothing() {
+    // Issue 22, finding 2: a CSV write that failed (a file size limit) deleted the old
+    // sidecar and left the new plot in place of the old one.
+    let dir = test_dir("failed_write_touches_nothing");
+    write(&dir, "scene.toml", &scene(BODY, INITIAL, RUN));
+    write(&dir, "o.csv", "old csv\n");
+    write(&dir, "o.csv.json", "old record\n");
+    write(&dir, "p.svg", "old plot\n");
+    // `trap '' XFSZ` makes the write fail with EFBIG instead of killing the process, as
+    // under a harness that ignores the signal; the 1-block limit is below the CSV's size.
+    let script = format!(
+        "trap '' XFSZ; ulimit -f 1; exec '{BIN}' simulate scene.toml --method rk4 --dt 1e-3 \
+         --out o.csv --plot p.svg"
+    );
+    let out = Command::new("sh")
+        .arg("-c")
+        .arg(&script)
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(stderr.starts_with("--out: cannot write"), "{stderr}");
+    assert_eq!(
+        std::fs::read_to_string(dir.join("o.csv")).unwrap(),
+        "old csv\n"
+    );
+    assert_eq!(
+        std::fs::read_to_string(dir.join("o.csv.json")).unwrap(),
+        "old record\n"
+    );
+    assert_eq!(
+        std::fs::read_to_string(dir.join("p.svg")).unwrap(),
+        "old plot\n"
+    );
+    assert!(temporaries(&dir).is_empty(), "{:?}", temporaries(&dir));
+}
+
+#[test]
+fn outputs_may_name_neither_the_scene_nor_each_other() {
+    // Issue 22, finding 8: each of these exited 0, overwriting the scene or one output
+    // with another.
+    let dir = test_dir("outputs_distinct");
+    let text = scene(BODY, INITIAL, RUN);
+    write(&dir, "scene.toml", &text);
+    let base = ["simulate", "scene.toml", "--method", "exact"];
+    let cases: [(&[&str], &str, &str); 5] = [
+        (&["--out", "scene.toml"], "--out: ", "is the scene file"),
+        (&["--out", "./scene.toml"], "--out: ", "is the scene file"),
+        (&["--plot", "scene.toml"], "--plot: ", "is the scene file"),
+        (
+            &["--out", "o.csv", "--plot", "o.csv"],
+            "--plot: ",
+            "is also where --out writes",
+        ),
+        (
+            &["--out", "o.csv", "--plot", "o.csv.json"],
+            "--plot: ",
+            "is also where --out writes",
+        ),
+    ];
+    for (extra, field, rule) in cases {
+        let mut args = base.to_vec();
+        args.extend_from_slice(extra);
+        expect_refusal(&run(&dir, &args), field, rule);
+        assert_eq!(
+            std::fs::read_to_string(dir.join("scene.toml")).unwrap(),
+            text
+        );
+        assert!(!dir.join("o.csv").exists(), "{extra:?}");
+        assert!(!dir.join("o.csv.json").exists(), "{extra:?}");
+    }
+    // The mesh a scene reads is an input too.
+    write(&dir, "cube.obj", &cube_obj([0.0; 3], 1.0, 0));
+    write(&dir, "mesh.toml", &mesh_scene("cube.obj"));
+    let out = run(
+        &dir,
+        &[
+            "simulate",
+            "mesh.toml",
+            "--method",
+            "exact",
+            "--plot",
+            "cube.obj",
+        ],
+    );
+    expect_refusal(&out, "--plot: ", "is the scene's mesh (body.mesh)");
+    assert!(std::fs::read_to_string(dir.join("cube.obj"))
+        .unwrap()
+        .starts_with("v 0 0 0\n"));
+}
+
+#[cfg(unix)]
+#[test]
+fn plot_onto_a_fifo_is_refused_without_pointing_at_standard_output() {
+    // Issue 22, finding 11: `--plot` was told to use standard output, which it cannot.
+    let dir = test_dir("plot_fifo");
+    write(&dir, "scene.toml", &scene(BODY, INITIAL, RUN));
+    make_fifo(&dir.join("p.svg"));
+    let out = run_with_deadline(
+        &dir,
+        &[
+            "simulate",
+            "scene.toml",
+            "--method",
+            "exact",
+            "--plot",
+            "p.svg",
+        ],
+    );
+    let stderr = expect_refusal(&out, "--plot: ", "p.svg is a FIFO, not a regular file");
+    assert!(!stderr.contains("standard output"), "{stderr}");
+}
+
+#[cfg(unix)]
+#[test]
+fn report_finds_obstacles_in_its_directory_before_the_suite() {
+    // Issue 22, findings 3 and 7: a FIFO or link in --out was replaced by a regular file,
+    // and a directory where long_runs.csv goes was found after the suite had written the
+    // SVGs and results.csv.
+    use std::os::unix::fs::FileTypeExt as _;
+    let dir = test_dir("report_obstacles");
+    let r = dir.join("r");
+    std::fs::create_dir(&r).unwrap();
+    make_fifo(&r.join("results.csv"));
+    let out = run_with_deadline(&dir, &["report", "--quick", "--out", "r"]);
+    expect_refusal(&out, "--out: ", "results.csv is a FIFO, not a regular file");
+    assert!(std::fs::symlink_metadata(r.join("results.csv"))
+        .unwrap()
+        .file_type()
+        .is_fifo());
+    std::fs::remove_file(r.join("results.csv")).unwrap();
+
+    std::os::unix::fs::symlink("nowhere.html", r.join("index.html")).unwrap();
+    let out = run_with_deadline(&dir, &["report", "--quick", "--out", "r"]);
+    expect_refusal(&out, "--out: ", "symbolic link to a missing file");
+    std::fs::remove_file(r.join("index.html")).unwrap();
+
+    std::fs::create_dir(r.join("long_runs.csv")).unwrap();
+    let out = run_with_deadline(&dir, &["report", "--quick", "--out", "r"]);
+    expect_refusal(&out, "--out: ", "long_runs.csv is a directory");
+    let names: Vec<_> = std::fs::read_dir(&r)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    assert_eq!(names, ["long_runs.csv"], "files written before the refusal");
+}
+
+#[test]
+fn report_out_with_missing_parents_is_status_2_and_creates_nothing() {
+    // Issue 22, finding 7: status 1 here, where simulate gives 2.
+    let dir = test_dir("report_missing_parents");
+    let out = run_with_deadline(&dir, &["report", "--quick", "--out", "a/b/c"]);
+    expect_refusal(&out, "--out: ", "the directory a/b does not exist");
+    assert!(!dir.join("a").exists());
+}
+
+/// A `--scenes` directory `mine` in `dir` holding one cheap scene.
+fn scenes_dir(dir: &Path) -> PathBuf {
+    let mine = dir.join("mine");
+    std::fs::create_dir(&mine).unwrap();
+    write(&mine, "cheap.toml", &scene(BODY, INITIAL, RUN));
+    mine
+}
+
+#[test]
+fn report_scenes_are_estimated_and_refused_above_max_seconds() {
+    // Issue 22, finding 5: one scene with w = 1e6 ran past 15 minutes.
+    let dir = test_dir("report_scenes_estimate");
+    let mine = scenes_dir(&dir);
+    write(
+        &mine,
+        "spin.toml",
+        &scene(
+            BODY,
+            "[initial]\nrotor = [1, 0, 0, 0]\nomega = [0.1, 1e6, 0.2]\n",
+            RUN,
+        ),
+    );
+    let out = run_with_deadline(
+        &dir,
+        &["report", "--quick", "--out", "r", "--scenes", "mine"],
+    );
+    let stderr = expect_refusal(&out, "--scenes: ", "raise it with --max-seconds");
+    assert!(stderr.contains("spin.toml alone"), "{stderr}");
+    assert!(
+        !dir.join("r").exists(),
+        "a refused run left its --out behind"
+    );
+    // The bound is the user's: at 0 s even the cheap scene is refused.
+    std::fs::remove_file(mine.join("spin.toml")).unwrap();
+    let out = run_with_deadline(
+        &dir,
+        &[
+            "report",
+            "--quick",
+            "--out",
+            "r",
+            "--scenes",
+            "mine",
+            "--max-seconds",
+            "0",
+        ],
+    );
+    expect_refusal(&out, "--scenes: ", "above the limit of 0 s");
+    assert!(!dir.join("r").exists());
+}
+
+#[cfg(unix)]
+#[test]
+fn report_scenes_refuse_unreadable_entries_by_name() {
+    // Issue 22, finding 5: these were skipped in silence.
+    let dir = test_dir("report_scenes_unreadable");
+    let mine = scenes_dir(&dir);
+    let loop_link = |p: &Path| std::os::unix::fs::symlink("loop.toml", p).unwrap();
+    let folder = |p: &Path| std::fs::create_dir(p).unwrap();
+    type Make<'a> = &'a dyn Fn(&Path);
+    let setups: [(&str, Make); 3] = [
+        ("loop.toml", &loop_link),
+        ("pipe.toml", &make_fifo),
+        ("folder.toml", &folder),
+    ];
+    for (name, make) in setups {
+        let path = mine.join(name);
+        make(&path);
+        let out = run_with_deadline(
+            &dir,
+            &["report", "--quick", "--out", "r", "--scenes", "mine"],
+        );
+        expect_refusal(&out, "--scenes: ", name);
+        assert!(!dir.join("r").exists());
+        if path.is_dir() {
+            std::fs::remove_dir(&path).unwrap();
+        } else {
+            std::fs::remove_file(&path).unwrap();
+        }
+    }
+}
+
+#[test]
+fn a_run_estimated_past_max_seconds_is_refused_naming_the_estimate() {
+    // Issue 22, finding 6: just under 10^8 steps of splitting-8 on a heavy top passed the
+    // step limit and ran about 9 minutes.
+    let dir = test_dir("max_seconds");
+    let heavy = scene(
+        "[body]\nmoments = [1.0, 1.0, 0.5]\n",
+        "[initial]\nrotor = [1, 0, 0, 0]\nomega = [0.3, 0.0, 5.0]\n",
+        "[run]\nt_end = 10.0\nsamples = 3\n[torque]\ng = [0.0, 0.0, -9.81]\n\
+         com_offset = [0.0, 0.0, 0.1]\n",
+    );
+    write(&dir, "heavy.toml", &heavy);
+    let args = [
+        "simulate",
+        "heavy.toml",
+        "--method",
+        "splitting-8",
+        "--dt",
+        "1.0000001e-7",
+    ];
+    let stderr = expect_refusal(
+        &run_with_deadline(&dir, &args),
+        "--dt: ",
+        "raise it with --max-seconds",
+    );
+    assert!(
+        stderr.contains("1.0e8 steps of splitting-8") && stderr.contains(" s at "),
+        "{stderr}"
+    );
+    // A larger limit moves the refusal to the step limit, which still holds here.
+    let mut raised = args.to_vec();
+    raised.extend_from_slice(&["--max-seconds", "1000000", "--max-steps", "1000"]);
+    expect_refusal(
+        &run_with_deadline(&dir, &raised),
+        "--dt: ",
+        "raise it with --max-steps",
+    );
+}
+
+#[test]
+fn nested_and_overlapping_shells_are_refused() {
+    // Issue 22, finding 9: a cube in a cube weighed 9 (the solid is 8), two overlapping
+    // unit cubes 2 (the union is 1.58).
+    let dir = test_dir("mesh_shells");
+    let nested = cube_obj([0.0; 3], 2.0, 0) + &cube_obj([0.5; 3], 1.0, 8);
+    let overlapping = cube_obj([0.0; 3], 1.0, 0) + &cube_obj([0.5; 3], 1.0, 8);
+    for (name, text) in [("nested.obj", nested), ("overlapping.obj", overlapping)] {
+        write(&dir, name, &text);
+        write(&dir, "scene.toml", &mesh_scene(name));
+        let out = run(&dir, &["inertia", "scene.toml"]);
+        expect_refusal(
+            &out,
+            "body.mesh: ",
+            "the shells of triangles 1 and 13 overlap (nested or intersecting)",
+        );
+    }
+    // Two cubes side by side (touching along a face) are two shells that do not overlap.
+    write(
+        &dir,
+        "apart.obj",
+        &(cube_obj([0.0; 3], 1.0, 0) + &cube_obj([1.0, 0.0, 0.0], 1.0, 8)),
+    );
+    write(&dir, "scene.toml", &mesh_scene("apart.obj"));
+    let out = run(&dir, &["inertia", "scene.toml"]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(stdout.starts_with("mass: 2\n"), "{stdout}");
+}
+
+#[test]
+fn a_long_polygon_that_repeats_vertices_is_refused_at_its_line() {
+    // Issue 22, finding 4: `f 1 2 3 1 2 3 ...` was fan-triangulated whole (130 M
+    // triangles for 250 MiB) before the repeat was found. Now it is refused at the fourth
+    // vertex of the face, by line.
+    let dir = test_dir("mesh_long_polygon");
+    let mut text = String::from("v 0 0 0\nv 1 0 0\nv 0 1 0\n# a comment\nf");
+    for _ in 0..300_000 {
+        text.push_str(" 1 2 3");
+    }
+    text.push('\n');
+    write(&dir, "long.obj", &text);
+    write(&dir, "scene.toml", &mesh_scene("long.obj"));
+    let out = run_with_deadline(&dir, &["inertia", "scene.toml"]);
+    expect_refusal(
+        &out,
+        "body.mesh: long.obj:5: ",
+        "the face repeats vertex 1 (vertex 4 of the face)",
+    );
+}
+
+#[test]
+fn messages_name_what_was_written_and_stay_short() {
+    // Issue 22, finding 11.
+    let dir = test_dir("messages_22");
+    // `[[run]]` gave "expected f64".
+    write(
+        &dir,
+        "array.toml",
+        &format!("{BODY}{INITIAL}[[run]]\nt_end = 1\nsamples = 3\n"),
+    );
+    expect_refusal(
+        &run(&dir, &["inertia", "array.toml"]),
+        "run: ",
+        "a section must be one table [run], got an array of tables [[run]]",
+    );
+    // A point at 1e308 gave "entries must be finite, got NaN".
+    write(
+        &dir,
+        "far.toml",
+        &scene(
+            "[body]\npoints = [[1, 1e308, 0, 0], [1, -1e308, 0, 0], [1, 0, 1, 0], [1, 0, 0, 1]]\n",
+            INITIAL,
+            RUN,
+        ),
+    );
+    let stderr = expect_refusal(
+        &run(&dir, &["inertia", "far.toml"]),
+        "body.points",
+        "overflow",
+    );
+    assert!(!stderr.contains("NaN"), "{stderr}");
+    // A needle-thin mesh printed its moments in full decimal.
+    write(
+        &dir,
+        "needle.obj",
+        "v 0 0 0\nv 1 0 0\nv 0 1e-9 0\nv 0 0 1e-9\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n",
+    );
+    write(&dir, "needle.toml", &mesh_scene("needle.obj"));
+    expect_refusal(
+        &run(&dir, &["inertia", "needle.toml"]),
+        "body.mesh: ",
+        "moments",
+    );
+    // A long --out directory (237 characters) and a long --scenes path (311).
+    let long = "d".repeat(240);
+    let out = run(
+        &dir,
+        &["report", "--quick", "--out", &format!("{long}/{long}/r")],
+    );
+    expect_refusal(&out, "--out: ", "does not exist");
+    let deep = dir.join("x".repeat(150)).join("y".repeat(150));
+    std::fs::create_dir_all(&deep).unwrap();
+    write(
+        &deep,
+        "bad.toml",
+        &scene("[body]\nmoments = [1.0, -2.0, 2.5]\n", INITIAL, RUN),
+    );
+    let out = run(
+        &dir,
+        &[
+            "report",
+            "--quick",
+            "--out",
+            "r",
+            "--scenes",
+            deep.to_str().unwrap(),
+        ],
+    );
+    expect_refusal(&out, "--scenes: ", "bad.toml: body.moments");
+}
+
+#[test]
+fn t_end_at_the_largest_double_is_not_blamed_on_dt() {
+    // Issue 22, finding 11: "dt: time step must be finite" for a t_end the user wrote
+    // (the sample times overflowed). Either it runs, or a refusal names run.t_end.
+    let dir = test_dir("t_end_max");
+    write(
+        &dir,
+        "scene.toml",
+        &scene(
+            BODY,
+            INITIAL,
+            "[run]\nt_end = 1.7976931348623157e308\nsamples = 11\n",
+        ),
+    );
+    let out = run(&dir, &["simulate", "scene.toml", "--method", "exact"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(!stderr.contains("time step"), "{stderr}");
+    match out.status.code() {
+        Some(0) => {
+            let stdout = String::from_utf8_lossy(&out.stdout);
+            assert_eq!(stdout.lines().count(), 12);
+            assert!(stdout
+                .lines()
+                .last()
+                .unwrap()
+                .starts_with("1.7976931348623157e308,"));
+        }
+        _ => {
+            expect_refusal(&out, "", "t_end");
+        }
+    }
+}
+
+#[test]
+fn adaptive_methods_take_a_first_step_for_huge_angular_velocity() {
+    // Issue 22, finding 11: a valid scene with |w| = 1e80 was refused as "step size
+    // underflow (0e0)": the squares in the first-step estimate overflowed.
+    let dir = test_dir("adaptive_huge_w");
+    write(
+        &dir,
+        "scene.toml",
+        &scene(
+            BODY,
+            "[initial]\nrotor = [1, 0, 0, 0]\nomega = [1e80, 1e80, 0.2]\n",
+            "[run]\nt_end = 1e-90\nsamples = 3\n",
+        ),
+    );
+    for method in ["dopri", "lie-dop853"] {
+        let out = run(
+            &dir,
+            &[
+                "simulate",
+                "scene.toml",
+                "--method",
+                method,
+                "--tol",
+                "1e-6",
+            ],
+        );
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(0), "{method}: {stderr}");
+        let stdout = String::from_utf8_lossy(&out.stdout);
+        let last: Vec<f64> = stdout
+            .lines()
+            .last()
+            .unwrap()
+            .split(',')
+            .map(|v| v.parse().unwrap())
+            .collect();
+        assert!(last.iter().all(|x| x.is_finite()), "{method}: {stdout}");
+        // Over 1e-90 the angular velocity barely moves.
+        assert!((last[5] / 1e80 - 1.0).abs() < 1e-6, "{method}: {stdout}");
+    }
+}
+
+#[cfg(unix)]
+#[test]
+fn report_files_may_not_lead_to_a_scene_it_reads() {
+    // Issue 22, finding 8, for the report: a link in --out to a --scenes file would have
+    // been followed and the scene replaced by results.csv.
+    let dir = test_dir("report_link_to_scene");
+    let mine = scenes_dir(&dir);
+    let text = std::fs::read_to_string(mine.join("cheap.toml")).unwrap();
+    std::fs::create_dir(dir.join("r")).unwrap();
+    std::os::unix::fs::symlink("../mine/cheap.toml", dir.join("r/results.csv")).unwrap();
+    let out = run_with_deadline(
+        &dir,
+        &["report", "--quick", "--out", "r", "--scenes", "mine"],
+    );
+    expect_refusal(&out, "--out: ", "r/results.csv is a --scenes file");
+    assert_eq!(
+        std::fs::read_to_string(mine.join("cheap.toml")).unwrap(),
+        text
+    );
+}
+
 /// The README's symmetric top.
 const README_TOP: &str = "[body]\nmoments = [2.0, 2.0, 1.0]\n[initial]\nrotor = [1, 0, 0, 0]\n\
                           omega = [0.3, 0.0, 5.0]\n";

@@ -51,9 +51,10 @@ pub struct SimulateArgs {
     /// default 1e-9.
     #[arg(long, value_name = "TOL", allow_hyphen_values = true)]
     pub tol: Option<f64>,
-    /// Write the CSV to this regular file instead of standard output, only on success, by
-    /// temporary file and rename; a symbolic link is followed and its target replaced; a
-    /// directory, FIFO, socket or device is refused (use standard output to reach one).
+    /// Write the CSV to this regular file instead of standard output (and a record to
+    /// FILE.json), only on success, by temporary file and rename; a symbolic link is
+    /// followed and its target replaced; a directory, FIFO, socket or device, the scene or
+    /// another output is refused (use standard output to reach a pipe or device).
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
     /// Refuse runs estimated to take more steps than this (t_end / dt plus one per
@@ -68,6 +69,10 @@ pub struct SimulateArgs {
     /// --method for the limits) instead of refusing it.
     #[arg(long)]
     pub allow_unstable: bool,
+    /// Refuse runs estimated to take longer than this many seconds in a release build (the
+    /// step estimate times the method's cost per step, from the registry).
+    #[arg(long, value_name = "S", default_value_t = super::budget::DEFAULT_MAX_SECONDS)]
+    pub max_seconds: u64,
     /// Refuse runs whose CSV may be larger than this many megabytes (300 bytes a row).
     #[arg(long, value_name = "MB", default_value_t = super::simulate::DEFAULT_MAX_OUTPUT_MB)]
     pub max_output_mb: u64,
@@ -98,6 +103,10 @@ pub struct ReportArgs {
     /// Add every `*.toml` scene (the `simulate` format) in this directory to the suite.
     #[arg(long, value_name = "DIR")]
     pub scenes: Option<PathBuf>,
+    /// Refuse `--scenes` whose runs are estimated to take longer than this many seconds
+    /// together (steps times each method's cost per step, the timing repeats included).
+    #[arg(long, value_name = "S", default_value_t = super::budget::DEFAULT_REPORT_MAX_SECONDS)]
+    pub max_seconds: u64,
 }
 
 // clap learns the method names from the library's registry: one table, one name each.

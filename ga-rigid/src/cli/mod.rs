@@ -2,13 +2,14 @@
 //!
 //! Every failure ends the same way: nothing on standard output, one line on standard
 //! error naming the field or argument and the rule it broke, no output file, and exit
-//! status 2 for bad input (1 for a failed write or a missing feature). Output is
-//! buffered and written only when the command has succeeded; `--out FILE` is written to
-//! a temporary file in the same directory and renamed into place, and only ever to a
-//! regular file (a symbolic link is followed to one; a directory, FIFO, socket or device
-//! is refused with status 2; see the README).
+//! status 2 for bad input (1 for a failed write or a missing feature). Every output file
+//! is checked before any work (a regular file or missing, a symbolic link followed to
+//! one; never a directory, FIFO, socket or device, the scene, its mesh or another output)
+//! and written only when the command has succeeded: all to temporary files first, then
+//! renamed into place together (`output::OutputPlan`; see the README).
 
 mod args;
+mod budget;
 mod inertia_cmd;
 mod output;
 mod progress;
@@ -17,7 +18,7 @@ mod simulate;
 
 use std::ffi::OsString;
 use std::io::Write as _;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::Parser;
@@ -145,25 +146,29 @@ fn cut_quoted(line: &str) -> String {
     out
 }
 
-/// `simulate`: validate the step control and the output path, load the scene, run the
-/// method, write the CSV.
+/// `simulate`: validate the step control and every output path, load the scene, run the
+/// method, then write the CSV, its sidecar record and the plot together (see
+/// [`output::OutputPlan`]): a failure leaves every existing file as it was.
 fn simulate(args: &SimulateArgs) -> Result<(), Error> {
     // Without --dt or --tol the step control comes from the scene (see `default_step`).
     let given = match (args.method.step_kind(), args.dt, args.tol) {
         (StepKind::Fixed | StepKind::Adaptive, None, None) => None,
         _ => Some(step_control(args.method, args.dt, args.tol)?),
     };
+    let mut plan = output::OutputPlan::with_stdout_alternative();
+    plan.input("the scene file", &args.scene)?;
     let sidecar = args.out.as_deref().map(simulate::sidecar_path);
-    for path in [args.out.as_deref(), sidecar.as_deref()]
-        .into_iter()
-        .flatten()
-    {
-        check_output_path("--out", path)?;
+    if let (Some(out), Some(sidecar)) = (&args.out, &sidecar) {
+        plan.add("--out", out)?;
+        plan.add("--out", sidecar)?;
     }
     if let Some(plot) = &args.plot {
-        check_output_path("--plot", plot)?;
+        plan.add("--plot", plot)?;
     }
     let scene = Scene::load(&args.scene)?;
+    if let crate::scene::BodySpec::Mesh { path, .. } = &scene.body {
+        plan.input("the scene's mesh (body.mesh)", path)?;
+    }
     let (step, source) = match given {
         Some(step) => (step, simulate::StepSource::Given),
         None => simulate::default_step(&scene, args.method),
@@ -174,20 +179,24 @@ fn simulate(args: &SimulateArgs) -> Result<(), Error> {
         simulate::check_stability(&scene, args.method, step)?;
     }
     let work = simulate::check_work(&scene, step, args.max_steps, args.max_output_mb)?;
+    budget::check_seconds(args.method, step, work.steps, args.max_seconds)?;
     let mut progress = progress::Progress::new(scene.run.t_end, work.steps);
     let rows = simulate::run_simulation_with_progress(&scene, args.method, step, &mut |t| {
         progress.update(t);
     });
     progress.finish();
     let rows = rows?;
-    if let Some(plot) = &args.plot {
-        let title = format!("{}: {}", args.scene.display(), args.method.name());
-        emit(
-            "--plot",
-            Some(plot),
-            &crate::report::simulation_svg(&rows, &title)?,
-        )?;
-    }
+    let plot = match &args.plot {
+        Some(_) => {
+            let title = format!(
+                "{}: {}",
+                crate::error::echo_path(&args.scene),
+                args.method.name()
+            );
+            Some(crate::report::simulation_svg(&rows, &title)?)
+        }
+        None => None,
+    };
     let csv = to_csv(&rows);
     let record = simulate::Record {
         scene: &args.scene,
@@ -196,22 +205,22 @@ fn simulate(args: &SimulateArgs) -> Result<(), Error> {
         source,
         run: scene.run,
     };
-    match (&args.out, &sidecar) {
-        (Some(out), Some(sidecar)) => {
-            emit("--out", Some(sidecar), &record.to_json(out))?;
-            // A record without its CSV would describe nothing.
-            emit("--out", Some(out), &csv).inspect_err(|_| {
-                let _ = std::fs::remove_file(sidecar);
-            })
-        }
-        _ => {
-            if let simulate::StepSource::Default(_) = source {
-                // Standard output carries only the CSV; say what was chosen on stderr.
-                eprintln!("note: {}", record.describe_step());
-            }
-            emit("--out", None, &csv)
-        }
+    // The texts in the order the plan's outputs were added.
+    let mut texts: Vec<String> = Vec::new();
+    if let Some(out) = &args.out {
+        texts.push(csv.clone());
+        texts.push(record.to_json(out));
+    } else if let simulate::StepSource::Default(_) = source {
+        // Standard output carries only the CSV; say what was chosen on stderr.
+        eprintln!("note: {}", record.describe_step());
     }
+    texts.extend(plot);
+    let texts: Vec<&str> = texts.iter().map(String::as_str).collect();
+    let staged = plan.stage(&texts)?;
+    if args.out.is_none() {
+        emit_stdout(&csv)?;
+    }
+    staged.publish()
 }
 
 /// Check `--dt` and `--tol` and match them to the method: fixed-step methods need
@@ -297,7 +306,7 @@ pub fn step_control(method: Method, dt: Option<f64>, tol: Option<f64>) -> Result
 /// `inertia`: load the scene and print its body's mass properties.
 fn inertia(args: &InertiaArgs) -> Result<(), Error> {
     let scene = Scene::load(&args.scene)?;
-    emit("--out", None, &describe_inertia(&scene))
+    emit_stdout(&describe_inertia(&scene))
 }
 
 /// `report`: run the suite and write its files.
@@ -305,27 +314,15 @@ fn report(args: &ReportArgs) -> Result<(), Error> {
     report_cmd::run(args)
 }
 
-/// Fail early, before any work, if `out` cannot be written (see [`output`]): a
-/// missing directory, or a path that is not a regular file, a missing one or a link to a
-/// regular file.
-fn check_output_path(field: &str, out: &Path) -> Result<(), Error> {
-    output::output_target(field, out).map(|_| ())
-}
-
-/// Write finished output to standard output, or atomically to `out`: into a temporary
-/// file in the same directory, then renamed over `out`, so a failure leaves no partial
-/// file behind.
-fn emit(field: &str, out: Option<&Path>, text: &str) -> Result<(), Error> {
-    let Some(out) = out else {
-        let mut stdout = std::io::stdout().lock();
-        return stdout
-            .write_all(text.as_bytes())
-            .and_then(|()| stdout.flush())
-            .map_err(|source| Error::Write {
-                field: "stdout".to_string(),
-                path: PathBuf::from("-"),
-                source,
-            });
-    };
-    output::write_atomically(field, out, text)
+/// Write finished output to standard output.
+fn emit_stdout(text: &str) -> Result<(), Error> {
+    let mut stdout = std::io::stdout().lock();
+    stdout
+        .write_all(text.as_bytes())
+        .and_then(|()| stdout.flush())
+        .map_err(|source| Error::Write {
+            field: "stdout".to_string(),
+            path: PathBuf::from("-"),
+            source,
+        })
 }

@@ -1,5 +1,7 @@
-//! A progress line on standard error for long runs, only when standard error is a
-//! terminal: pipes and log files get nothing, so the one-line error rule still holds there.
+//! Progress on standard error. `simulate`'s line is drawn only when standard error is a
+//! terminal: pipes and log files get nothing, so the one-line error rule still holds
+//! there. The report, which runs for minutes, also writes plain lines off a terminal
+//! ([`Ticker`]), the first only after a few seconds, so that a log shows it is alive.
 
 use std::io::{IsTerminal as _, Write as _};
 use std::time::{Duration, Instant};
@@ -50,5 +52,72 @@ impl Progress {
         if self.drawn {
             let _ = write!(std::io::stderr(), "\r\x1b[K");
         }
+    }
+}
+
+/// How long a job runs before its first plain progress line, and between lines.
+const PLAIN_INTERVAL: Duration = Duration::from_secs(5);
+
+/// Plain progress lines (`report: 12 of 400 runs, 10 s (scene: method)`), one every
+/// [`PLAIN_INTERVAL`] and none for a job shorter than that.
+pub struct Ticker {
+    label: &'static str,
+    started: Instant,
+    last: Instant,
+}
+
+impl Ticker {
+    /// Lines prefixed `label`, counted from now.
+    pub fn new(label: &'static str) -> Self {
+        let now = Instant::now();
+        Ticker {
+            label,
+            started: now,
+            last: now,
+        }
+    }
+
+    /// Say that `done` of `total` runs are finished, the last one `what`, if the interval
+    /// has passed since the last line.
+    pub fn tick(&mut self, done: u64, total: u64, what: &str) {
+        if let Some(line) = self.line(done, total, what) {
+            let _ = writeln!(std::io::stderr(), "{line}");
+        }
+    }
+
+    /// The line [`Ticker::tick`] would print now, if one is due.
+    fn line(&mut self, done: u64, total: u64, what: &str) -> Option<String> {
+        if self.last.elapsed() < PLAIN_INTERVAL {
+            return None;
+        }
+        self.last = Instant::now();
+        Some(format!(
+            "{}: {done} of {total} runs, {:.0} s ({})",
+            self.label,
+            self.started.elapsed().as_secs_f64(),
+            crate::error::echo(what)
+        ))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_ticker_is_silent_for_short_jobs_then_writes_one_line_per_interval() {
+        let mut ticker = Ticker::new("report");
+        assert_eq!(ticker.line(1, 10, "a: rk4"), None);
+        // As if the job had started seven seconds ago.
+        let Some(past) = Instant::now().checked_sub(Duration::from_secs(7)) else {
+            return; // A clock this close to its start cannot be wound back; nothing to test.
+        };
+        ticker.started = past;
+        ticker.last = past;
+        assert_eq!(
+            ticker.line(3, 10, "a: rk4").as_deref(),
+            Some("report: 3 of 10 runs, 7 s (a: rk4)")
+        );
+        assert_eq!(ticker.line(4, 10, "a: dopri"), None);
     }
 }

@@ -19,8 +19,9 @@ pub fn principal_body(scene: &Scene) -> Result<RigidBody, Error> {
     scene.principal_body()
 }
 
-/// The default limit on the estimated number of steps (`--max-steps`): about a minute of
-/// a fixed-step method in a release build; 10^14 steps would take months.
+/// The default limit on the estimated number of steps (`--max-steps`): 25 s of `rk4` but
+/// 300 s of `splitting-8` in a release build, so time has its own limit (`--max-seconds`,
+/// in `budget.rs`); 10^14 steps would take months.
 pub const DEFAULT_MAX_STEPS: u64 = 100_000_000;
 
 /// The default limit on the estimated CSV size in megabytes (`--max-output-mb`).

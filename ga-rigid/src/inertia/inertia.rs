@@ -12,7 +12,7 @@
 use ga_core::f64::g3::*;
 
 use super::eigen::{matrix_from_rotor, multiply, symmetric_eigen, transpose, Matrix3};
-use crate::error::{finite, finite3, positive, Error};
+use crate::error::{finite, finite3, num, positive, Error};
 
 /// Relative slack in the triangle inequality: moments computed from a flat body satisfy
 /// i3 = i1 + i2 exactly in real arithmetic, which rounding may break by a few ulps.
@@ -96,7 +96,9 @@ impl Inertia {
                 return Err(Error::invalid(
                     field,
                     format!(
-                        "the matrix must be symmetric, but entry ({a},{b}) is {x} and ({b},{a}) is {y}"
+                        "the matrix must be symmetric, but entry ({a},{b}) is {} and ({b},{a}) is {}",
+                        num(x),
+                        num(y)
                     ),
                 ));
             }
@@ -115,8 +117,11 @@ impl Inertia {
             return Err(Error::degenerate(
                 field,
                 format!(
-                    "the principal moments {i1}, {i2}, {i3} include a zero one: \
-                     the mass lies on a line or at a point"
+                    "the principal moments {}, {}, {} include a zero one: \
+                     the mass lies on a line or at a point",
+                    short(i1),
+                    short(i2),
+                    short(i3)
                 ),
             ));
         }
@@ -290,4 +295,14 @@ pub(crate) fn normalize_rotor(field: &str, r: [f64; 4]) -> Result<Rotor, Error> 
     let n = scaled.iter().map(|x| x * x).sum::<f64>().sqrt();
     let [s, e12, e13, e23] = scaled.map(|x| x / n);
     Ok(Rotor::new(s, e12, e13, e23))
+}
+
+/// A moment for a message: four significant digits (`1.235e-17`), enough to see which
+/// one is zero, short enough that three fit in one line.
+fn short(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() {
+        format!("{x}")
+    } else {
+        format!("{x:.3e}")
+    }
 }

@@ -11,5 +11,7 @@ mod solids;
 pub use eigen::{matrix_from_rotor, rotor_from_matrix, symmetric_eigen, SymmetricEigen};
 pub(crate) use inertia::normalize_rotor;
 pub use inertia::Inertia;
-pub use mesh::{Mesh, MeshMoments, MAX_MESH_BYTES};
+pub use mesh::{
+    Mesh, MeshMoments, MAX_MESH_BYTES, MAX_MESH_SHELLS, MAX_MESH_TRIANGLES, MAX_MESH_VERTICES,
+};
 pub use solids::Solid;

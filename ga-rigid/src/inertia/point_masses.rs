@@ -43,6 +43,15 @@ impl Inertia {
                 }
             }
         }
+        // Finite inputs can still overflow here (a point at 1e308 squared): say so, rather
+        // than let the NaN of inf - inf reach the matrix check as "entries must be finite".
+        if !(mass.is_finite() && com.iter().chain(j.iter().flatten()).all(|x| x.is_finite())) {
+            return Err(Error::invalid(
+                "points",
+                "the masses times the squared distances overflow f64 (above 1e308): \
+                 scale the units down",
+            ));
+        }
         let centre = Vector::new(com[0], com[1], com[2]);
         Inertia::from_matrix(&j, Some(mass), centre).map_err(|e| match e {
             Error::Degenerate { .. } => Error::degenerate(

@@ -12,7 +12,7 @@
 use crate::dynamics::{RigidBody, State};
 use crate::error::{self, Error};
 
-use super::integrator::{check_finite, Integrator};
+use super::integrator::{check_finite, scaled_norm, Integrator};
 
 /// The state as seven numbers: the rotor `[s, e12, e13, e23]` then `Omega_B`
 /// `[e12, e13, e23]`.
@@ -187,6 +187,25 @@ impl DormandPrince {
         } else {
             (0.01 / der12).powf(0.2)
         };
+        let h0 = (100.0 * h).min(h1).min(h_max);
+        if h0 > 0.0 && h0.is_finite() {
+            return h0;
+        }
+        // The squares above overflow when |w| is near 1e80 (its rate near 1e160), which
+        // left h = 0; the same first estimate from norms taken with scaling. The
+        // controller corrects it from there.
+        let nf = scaled_norm(&std::array::from_fn::<f64, 7, _>(|i| {
+            f0[i] / self.scale(y[i], y[i])
+        }));
+        let ny = scaled_norm(&std::array::from_fn::<f64, 7, _>(|i| {
+            y[i] / self.scale(y[i], y[i])
+        }));
+        let h = if nf <= 1e-5 || ny <= 1e-5 {
+            1e-6
+        } else {
+            0.01 * ny / nf
+        };
+        let h1 = (0.01 / nf.max(1e-15)).powf(0.2);
         (100.0 * h).min(h1).min(h_max)
     }
 }

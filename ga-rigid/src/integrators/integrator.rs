@@ -49,6 +49,17 @@ pub trait Integrator {
     }
 }
 
+/// The Euclidean norm `sqrt(sum x_i^2)` taken with scaling by the largest entry, so that
+/// it stays finite where the squares would overflow (entries above about 1e154), for the
+/// adaptive methods' first step when `|w|` is near 1e80 and its rate near 1e160.
+pub(crate) fn scaled_norm(x: &[f64]) -> f64 {
+    let m = x.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+    if m == 0.0 || !m.is_finite() {
+        return m;
+    }
+    m * x.iter().map(|v| (v / m) * (v / m)).sum::<f64>().sqrt()
+}
+
 /// Check a method's step size: finite and positive.
 pub(crate) fn check_step(h: f64) -> Result<f64, Error> {
     error::positive("step", "step", h)

@@ -51,7 +51,7 @@ use ga_core::f64::g3::{Bivector, Commutator, Rotor};
 use crate::dynamics::{RigidBody, State};
 use crate::error::{self, Error};
 
-use super::integrator::{check_finite, unit, Integrator};
+use super::integrator::{check_finite, scaled_norm, unit, Integrator};
 
 /// The stages.
 const S: usize = 12;
@@ -850,6 +850,34 @@ impl LieDop853 {
             0.01 * (d0 / d1).sqrt()
         };
         let h1 = (0.01 / d1.sqrt().max(1e-15) * (1.0 / h.max(1e-300))).powf(1.0 / 8.0) * h;
+        let h0 = (100.0 * h).min(h1.max(h)).min(h_max);
+        if h0 > 0.0 && h0.is_finite() {
+            return h0;
+        }
+        // The squares above overflow when |w| is near 1e80 (its rate near 1e160), which
+        // left h = 0; the same estimate from norms taken with scaling.
+        let scale = |wi: f64| self.atol + self.rtol * wi.abs();
+        let root3 = 3f64.sqrt() / (self.atol + self.rtol);
+        let (w3, r3) = (parts(w), parts(rate));
+        let n0 = scaled_norm(&[
+            w3[0] / scale(w3[0]),
+            w3[1] / scale(w3[1]),
+            w3[2] / scale(w3[2]),
+            root3,
+        ]);
+        let spin = 0.5 * scaled_norm(&w3);
+        let n1 = scaled_norm(&[
+            r3[0] / scale(w3[0]),
+            r3[1] / scale(w3[1]),
+            r3[2] / scale(w3[2]),
+            spin * root3,
+        ]);
+        let h = if n0 <= 1e-5 || n1 <= 1e-5 {
+            1e-6
+        } else {
+            0.01 * n0 / n1
+        };
+        let h1 = (0.01 / n1.max(1e-15) * (1.0 / h.max(1e-300))).powf(1.0 / 8.0) * h;
         (100.0 * h).min(h1.max(h)).min(h_max)
     }
 

@@ -7,6 +7,7 @@
 
 mod analysis;
 mod engine_steps;
+mod estimate;
 mod invariants;
 mod measure;
 mod page;
@@ -22,6 +23,7 @@ pub use engine_steps::{
     engine_run, engine_runs, engine_runs_csv, exact_flip_period, EngineRun, ENGINE_METHODS,
     ENGINE_RATES, ENGINE_RUNS_CSV_HEADER, ENGINE_STEPS,
 };
+pub use estimate::scene_seconds;
 pub use invariants::{
     long_run_count, long_runs, long_runs_csv, verdict as long_run_verdict, LongRun, Scale,
     ENERGY_GROWTH, LONG_RUNS_CSV_HEADER, MOMENTUM_BOUND, PERIODS, UNIT_DEFECT_BOUND, UNIT_STEPS,
