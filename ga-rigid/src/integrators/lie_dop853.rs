@@ -1201,7 +1201,11 @@ impl LieDop853 {
 
 impl Integrator for LieDop853 {
     fn name(&self) -> &'static str {
-        "lie-dop853"
+        if self.cayley {
+            "lie-dop853-cayley"
+        } else {
+            "lie-dop853"
+        }
     }
 
     fn accepted_steps(&self) -> Option<u64> {

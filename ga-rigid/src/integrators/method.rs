@@ -54,6 +54,8 @@ pub enum Method {
     /// Adaptive Runge-Kutta-Munthe-Kaas on the rotor group with the Dormand-Prince 8(5,3)
     /// pair.
     LieDop853,
+    /// [`Method::LieDop853`] in Cayley coordinates (no exponential in the stages).
+    LieDop853Cayley,
     /// Peer: ode_solvers' Dop853 on the quaternion form.
     Dop853Quaternion,
     /// Peer: ode_solvers' Dopri5 on the quaternion form.
@@ -137,7 +139,7 @@ const STEP_LIMIT_BUSS: f64 = 0.5;
 
 /// The registry: one row per method, in the order tables list them; ours first, then the
 /// peers (`peer` set).
-pub const METHODS: [MethodInfo; 20] = [
+pub const METHODS: [MethodInfo; 21] = [
     MethodInfo {
         method: Method::ClosedForm,
         name: "closed-form",
@@ -270,6 +272,15 @@ pub const METHODS: [MethodInfo; 20] = [
         kind: StepKind::Adaptive,
         ns_per_step: 100.0,
         summary: "adaptive order-8 Runge-Kutta-Munthe-Kaas on the rotor group (DOP853 pair)",
+        step_limit: StepLimit::None,
+        peer: None,
+    },
+    MethodInfo {
+        method: Method::LieDop853Cayley,
+        name: "lie-dop853-cayley",
+        kind: StepKind::Adaptive,
+        ns_per_step: 100.0,
+        summary: "lie-dop853 in Cayley coordinates: the same pair, no exponentials in the stages",
         step_limit: StepLimit::None,
         peer: None,
     },
@@ -451,6 +462,10 @@ impl Method {
                 LieDop853::new(tolerance()?, tolerance()? * DOPRI_ABSOLUTE_TOLERANCE_RATIO)
                     .map_err(|e| e.at("tol"))?,
             ),
+            Method::LieDop853Cayley => Box::new(
+                LieDop853::cayley(tolerance()?, tolerance()? * DOPRI_ABSOLUTE_TOLERANCE_RATIO)
+                    .map_err(|e| e.at("tol"))?,
+            ),
             Method::ExactSplitting => {
                 Box::new(ExactSplitting::new(fixed()?).map_err(|e| e.at("dt"))?)
             }
@@ -538,7 +553,7 @@ mod tests {
 
     /// Every variant, listed by hand: the match below has no wildcard, so a new variant
     /// fails to compile here until it is listed, and then needs its row in `METHODS`.
-    const EVERY_VARIANT: [Method; 20] = [
+    const EVERY_VARIANT: [Method; 21] = [
         Method::ClosedForm,
         Method::Rk4,
         Method::LieRk4,
@@ -554,6 +569,7 @@ mod tests {
         Method::Splitting6,
         Method::Splitting8,
         Method::LieDop853,
+        Method::LieDop853Cayley,
         Method::Dop853Quaternion,
         Method::Dopri5Quaternion,
         Method::EulerGyroExplicit,
@@ -580,6 +596,7 @@ mod tests {
                 | Method::Splitting6
                 | Method::Splitting8
                 | Method::LieDop853
+                | Method::LieDop853Cayley
                 | Method::Dop853Quaternion
                 | Method::Dopri5Quaternion
                 | Method::EulerGyroExplicit
