@@ -36,7 +36,8 @@ pub enum Error {
     /// Principal moments that no mass distribution can have: i_a + i_b < i_c.
     #[error(
         "{field}: moments must satisfy the triangle inequality i_a + i_b >= i_c, \
-         but {} + {} < {}", num(*a), num(*b), num(*c)
+         but {} + {} < {}; a test body no mass has may set allow_unphysical = true in [body]",
+        num(*a), num(*b), num(*c)
     )]
     TriangleInequality {
         /// The field or parameter at fault.

@@ -12,6 +12,8 @@
 //!
 //! [initial]
 //! rotor = [1, 0, 0, 0]        # [s, e12, e13, e23], normalised on load
+//! # axis = [0, 0, 1]          # or an axis and an angle (rad, right-handed), as glam's
+//! # angle = 0.5               # Quat::from_axis_angle
 //! omega = [0.45, 0, 1.4]      # body angular velocity w; Omega_B = I w
 //!
 //! [run]
@@ -61,7 +63,7 @@ pub struct Scene {
     /// The length and sampling of the run.
     pub run: Run,
     /// Uniform gravity, when the scene has a `[torque]` section.
-    pub torque: Option<Gravity>,
+    pub torque: Option<GravitySpec>,
 }
 
 /// The `[body]` section: one of the four ways to describe a body.
@@ -163,10 +165,12 @@ impl Run {
     }
 }
 
-/// The `[torque]` section: uniform gravity acting at the centre of mass.
+/// The `[torque]` section: uniform gravity acting at the centre of mass, as the scene file
+/// writes it (no mass: that comes from the body); the dynamics' torque is
+/// [`crate::dynamics::Gravity`].
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Gravity {
+pub struct GravitySpec {
     /// The gravitational acceleration in the space frame.
     #[cfg_attr(feature = "serde", serde(with = "serde_arrays::vector"))]
     pub g: Vector,
@@ -234,8 +238,45 @@ struct BodyFile {
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct InitialFile {
-    rotor: [f64; 4],
+    rotor: Option<[f64; 4]>,
+    axis: Option<[f64; 3]>,
+    angle: Option<f64>,
     omega: [f64; 3],
+}
+
+/// The initial attitude: `rotor = [s, e12, e13, e23]`, or `axis = [x, y, z]` with `angle`
+/// (rad, right-handed about the axis: the rotor `exp(-I a angle / 2)` for the unit axis `a`,
+/// as glam's `Quat::from_axis_angle`).
+fn initial_rotor(file: &InitialFile) -> Result<Rotor, Error> {
+    match (file.rotor, file.axis, file.angle) {
+        (Some([s, e12, e13, e23]), None, None) => Ok(Rotor::new(s, e12, e13, e23)),
+        (None, Some(axis), Some(angle)) => {
+            let [x, y, z] = finite3("initial.axis", "axis", axis)?;
+            crate::error::finite("initial.angle", "angle", angle)?;
+            let largest = x.abs().max(y.abs()).max(z.abs());
+            if largest == 0.0 {
+                return Err(Error::invalid("initial.axis", "the axis must not be zero"));
+            }
+            let a = Vector::new(x / largest, y / largest, z / largest);
+            Ok(Rotor::from_axis_angle(a / a.norm(), angle))
+        }
+        (None, Some(_), None) => Err(Error::invalid(
+            "initial.angle",
+            "missing field: `axis` needs an `angle` (rad)",
+        )),
+        (None, None, Some(_)) => Err(Error::invalid(
+            "initial.axis",
+            "missing field: `angle` needs an `axis`",
+        )),
+        (None, None, None) => Err(Error::invalid(
+            "initial.rotor",
+            "missing field: give `rotor = [s, e12, e13, e23]` or `axis` and `angle`",
+        )),
+        (Some(_), _, _) => Err(Error::invalid(
+            "initial.rotor",
+            "give either `rotor` or `axis` and `angle`, not both",
+        )),
+    }
 }
 
 #[derive(Deserialize)]
@@ -272,9 +313,8 @@ impl Scene {
             .map_err(|e: toml::de::Error| field_error(&e))?;
 
         let (body, inertia) = load_body(file.body, path)?;
-        let [s, e12, e13, e23] = file.initial.rotor;
         let initial = Initial {
-            rotor: Rotor::new(s, e12, e13, e23),
+            rotor: initial_rotor(&file.initial)?,
             omega: file.initial.omega,
         };
         let samples = file.run.samples;
@@ -289,7 +329,7 @@ impl Scene {
             // Out of range only above usize::MAX, which `with_inertia` then refuses.
             samples: usize::try_from(samples).unwrap_or(usize::MAX),
         };
-        let torque = file.torque.map(|t| Gravity {
+        let torque = file.torque.map(|t| GravitySpec {
             g: Vector::new(t.g[0], t.g[1], t.g[2]),
             com_offset: Vector::new(t.com_offset[0], t.com_offset[1], t.com_offset[2]),
         });
@@ -317,7 +357,7 @@ impl Scene {
         body: BodySpec,
         initial: Initial,
         run: Run,
-        torque: Option<Gravity>,
+        torque: Option<GravitySpec>,
     ) -> Result<Scene, Error> {
         let inertia = body.inertia()?;
         Scene::with_inertia(body, inertia, initial, run, torque)
@@ -333,7 +373,7 @@ impl Scene {
         inertia: Inertia,
         initial: Initial,
         run: Run,
-        torque: Option<Gravity>,
+        torque: Option<GravitySpec>,
     ) -> Result<Scene, Error> {
         let rotor = normalize_rotor("initial.rotor", initial.rotor.to_array())?;
         let omega = finite3("initial.omega", "angular velocity", initial.omega)?;
@@ -358,7 +398,7 @@ impl Scene {
             Some(t) => {
                 let [gx, gy, gz] = finite3("torque.g", "gravity", t.g.to_array())?;
                 let [cx, cy, cz] = finite3("torque.com_offset", "offset", t.com_offset.to_array())?;
-                Some(Gravity {
+                Some(GravitySpec {
                     g: Vector::new(gx, gy, gz),
                     com_offset: Vector::new(cx, cy, cz),
                 })

@@ -2288,3 +2288,61 @@ fn a_slow_needle_gets_a_step_from_the_rates_it_reaches() {
         "{dt} vs {expected}"
     );
 }
+
+/// The Dzhanibekov moments (3, 5, 9) the report itself uses break the triangle
+/// inequality; the message says how a test body is allowed.
+#[test]
+fn the_triangle_inequality_message_names_allow_unphysical() {
+    let s = scene("[body]\nmoments = [3.0, 5.0, 9.0]\n", INITIAL, RUN);
+    expect_short_rejection(
+        "dzhanibekov_moments",
+        &s,
+        &["--method", "rk4", "--dt", "0.01"],
+        "body.moments: ",
+        "allow_unphysical = true",
+    );
+}
+
+/// An attitude as an axis and an angle (glam's `Quat::from_axis_angle`): a quarter turn
+/// about e3 is the rotor `exp(-e12 pi/4)`, and the first row of the CSV says so.
+#[test]
+fn an_attitude_may_be_an_axis_and_an_angle() {
+    let dir = test_dir("axis_angle");
+    let text = format!(
+        "{BODY}[initial]\naxis = [0, 0, 2]\nangle = {}\nomega = [0, 0, 1]\n{RUN}",
+        std::f64::consts::FRAC_PI_2
+    );
+    write(&dir, "scene.toml", &text);
+    let out = run(&dir, &["simulate", "scene.toml", "--method", "exact"]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let first: Vec<f64> = stdout
+        .lines()
+        .nth(1)
+        .unwrap()
+        .split(',')
+        .map(|c| c.parse().unwrap())
+        .collect();
+    let h = std::f64::consts::FRAC_1_SQRT_2;
+    for (k, expected) in [(1, h), (2, -h), (3, 0.0), (4, 0.0)] {
+        assert!((first[k] - expected).abs() < 1e-15, "{first:?}");
+    }
+    let both = format!(
+        "{BODY}[initial]\nrotor = [1, 0, 0, 0]\naxis = [0, 0, 1]\nangle = 1\nomega = [0, 0, 1]\n{RUN}"
+    );
+    expect_rejected("axis_and_rotor", &both, "initial.rotor: ", "not both");
+    let no_angle = format!("{BODY}[initial]\naxis = [0, 0, 1]\nomega = [0, 0, 1]\n{RUN}");
+    expect_rejected(
+        "axis_no_angle",
+        &no_angle,
+        "initial.angle: ",
+        "needs an `angle`",
+    );
+    let zero = format!("{BODY}[initial]\naxis = [0, 0, 0]\nangle = 1\nomega = [0, 0, 1]\n{RUN}");
+    expect_rejected("zero_axis", &zero, "initial.axis: ", "must not be zero");
+}

@@ -186,7 +186,7 @@ fn scene_parts_survive_a_serde_round_trip_and_build_the_same_scene() {
         body: BodySpec,
         initial: Initial,
         run: Run,
-        torque: Option<ga_rigid::scene::Gravity>,
+        torque: Option<ga_rigid::scene::GravitySpec>,
     }
     let parts = Parts {
         body: BodySpec::Shape(Solid::Box {
@@ -201,7 +201,7 @@ fn scene_parts_survive_a_serde_round_trip_and_build_the_same_scene() {
             t_end: 10.0,
             samples: 11,
         },
-        torque: Some(ga_rigid::scene::Gravity {
+        torque: Some(ga_rigid::scene::GravitySpec {
             g: ga_core::f64::g3::Vector::new(0.0, 0.0, -9.81),
             com_offset: ga_core::f64::g3::Vector::new(0.0, 0.0, 0.1),
         }),

@@ -6,11 +6,13 @@ use crate::error::Error;
 use crate::inertia::Inertia;
 
 /// A rigid body in its principal frame: the moments `i1, i2, i3` about the body axes
-/// e1, e2, e3 (so `I(I e_k) = i_k I e_k`), and an optional applied torque.
+/// e1, e2, e3 (so `I(I e_k) = i_k I e_k`), and an optional applied torque. Cloning is
+/// cheap: the torque is shared.
+#[derive(Clone)]
 pub struct RigidBody {
     moments: [f64; 3],
     inverse_moments: [f64; 3],
-    torque: Option<Box<dyn Torque + Send + Sync>>,
+    torque: Option<std::sync::Arc<dyn Torque + Send + Sync>>,
 }
 
 impl std::fmt::Debug for RigidBody {
@@ -50,7 +52,7 @@ impl RigidBody {
     /// The same body driven by `torque`.
     #[must_use]
     pub fn with_torque(mut self, torque: impl Torque + Send + Sync + 'static) -> Self {
-        self.torque = Some(Box::new(torque));
+        self.torque = Some(std::sync::Arc::new(torque));
         self
     }
 
