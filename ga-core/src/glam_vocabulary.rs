@@ -335,10 +335,11 @@ macro_rules! glam_vocabulary {
             #[inline]
             #[must_use]
             pub fn is_near_identity(self) -> bool {
+                // Each precision's constant written in its own type.
                 let threshold: $s = if ::core::mem::size_of::<$s>() == 4 {
-                    0.002_847_144_6 as $s
+                    0.002_847_144_6_f32 as $s
                 } else {
-                    2.827_296_549_232_347_4e-7 as $s
+                    2.827_296_549_232_347_4e-7_f64 as $s
                 };
                 2.0 * self.s.abs().min(1.0).acos() < threshold
             }

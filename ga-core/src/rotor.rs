@@ -325,14 +325,16 @@ macro_rules! rotor3_toolkit {
                 for i in 0..3 {
                     for j in i..3 {
                         let expected = if i == j { 1.0 } else { 0.0 };
-                        // Written so that NaN fails.
-                        if !((dot(c[i], c[j]) - expected).abs() <= tolerance) {
+                        // Asked as "within", so that NaN fails.
+                        let within = (dot(c[i], c[j]) - expected).abs() <= tolerance;
+                        if !within {
                             return None;
                         }
                     }
                 }
                 let cross = Vector::from_array(c[1]).cross(Vector::from_array(c[2]));
-                if !(dot(c[0], cross.to_array()) > 0.0) {
+                let right_handed = dot(c[0], cross.to_array()) > 0.0;
+                if !right_handed {
                     return None;
                 }
                 Some(Self::from_mat3(c))
