@@ -260,9 +260,11 @@ macro_rules! rotor3_toolkit {
             /// `t ^ f`. Near opposite vectors `1 + f.t` is a difference of nearly equal
             /// numbers (glam's form, which misses `to` by about `2 EPSILON / |f + t|`), so
             /// for `f.t < 0` it is taken as `|t ^ f|^2 / (1 - f.t)`, the same number (their
-            /// product is `1 - (f.t)^2`) without the cancellation; and the bivector is
+            /// product is `1 - (f.t)^2`) without the cancellation, and the bivector is
             /// computed as `(f + t) ^ f`, whose plane contains `f` whatever the rounding
-            /// (`f + t` is exact to a relative `EPSILON` even when small). So `R from ~R`
+            /// (`f + t` is exact to a relative `EPSILON` even when small). For
+            /// `f.t >= 0` the plain form is accurate and the inputs are not normalised
+            /// (`|from||to|` stands for 1). So `R from ~R`
             /// lands within a few `EPSILON` of the direction of `to` at every angle. The
             /// result is unit, and non-unit input counts by its direction. Exactly
             /// opposite vectors give a half turn in a plane containing `from` (any such
@@ -281,24 +283,30 @@ macro_rules! rotor3_toolkit {
                 if from == Vector::ZERO || to == Vector::ZERO {
                     return Rotor::ZERO;
                 }
-                let f = from * (1.0 / from.norm_squared().sqrt());
-                let t = to * (1.0 / to.norm_squared().sqrt());
-                let dot = f | t;
-                let plane = (f + t) ^ f;
-                let plane_squared = plane.e12 * plane.e12 + plane.e13 * plane.e13 + plane.e23 * plane.e23;
-                let scalar = if dot >= 0.0 {
-                    1.0 + dot
+                let dot = from | to;
+                let (scalar, plane) = if dot >= 0.0 {
+                    // `|f||t| + f.t` has no cancellation here, and `t ^ f` is accurate
+                    // relative to its size (an angle error of about EPSILON).
+                    let m = (from.norm_squared() * to.norm_squared()).sqrt();
+                    (m + dot, to ^ from)
                 } else {
-                    plane_squared / (1.0 - dot)
+                    // Near opposite: unit directions, so that `f + t` is small exactly when
+                    // the vectors are opposite, and `(f + t) ^ f` keeps `f` in its plane.
+                    let f = from * (1.0 / from.norm_squared().sqrt());
+                    let t = to * (1.0 / to.norm_squared().sqrt());
+                    let plane = (f + t) ^ f;
+                    let plane_squared = plane.e12 * plane.e12 + plane.e13 * plane.e13 + plane.e23 * plane.e23;
+                    if plane_squared == 0.0 {
+                        // Exactly opposite: a half turn in a plane containing `f`.
+                        return any_orthonormal(f) * f;
+                    }
+                    (plane_squared / (1.0 - (f | t)), plane)
                 };
-                let length_squared = scalar * scalar + plane_squared;
-                // NaN takes the first branch and propagates.
-                if length_squared > 0.0 || length_squared.is_nan() {
-                    let k = 1.0 / length_squared.sqrt();
-                    Rotor::new(scalar * k, plane.e12 * k, plane.e13 * k, plane.e23 * k)
-                } else {
-                    any_orthonormal(f) * f
-                }
+                let length_squared =
+                    scalar * scalar + plane.e12 * plane.e12 + plane.e13 * plane.e13 + plane.e23 * plane.e23;
+                // NaN propagates.
+                let k = 1.0 / length_squared.sqrt();
+                Rotor::new(scalar * k, plane.e12 * k, plane.e13 * k, plane.e23 * k)
             }
 
             /// The rotor of a rotation matrix (column-major `[[S; 3]; 3]`, or glam's

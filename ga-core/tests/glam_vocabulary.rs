@@ -341,6 +341,13 @@ macro_rules! vocabulary_tests {
                         "{from} {to}: {ours} {theirs:?}"
                     );
                     assert!((ours.mul_vec3(from).dot(to).abs() - 1.0).abs() < 8.0 * TOL);
+                    // Non-unit input counts by its direction (glam asks for unit input).
+                    let scaled = Rotor::from_rotation_arc(from * 3.0, to * 0.25);
+                    assert!(
+                        (scaled.mul_vec3(from) - to).norm() < 8.0 * TOL,
+                        "{from} {to}"
+                    );
+                    assert!((scaled.norm() - 1.0).abs() < 4.0 * TOL);
                 }
             }
 
