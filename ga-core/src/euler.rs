@@ -63,6 +63,8 @@ pub enum EulerRot {
 impl EulerRot {
     /// The axes (0 = x, 1 = y, 2 = z) in the order the angles are given, and whether
     /// they are the fixed (extrinsic) axes.
+    // Unused when no precision is on (the enum exists for G3 alone).
+    #[cfg_attr(not(any(feature = "f32", feature = "f64")), allow(dead_code))]
     const fn axes(self) -> ([usize; 3], bool) {
         use EulerRot::*;
         const X: usize = 0;

@@ -137,6 +137,8 @@ pub(crate) mod no_std_math {
 }
 
 #[cfg(feature = "g3")]
+// Unused when no precision is on.
+#[allow(unused_macros)]
 macro_rules! rotor3_toolkit {
     ($s:ident) => {
         #[cfg(not(feature = "std"))]
@@ -496,6 +498,8 @@ macro_rules! rotor3_toolkit {
 
 // Defined only where instantiated: a G3-only build has no G2 toolkit.
 #[cfg(feature = "g2")]
+// Unused when no precision is on.
+#[allow(unused_macros)]
 macro_rules! rotor2_toolkit {
     ($s:ident) => {
         #[cfg(not(feature = "std"))]
