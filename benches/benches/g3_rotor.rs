@@ -149,6 +149,7 @@ macro_rules! g3_rotor_benches {
 
                 let mut g = group(c, &format!("g3/rotate_batch/{PRECISION}/batch"));
                 batch1(&mut g, "ga-core", &conv(&v, ga::Vector::from_array), |v| ga_r.sandwich(v));
+                batch1(&mut g, "ga-core sandwich_unit", &conv(&v, ga::Vector::from_array), |v| ga_r.sandwich_unit(v));
                 in_place(&mut g, "ga-core sandwich_vectors", &mut conv(&v, ga::Vector::from_array), |vs| ga_r.sandwich_vectors(vs));
                 kernel2(&mut g, "ga-core sandwich_all", &conv(&v, ga::Vector::from_array), &[()], ga::Vector::ZERO,
                     |v, _, out| kernels::sandwich_all(ga_r, v, out).expect("equal lengths"));

@@ -35,7 +35,7 @@ fn matrices(c: &mut Criterion) {
     g.finish();
     let m = conv(&r, Rotor::to_matrix);
     let mut g = group(c, "g3/toolkit/from_matrix/f64/batch");
-    batch1(&mut g, "ga-core", &m, Rotor::from_matrix);
+    batch1(&mut g, "ga-core", &m, Rotor::from_mat3);
     batch1(
         &mut g,
         "glam",

@@ -1,4 +1,4 @@
-//! Conversions to and from glam: vectors, quaternions and rotation matrices.
+//! Conversions to and from glam: vectors, quaternions and rotation matrices (3x3 and 4x4).
 //!
 //! A G3 rotor `s + b12 e12 + b13 e13 + b23 e23` and a glam quaternion rotate alike when
 //! `w = s, x = -b23, y = b13, z = -b12` (a rotation in the e12 plane turning e1 toward e2
@@ -7,7 +7,7 @@
 // Unused when no glam version or no precision is on.
 #[allow(unused_macros)]
 macro_rules! impl_glam_interop {
-    ($g3:path, $vec3:ty, $quat:ty, $mat3:ty) => {
+    ($g3:path, $vec3:ty, $quat:ty, $mat3:ty, $mat4:ty) => {
         use $g3 as g3;
 
         impl From<$vec3> for g3::Vector {
@@ -48,6 +48,15 @@ macro_rules! impl_glam_interop {
                 <$mat3>::from_cols(columns[0], columns[1], columns[2])
             }
         }
+
+        impl From<g3::Rotor> for $mat4 {
+            /// The rotation as a 4x4 affine matrix (glam's `Mat4::from_quat`): the 3x3
+            /// block of `x -> R x ~R` (for a unit rotor), no translation.
+            #[inline]
+            fn from(r: g3::Rotor) -> Self {
+                <$mat4>::from_mat3(<$mat3>::from(r))
+            }
+        }
     };
 }
 
@@ -56,11 +65,23 @@ macro_rules! glam_version {
     ($feature:literal, $glam:ident) => {
         #[cfg(all(feature = $feature, feature = "f32"))]
         const _: () = {
-            impl_glam_interop!(crate::f32::g3, $glam::Vec3, $glam::Quat, $glam::Mat3);
+            impl_glam_interop!(
+                crate::f32::g3,
+                $glam::Vec3,
+                $glam::Quat,
+                $glam::Mat3,
+                $glam::Mat4
+            );
         };
         #[cfg(all(feature = $feature, feature = "f64"))]
         const _: () = {
-            impl_glam_interop!(crate::f64::g3, $glam::DVec3, $glam::DQuat, $glam::DMat3);
+            impl_glam_interop!(
+                crate::f64::g3,
+                $glam::DVec3,
+                $glam::DQuat,
+                $glam::DMat3,
+                $glam::DMat4
+            );
         };
     };
 }

@@ -29,7 +29,11 @@
 pub use libm;
 
 #[cfg(feature = "g3")]
+mod euler;
+#[cfg(feature = "g3")]
 mod glam_interop;
+#[cfg(feature = "g3")]
+mod glam_vocabulary;
 // The slice kernels ask the CPU what it has, which needs the standard library.
 #[cfg(all(feature = "std", feature = "g3", any(feature = "f32", feature = "f64")))]
 pub mod kernels;
@@ -38,6 +42,8 @@ mod precision;
 #[cfg(any(feature = "g2", feature = "g3"))]
 mod rotor;
 
+#[cfg(feature = "g3")]
+pub use euler::EulerRot;
 #[cfg(feature = "g3")]
 pub use rotor::RotationMatrix;
 

@@ -7,7 +7,9 @@
 //! equals glam's `Quat::from_axis_angle(Vec3::Z, theta)` under `w = s, x = -e23,
 //! y = e13, z = -e12`. Inputs documented as unit must be unit (glam asserts the same).
 //! Non-finite input gives non-finite output (NaN propagates); zero input is stated on
-//! each method; `look_to`, whose input can fail in ordinary use, returns `Option`.
+//! each method; `from_matrix` and the `look_*` constructors, whose input can fail in
+//! ordinary use, return `Option`. glam's Quat and Vec3 vocabulary beyond this file is in
+//! `glam_vocabulary.rs`; what differs from glam on purpose is in docs/glam.md.
 
 /// A 3x3 rotation matrix that [`Rotor::from_matrix`](crate::f64::g3::Rotor::from_matrix)
 /// accepts: a column-major `[[S; 3]; 3]` (glam's `to_cols_array_2d` layout) and, under the
@@ -32,6 +34,15 @@ impl<S: Copy> RotationMatrix<S> for [[S; 3]; 3] {
     }
 }
 
+/// A reference to a matrix, so that `Rotor::from_mat3(&m)` reads as glam's `Quat::from_mat3(&m)`.
+#[cfg(feature = "g3")]
+impl<S, M: RotationMatrix<S> + ?Sized> RotationMatrix<S> for &M {
+    #[inline]
+    fn to_cols_array_2d(&self) -> [[S; 3]; 3] {
+        (**self).to_cols_array_2d()
+    }
+}
+
 /// glam's matrices as [`RotationMatrix`], for every glam version a feature turns on.
 macro_rules! glam_rotation_matrices {
     ($($feature:literal => $glam:ident),*) => {
@@ -51,6 +62,24 @@ macro_rules! glam_rotation_matrices {
                     crate::$glam::DMat3::to_cols_array_2d(self)
                 }
             }
+
+            /// The upper-left 3x3 block (the translation and projection row are ignored).
+            #[cfg(all(feature = $feature, feature = "g3"))]
+            impl RotationMatrix<f32> for crate::$glam::Mat4 {
+                #[inline]
+                fn to_cols_array_2d(&self) -> [[f32; 3]; 3] {
+                    crate::$glam::Mat3::from_mat4(*self).to_cols_array_2d()
+                }
+            }
+
+            /// The upper-left 3x3 block (the translation and projection row are ignored).
+            #[cfg(all(feature = $feature, feature = "g3"))]
+            impl RotationMatrix<f64> for crate::$glam::DMat4 {
+                #[inline]
+                fn to_cols_array_2d(&self) -> [[f64; 3]; 3] {
+                    crate::$glam::DMat3::from_mat4(*self).to_cols_array_2d()
+                }
+            }
         )*
     };
 }
@@ -65,7 +94,7 @@ glam_rotation_matrices!(
 /// Without the standard library, the float functions the toolkit calls come from libm
 /// (with it, the inherent methods of the same names take precedence).
 #[cfg(not(feature = "std"))]
-mod no_std_math {
+pub(crate) mod no_std_math {
     /// The float functions of the toolkit, for `f32` and `f64`.
     // Which of them a build calls depends on the algebras its features turn on.
     #[allow(dead_code)]
@@ -73,6 +102,7 @@ mod no_std_math {
         fn sqrt(self) -> Self;
         fn sin_cos(self) -> (Self, Self);
         fn atan2(self, other: Self) -> Self;
+        fn acos(self) -> Self;
     }
 
     impl Real for f64 {
@@ -84,6 +114,9 @@ mod no_std_math {
         }
         fn atan2(self, other: f64) -> f64 {
             libm::atan2(self, other)
+        }
+        fn acos(self) -> f64 {
+            libm::acos(self)
         }
     }
 
@@ -97,10 +130,15 @@ mod no_std_math {
         fn atan2(self, other: f32) -> f32 {
             libm::atan2f(self, other)
         }
+        fn acos(self) -> f32 {
+            libm::acosf(self)
+        }
     }
 }
 
 #[cfg(feature = "g3")]
+// Unused when no precision is on.
+#[allow(unused_macros)]
 macro_rules! rotor3_toolkit {
     ($s:ident) => {
         #[cfg(not(feature = "std"))]
@@ -219,48 +257,117 @@ macro_rules! rotor3_toolkit {
             /// The rotor turning the unit vector `from` into the unit vector `to` in the
             /// plane they span, the shorter way (glam's `Quat::from_rotation_arc`).
             ///
-            /// `R = h from` with `h` the unit bisector of `from` and `to`, which needs no
-            /// `1 + from.to` (that loses digits near opposite vectors). When `|from + to|`
-            /// is below `sqrt(EPSILON)` the vectors are taken as opposite: a half turn in
-            /// a plane containing `from` (any such plane is a shortest arc), accurate to
-            /// `sqrt(EPSILON)` there. Zero input gives the zero rotor; NaN propagates.
+            /// `R = (1 + t f) / |1 + t f|` for the unit directions `f`, `t` of `from` and
+            /// `to` (`R = h f` with `h` their unit bisector): scalar `1 + f.t`, bivector
+            /// `t ^ f`. Near opposite vectors `1 + f.t` is a difference of nearly equal
+            /// numbers (glam's form, which misses `to` by about `2 EPSILON / |f + t|`), so
+            /// for `f.t < 0` it is taken as `|t ^ f|^2 / (1 - f.t)`, the same number (their
+            /// product is `1 - (f.t)^2`) without the cancellation, and the bivector is
+            /// computed as `(f + t) ^ f`, whose plane contains `f` whatever the rounding
+            /// (`f + t` is exact to a relative `EPSILON` even when small). For
+            /// `f.t >= 0` the plain form is accurate and the inputs are not normalised
+            /// (`|from||to|` stands for 1). So `R from ~R`
+            /// lands within a few `EPSILON` of the direction of `to` at every angle. The
+            /// result is unit, and non-unit input counts by its direction. Exactly
+            /// opposite vectors give a half turn in a plane containing `from` (any such
+            /// plane is a shortest arc). Either input zero gives the zero rotor (glam
+            /// gives the identity for `(X, ZERO)`; see docs/glam.md); NaN propagates.
             ///
             /// ```
             #[doc = concat!("use ga_core::", stringify!($s), "::g3::*;")]
             /// let r = Rotor::from_rotation_arc(Vector::E1, -Vector::E1);
             /// assert!((r.sandwich(Vector::E1) + Vector::E1).norm() < 1e-6);
+            /// assert_eq!(Rotor::from_rotation_arc(Vector::E1, Vector::ZERO), Rotor::ZERO);
             /// ```
             #[inline]
             #[must_use]
             pub fn from_rotation_arc(from: Vector, to: Vector) -> Self {
-                let sum = from + to;
-                let length_squared = sum.norm_squared();
-                // NaN takes the first branch and propagates.
-                if length_squared > $s::EPSILON || length_squared.is_nan() {
-                    (sum * (1.0 / length_squared.sqrt())) * from
-                } else {
-                    any_orthonormal(from) * from
+                if from == Vector::ZERO || to == Vector::ZERO {
+                    return Rotor::ZERO;
                 }
+                let dot = from | to;
+                let (scalar, plane) = if dot >= 0.0 {
+                    // `|f||t| + f.t` has no cancellation here, and `t ^ f` is accurate
+                    // relative to its size (an angle error of about EPSILON).
+                    let m = (from.norm_squared() * to.norm_squared()).sqrt();
+                    (m + dot, to ^ from)
+                } else {
+                    // Near opposite: unit directions, so that `f + t` is small exactly when
+                    // the vectors are opposite, and `(f + t) ^ f` keeps `f` in its plane.
+                    let f = from * (1.0 / from.norm_squared().sqrt());
+                    let t = to * (1.0 / to.norm_squared().sqrt());
+                    let plane = (f + t) ^ f;
+                    let plane_squared = plane.e12 * plane.e12 + plane.e13 * plane.e13 + plane.e23 * plane.e23;
+                    if plane_squared == 0.0 {
+                        // Exactly opposite: a half turn in a plane containing `f`.
+                        return any_orthonormal(f) * f;
+                    }
+                    (plane_squared / (1.0 - (f | t)), plane)
+                };
+                let length_squared =
+                    scalar * scalar + plane.e12 * plane.e12 + plane.e13 * plane.e13 + plane.e23 * plane.e23;
+                // NaN propagates.
+                let k = 1.0 / length_squared.sqrt();
+                Rotor::new(scalar * k, plane.e12 * k, plane.e13 * k, plane.e23 * k)
             }
 
             /// The rotor of a rotation matrix (column-major `[[S; 3]; 3]`, or glam's
-            /// `Mat3`/`DMat3` under the `glam` feature), with a non-negative scalar.
+            /// `Mat3`/`DMat3`/`Mat4`/`DMat4` under the `glam` feature), with a non-negative
+            /// scalar; `None` when the matrix is not a rotation: a column product
+            /// `c_i . c_j` differs from `delta_ij` by more than `sqrt(EPSILON)` (the
+            /// tolerance `log` uses for `<R ~R> = 1`), the determinant is not positive,
+            /// or an entry is not finite. Such a matrix has no rotor, and the formula
+            /// would still return one (for the all-ones matrix, exactly 1), so it says so.
+            /// [`from_mat3`](Self::from_mat3) is the unchecked conversion, as glam's.
+            ///
+            /// ```
+            #[doc = concat!("use ga_core::", stringify!($s), "::g3::*;")]
+            /// let r = Rotor::from_axis_angle(Vector::new(0.0, 0.6, 0.8), 3.1);
+            /// let back = Rotor::from_matrix(r.to_matrix()).unwrap();
+            /// assert!((back - r).norm() < 1e-5 || (back + r).norm() < 1e-5);
+            /// assert!(Rotor::from_matrix([[1.0; 3]; 3]).is_none());
+            /// ```
+            #[must_use]
+            pub fn from_matrix(m: impl RotationMatrix<$s>) -> Option<Self> {
+                let c = m.to_cols_array_2d();
+                let dot = |a: [$s; 3], b: [$s; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+                let tolerance = $s::EPSILON.sqrt();
+                for i in 0..3 {
+                    for j in i..3 {
+                        let expected = if i == j { 1.0 } else { 0.0 };
+                        // Asked as "within", so that NaN fails.
+                        let within = (dot(c[i], c[j]) - expected).abs() <= tolerance;
+                        if !within {
+                            return None;
+                        }
+                    }
+                }
+                let cross = Vector::from_array(c[1]).cross(Vector::from_array(c[2]));
+                let right_handed = dot(c[0], cross.to_array()) > 0.0;
+                if !right_handed {
+                    return None;
+                }
+                Some(Self::from_mat3(c))
+            }
+
+            /// The rotor of a rotation matrix without checking that it is one (glam's
+            /// `Quat::from_mat3`): for a matrix with scale, shear or reflection the result
+            /// is ill-defined, as glam's is. Non-negative scalar.
             ///
             /// Shepperd's method (S. W. Shepperd, "Quaternion from rotation matrix",
             /// J. Guidance and Control 1(3), 1978) with the branch chosen by signs
             /// (M. Day, "Converting a rotation matrix to a quaternion", Insomniac Games,
             /// 2015): the square root is taken of a diagonal combination of at least 1,
-            /// so it is accurate near a half turn too. A matrix that is not a rotation
-            /// gives a rotor that is not unit.
+            /// so it is accurate near a half turn too.
             ///
             /// ```
             #[doc = concat!("use ga_core::", stringify!($s), "::g3::*;")]
             /// let r = Rotor::from_axis_angle(Vector::new(0.0, 0.6, 0.8), 3.1);
-            /// let back = Rotor::from_matrix(r.to_matrix());
+            /// let back = Rotor::from_mat3(r.to_matrix());
             /// assert!((back - r).norm() < 1e-5 || (back + r).norm() < 1e-5);
             /// ```
             #[must_use]
-            pub fn from_matrix(m: impl RotationMatrix<$s>) -> Self {
+            pub fn from_mat3(m: impl RotationMatrix<$s>) -> Self {
                 // m_rc: row r, column c.
                 let [[m00, m10, m20], [m01, m11, m21], [m02, m12, m22]] = m.to_cols_array_2d();
                 // Day's selection: signs of the diagonal pick a component whose squared
@@ -359,20 +466,22 @@ macro_rules! rotor3_toolkit {
                 2.0 * length.atan2(d.s)
             }
 
-            /// The rotor turning e3 into `dir` and e2 into the part of `up` perpendicular
-            /// to `dir` (so e1 goes to `up x dir`): the orientation of an object whose
-            /// local e3 looks along `dir`. glam's `look_to_rh` builds the inverse (a view
-            /// matrix, looking down -z). `None` when `dir` is zero, `up` is parallel to
-            /// it, or either is not finite.
+            /// The rotor turning e3 into `forward` and e2 into the part of `up`
+            /// perpendicular to it (so e1 goes to `up x forward`): the orientation of an
+            /// object whose local e3 looks along `forward`. This was `look_to` before it
+            /// took glam's meaning: it is glam's `Quat::look_to_lh(forward, up).inverse()`,
+            /// and [`look_to_lh`](Self::look_to_lh) is its reverse. `None` when `forward` is
+            /// zero, `up` is parallel to it, or either is not finite.
             ///
             /// ```
             #[doc = concat!("use ga_core::", stringify!($s), "::g3::*;")]
-            /// let r = Rotor::look_to(Vector::E1, Vector::E3).unwrap();
+            /// let r = Rotor::from_forward_up(Vector::E1, Vector::E3).unwrap();
             /// assert!((r.sandwich(Vector::E3) - Vector::E1).norm() < 1e-6);
-            /// assert!(Rotor::look_to(Vector::E1, Vector::E1).is_none());
+            /// assert!(Rotor::from_forward_up(Vector::E1, Vector::E1).is_none());
             /// ```
             #[must_use]
-            pub fn look_to(dir: Vector, up: Vector) -> Option<Self> {
+            pub fn from_forward_up(forward: Vector, up: Vector) -> Option<Self> {
+                let dir = forward;
                 let forward = dir.try_normalized()?;
                 let up = (up - forward * (up | forward)).try_normalized()?;
                 let right = Vector::new(
@@ -380,7 +489,8 @@ macro_rules! rotor3_toolkit {
                     up.e3 * forward.e1 - up.e1 * forward.e3,
                     up.e1 * forward.e2 - up.e2 * forward.e1,
                 );
-                Some(Rotor::from_matrix([right.to_array(), up.to_array(), forward.to_array()]))
+                // Orthonormal by construction: no check needed.
+                Some(Rotor::from_mat3([right.to_array(), up.to_array(), forward.to_array()]))
             }
         }
     };
@@ -388,6 +498,8 @@ macro_rules! rotor3_toolkit {
 
 // Defined only where instantiated: a G3-only build has no G2 toolkit.
 #[cfg(feature = "g2")]
+// Unused when no precision is on.
+#[allow(unused_macros)]
 macro_rules! rotor2_toolkit {
     ($s:ident) => {
         #[cfg(not(feature = "std"))]

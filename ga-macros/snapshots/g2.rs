@@ -5020,13 +5020,17 @@ pub mod g2 {
     /// The versor product: `v x ~v` for even `v`, `v x^ ~v` for odd `v` (x^ the grade
     /// involution), in the form the generator's cost model picks (a quadratic form with
     /// like terms collected, or commutators). Returns `x`'s own type; exact for any
-    /// versor, so the result is scaled by |v|^2 when `v` is not unit.
+    /// versor, so the result is scaled by |v|^2 when `v` is not unit. Either side may
+    /// be a reference (`r.sandwich(&v)`, as glam's `q * &v`).
     pub trait Sandwich<X> {
+        /// `x`'s own type (the referenced type when `x` is a reference).
+        type Output;
         /// `v x ~v` (even `v`) or `v x^ ~v` (odd `v`).
         #[must_use]
-        fn sandwich(self, x: X) -> X;
+        fn sandwich(self, x: X) -> Self::Output;
     }
     impl Sandwich<Vector> for Vector {
+        type Output = Vector;
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
             let two_e1 = self.e1 + self.e1;
@@ -5040,7 +5044,29 @@ pub mod g2 {
             }
         }
     }
+    impl Sandwich<&Vector> for Vector {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: &Vector) -> Vector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Vector> for &Vector {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: Vector) -> Vector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Vector> for &Vector {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: &Vector) -> Vector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Bivector> for Vector {
+        type Output = Bivector;
         #[inline]
         fn sandwich(self, x: Bivector) -> Bivector {
             let e1_e1 = self.e1 * self.e1;
@@ -5050,7 +5076,29 @@ pub mod g2 {
             }
         }
     }
+    impl Sandwich<&Bivector> for Vector {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: &Bivector) -> Bivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Bivector> for &Vector {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: Bivector) -> Bivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Bivector> for &Vector {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: &Bivector) -> Bivector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Even> for Vector {
+        type Output = Even;
         #[inline]
         fn sandwich(self, x: Even) -> Even {
             let e1_e1 = self.e1 * self.e1;
@@ -5062,7 +5110,29 @@ pub mod g2 {
             }
         }
     }
+    impl Sandwich<&Even> for Vector {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: &Even) -> Even {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Even> for &Vector {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: Even) -> Even {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Even> for &Vector {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: &Even) -> Even {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Odd> for Vector {
+        type Output = Odd;
         #[inline]
         fn sandwich(self, x: Odd) -> Odd {
             let two_e1 = self.e1 + self.e1;
@@ -5076,7 +5146,29 @@ pub mod g2 {
             }
         }
     }
+    impl Sandwich<&Odd> for Vector {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: &Odd) -> Odd {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Odd> for &Vector {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: Odd) -> Odd {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Odd> for &Vector {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: &Odd) -> Odd {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Multivector> for Vector {
+        type Output = Multivector;
         #[inline]
         fn sandwich(self, x: Multivector) -> Multivector {
             let two_e1 = self.e1 + self.e1;
@@ -5091,6 +5183,27 @@ pub mod g2 {
                 e2: -(e1_e2) * x.e1 + e1_e1_minus_e2_e2 * x.e2,
                 e12: -(e1_e1_plus_e2_e2) * x.e12,
             }
+        }
+    }
+    impl Sandwich<&Multivector> for Vector {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: &Multivector) -> Multivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Multivector> for &Vector {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: Multivector) -> Multivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Multivector> for &Vector {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: &Multivector) -> Multivector {
+            Sandwich::sandwich(*self, *x)
         }
     }
     impl Vector {
@@ -5122,6 +5235,7 @@ pub mod g2 {
         }
     }
     impl Sandwich<Vector> for Even {
+        type Output = Vector;
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
             let two_s = self.s + self.s;
@@ -5135,7 +5249,29 @@ pub mod g2 {
             }
         }
     }
+    impl Sandwich<&Vector> for Even {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: &Vector) -> Vector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Vector> for &Even {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: Vector) -> Vector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Vector> for &Even {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: &Vector) -> Vector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Bivector> for Even {
+        type Output = Bivector;
         #[inline]
         fn sandwich(self, x: Bivector) -> Bivector {
             let s_s = self.s * self.s;
@@ -5145,7 +5281,29 @@ pub mod g2 {
             }
         }
     }
+    impl Sandwich<&Bivector> for Even {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: &Bivector) -> Bivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Bivector> for &Even {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: Bivector) -> Bivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Bivector> for &Even {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: &Bivector) -> Bivector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Even> for Even {
+        type Output = Even;
         #[inline]
         fn sandwich(self, x: Even) -> Even {
             let s_s = self.s * self.s;
@@ -5157,7 +5315,29 @@ pub mod g2 {
             }
         }
     }
+    impl Sandwich<&Even> for Even {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: &Even) -> Even {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Even> for &Even {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: Even) -> Even {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Even> for &Even {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: &Even) -> Even {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Odd> for Even {
+        type Output = Odd;
         #[inline]
         fn sandwich(self, x: Odd) -> Odd {
             let two_s = self.s + self.s;
@@ -5171,7 +5351,29 @@ pub mod g2 {
             }
         }
     }
+    impl Sandwich<&Odd> for Even {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: &Odd) -> Odd {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Odd> for &Even {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: Odd) -> Odd {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Odd> for &Even {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: &Odd) -> Odd {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Multivector> for Even {
+        type Output = Multivector;
         #[inline]
         fn sandwich(self, x: Multivector) -> Multivector {
             let two_s = self.s + self.s;
@@ -5186,6 +5388,27 @@ pub mod g2 {
                 e2: -(s_e12) * x.e1 + s_s_minus_e12_e12 * x.e2,
                 e12: s_s_plus_e12_e12 * x.e12,
             }
+        }
+    }
+    impl Sandwich<&Multivector> for Even {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: &Multivector) -> Multivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Multivector> for &Even {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: Multivector) -> Multivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Multivector> for &Even {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: &Multivector) -> Multivector {
+            Sandwich::sandwich(*self, *x)
         }
     }
     impl Even {
@@ -5217,6 +5440,7 @@ pub mod g2 {
         }
     }
     impl Sandwich<Vector> for Odd {
+        type Output = Vector;
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
             let two_e1 = self.e1 + self.e1;
@@ -5230,7 +5454,29 @@ pub mod g2 {
             }
         }
     }
+    impl Sandwich<&Vector> for Odd {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: &Vector) -> Vector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Vector> for &Odd {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: Vector) -> Vector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Vector> for &Odd {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: &Vector) -> Vector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Bivector> for Odd {
+        type Output = Bivector;
         #[inline]
         fn sandwich(self, x: Bivector) -> Bivector {
             let e1_e1 = self.e1 * self.e1;
@@ -5240,7 +5486,29 @@ pub mod g2 {
             }
         }
     }
+    impl Sandwich<&Bivector> for Odd {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: &Bivector) -> Bivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Bivector> for &Odd {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: Bivector) -> Bivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Bivector> for &Odd {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: &Bivector) -> Bivector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Even> for Odd {
+        type Output = Even;
         #[inline]
         fn sandwich(self, x: Even) -> Even {
             let e1_e1 = self.e1 * self.e1;
@@ -5252,7 +5520,29 @@ pub mod g2 {
             }
         }
     }
+    impl Sandwich<&Even> for Odd {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: &Even) -> Even {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Even> for &Odd {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: Even) -> Even {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Even> for &Odd {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: &Even) -> Even {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Odd> for Odd {
+        type Output = Odd;
         #[inline]
         fn sandwich(self, x: Odd) -> Odd {
             let two_e1 = self.e1 + self.e1;
@@ -5266,7 +5556,29 @@ pub mod g2 {
             }
         }
     }
+    impl Sandwich<&Odd> for Odd {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: &Odd) -> Odd {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Odd> for &Odd {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: Odd) -> Odd {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Odd> for &Odd {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: &Odd) -> Odd {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Multivector> for Odd {
+        type Output = Multivector;
         #[inline]
         fn sandwich(self, x: Multivector) -> Multivector {
             let two_e1 = self.e1 + self.e1;
@@ -5281,6 +5593,27 @@ pub mod g2 {
                 e2: -(e1_e2) * x.e1 + e1_e1_minus_e2_e2 * x.e2,
                 e12: -(e1_e1_plus_e2_e2) * x.e12,
             }
+        }
+    }
+    impl Sandwich<&Multivector> for Odd {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: &Multivector) -> Multivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Multivector> for &Odd {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: Multivector) -> Multivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Multivector> for &Odd {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: &Multivector) -> Multivector {
+            Sandwich::sandwich(*self, *x)
         }
     }
     impl Odd {
@@ -5374,22 +5707,43 @@ pub mod g2 {
             }
         }
     }
-    /// Writes `1 + 2e1 - 0.5e12`: each non-zero component with its blade (the scalar
-    /// without one), honouring the formatter's precision; at a precision `p`, terms
-    /// that would print as zero are left out. Zero prints as `0`.
+    /// Writes `1 + 2 e1 - 0.5 e12`: each non-zero component, a space, its blade (the
+    /// scalar without one; the space keeps `1 e12` apart from ten to the twelfth),
+    /// honouring the formatter's precision; at a precision `p`, terms that would print
+    /// as zero are left out. Magnitudes below `1e-5` or from `1e16` print in exponent
+    /// form (`5e-324`, not 324 digits), except below `1e-5` at a precision, where the
+    /// fixed form shows what rounds away. Zero prints as `0`.
     fn display_terms(
         f: &mut ::core::fmt::Formatter<'_>,
         terms: &[(f64, &str)],
     ) -> ::core::fmt::Result {
-        let threshold: f64 = match f.precision() {
-            Some(p) => (0..p.min(400)).fold(0.5, |t, _| t / 10.0),
-            None => 0.0,
-        };
+        /// Notes whether a non-zero digit is written: a term "prints as zero" exactly
+        /// when the formatter's own rounding leaves none (no buffer, so `no_std`).
+        struct NonZeroDigit(bool);
+        impl ::core::fmt::Write for NonZeroDigit {
+            fn write_str(&mut self, s: &str) -> ::core::fmt::Result {
+                self.0 |= s.bytes().any(|b| (b'1'..=b'9').contains(&b));
+                Ok(())
+            }
+        }
         let mut first = true;
         for &(value, blade) in terms {
             let magnitude = value.abs();
-            if magnitude <= threshold {
+            if magnitude == 0.0 {
                 continue;
+            }
+            let large = magnitude >= 1e16 && magnitude.is_finite();
+            let small = magnitude < 1e-5;
+            let exponent = large || (small && f.precision().is_none());
+            if let (Some(p), false) = (
+                f.precision(),
+                exponent || !magnitude.is_finite(),
+            ) {
+                let mut digits = NonZeroDigit(false);
+                ::core::fmt::write(&mut digits, format_args!("{:.*}", p, magnitude))?;
+                if !digits.0 {
+                    continue;
+                }
             }
             let negative = value.is_sign_negative() && !value.is_nan();
             match (first, negative) {
@@ -5398,9 +5752,14 @@ pub mod g2 {
                 (false, true) => f.write_str(" - ")?,
                 (false, false) => f.write_str(" + ")?,
             }
-            match f.precision() {
-                Some(p) => write!(f, "{:.*}{}", p, magnitude, blade)?,
-                None => write!(f, "{}{}", magnitude, blade)?,
+            match (f.precision(), exponent) {
+                (Some(p), true) => write!(f, "{:.*e}", p, magnitude)?,
+                (Some(p), false) => write!(f, "{:.*}", p, magnitude)?,
+                (None, true) => write!(f, "{:e}", magnitude)?,
+                (None, false) => write!(f, "{}", magnitude)?,
+            }
+            if !blade.is_empty() {
+                write!(f, " {}", blade)?;
             }
             first = false;
         }
@@ -5877,11 +6236,39 @@ pub mod g2 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Vector> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for f64 {
+        type Output = <f64 as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Vector> for &f64 {
         type Output = <f64 as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Vector> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for f64 {
+        type Output = <f64 as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for &f64 {
@@ -5891,11 +6278,39 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Vector> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for f64 {
+        type Output = <f64 as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Vector> for &f64 {
         type Output = <f64 as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Vector> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for f64 {
+        type Output = <f64 as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for &f64 {
@@ -5905,11 +6320,39 @@ pub mod g2 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Vector> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for f64 {
+        type Output = <f64 as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Bivector> for &f64 {
         type Output = <f64 as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Bivector> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for f64 {
+        type Output = <f64 as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for &f64 {
@@ -5919,11 +6362,39 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Bivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for f64 {
+        type Output = <f64 as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Bivector> for &f64 {
         type Output = <f64 as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Bivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for f64 {
+        type Output = <f64 as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for &f64 {
@@ -5933,11 +6404,39 @@ pub mod g2 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Bivector> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for f64 {
+        type Output = <f64 as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Bivector> for &f64 {
         type Output = <f64 as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Bivector> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for f64 {
+        type Output = <f64 as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Even> for &f64 {
@@ -5947,11 +6446,39 @@ pub mod g2 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Even> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for f64 {
+        type Output = <f64 as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Even> for &f64 {
         type Output = <f64 as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Even> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for f64 {
+        type Output = <f64 as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for &f64 {
@@ -5961,11 +6488,39 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Even> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for f64 {
+        type Output = <f64 as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Even> for &f64 {
         type Output = <f64 as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Even> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for f64 {
+        type Output = <f64 as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for &f64 {
@@ -5975,11 +6530,39 @@ pub mod g2 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Even> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for f64 {
+        type Output = <f64 as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Odd> for &f64 {
         type Output = <f64 as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Odd> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for f64 {
+        type Output = <f64 as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for &f64 {
@@ -5989,11 +6572,39 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Odd> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for f64 {
+        type Output = <f64 as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Odd> for &f64 {
         type Output = <f64 as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Odd> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for f64 {
+        type Output = <f64 as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for &f64 {
@@ -6003,11 +6614,39 @@ pub mod g2 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Odd> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for f64 {
+        type Output = <f64 as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Odd> for &f64 {
         type Output = <f64 as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Odd> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for f64 {
+        type Output = <f64 as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Multivector> for &f64 {
@@ -6017,11 +6656,39 @@ pub mod g2 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Multivector> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for f64 {
+        type Output = <f64 as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Multivector> for &f64 {
         type Output = <f64 as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Multivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for f64 {
+        type Output = <f64 as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for &f64 {
@@ -6031,11 +6698,39 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Multivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for f64 {
+        type Output = <f64 as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Multivector> for &f64 {
         type Output = <f64 as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Multivector> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for f64 {
+        type Output = <f64 as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for &f64 {
@@ -6045,11 +6740,39 @@ pub mod g2 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Multivector> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for f64 {
+        type Output = <f64 as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&f64> for &Vector {
         type Output = <Vector as ::core::ops::Mul<f64>>::Output;
         #[inline]
         fn mul(self, rhs: &f64) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<f64> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for Vector {
+        type Output = <Vector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&f64> for &Vector {
@@ -6059,11 +6782,39 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<f64> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&f64> for &Vector {
         type Output = <Vector as ::core::ops::BitOr<f64>>::Output;
         #[inline]
         fn bitor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<f64> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&f64> for &Vector {
@@ -6073,11 +6824,39 @@ pub mod g2 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<f64> for &Vector {
+        type Output = <Vector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: f64) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for Vector {
+        type Output = <Vector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&f64> for &Vector {
         type Output = <Vector as ::core::ops::Sub<f64>>::Output;
         #[inline]
         fn sub(self, rhs: &f64) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<f64> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for Vector {
+        type Output = <Vector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Vector> for &Vector {
@@ -6087,11 +6866,39 @@ pub mod g2 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Vector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for Vector {
+        type Output = <Vector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Vector> for &Vector {
         type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Vector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for &Vector {
@@ -6101,11 +6908,39 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Vector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Vector> for &Vector {
         type Output = <Vector as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Vector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for Vector {
+        type Output = <Vector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for &Vector {
@@ -6115,11 +6950,51 @@ pub mod g2 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Vector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for Vector {
+        type Output = <Vector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Vector> for Vector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Vector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Vector> for Vector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Vector) {
+            *self -= *rhs;
+        }
+    }
     impl ::core::ops::Mul<&Bivector> for &Vector {
         type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for Vector {
+        type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for &Vector {
@@ -6129,11 +7004,39 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Bivector> for &Vector {
         type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for &Vector {
@@ -6143,11 +7046,39 @@ pub mod g2 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for Vector {
+        type Output = <Vector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Bivector> for &Vector {
         type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for Vector {
+        type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Even> for &Vector {
@@ -6157,11 +7088,39 @@ pub mod g2 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Even> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for Vector {
+        type Output = <Vector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Even> for &Vector {
         type Output = <Vector as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Even> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for &Vector {
@@ -6171,11 +7130,39 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Even> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Even> for &Vector {
         type Output = <Vector as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Even> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for Vector {
+        type Output = <Vector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for &Vector {
@@ -6185,11 +7172,39 @@ pub mod g2 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Even> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for Vector {
+        type Output = <Vector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Odd> for &Vector {
         type Output = <Vector as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Odd> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for Vector {
+        type Output = <Vector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for &Vector {
@@ -6199,11 +7214,39 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Odd> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Odd> for &Vector {
         type Output = <Vector as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Odd> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for &Vector {
@@ -6213,11 +7256,51 @@ pub mod g2 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Odd> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for Vector {
+        type Output = <Vector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Odd> for &Vector {
         type Output = <Vector as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Odd> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for Vector {
+        type Output = <Vector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Odd> for Vector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Odd) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Odd> for Vector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Odd) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Multivector> for &Vector {
@@ -6227,11 +7310,39 @@ pub mod g2 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for Vector {
+        type Output = <Vector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Multivector> for &Vector {
         type Output = <Vector as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for &Vector {
@@ -6241,11 +7352,39 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Multivector> for &Vector {
         type Output = <Vector as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for Vector {
+        type Output = <Vector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for &Vector {
@@ -6255,11 +7394,39 @@ pub mod g2 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for Vector {
+        type Output = <Vector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&f64> for &Bivector {
         type Output = <Bivector as ::core::ops::Mul<f64>>::Output;
         #[inline]
         fn mul(self, rhs: &f64) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<f64> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&f64> for &Bivector {
@@ -6269,11 +7436,39 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<f64> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&f64> for &Bivector {
         type Output = <Bivector as ::core::ops::BitOr<f64>>::Output;
         #[inline]
         fn bitor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<f64> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&f64> for &Bivector {
@@ -6283,11 +7478,39 @@ pub mod g2 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<f64> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: f64) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&f64> for &Bivector {
         type Output = <Bivector as ::core::ops::Sub<f64>>::Output;
         #[inline]
         fn sub(self, rhs: &f64) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<f64> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Vector> for &Bivector {
@@ -6297,11 +7520,39 @@ pub mod g2 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Vector> for &Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for &Bivector {
@@ -6311,11 +7562,39 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Vector> for &Bivector {
         type Output = <Bivector as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for &Bivector {
@@ -6325,11 +7604,39 @@ pub mod g2 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Bivector> for &Bivector {
         type Output = <Bivector as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for &Bivector {
@@ -6339,11 +7646,39 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Bivector> for &Bivector {
         type Output = <Bivector as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for &Bivector {
@@ -6353,11 +7688,51 @@ pub mod g2 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Bivector> for &Bivector {
         type Output = <Bivector as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Bivector> for Bivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Bivector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Bivector> for Bivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Bivector) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Even> for &Bivector {
@@ -6367,11 +7742,39 @@ pub mod g2 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Even> for &Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for &Bivector {
@@ -6381,11 +7784,39 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Even> for &Bivector {
         type Output = <Bivector as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for &Bivector {
@@ -6395,11 +7826,39 @@ pub mod g2 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Odd> for &Bivector {
         type Output = <Bivector as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for &Bivector {
@@ -6409,11 +7868,39 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Odd> for &Bivector {
         type Output = <Bivector as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for &Bivector {
@@ -6423,11 +7910,39 @@ pub mod g2 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Odd> for &Bivector {
         type Output = <Bivector as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Multivector> for &Bivector {
@@ -6437,11 +7952,39 @@ pub mod g2 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Multivector> for &Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for &Bivector {
@@ -6451,11 +7994,39 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Multivector> for &Bivector {
         type Output = <Bivector as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for &Bivector {
@@ -6465,11 +8036,39 @@ pub mod g2 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&f64> for &Even {
         type Output = <Even as ::core::ops::Mul<f64>>::Output;
         #[inline]
         fn mul(self, rhs: &f64) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<f64> for &Even {
+        type Output = <Even as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for Even {
+        type Output = <Even as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&f64> for &Even {
@@ -6479,11 +8078,39 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<f64> for &Even {
+        type Output = <Even as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for Even {
+        type Output = <Even as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&f64> for &Even {
         type Output = <Even as ::core::ops::BitOr<f64>>::Output;
         #[inline]
         fn bitor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<f64> for &Even {
+        type Output = <Even as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for Even {
+        type Output = <Even as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&f64> for &Even {
@@ -6493,11 +8120,51 @@ pub mod g2 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<f64> for &Even {
+        type Output = <Even as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: f64) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for Even {
+        type Output = <Even as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&f64> for &Even {
         type Output = <Even as ::core::ops::Sub<f64>>::Output;
         #[inline]
         fn sub(self, rhs: &f64) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<f64> for &Even {
+        type Output = <Even as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for Even {
+        type Output = <Even as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&f64> for Even {
+        #[inline]
+        fn add_assign(&mut self, rhs: &f64) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&f64> for Even {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &f64) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Vector> for &Even {
@@ -6507,11 +8174,39 @@ pub mod g2 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Vector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for Even {
+        type Output = <Even as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Vector> for &Even {
         type Output = <Even as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Vector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for Even {
+        type Output = <Even as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for &Even {
@@ -6521,11 +8216,39 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Vector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for Even {
+        type Output = <Even as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Vector> for &Even {
         type Output = <Even as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Vector> for &Even {
+        type Output = <Even as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for Even {
+        type Output = <Even as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for &Even {
@@ -6535,11 +8258,39 @@ pub mod g2 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Vector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for Even {
+        type Output = <Even as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Bivector> for &Even {
         type Output = <Even as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Bivector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for Even {
+        type Output = <Even as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for &Even {
@@ -6549,11 +8300,39 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Bivector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for Even {
+        type Output = <Even as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Bivector> for &Even {
         type Output = <Even as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Bivector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for Even {
+        type Output = <Even as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for &Even {
@@ -6563,11 +8342,51 @@ pub mod g2 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Bivector> for &Even {
+        type Output = <Even as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for Even {
+        type Output = <Even as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Bivector> for &Even {
         type Output = <Even as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Bivector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for Even {
+        type Output = <Even as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Bivector> for Even {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Bivector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Bivector> for Even {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Bivector) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Even> for &Even {
@@ -6577,11 +8396,39 @@ pub mod g2 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Even> for &Even {
+        type Output = <Even as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for Even {
+        type Output = <Even as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Even> for &Even {
         type Output = <Even as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Even> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for Even {
+        type Output = <Even as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for &Even {
@@ -6591,11 +8438,39 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Even> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for Even {
+        type Output = <Even as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Even> for &Even {
         type Output = <Even as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Even> for &Even {
+        type Output = <Even as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for Even {
+        type Output = <Even as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for &Even {
@@ -6605,11 +8480,51 @@ pub mod g2 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Even> for &Even {
+        type Output = <Even as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for Even {
+        type Output = <Even as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Even> for Even {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Even) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Even> for Even {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Even) {
+            *self -= *rhs;
+        }
+    }
     impl ::core::ops::Mul<&Odd> for &Even {
         type Output = <Even as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Odd> for &Even {
+        type Output = <Even as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for Even {
+        type Output = <Even as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for &Even {
@@ -6619,11 +8534,39 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Odd> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for Even {
+        type Output = <Even as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Odd> for &Even {
         type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Odd> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for Even {
+        type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for &Even {
@@ -6633,11 +8576,39 @@ pub mod g2 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Odd> for &Even {
+        type Output = <Even as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for Even {
+        type Output = <Even as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Odd> for &Even {
         type Output = <Even as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Odd> for &Even {
+        type Output = <Even as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for Even {
+        type Output = <Even as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Multivector> for &Even {
@@ -6647,11 +8618,39 @@ pub mod g2 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Multivector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for Even {
+        type Output = <Even as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Multivector> for &Even {
         type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Multivector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for Even {
+        type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for &Even {
@@ -6661,11 +8660,39 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Multivector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for Even {
+        type Output = <Even as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Multivector> for &Even {
         type Output = <Even as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Multivector> for &Even {
+        type Output = <Even as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for Even {
+        type Output = <Even as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for &Even {
@@ -6675,11 +8702,39 @@ pub mod g2 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Multivector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for Even {
+        type Output = <Even as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&f64> for &Odd {
         type Output = <Odd as ::core::ops::Mul<f64>>::Output;
         #[inline]
         fn mul(self, rhs: &f64) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<f64> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for Odd {
+        type Output = <Odd as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&f64> for &Odd {
@@ -6689,11 +8744,39 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<f64> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&f64> for &Odd {
         type Output = <Odd as ::core::ops::BitOr<f64>>::Output;
         #[inline]
         fn bitor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<f64> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&f64> for &Odd {
@@ -6703,11 +8786,39 @@ pub mod g2 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<f64> for &Odd {
+        type Output = <Odd as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: f64) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for Odd {
+        type Output = <Odd as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&f64> for &Odd {
         type Output = <Odd as ::core::ops::Sub<f64>>::Output;
         #[inline]
         fn sub(self, rhs: &f64) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<f64> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for Odd {
+        type Output = <Odd as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Vector> for &Odd {
@@ -6717,11 +8828,39 @@ pub mod g2 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Vector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for Odd {
+        type Output = <Odd as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Vector> for &Odd {
         type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Vector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for &Odd {
@@ -6731,11 +8870,39 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Vector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Vector> for &Odd {
         type Output = <Odd as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Vector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for Odd {
+        type Output = <Odd as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for &Odd {
@@ -6745,11 +8912,51 @@ pub mod g2 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Vector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for Odd {
+        type Output = <Odd as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Vector> for Odd {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Vector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Vector> for Odd {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Vector) {
+            *self -= *rhs;
+        }
+    }
     impl ::core::ops::Mul<&Bivector> for &Odd {
         type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for Odd {
+        type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for &Odd {
@@ -6759,11 +8966,39 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Bivector> for &Odd {
         type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for &Odd {
@@ -6773,11 +9008,39 @@ pub mod g2 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for Odd {
+        type Output = <Odd as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Bivector> for &Odd {
         type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for Odd {
+        type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Even> for &Odd {
@@ -6787,11 +9050,39 @@ pub mod g2 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Even> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for Odd {
+        type Output = <Odd as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Even> for &Odd {
         type Output = <Odd as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Even> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for &Odd {
@@ -6801,11 +9092,39 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Even> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Even> for &Odd {
         type Output = <Odd as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Even> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for Odd {
+        type Output = <Odd as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for &Odd {
@@ -6815,11 +9134,39 @@ pub mod g2 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Even> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for Odd {
+        type Output = <Odd as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Odd> for &Odd {
         type Output = <Odd as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Odd> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for Odd {
+        type Output = <Odd as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for &Odd {
@@ -6829,11 +9176,39 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Odd> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Odd> for &Odd {
         type Output = <Odd as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Odd> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for &Odd {
@@ -6843,11 +9218,51 @@ pub mod g2 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Odd> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for Odd {
+        type Output = <Odd as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Odd> for &Odd {
         type Output = <Odd as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Odd> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for Odd {
+        type Output = <Odd as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Odd> for Odd {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Odd) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Odd> for Odd {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Odd) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Multivector> for &Odd {
@@ -6857,11 +9272,39 @@ pub mod g2 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for Odd {
+        type Output = <Odd as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Multivector> for &Odd {
         type Output = <Odd as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for &Odd {
@@ -6871,11 +9314,39 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Multivector> for &Odd {
         type Output = <Odd as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for Odd {
+        type Output = <Odd as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for &Odd {
@@ -6885,11 +9356,39 @@ pub mod g2 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for Odd {
+        type Output = <Odd as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&f64> for &Multivector {
         type Output = <Multivector as ::core::ops::Mul<f64>>::Output;
         #[inline]
         fn mul(self, rhs: &f64) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<f64> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&f64> for &Multivector {
@@ -6899,11 +9398,39 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<f64> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&f64> for &Multivector {
         type Output = <Multivector as ::core::ops::BitOr<f64>>::Output;
         #[inline]
         fn bitor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<f64> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&f64> for &Multivector {
@@ -6913,11 +9440,51 @@ pub mod g2 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<f64> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: f64) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&f64> for &Multivector {
         type Output = <Multivector as ::core::ops::Sub<f64>>::Output;
         #[inline]
         fn sub(self, rhs: &f64) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<f64> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&f64> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &f64) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&f64> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &f64) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Vector> for &Multivector {
@@ -6927,11 +9494,39 @@ pub mod g2 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Vector> for &Multivector {
         type Output = <Multivector as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for &Multivector {
@@ -6941,11 +9536,39 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Vector> for &Multivector {
         type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for &Multivector {
@@ -6955,11 +9578,51 @@ pub mod g2 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Vector> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Vector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Vector> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Vector) {
+            *self -= *rhs;
+        }
+    }
     impl ::core::ops::Mul<&Bivector> for &Multivector {
         type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for &Multivector {
@@ -6969,11 +9632,39 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Bivector> for &Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for &Multivector {
@@ -6983,11 +9674,51 @@ pub mod g2 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Bivector> for &Multivector {
         type Output = <Multivector as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Bivector> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Bivector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Bivector> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Bivector) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Even> for &Multivector {
@@ -6997,11 +9728,39 @@ pub mod g2 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Even> for &Multivector {
         type Output = <Multivector as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for &Multivector {
@@ -7011,11 +9770,39 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Even> for &Multivector {
         type Output = <Multivector as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for &Multivector {
@@ -7025,11 +9812,51 @@ pub mod g2 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Even> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Even) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Even> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Even) {
+            *self -= *rhs;
+        }
+    }
     impl ::core::ops::Mul<&Odd> for &Multivector {
         type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for &Multivector {
@@ -7039,11 +9866,39 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Odd> for &Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for &Multivector {
@@ -7053,11 +9908,51 @@ pub mod g2 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Odd> for &Multivector {
         type Output = <Multivector as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Odd> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Odd) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Odd> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Odd) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Multivector> for &Multivector {
@@ -7067,11 +9962,39 @@ pub mod g2 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Multivector> for &Multivector {
         type Output = <Multivector as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for &Multivector {
@@ -7081,11 +10004,39 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Multivector> for &Multivector {
         type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for &Multivector {
@@ -7095,11 +10046,70 @@ pub mod g2 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Multivector> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Multivector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Multivector> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Multivector) {
+            *self -= *rhs;
+        }
+    }
     impl ::core::ops::Neg for &Vector {
         type Output = Vector;
         #[inline]
         fn neg(self) -> Vector {
             -*self
+        }
+    }
+    impl ::core::ops::Div<f64> for &Vector {
+        type Output = Vector;
+        #[inline]
+        fn div(self, rhs: f64) -> Vector {
+            *self / rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for Vector {
+        type Output = Vector;
+        #[inline]
+        fn div(self, rhs: &f64) -> Vector {
+            self / *rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for &Vector {
+        type Output = Vector;
+        #[inline]
+        fn div(self, rhs: &f64) -> Vector {
+            *self / *rhs
+        }
+    }
+    impl ::core::ops::MulAssign<&f64> for Vector {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &f64) {
+            *self *= *rhs;
+        }
+    }
+    impl ::core::ops::DivAssign<&f64> for Vector {
+        #[inline]
+        fn div_assign(&mut self, rhs: &f64) {
+            *self /= *rhs;
         }
     }
     impl ::core::ops::Neg for &Bivector {
@@ -7109,11 +10119,83 @@ pub mod g2 {
             -*self
         }
     }
+    impl ::core::ops::Div<f64> for &Bivector {
+        type Output = Bivector;
+        #[inline]
+        fn div(self, rhs: f64) -> Bivector {
+            *self / rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for Bivector {
+        type Output = Bivector;
+        #[inline]
+        fn div(self, rhs: &f64) -> Bivector {
+            self / *rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for &Bivector {
+        type Output = Bivector;
+        #[inline]
+        fn div(self, rhs: &f64) -> Bivector {
+            *self / *rhs
+        }
+    }
+    impl ::core::ops::MulAssign<&f64> for Bivector {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &f64) {
+            *self *= *rhs;
+        }
+    }
+    impl ::core::ops::DivAssign<&f64> for Bivector {
+        #[inline]
+        fn div_assign(&mut self, rhs: &f64) {
+            *self /= *rhs;
+        }
+    }
     impl ::core::ops::Neg for &Even {
         type Output = Even;
         #[inline]
         fn neg(self) -> Even {
             -*self
+        }
+    }
+    impl ::core::ops::Div<f64> for &Even {
+        type Output = Even;
+        #[inline]
+        fn div(self, rhs: f64) -> Even {
+            *self / rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for Even {
+        type Output = Even;
+        #[inline]
+        fn div(self, rhs: &f64) -> Even {
+            self / *rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for &Even {
+        type Output = Even;
+        #[inline]
+        fn div(self, rhs: &f64) -> Even {
+            *self / *rhs
+        }
+    }
+    impl ::core::ops::MulAssign<&f64> for Even {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &f64) {
+            *self *= *rhs;
+        }
+    }
+    impl ::core::ops::DivAssign<&f64> for Even {
+        #[inline]
+        fn div_assign(&mut self, rhs: &f64) {
+            *self /= *rhs;
+        }
+    }
+    impl ::core::ops::MulAssign<&Even> for Even {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &Even) {
+            *self *= *rhs;
         }
     }
     impl ::core::ops::Neg for &Odd {
@@ -7123,11 +10205,83 @@ pub mod g2 {
             -*self
         }
     }
+    impl ::core::ops::Div<f64> for &Odd {
+        type Output = Odd;
+        #[inline]
+        fn div(self, rhs: f64) -> Odd {
+            *self / rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for Odd {
+        type Output = Odd;
+        #[inline]
+        fn div(self, rhs: &f64) -> Odd {
+            self / *rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for &Odd {
+        type Output = Odd;
+        #[inline]
+        fn div(self, rhs: &f64) -> Odd {
+            *self / *rhs
+        }
+    }
+    impl ::core::ops::MulAssign<&f64> for Odd {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &f64) {
+            *self *= *rhs;
+        }
+    }
+    impl ::core::ops::DivAssign<&f64> for Odd {
+        #[inline]
+        fn div_assign(&mut self, rhs: &f64) {
+            *self /= *rhs;
+        }
+    }
     impl ::core::ops::Neg for &Multivector {
         type Output = Multivector;
         #[inline]
         fn neg(self) -> Multivector {
             -*self
+        }
+    }
+    impl ::core::ops::Div<f64> for &Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn div(self, rhs: f64) -> Multivector {
+            *self / rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn div(self, rhs: &f64) -> Multivector {
+            self / *rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for &Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn div(self, rhs: &f64) -> Multivector {
+            *self / *rhs
+        }
+    }
+    impl ::core::ops::MulAssign<&f64> for Multivector {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &f64) {
+            *self *= *rhs;
+        }
+    }
+    impl ::core::ops::DivAssign<&f64> for Multivector {
+        #[inline]
+        fn div_assign(&mut self, rhs: &f64) {
+            *self /= *rhs;
+        }
+    }
+    impl ::core::ops::MulAssign<&Multivector> for Multivector {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &Multivector) {
+            *self *= *rhs;
         }
     }
     impl ::core::ops::Div<Vector> for f64 {

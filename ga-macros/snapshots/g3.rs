@@ -7911,13 +7911,17 @@ pub mod g3 {
     /// The versor product: `v x ~v` for even `v`, `v x^ ~v` for odd `v` (x^ the grade
     /// involution), in the form the generator's cost model picks (a quadratic form with
     /// like terms collected, or commutators). Returns `x`'s own type; exact for any
-    /// versor, so the result is scaled by |v|^2 when `v` is not unit.
+    /// versor, so the result is scaled by |v|^2 when `v` is not unit. Either side may
+    /// be a reference (`r.sandwich(&v)`, as glam's `q * &v`).
     pub trait Sandwich<X> {
+        /// `x`'s own type (the referenced type when `x` is a reference).
+        type Output;
         /// `v x ~v` (even `v`) or `v x^ ~v` (odd `v`).
         #[must_use]
-        fn sandwich(self, x: X) -> X;
+        fn sandwich(self, x: X) -> Self::Output;
     }
     impl Sandwich<Vector> for Vector {
+        type Output = Vector;
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
             let two_e1 = self.e1 + self.e1;
@@ -7936,7 +7940,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Vector> for Vector {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: &Vector) -> Vector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Vector> for &Vector {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: Vector) -> Vector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Vector> for &Vector {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: &Vector) -> Vector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Bivector> for Vector {
+        type Output = Bivector;
         #[inline]
         fn sandwich(self, x: Bivector) -> Bivector {
             let two_e1 = self.e1 + self.e1;
@@ -7956,7 +7982,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Bivector> for Vector {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: &Bivector) -> Bivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Bivector> for &Vector {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: Bivector) -> Bivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Bivector> for &Vector {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: &Bivector) -> Bivector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Trivector> for Vector {
+        type Output = Trivector;
         #[inline]
         fn sandwich(self, x: Trivector) -> Trivector {
             let e1_e1 = self.e1 * self.e1;
@@ -7967,7 +8015,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Trivector> for Vector {
+        type Output = Trivector;
+        #[inline]
+        fn sandwich(self, x: &Trivector) -> Trivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Trivector> for &Vector {
+        type Output = Trivector;
+        #[inline]
+        fn sandwich(self, x: Trivector) -> Trivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Trivector> for &Vector {
+        type Output = Trivector;
+        #[inline]
+        fn sandwich(self, x: &Trivector) -> Trivector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Even> for Vector {
+        type Output = Even;
         #[inline]
         fn sandwich(self, x: Even) -> Even {
             let two_e1 = self.e1 + self.e1;
@@ -7989,7 +8059,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Even> for Vector {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: &Even) -> Even {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Even> for &Vector {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: Even) -> Even {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Even> for &Vector {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: &Even) -> Even {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Odd> for Vector {
+        type Output = Odd;
         #[inline]
         fn sandwich(self, x: Odd) -> Odd {
             let two_e1 = self.e1 + self.e1;
@@ -8010,7 +8102,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Odd> for Vector {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: &Odd) -> Odd {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Odd> for &Vector {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: Odd) -> Odd {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Odd> for &Vector {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: &Odd) -> Odd {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Multivector> for Vector {
+        type Output = Multivector;
         #[inline]
         fn sandwich(self, x: Multivector) -> Multivector {
             let two_e1 = self.e1 + self.e1;
@@ -8040,6 +8154,27 @@ pub mod g3 {
                     - e3_e3_minus_e1_e1_minus_e2_e2 * x.e23,
                 e123: -(e3_e3_plus_e1_e1_plus_e2_e2) * x.e123,
             }
+        }
+    }
+    impl Sandwich<&Multivector> for Vector {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: &Multivector) -> Multivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Multivector> for &Vector {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: Multivector) -> Multivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Multivector> for &Vector {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: &Multivector) -> Multivector {
+            Sandwich::sandwich(*self, *x)
         }
     }
     impl Vector {
@@ -8080,6 +8215,7 @@ pub mod g3 {
         }
     }
     impl Sandwich<Vector> for Even {
+        type Output = Vector;
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
             let two_s = self.s + self.s;
@@ -8108,7 +8244,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Vector> for Even {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: &Vector) -> Vector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Vector> for &Even {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: Vector) -> Vector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Vector> for &Even {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: &Vector) -> Vector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Bivector> for Even {
+        type Output = Bivector;
         #[inline]
         fn sandwich(self, x: Bivector) -> Bivector {
             let two_s = self.s + self.s;
@@ -8137,7 +8295,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Bivector> for Even {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: &Bivector) -> Bivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Bivector> for &Even {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: Bivector) -> Bivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Bivector> for &Even {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: &Bivector) -> Bivector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Trivector> for Even {
+        type Output = Trivector;
         #[inline]
         fn sandwich(self, x: Trivector) -> Trivector {
             let s_s = self.s * self.s;
@@ -8149,7 +8329,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Trivector> for Even {
+        type Output = Trivector;
+        #[inline]
+        fn sandwich(self, x: &Trivector) -> Trivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Trivector> for &Even {
+        type Output = Trivector;
+        #[inline]
+        fn sandwich(self, x: Trivector) -> Trivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Trivector> for &Even {
+        type Output = Trivector;
+        #[inline]
+        fn sandwich(self, x: &Trivector) -> Trivector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Even> for Even {
+        type Output = Even;
         #[inline]
         fn sandwich(self, x: Even) -> Even {
             let two_s = self.s + self.s;
@@ -8181,7 +8383,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Even> for Even {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: &Even) -> Even {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Even> for &Even {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: Even) -> Even {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Even> for &Even {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: &Even) -> Even {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Odd> for Even {
+        type Output = Odd;
         #[inline]
         fn sandwich(self, x: Odd) -> Odd {
             let two_s = self.s + self.s;
@@ -8213,7 +8437,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Odd> for Even {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: &Odd) -> Odd {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Odd> for &Even {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: Odd) -> Odd {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Odd> for &Even {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: &Odd) -> Odd {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Multivector> for Even {
+        type Output = Multivector;
         #[inline]
         fn sandwich(self, x: Multivector) -> Multivector {
             let two_s = self.s + self.s;
@@ -8259,6 +8505,27 @@ pub mod g3 {
                     + shared_1 * x.e23,
                 e123: shared_4 * x.e123,
             }
+        }
+    }
+    impl Sandwich<&Multivector> for Even {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: &Multivector) -> Multivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Multivector> for &Even {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: Multivector) -> Multivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Multivector> for &Even {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: &Multivector) -> Multivector {
+            Sandwich::sandwich(*self, *x)
         }
     }
     impl Even {
@@ -8313,6 +8580,7 @@ pub mod g3 {
         }
     }
     impl Sandwich<Vector> for Odd {
+        type Output = Vector;
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
             let two_e1 = self.e1 + self.e1;
@@ -8341,7 +8609,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Vector> for Odd {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: &Vector) -> Vector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Vector> for &Odd {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: Vector) -> Vector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Vector> for &Odd {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: &Vector) -> Vector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Bivector> for Odd {
+        type Output = Bivector;
         #[inline]
         fn sandwich(self, x: Bivector) -> Bivector {
             let two_e1 = self.e1 + self.e1;
@@ -8370,7 +8660,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Bivector> for Odd {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: &Bivector) -> Bivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Bivector> for &Odd {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: Bivector) -> Bivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Bivector> for &Odd {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: &Bivector) -> Bivector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Trivector> for Odd {
+        type Output = Trivector;
         #[inline]
         fn sandwich(self, x: Trivector) -> Trivector {
             let e1_e1 = self.e1 * self.e1;
@@ -8382,7 +8694,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Trivector> for Odd {
+        type Output = Trivector;
+        #[inline]
+        fn sandwich(self, x: &Trivector) -> Trivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Trivector> for &Odd {
+        type Output = Trivector;
+        #[inline]
+        fn sandwich(self, x: Trivector) -> Trivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Trivector> for &Odd {
+        type Output = Trivector;
+        #[inline]
+        fn sandwich(self, x: &Trivector) -> Trivector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Even> for Odd {
+        type Output = Even;
         #[inline]
         fn sandwich(self, x: Even) -> Even {
             let two_e1 = self.e1 + self.e1;
@@ -8414,7 +8748,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Even> for Odd {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: &Even) -> Even {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Even> for &Odd {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: Even) -> Even {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Even> for &Odd {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: &Even) -> Even {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Odd> for Odd {
+        type Output = Odd;
         #[inline]
         fn sandwich(self, x: Odd) -> Odd {
             let two_e1 = self.e1 + self.e1;
@@ -8446,7 +8802,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Odd> for Odd {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: &Odd) -> Odd {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Odd> for &Odd {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: Odd) -> Odd {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Odd> for &Odd {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: &Odd) -> Odd {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Multivector> for Odd {
+        type Output = Multivector;
         #[inline]
         fn sandwich(self, x: Multivector) -> Multivector {
             let two_e1 = self.e1 + self.e1;
@@ -8492,6 +8870,27 @@ pub mod g3 {
                     + shared_1 * x.e23,
                 e123: -(shared_4) * x.e123,
             }
+        }
+    }
+    impl Sandwich<&Multivector> for Odd {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: &Multivector) -> Multivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Multivector> for &Odd {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: Multivector) -> Multivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Multivector> for &Odd {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: &Multivector) -> Multivector {
+            Sandwich::sandwich(*self, *x)
         }
     }
     impl Odd {
@@ -8656,22 +9055,43 @@ pub mod g3 {
             }
         }
     }
-    /// Writes `1 + 2e1 - 0.5e12`: each non-zero component with its blade (the scalar
-    /// without one), honouring the formatter's precision; at a precision `p`, terms
-    /// that would print as zero are left out. Zero prints as `0`.
+    /// Writes `1 + 2 e1 - 0.5 e12`: each non-zero component, a space, its blade (the
+    /// scalar without one; the space keeps `1 e12` apart from ten to the twelfth),
+    /// honouring the formatter's precision; at a precision `p`, terms that would print
+    /// as zero are left out. Magnitudes below `1e-5` or from `1e16` print in exponent
+    /// form (`5e-324`, not 324 digits), except below `1e-5` at a precision, where the
+    /// fixed form shows what rounds away. Zero prints as `0`.
     fn display_terms(
         f: &mut ::core::fmt::Formatter<'_>,
         terms: &[(f64, &str)],
     ) -> ::core::fmt::Result {
-        let threshold: f64 = match f.precision() {
-            Some(p) => (0..p.min(400)).fold(0.5, |t, _| t / 10.0),
-            None => 0.0,
-        };
+        /// Notes whether a non-zero digit is written: a term "prints as zero" exactly
+        /// when the formatter's own rounding leaves none (no buffer, so `no_std`).
+        struct NonZeroDigit(bool);
+        impl ::core::fmt::Write for NonZeroDigit {
+            fn write_str(&mut self, s: &str) -> ::core::fmt::Result {
+                self.0 |= s.bytes().any(|b| (b'1'..=b'9').contains(&b));
+                Ok(())
+            }
+        }
         let mut first = true;
         for &(value, blade) in terms {
             let magnitude = value.abs();
-            if magnitude <= threshold {
+            if magnitude == 0.0 {
                 continue;
+            }
+            let large = magnitude >= 1e16 && magnitude.is_finite();
+            let small = magnitude < 1e-5;
+            let exponent = large || (small && f.precision().is_none());
+            if let (Some(p), false) = (
+                f.precision(),
+                exponent || !magnitude.is_finite(),
+            ) {
+                let mut digits = NonZeroDigit(false);
+                ::core::fmt::write(&mut digits, format_args!("{:.*}", p, magnitude))?;
+                if !digits.0 {
+                    continue;
+                }
             }
             let negative = value.is_sign_negative() && !value.is_nan();
             match (first, negative) {
@@ -8680,9 +9100,14 @@ pub mod g3 {
                 (false, true) => f.write_str(" - ")?,
                 (false, false) => f.write_str(" + ")?,
             }
-            match f.precision() {
-                Some(p) => write!(f, "{:.*}{}", p, magnitude, blade)?,
-                None => write!(f, "{}{}", magnitude, blade)?,
+            match (f.precision(), exponent) {
+                (Some(p), true) => write!(f, "{:.*e}", p, magnitude)?,
+                (Some(p), false) => write!(f, "{:.*}", p, magnitude)?,
+                (None, true) => write!(f, "{:e}", magnitude)?,
+                (None, false) => write!(f, "{}", magnitude)?,
+            }
+            if !blade.is_empty() {
+                write!(f, " {}", blade)?;
             }
             first = false;
         }
@@ -9286,11 +9711,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Vector> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for f64 {
+        type Output = <f64 as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Vector> for &f64 {
         type Output = <f64 as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Vector> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for f64 {
+        type Output = <f64 as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for &f64 {
@@ -9300,11 +9753,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Vector> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for f64 {
+        type Output = <f64 as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Vector> for &f64 {
         type Output = <f64 as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Vector> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for f64 {
+        type Output = <f64 as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for &f64 {
@@ -9314,11 +9795,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Vector> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for f64 {
+        type Output = <f64 as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Bivector> for &f64 {
         type Output = <f64 as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Bivector> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for f64 {
+        type Output = <f64 as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for &f64 {
@@ -9328,11 +9837,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Bivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for f64 {
+        type Output = <f64 as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Bivector> for &f64 {
         type Output = <f64 as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Bivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for f64 {
+        type Output = <f64 as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for &f64 {
@@ -9342,11 +9879,39 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Bivector> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for f64 {
+        type Output = <f64 as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Bivector> for &f64 {
         type Output = <f64 as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Bivector> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for f64 {
+        type Output = <f64 as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Trivector> for &f64 {
@@ -9356,11 +9921,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Trivector> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for f64 {
+        type Output = <f64 as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Trivector> for &f64 {
         type Output = <f64 as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Trivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for f64 {
+        type Output = <f64 as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for &f64 {
@@ -9370,11 +9963,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Trivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for f64 {
+        type Output = <f64 as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Trivector> for &f64 {
         type Output = <f64 as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Trivector> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for f64 {
+        type Output = <f64 as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for &f64 {
@@ -9384,11 +10005,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Trivector> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for f64 {
+        type Output = <f64 as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Even> for &f64 {
         type Output = <f64 as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Even> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for f64 {
+        type Output = <f64 as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for &f64 {
@@ -9398,11 +10047,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Even> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for f64 {
+        type Output = <f64 as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Even> for &f64 {
         type Output = <f64 as ::core::ops::BitOr<Even>>::Output;
         #[inline]
         fn bitor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Even> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for f64 {
+        type Output = <f64 as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Even> for &f64 {
@@ -9412,11 +10089,39 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Even> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for f64 {
+        type Output = <f64 as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Even> for &f64 {
         type Output = <f64 as ::core::ops::Sub<Even>>::Output;
         #[inline]
         fn sub(self, rhs: &Even) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Even> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for f64 {
+        type Output = <f64 as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Odd> for &f64 {
@@ -9426,11 +10131,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Odd> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for f64 {
+        type Output = <f64 as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Odd> for &f64 {
         type Output = <f64 as ::core::ops::BitXor<Odd>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Odd> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for f64 {
+        type Output = <f64 as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Odd> for &f64 {
@@ -9440,11 +10173,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Odd> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for f64 {
+        type Output = <f64 as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Odd> for &f64 {
         type Output = <f64 as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Odd> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for f64 {
+        type Output = <f64 as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for &f64 {
@@ -9454,11 +10215,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Odd> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for f64 {
+        type Output = <f64 as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Multivector> for &f64 {
         type Output = <f64 as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Multivector> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for f64 {
+        type Output = <f64 as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for &f64 {
@@ -9468,11 +10257,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Multivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for f64 {
+        type Output = <f64 as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Multivector> for &f64 {
         type Output = <f64 as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Multivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for f64 {
+        type Output = <f64 as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Multivector> for &f64 {
@@ -9482,11 +10299,39 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Multivector> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for f64 {
+        type Output = <f64 as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Multivector> for &f64 {
         type Output = <f64 as ::core::ops::Sub<Multivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Multivector> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for f64 {
+        type Output = <f64 as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&f64> for &Vector {
@@ -9496,11 +10341,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<f64> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for Vector {
+        type Output = <Vector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&f64> for &Vector {
         type Output = <Vector as ::core::ops::BitXor<f64>>::Output;
         #[inline]
         fn bitxor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<f64> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&f64> for &Vector {
@@ -9510,11 +10383,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<f64> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&f64> for &Vector {
         type Output = <Vector as ::core::ops::Add<f64>>::Output;
         #[inline]
         fn add(self, rhs: &f64) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<f64> for &Vector {
+        type Output = <Vector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: f64) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for Vector {
+        type Output = <Vector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&f64> for &Vector {
@@ -9524,11 +10425,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<f64> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for Vector {
+        type Output = <Vector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Vector> for &Vector {
         type Output = <Vector as ::core::ops::Mul<Vector>>::Output;
         #[inline]
         fn mul(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Vector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for Vector {
+        type Output = <Vector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Vector> for &Vector {
@@ -9538,11 +10467,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Vector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Vector> for &Vector {
         type Output = <Vector as ::core::ops::BitOr<Vector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Vector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Vector> for &Vector {
@@ -9552,11 +10509,51 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Vector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for Vector {
+        type Output = <Vector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Vector> for &Vector {
         type Output = <Vector as ::core::ops::Sub<Vector>>::Output;
         #[inline]
         fn sub(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Vector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for Vector {
+        type Output = <Vector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Vector> for Vector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Vector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Vector> for Vector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Vector) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Bivector> for &Vector {
@@ -9566,11 +10563,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for Vector {
+        type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Bivector> for &Vector {
         type Output = <Vector as ::core::ops::BitXor<Bivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Bivector> for &Vector {
@@ -9580,11 +10605,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Bivector> for &Vector {
         type Output = <Vector as ::core::ops::Add<Bivector>>::Output;
         #[inline]
         fn add(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for Vector {
+        type Output = <Vector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Bivector> for &Vector {
@@ -9594,11 +10647,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for Vector {
+        type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Trivector> for &Vector {
         type Output = <Vector as ::core::ops::Mul<Trivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for Vector {
+        type Output = <Vector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Trivector> for &Vector {
@@ -9608,11 +10689,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Trivector> for &Vector {
         type Output = <Vector as ::core::ops::BitOr<Trivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Trivector> for &Vector {
@@ -9622,11 +10731,39 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for Vector {
+        type Output = <Vector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Trivector> for &Vector {
         type Output = <Vector as ::core::ops::Sub<Trivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for Vector {
+        type Output = <Vector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Even> for &Vector {
@@ -9636,11 +10773,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Even> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for Vector {
+        type Output = <Vector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Even> for &Vector {
         type Output = <Vector as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Even> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for &Vector {
@@ -9650,11 +10815,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Even> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Even> for &Vector {
         type Output = <Vector as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Even> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for Vector {
+        type Output = <Vector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for &Vector {
@@ -9664,11 +10857,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Even> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for Vector {
+        type Output = <Vector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Odd> for &Vector {
         type Output = <Vector as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Odd> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for Vector {
+        type Output = <Vector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for &Vector {
@@ -9678,11 +10899,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Odd> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Odd> for &Vector {
         type Output = <Vector as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Odd> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for &Vector {
@@ -9692,11 +10941,39 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Odd> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for Vector {
+        type Output = <Vector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Odd> for &Vector {
         type Output = <Vector as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Odd> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for Vector {
+        type Output = <Vector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Multivector> for &Vector {
@@ -9706,11 +10983,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for Vector {
+        type Output = <Vector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Multivector> for &Vector {
         type Output = <Vector as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for &Vector {
@@ -9720,11 +11025,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Multivector> for &Vector {
         type Output = <Vector as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for Vector {
+        type Output = <Vector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for &Vector {
@@ -9734,11 +11067,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for Vector {
+        type Output = <Vector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&f64> for &Bivector {
         type Output = <Bivector as ::core::ops::Mul<f64>>::Output;
         #[inline]
         fn mul(self, rhs: &f64) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<f64> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&f64> for &Bivector {
@@ -9748,11 +11109,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<f64> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&f64> for &Bivector {
         type Output = <Bivector as ::core::ops::BitOr<f64>>::Output;
         #[inline]
         fn bitor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<f64> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&f64> for &Bivector {
@@ -9762,11 +11151,39 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<f64> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: f64) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&f64> for &Bivector {
         type Output = <Bivector as ::core::ops::Sub<f64>>::Output;
         #[inline]
         fn sub(self, rhs: &f64) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<f64> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Vector> for &Bivector {
@@ -9776,11 +11193,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Vector> for &Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for &Bivector {
@@ -9790,11 +11235,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Vector> for &Bivector {
         type Output = <Bivector as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for &Bivector {
@@ -9804,11 +11277,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Bivector> for &Bivector {
         type Output = <Bivector as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for &Bivector {
@@ -9818,11 +11319,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Bivector> for &Bivector {
         type Output = <Bivector as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for &Bivector {
@@ -9832,11 +11361,51 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Bivector> for &Bivector {
         type Output = <Bivector as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Bivector> for Bivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Bivector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Bivector> for Bivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Bivector) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Trivector> for &Bivector {
@@ -9846,11 +11415,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Trivector> for &Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for &Bivector {
@@ -9860,11 +11457,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Trivector> for &Bivector {
         type Output = <Bivector as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for &Bivector {
@@ -9874,11 +11499,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Even> for &Bivector {
         type Output = <Bivector as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for &Bivector {
@@ -9888,11 +11541,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Even> for &Bivector {
         type Output = <Bivector as ::core::ops::BitOr<Even>>::Output;
         #[inline]
         fn bitor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Even> for &Bivector {
@@ -9902,11 +11583,39 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Even> for &Bivector {
         type Output = <Bivector as ::core::ops::Sub<Even>>::Output;
         #[inline]
         fn sub(self, rhs: &Even) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Odd> for &Bivector {
@@ -9916,11 +11625,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Odd> for &Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Odd>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Odd> for &Bivector {
@@ -9930,11 +11667,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Odd> for &Bivector {
         type Output = <Bivector as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for &Bivector {
@@ -9944,11 +11709,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Multivector> for &Bivector {
         type Output = <Bivector as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for &Bivector {
@@ -9958,11 +11751,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Multivector> for &Bivector {
         type Output = <Bivector as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Multivector> for &Bivector {
@@ -9972,11 +11793,39 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Multivector> for &Bivector {
         type Output = <Bivector as ::core::ops::Sub<Multivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&f64> for &Trivector {
@@ -9986,11 +11835,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<f64> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for Trivector {
+        type Output = <Trivector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&f64> for &Trivector {
         type Output = <Trivector as ::core::ops::BitXor<f64>>::Output;
         #[inline]
         fn bitxor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<f64> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&f64> for &Trivector {
@@ -10000,11 +11877,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<f64> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&f64> for &Trivector {
         type Output = <Trivector as ::core::ops::Add<f64>>::Output;
         #[inline]
         fn add(self, rhs: &f64) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<f64> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: f64) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for Trivector {
+        type Output = <Trivector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&f64> for &Trivector {
@@ -10014,11 +11919,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<f64> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for Trivector {
+        type Output = <Trivector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Vector> for &Trivector {
         type Output = <Trivector as ::core::ops::Mul<Vector>>::Output;
         #[inline]
         fn mul(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Vector> for &Trivector {
@@ -10028,11 +11961,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Vector> for &Trivector {
         type Output = <Trivector as ::core::ops::BitOr<Vector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Vector> for &Trivector {
@@ -10042,11 +12003,39 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for Trivector {
+        type Output = <Trivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Vector> for &Trivector {
         type Output = <Trivector as ::core::ops::Sub<Vector>>::Output;
         #[inline]
         fn sub(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Bivector> for &Trivector {
@@ -10056,11 +12045,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Bivector> for &Trivector {
         type Output = <Trivector as ::core::ops::BitXor<Bivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Bivector> for &Trivector {
@@ -10070,11 +12087,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Bivector> for &Trivector {
         type Output = <Trivector as ::core::ops::Add<Bivector>>::Output;
         #[inline]
         fn add(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for Trivector {
+        type Output = <Trivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Bivector> for &Trivector {
@@ -10084,11 +12129,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Trivector> for &Trivector {
         type Output = <Trivector as ::core::ops::Mul<Trivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Trivector> for &Trivector {
@@ -10098,11 +12171,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Trivector> for &Trivector {
         type Output = <Trivector as ::core::ops::BitOr<Trivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Trivector> for &Trivector {
@@ -10112,11 +12213,51 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for Trivector {
+        type Output = <Trivector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Trivector> for &Trivector {
         type Output = <Trivector as ::core::ops::Sub<Trivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Trivector> for Trivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Trivector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Trivector> for Trivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Trivector) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Even> for &Trivector {
@@ -10126,11 +12267,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Even> for &Trivector {
         type Output = <Trivector as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for &Trivector {
@@ -10140,11 +12309,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Even> for &Trivector {
         type Output = <Trivector as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for Trivector {
+        type Output = <Trivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for &Trivector {
@@ -10154,11 +12351,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Odd> for &Trivector {
         type Output = <Trivector as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for &Trivector {
@@ -10168,11 +12393,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Odd> for &Trivector {
         type Output = <Trivector as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for &Trivector {
@@ -10182,11 +12435,39 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for Trivector {
+        type Output = <Trivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Odd> for &Trivector {
         type Output = <Trivector as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Multivector> for &Trivector {
@@ -10196,11 +12477,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Multivector> for &Trivector {
         type Output = <Trivector as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for &Trivector {
@@ -10210,11 +12519,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Multivector> for &Trivector {
         type Output = <Trivector as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for Trivector {
+        type Output = <Trivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for &Trivector {
@@ -10224,11 +12561,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&f64> for &Even {
         type Output = <Even as ::core::ops::Mul<f64>>::Output;
         #[inline]
         fn mul(self, rhs: &f64) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<f64> for &Even {
+        type Output = <Even as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for Even {
+        type Output = <Even as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&f64> for &Even {
@@ -10238,11 +12603,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<f64> for &Even {
+        type Output = <Even as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for Even {
+        type Output = <Even as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&f64> for &Even {
         type Output = <Even as ::core::ops::BitOr<f64>>::Output;
         #[inline]
         fn bitor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<f64> for &Even {
+        type Output = <Even as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for Even {
+        type Output = <Even as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&f64> for &Even {
@@ -10252,11 +12645,51 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<f64> for &Even {
+        type Output = <Even as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: f64) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for Even {
+        type Output = <Even as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&f64> for &Even {
         type Output = <Even as ::core::ops::Sub<f64>>::Output;
         #[inline]
         fn sub(self, rhs: &f64) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<f64> for &Even {
+        type Output = <Even as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for Even {
+        type Output = <Even as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&f64> for Even {
+        #[inline]
+        fn add_assign(&mut self, rhs: &f64) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&f64> for Even {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &f64) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Vector> for &Even {
@@ -10266,11 +12699,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Vector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for Even {
+        type Output = <Even as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Vector> for &Even {
         type Output = <Even as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Vector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for Even {
+        type Output = <Even as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for &Even {
@@ -10280,11 +12741,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Vector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for Even {
+        type Output = <Even as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Vector> for &Even {
         type Output = <Even as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Vector> for &Even {
+        type Output = <Even as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for Even {
+        type Output = <Even as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for &Even {
@@ -10294,11 +12783,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Vector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for Even {
+        type Output = <Even as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Bivector> for &Even {
         type Output = <Even as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Bivector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for Even {
+        type Output = <Even as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for &Even {
@@ -10308,11 +12825,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Bivector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for Even {
+        type Output = <Even as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Bivector> for &Even {
         type Output = <Even as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Bivector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for Even {
+        type Output = <Even as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for &Even {
@@ -10322,11 +12867,51 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Bivector> for &Even {
+        type Output = <Even as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for Even {
+        type Output = <Even as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Bivector> for &Even {
         type Output = <Even as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Bivector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for Even {
+        type Output = <Even as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Bivector> for Even {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Bivector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Bivector> for Even {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Bivector) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Trivector> for &Even {
@@ -10336,11 +12921,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Trivector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for Even {
+        type Output = <Even as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Trivector> for &Even {
         type Output = <Even as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Trivector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for Even {
+        type Output = <Even as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for &Even {
@@ -10350,11 +12963,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Trivector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for Even {
+        type Output = <Even as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Trivector> for &Even {
         type Output = <Even as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Trivector> for &Even {
+        type Output = <Even as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for Even {
+        type Output = <Even as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for &Even {
@@ -10364,11 +13005,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Trivector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for Even {
+        type Output = <Even as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Even> for &Even {
         type Output = <Even as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Even> for &Even {
+        type Output = <Even as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for Even {
+        type Output = <Even as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for &Even {
@@ -10378,11 +13047,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Even> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for Even {
+        type Output = <Even as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Even> for &Even {
         type Output = <Even as ::core::ops::BitOr<Even>>::Output;
         #[inline]
         fn bitor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Even> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for Even {
+        type Output = <Even as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Even> for &Even {
@@ -10392,11 +13089,51 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Even> for &Even {
+        type Output = <Even as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for Even {
+        type Output = <Even as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Even> for &Even {
         type Output = <Even as ::core::ops::Sub<Even>>::Output;
         #[inline]
         fn sub(self, rhs: &Even) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Even> for &Even {
+        type Output = <Even as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for Even {
+        type Output = <Even as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Even> for Even {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Even) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Even> for Even {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Even) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Odd> for &Even {
@@ -10406,11 +13143,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Odd> for &Even {
+        type Output = <Even as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for Even {
+        type Output = <Even as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Odd> for &Even {
         type Output = <Even as ::core::ops::BitXor<Odd>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Odd> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for Even {
+        type Output = <Even as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Odd> for &Even {
@@ -10420,11 +13185,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Odd> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for Even {
+        type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Odd> for &Even {
         type Output = <Even as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Odd> for &Even {
+        type Output = <Even as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for Even {
+        type Output = <Even as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for &Even {
@@ -10434,11 +13227,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Odd> for &Even {
+        type Output = <Even as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for Even {
+        type Output = <Even as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Multivector> for &Even {
         type Output = <Even as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Multivector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for Even {
+        type Output = <Even as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for &Even {
@@ -10448,11 +13269,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Multivector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for Even {
+        type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Multivector> for &Even {
         type Output = <Even as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Multivector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for Even {
+        type Output = <Even as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Multivector> for &Even {
@@ -10462,11 +13311,39 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Multivector> for &Even {
+        type Output = <Even as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for Even {
+        type Output = <Even as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Multivector> for &Even {
         type Output = <Even as ::core::ops::Sub<Multivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Multivector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for Even {
+        type Output = <Even as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&f64> for &Odd {
@@ -10476,11 +13353,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<f64> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for Odd {
+        type Output = <Odd as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&f64> for &Odd {
         type Output = <Odd as ::core::ops::BitXor<f64>>::Output;
         #[inline]
         fn bitxor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<f64> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&f64> for &Odd {
@@ -10490,11 +13395,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<f64> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&f64> for &Odd {
         type Output = <Odd as ::core::ops::Add<f64>>::Output;
         #[inline]
         fn add(self, rhs: &f64) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<f64> for &Odd {
+        type Output = <Odd as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: f64) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for Odd {
+        type Output = <Odd as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&f64> for &Odd {
@@ -10504,11 +13437,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<f64> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for Odd {
+        type Output = <Odd as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Vector> for &Odd {
         type Output = <Odd as ::core::ops::Mul<Vector>>::Output;
         #[inline]
         fn mul(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Vector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for Odd {
+        type Output = <Odd as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Vector> for &Odd {
@@ -10518,11 +13479,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Vector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Vector> for &Odd {
         type Output = <Odd as ::core::ops::BitOr<Vector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Vector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Vector> for &Odd {
@@ -10532,11 +13521,51 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Vector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for Odd {
+        type Output = <Odd as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Vector> for &Odd {
         type Output = <Odd as ::core::ops::Sub<Vector>>::Output;
         #[inline]
         fn sub(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Vector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for Odd {
+        type Output = <Odd as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Vector> for Odd {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Vector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Vector> for Odd {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Vector) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Bivector> for &Odd {
@@ -10546,11 +13575,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for Odd {
+        type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Bivector> for &Odd {
         type Output = <Odd as ::core::ops::BitXor<Bivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Bivector> for &Odd {
@@ -10560,11 +13617,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Bivector> for &Odd {
         type Output = <Odd as ::core::ops::Add<Bivector>>::Output;
         #[inline]
         fn add(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for Odd {
+        type Output = <Odd as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Bivector> for &Odd {
@@ -10574,11 +13659,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for Odd {
+        type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Trivector> for &Odd {
         type Output = <Odd as ::core::ops::Mul<Trivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for Odd {
+        type Output = <Odd as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Trivector> for &Odd {
@@ -10588,11 +13701,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Trivector> for &Odd {
         type Output = <Odd as ::core::ops::BitOr<Trivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Trivector> for &Odd {
@@ -10602,11 +13743,51 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for Odd {
+        type Output = <Odd as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Trivector> for &Odd {
         type Output = <Odd as ::core::ops::Sub<Trivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for Odd {
+        type Output = <Odd as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Trivector> for Odd {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Trivector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Trivector> for Odd {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Trivector) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Even> for &Odd {
@@ -10616,11 +13797,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Even> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for Odd {
+        type Output = <Odd as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Even> for &Odd {
         type Output = <Odd as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Even> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for &Odd {
@@ -10630,11 +13839,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Even> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Even> for &Odd {
         type Output = <Odd as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Even> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for Odd {
+        type Output = <Odd as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for &Odd {
@@ -10644,11 +13881,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Even> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for Odd {
+        type Output = <Odd as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Odd> for &Odd {
         type Output = <Odd as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Odd> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for Odd {
+        type Output = <Odd as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for &Odd {
@@ -10658,11 +13923,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Odd> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Odd> for &Odd {
         type Output = <Odd as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Odd> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for &Odd {
@@ -10672,11 +13965,51 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Odd> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for Odd {
+        type Output = <Odd as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Odd> for &Odd {
         type Output = <Odd as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Odd> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for Odd {
+        type Output = <Odd as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Odd> for Odd {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Odd) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Odd> for Odd {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Odd) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Multivector> for &Odd {
@@ -10686,11 +14019,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for Odd {
+        type Output = <Odd as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Multivector> for &Odd {
         type Output = <Odd as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for &Odd {
@@ -10700,11 +14061,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Multivector> for &Odd {
         type Output = <Odd as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for Odd {
+        type Output = <Odd as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for &Odd {
@@ -10714,11 +14103,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for Odd {
+        type Output = <Odd as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&f64> for &Multivector {
         type Output = <Multivector as ::core::ops::Mul<f64>>::Output;
         #[inline]
         fn mul(self, rhs: &f64) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<f64> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&f64> for &Multivector {
@@ -10728,11 +14145,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<f64> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&f64> for &Multivector {
         type Output = <Multivector as ::core::ops::BitOr<f64>>::Output;
         #[inline]
         fn bitor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<f64> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&f64> for &Multivector {
@@ -10742,11 +14187,51 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<f64> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: f64) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&f64> for &Multivector {
         type Output = <Multivector as ::core::ops::Sub<f64>>::Output;
         #[inline]
         fn sub(self, rhs: &f64) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<f64> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&f64> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &f64) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&f64> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &f64) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Vector> for &Multivector {
@@ -10756,11 +14241,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Vector> for &Multivector {
         type Output = <Multivector as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for &Multivector {
@@ -10770,11 +14283,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Vector> for &Multivector {
         type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for &Multivector {
@@ -10784,11 +14325,51 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Vector> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Vector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Vector> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Vector) {
+            *self -= *rhs;
+        }
+    }
     impl ::core::ops::Mul<&Bivector> for &Multivector {
         type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for &Multivector {
@@ -10798,11 +14379,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Bivector> for &Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for &Multivector {
@@ -10812,11 +14421,51 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Bivector> for &Multivector {
         type Output = <Multivector as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Bivector> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Bivector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Bivector> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Bivector) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Trivector> for &Multivector {
@@ -10826,11 +14475,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Trivector> for &Multivector {
         type Output = <Multivector as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for &Multivector {
@@ -10840,11 +14517,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Trivector> for &Multivector {
         type Output = <Multivector as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for &Multivector {
@@ -10854,11 +14559,51 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Trivector> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Trivector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Trivector> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Trivector) {
+            *self -= *rhs;
+        }
+    }
     impl ::core::ops::Mul<&Even> for &Multivector {
         type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for &Multivector {
@@ -10868,11 +14613,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Even> for &Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
         #[inline]
         fn bitor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Even> for &Multivector {
@@ -10882,11 +14655,51 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Even> for &Multivector {
         type Output = <Multivector as ::core::ops::Sub<Even>>::Output;
         #[inline]
         fn sub(self, rhs: &Even) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Even> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Even) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Even> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Even) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Odd> for &Multivector {
@@ -10896,11 +14709,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Odd> for &Multivector {
         type Output = <Multivector as ::core::ops::BitXor<Odd>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Odd> for &Multivector {
@@ -10910,11 +14751,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Odd> for &Multivector {
         type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for &Multivector {
@@ -10924,11 +14793,51 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Odd> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Odd) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Odd> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Odd) {
+            *self -= *rhs;
+        }
+    }
     impl ::core::ops::Mul<&Multivector> for &Multivector {
         type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for &Multivector {
@@ -10938,11 +14847,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Multivector> for &Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Multivector> for &Multivector {
@@ -10952,11 +14889,51 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Multivector> for &Multivector {
         type Output = <Multivector as ::core::ops::Sub<Multivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Multivector> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Multivector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Multivector> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Multivector) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Neg for &Vector {
@@ -10966,11 +14943,77 @@ pub mod g3 {
             -*self
         }
     }
+    impl ::core::ops::Div<f64> for &Vector {
+        type Output = Vector;
+        #[inline]
+        fn div(self, rhs: f64) -> Vector {
+            *self / rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for Vector {
+        type Output = Vector;
+        #[inline]
+        fn div(self, rhs: &f64) -> Vector {
+            self / *rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for &Vector {
+        type Output = Vector;
+        #[inline]
+        fn div(self, rhs: &f64) -> Vector {
+            *self / *rhs
+        }
+    }
+    impl ::core::ops::MulAssign<&f64> for Vector {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &f64) {
+            *self *= *rhs;
+        }
+    }
+    impl ::core::ops::DivAssign<&f64> for Vector {
+        #[inline]
+        fn div_assign(&mut self, rhs: &f64) {
+            *self /= *rhs;
+        }
+    }
     impl ::core::ops::Neg for &Bivector {
         type Output = Bivector;
         #[inline]
         fn neg(self) -> Bivector {
             -*self
+        }
+    }
+    impl ::core::ops::Div<f64> for &Bivector {
+        type Output = Bivector;
+        #[inline]
+        fn div(self, rhs: f64) -> Bivector {
+            *self / rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for Bivector {
+        type Output = Bivector;
+        #[inline]
+        fn div(self, rhs: &f64) -> Bivector {
+            self / *rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for &Bivector {
+        type Output = Bivector;
+        #[inline]
+        fn div(self, rhs: &f64) -> Bivector {
+            *self / *rhs
+        }
+    }
+    impl ::core::ops::MulAssign<&f64> for Bivector {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &f64) {
+            *self *= *rhs;
+        }
+    }
+    impl ::core::ops::DivAssign<&f64> for Bivector {
+        #[inline]
+        fn div_assign(&mut self, rhs: &f64) {
+            *self /= *rhs;
         }
     }
     impl ::core::ops::Neg for &Trivector {
@@ -10980,11 +15023,83 @@ pub mod g3 {
             -*self
         }
     }
+    impl ::core::ops::Div<f64> for &Trivector {
+        type Output = Trivector;
+        #[inline]
+        fn div(self, rhs: f64) -> Trivector {
+            *self / rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for Trivector {
+        type Output = Trivector;
+        #[inline]
+        fn div(self, rhs: &f64) -> Trivector {
+            self / *rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for &Trivector {
+        type Output = Trivector;
+        #[inline]
+        fn div(self, rhs: &f64) -> Trivector {
+            *self / *rhs
+        }
+    }
+    impl ::core::ops::MulAssign<&f64> for Trivector {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &f64) {
+            *self *= *rhs;
+        }
+    }
+    impl ::core::ops::DivAssign<&f64> for Trivector {
+        #[inline]
+        fn div_assign(&mut self, rhs: &f64) {
+            *self /= *rhs;
+        }
+    }
     impl ::core::ops::Neg for &Even {
         type Output = Even;
         #[inline]
         fn neg(self) -> Even {
             -*self
+        }
+    }
+    impl ::core::ops::Div<f64> for &Even {
+        type Output = Even;
+        #[inline]
+        fn div(self, rhs: f64) -> Even {
+            *self / rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for Even {
+        type Output = Even;
+        #[inline]
+        fn div(self, rhs: &f64) -> Even {
+            self / *rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for &Even {
+        type Output = Even;
+        #[inline]
+        fn div(self, rhs: &f64) -> Even {
+            *self / *rhs
+        }
+    }
+    impl ::core::ops::MulAssign<&f64> for Even {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &f64) {
+            *self *= *rhs;
+        }
+    }
+    impl ::core::ops::DivAssign<&f64> for Even {
+        #[inline]
+        fn div_assign(&mut self, rhs: &f64) {
+            *self /= *rhs;
+        }
+    }
+    impl ::core::ops::MulAssign<&Even> for Even {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &Even) {
+            *self *= *rhs;
         }
     }
     impl ::core::ops::Neg for &Odd {
@@ -10994,11 +15109,83 @@ pub mod g3 {
             -*self
         }
     }
+    impl ::core::ops::Div<f64> for &Odd {
+        type Output = Odd;
+        #[inline]
+        fn div(self, rhs: f64) -> Odd {
+            *self / rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for Odd {
+        type Output = Odd;
+        #[inline]
+        fn div(self, rhs: &f64) -> Odd {
+            self / *rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for &Odd {
+        type Output = Odd;
+        #[inline]
+        fn div(self, rhs: &f64) -> Odd {
+            *self / *rhs
+        }
+    }
+    impl ::core::ops::MulAssign<&f64> for Odd {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &f64) {
+            *self *= *rhs;
+        }
+    }
+    impl ::core::ops::DivAssign<&f64> for Odd {
+        #[inline]
+        fn div_assign(&mut self, rhs: &f64) {
+            *self /= *rhs;
+        }
+    }
     impl ::core::ops::Neg for &Multivector {
         type Output = Multivector;
         #[inline]
         fn neg(self) -> Multivector {
             -*self
+        }
+    }
+    impl ::core::ops::Div<f64> for &Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn div(self, rhs: f64) -> Multivector {
+            *self / rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn div(self, rhs: &f64) -> Multivector {
+            self / *rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for &Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn div(self, rhs: &f64) -> Multivector {
+            *self / *rhs
+        }
+    }
+    impl ::core::ops::MulAssign<&f64> for Multivector {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &f64) {
+            *self *= *rhs;
+        }
+    }
+    impl ::core::ops::DivAssign<&f64> for Multivector {
+        #[inline]
+        fn div_assign(&mut self, rhs: &f64) {
+            *self /= *rhs;
+        }
+    }
+    impl ::core::ops::MulAssign<&Multivector> for Multivector {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &Multivector) {
+            *self *= *rhs;
         }
     }
     impl ::core::ops::Div<Vector> for f64 {

@@ -8264,13 +8264,17 @@ pub mod g3 {
     /// The versor product: `v x ~v` for even `v`, `v x^ ~v` for odd `v` (x^ the grade
     /// involution), in the form the generator's cost model picks (a quadratic form with
     /// like terms collected, or commutators). Returns `x`'s own type; exact for any
-    /// versor, so the result is scaled by |v|^2 when `v` is not unit.
+    /// versor, so the result is scaled by |v|^2 when `v` is not unit. Either side may
+    /// be a reference (`r.sandwich(&v)`, as glam's `q * &v`).
     pub trait Sandwich<X> {
+        /// `x`'s own type (the referenced type when `x` is a reference).
+        type Output;
         /// `v x ~v` (even `v`) or `v x^ ~v` (odd `v`).
         #[must_use]
-        fn sandwich(self, x: X) -> X;
+        fn sandwich(self, x: X) -> Self::Output;
     }
     impl Sandwich<Vector> for Vector {
+        type Output = Vector;
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
             let two_e1 = self.e1 + self.e1;
@@ -8289,7 +8293,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Vector> for Vector {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: &Vector) -> Vector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Vector> for &Vector {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: Vector) -> Vector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Vector> for &Vector {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: &Vector) -> Vector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Bivector> for Vector {
+        type Output = Bivector;
         #[inline]
         fn sandwich(self, x: Bivector) -> Bivector {
             let two_e1 = self.e1 + self.e1;
@@ -8309,7 +8335,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Bivector> for Vector {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: &Bivector) -> Bivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Bivector> for &Vector {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: Bivector) -> Bivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Bivector> for &Vector {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: &Bivector) -> Bivector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Trivector> for Vector {
+        type Output = Trivector;
         #[inline]
         fn sandwich(self, x: Trivector) -> Trivector {
             let e1_e1 = self.e1 * self.e1;
@@ -8320,7 +8368,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Trivector> for Vector {
+        type Output = Trivector;
+        #[inline]
+        fn sandwich(self, x: &Trivector) -> Trivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Trivector> for &Vector {
+        type Output = Trivector;
+        #[inline]
+        fn sandwich(self, x: Trivector) -> Trivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Trivector> for &Vector {
+        type Output = Trivector;
+        #[inline]
+        fn sandwich(self, x: &Trivector) -> Trivector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Even> for Vector {
+        type Output = Even;
         #[inline]
         fn sandwich(self, x: Even) -> Even {
             let two_e1 = self.e1 + self.e1;
@@ -8342,7 +8412,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Even> for Vector {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: &Even) -> Even {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Even> for &Vector {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: Even) -> Even {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Even> for &Vector {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: &Even) -> Even {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Odd> for Vector {
+        type Output = Odd;
         #[inline]
         fn sandwich(self, x: Odd) -> Odd {
             let two_e1 = self.e1 + self.e1;
@@ -8363,7 +8455,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Odd> for Vector {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: &Odd) -> Odd {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Odd> for &Vector {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: Odd) -> Odd {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Odd> for &Vector {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: &Odd) -> Odd {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Multivector> for Vector {
+        type Output = Multivector;
         #[inline]
         fn sandwich(self, x: Multivector) -> Multivector {
             let two_e1 = self.e1 + self.e1;
@@ -8393,6 +8507,27 @@ pub mod g3 {
                     - e3_e3_minus_e1_e1_minus_e2_e2 * x.e23,
                 e123: -(e3_e3_plus_e1_e1_plus_e2_e2) * x.e123,
             }
+        }
+    }
+    impl Sandwich<&Multivector> for Vector {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: &Multivector) -> Multivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Multivector> for &Vector {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: Multivector) -> Multivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Multivector> for &Vector {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: &Multivector) -> Multivector {
+            Sandwich::sandwich(*self, *x)
         }
     }
     impl Vector {
@@ -8433,6 +8568,7 @@ pub mod g3 {
         }
     }
     impl Sandwich<Vector> for Even {
+        type Output = Vector;
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
             let two_s = self.s + self.s;
@@ -8461,7 +8597,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Vector> for Even {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: &Vector) -> Vector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Vector> for &Even {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: Vector) -> Vector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Vector> for &Even {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: &Vector) -> Vector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Bivector> for Even {
+        type Output = Bivector;
         #[inline]
         fn sandwich(self, x: Bivector) -> Bivector {
             let two_s = self.s + self.s;
@@ -8490,7 +8648,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Bivector> for Even {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: &Bivector) -> Bivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Bivector> for &Even {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: Bivector) -> Bivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Bivector> for &Even {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: &Bivector) -> Bivector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Trivector> for Even {
+        type Output = Trivector;
         #[inline]
         fn sandwich(self, x: Trivector) -> Trivector {
             let s_s = self.s * self.s;
@@ -8502,7 +8682,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Trivector> for Even {
+        type Output = Trivector;
+        #[inline]
+        fn sandwich(self, x: &Trivector) -> Trivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Trivector> for &Even {
+        type Output = Trivector;
+        #[inline]
+        fn sandwich(self, x: Trivector) -> Trivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Trivector> for &Even {
+        type Output = Trivector;
+        #[inline]
+        fn sandwich(self, x: &Trivector) -> Trivector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Even> for Even {
+        type Output = Even;
         #[inline]
         fn sandwich(self, x: Even) -> Even {
             let two_s = self.s + self.s;
@@ -8534,7 +8736,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Even> for Even {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: &Even) -> Even {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Even> for &Even {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: Even) -> Even {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Even> for &Even {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: &Even) -> Even {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Odd> for Even {
+        type Output = Odd;
         #[inline]
         fn sandwich(self, x: Odd) -> Odd {
             let two_s = self.s + self.s;
@@ -8566,7 +8790,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Odd> for Even {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: &Odd) -> Odd {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Odd> for &Even {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: Odd) -> Odd {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Odd> for &Even {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: &Odd) -> Odd {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Multivector> for Even {
+        type Output = Multivector;
         #[inline]
         fn sandwich(self, x: Multivector) -> Multivector {
             let two_s = self.s + self.s;
@@ -8612,6 +8858,27 @@ pub mod g3 {
                     + shared_1 * x.e23,
                 e123: shared_4 * x.e123,
             }
+        }
+    }
+    impl Sandwich<&Multivector> for Even {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: &Multivector) -> Multivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Multivector> for &Even {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: Multivector) -> Multivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Multivector> for &Even {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: &Multivector) -> Multivector {
+            Sandwich::sandwich(*self, *x)
         }
     }
     impl Even {
@@ -8666,6 +8933,7 @@ pub mod g3 {
         }
     }
     impl Sandwich<Vector> for Odd {
+        type Output = Vector;
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
             let two_e1 = self.e1 + self.e1;
@@ -8694,7 +8962,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Vector> for Odd {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: &Vector) -> Vector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Vector> for &Odd {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: Vector) -> Vector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Vector> for &Odd {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: &Vector) -> Vector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Bivector> for Odd {
+        type Output = Bivector;
         #[inline]
         fn sandwich(self, x: Bivector) -> Bivector {
             let two_e1 = self.e1 + self.e1;
@@ -8723,7 +9013,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Bivector> for Odd {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: &Bivector) -> Bivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Bivector> for &Odd {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: Bivector) -> Bivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Bivector> for &Odd {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: &Bivector) -> Bivector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Trivector> for Odd {
+        type Output = Trivector;
         #[inline]
         fn sandwich(self, x: Trivector) -> Trivector {
             let e1_e1 = self.e1 * self.e1;
@@ -8735,7 +9047,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Trivector> for Odd {
+        type Output = Trivector;
+        #[inline]
+        fn sandwich(self, x: &Trivector) -> Trivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Trivector> for &Odd {
+        type Output = Trivector;
+        #[inline]
+        fn sandwich(self, x: Trivector) -> Trivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Trivector> for &Odd {
+        type Output = Trivector;
+        #[inline]
+        fn sandwich(self, x: &Trivector) -> Trivector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Even> for Odd {
+        type Output = Even;
         #[inline]
         fn sandwich(self, x: Even) -> Even {
             let two_e1 = self.e1 + self.e1;
@@ -8767,7 +9101,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Even> for Odd {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: &Even) -> Even {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Even> for &Odd {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: Even) -> Even {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Even> for &Odd {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: &Even) -> Even {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Odd> for Odd {
+        type Output = Odd;
         #[inline]
         fn sandwich(self, x: Odd) -> Odd {
             let two_e1 = self.e1 + self.e1;
@@ -8799,7 +9155,29 @@ pub mod g3 {
             }
         }
     }
+    impl Sandwich<&Odd> for Odd {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: &Odd) -> Odd {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Odd> for &Odd {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: Odd) -> Odd {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Odd> for &Odd {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: &Odd) -> Odd {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Multivector> for Odd {
+        type Output = Multivector;
         #[inline]
         fn sandwich(self, x: Multivector) -> Multivector {
             let two_e1 = self.e1 + self.e1;
@@ -8845,6 +9223,27 @@ pub mod g3 {
                     + shared_1 * x.e23,
                 e123: -(shared_4) * x.e123,
             }
+        }
+    }
+    impl Sandwich<&Multivector> for Odd {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: &Multivector) -> Multivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Multivector> for &Odd {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: Multivector) -> Multivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Multivector> for &Odd {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: &Multivector) -> Multivector {
+            Sandwich::sandwich(*self, *x)
         }
     }
     impl Odd {
@@ -9057,22 +9456,43 @@ pub mod g3 {
             }
         }
     }
-    /// Writes `1 + 2e1 - 0.5e12`: each non-zero component with its blade (the scalar
-    /// without one), honouring the formatter's precision; at a precision `p`, terms
-    /// that would print as zero are left out. Zero prints as `0`.
+    /// Writes `1 + 2 e1 - 0.5 e12`: each non-zero component, a space, its blade (the
+    /// scalar without one; the space keeps `1 e12` apart from ten to the twelfth),
+    /// honouring the formatter's precision; at a precision `p`, terms that would print
+    /// as zero are left out. Magnitudes below `1e-5` or from `1e16` print in exponent
+    /// form (`5e-324`, not 324 digits), except below `1e-5` at a precision, where the
+    /// fixed form shows what rounds away. Zero prints as `0`.
     fn display_terms(
         f: &mut ::core::fmt::Formatter<'_>,
         terms: &[(f32, &str)],
     ) -> ::core::fmt::Result {
-        let threshold: f32 = match f.precision() {
-            Some(p) => (0..p.min(400)).fold(0.5, |t, _| t / 10.0),
-            None => 0.0,
-        };
+        /// Notes whether a non-zero digit is written: a term "prints as zero" exactly
+        /// when the formatter's own rounding leaves none (no buffer, so `no_std`).
+        struct NonZeroDigit(bool);
+        impl ::core::fmt::Write for NonZeroDigit {
+            fn write_str(&mut self, s: &str) -> ::core::fmt::Result {
+                self.0 |= s.bytes().any(|b| (b'1'..=b'9').contains(&b));
+                Ok(())
+            }
+        }
         let mut first = true;
         for &(value, blade) in terms {
             let magnitude = value.abs();
-            if magnitude <= threshold {
+            if magnitude == 0.0 {
                 continue;
+            }
+            let large = magnitude >= 1e16 && magnitude.is_finite();
+            let small = magnitude < 1e-5;
+            let exponent = large || (small && f.precision().is_none());
+            if let (Some(p), false) = (
+                f.precision(),
+                exponent || !magnitude.is_finite(),
+            ) {
+                let mut digits = NonZeroDigit(false);
+                ::core::fmt::write(&mut digits, format_args!("{:.*}", p, magnitude))?;
+                if !digits.0 {
+                    continue;
+                }
             }
             let negative = value.is_sign_negative() && !value.is_nan();
             match (first, negative) {
@@ -9081,9 +9501,14 @@ pub mod g3 {
                 (false, true) => f.write_str(" - ")?,
                 (false, false) => f.write_str(" + ")?,
             }
-            match f.precision() {
-                Some(p) => write!(f, "{:.*}{}", p, magnitude, blade)?,
-                None => write!(f, "{}{}", magnitude, blade)?,
+            match (f.precision(), exponent) {
+                (Some(p), true) => write!(f, "{:.*e}", p, magnitude)?,
+                (Some(p), false) => write!(f, "{:.*}", p, magnitude)?,
+                (None, true) => write!(f, "{:e}", magnitude)?,
+                (None, false) => write!(f, "{}", magnitude)?,
+            }
+            if !blade.is_empty() {
+                write!(f, " {}", blade)?;
             }
             first = false;
         }
@@ -9687,11 +10112,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Vector> for &f32 {
+        type Output = <f32 as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for f32 {
+        type Output = <f32 as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Vector> for &f32 {
         type Output = <f32 as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Vector> for &f32 {
+        type Output = <f32 as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for f32 {
+        type Output = <f32 as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for &f32 {
@@ -9701,11 +10154,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Vector> for &f32 {
+        type Output = <f32 as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for f32 {
+        type Output = <f32 as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Vector> for &f32 {
         type Output = <f32 as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Vector> for &f32 {
+        type Output = <f32 as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for f32 {
+        type Output = <f32 as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for &f32 {
@@ -9715,11 +10196,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Vector> for &f32 {
+        type Output = <f32 as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for f32 {
+        type Output = <f32 as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Bivector> for &f32 {
         type Output = <f32 as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Bivector> for &f32 {
+        type Output = <f32 as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for f32 {
+        type Output = <f32 as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for &f32 {
@@ -9729,11 +10238,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Bivector> for &f32 {
+        type Output = <f32 as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for f32 {
+        type Output = <f32 as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Bivector> for &f32 {
         type Output = <f32 as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Bivector> for &f32 {
+        type Output = <f32 as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for f32 {
+        type Output = <f32 as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for &f32 {
@@ -9743,11 +10280,39 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Bivector> for &f32 {
+        type Output = <f32 as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for f32 {
+        type Output = <f32 as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Bivector> for &f32 {
         type Output = <f32 as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Bivector> for &f32 {
+        type Output = <f32 as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for f32 {
+        type Output = <f32 as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Trivector> for &f32 {
@@ -9757,11 +10322,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Trivector> for &f32 {
+        type Output = <f32 as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for f32 {
+        type Output = <f32 as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Trivector> for &f32 {
         type Output = <f32 as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Trivector> for &f32 {
+        type Output = <f32 as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for f32 {
+        type Output = <f32 as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for &f32 {
@@ -9771,11 +10364,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Trivector> for &f32 {
+        type Output = <f32 as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for f32 {
+        type Output = <f32 as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Trivector> for &f32 {
         type Output = <f32 as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Trivector> for &f32 {
+        type Output = <f32 as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for f32 {
+        type Output = <f32 as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for &f32 {
@@ -9785,11 +10406,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Trivector> for &f32 {
+        type Output = <f32 as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for f32 {
+        type Output = <f32 as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Even> for &f32 {
         type Output = <f32 as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Even> for &f32 {
+        type Output = <f32 as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for f32 {
+        type Output = <f32 as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for &f32 {
@@ -9799,11 +10448,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Even> for &f32 {
+        type Output = <f32 as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for f32 {
+        type Output = <f32 as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Even> for &f32 {
         type Output = <f32 as ::core::ops::BitOr<Even>>::Output;
         #[inline]
         fn bitor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Even> for &f32 {
+        type Output = <f32 as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for f32 {
+        type Output = <f32 as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Even> for &f32 {
@@ -9813,11 +10490,39 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Even> for &f32 {
+        type Output = <f32 as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for f32 {
+        type Output = <f32 as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Even> for &f32 {
         type Output = <f32 as ::core::ops::Sub<Even>>::Output;
         #[inline]
         fn sub(self, rhs: &Even) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Even> for &f32 {
+        type Output = <f32 as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for f32 {
+        type Output = <f32 as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Odd> for &f32 {
@@ -9827,11 +10532,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Odd> for &f32 {
+        type Output = <f32 as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for f32 {
+        type Output = <f32 as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Odd> for &f32 {
         type Output = <f32 as ::core::ops::BitXor<Odd>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Odd> for &f32 {
+        type Output = <f32 as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for f32 {
+        type Output = <f32 as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Odd> for &f32 {
@@ -9841,11 +10574,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Odd> for &f32 {
+        type Output = <f32 as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for f32 {
+        type Output = <f32 as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Odd> for &f32 {
         type Output = <f32 as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Odd> for &f32 {
+        type Output = <f32 as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for f32 {
+        type Output = <f32 as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for &f32 {
@@ -9855,11 +10616,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Odd> for &f32 {
+        type Output = <f32 as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for f32 {
+        type Output = <f32 as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Multivector> for &f32 {
         type Output = <f32 as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Multivector> for &f32 {
+        type Output = <f32 as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for f32 {
+        type Output = <f32 as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for &f32 {
@@ -9869,11 +10658,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Multivector> for &f32 {
+        type Output = <f32 as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for f32 {
+        type Output = <f32 as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Multivector> for &f32 {
         type Output = <f32 as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Multivector> for &f32 {
+        type Output = <f32 as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for f32 {
+        type Output = <f32 as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Multivector> for &f32 {
@@ -9883,11 +10700,39 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Multivector> for &f32 {
+        type Output = <f32 as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for f32 {
+        type Output = <f32 as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Multivector> for &f32 {
         type Output = <f32 as ::core::ops::Sub<Multivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Multivector> for &f32 {
+        type Output = <f32 as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for f32 {
+        type Output = <f32 as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&f32> for &Vector {
@@ -9897,11 +10742,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<f32> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<f32>>::Output;
+        #[inline]
+        fn mul(self, rhs: f32) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f32> for Vector {
+        type Output = <Vector as ::core::ops::Mul<f32>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&f32> for &Vector {
         type Output = <Vector as ::core::ops::BitXor<f32>>::Output;
         #[inline]
         fn bitxor(self, rhs: &f32) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<f32> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<f32>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: f32) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f32> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<f32>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f32) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&f32> for &Vector {
@@ -9911,11 +10784,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<f32> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<f32>>::Output;
+        #[inline]
+        fn bitor(self, rhs: f32) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f32> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<f32>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f32) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&f32> for &Vector {
         type Output = <Vector as ::core::ops::Add<f32>>::Output;
         #[inline]
         fn add(self, rhs: &f32) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<f32> for &Vector {
+        type Output = <Vector as ::core::ops::Add<f32>>::Output;
+        #[inline]
+        fn add(self, rhs: f32) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&f32> for Vector {
+        type Output = <Vector as ::core::ops::Add<f32>>::Output;
+        #[inline]
+        fn add(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&f32> for &Vector {
@@ -9925,11 +10826,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<f32> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<f32>>::Output;
+        #[inline]
+        fn sub(self, rhs: f32) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f32> for Vector {
+        type Output = <Vector as ::core::ops::Sub<f32>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Vector> for &Vector {
         type Output = <Vector as ::core::ops::Mul<Vector>>::Output;
         #[inline]
         fn mul(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Vector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for Vector {
+        type Output = <Vector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Vector> for &Vector {
@@ -9939,11 +10868,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Vector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Vector> for &Vector {
         type Output = <Vector as ::core::ops::BitOr<Vector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Vector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Vector> for &Vector {
@@ -9953,11 +10910,51 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Vector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for Vector {
+        type Output = <Vector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Vector> for &Vector {
         type Output = <Vector as ::core::ops::Sub<Vector>>::Output;
         #[inline]
         fn sub(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Vector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for Vector {
+        type Output = <Vector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Vector> for Vector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Vector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Vector> for Vector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Vector) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Bivector> for &Vector {
@@ -9967,11 +10964,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for Vector {
+        type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Bivector> for &Vector {
         type Output = <Vector as ::core::ops::BitXor<Bivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Bivector> for &Vector {
@@ -9981,11 +11006,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Bivector> for &Vector {
         type Output = <Vector as ::core::ops::Add<Bivector>>::Output;
         #[inline]
         fn add(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for Vector {
+        type Output = <Vector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Bivector> for &Vector {
@@ -9995,11 +11048,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for Vector {
+        type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Trivector> for &Vector {
         type Output = <Vector as ::core::ops::Mul<Trivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for Vector {
+        type Output = <Vector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Trivector> for &Vector {
@@ -10009,11 +11090,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Trivector> for &Vector {
         type Output = <Vector as ::core::ops::BitOr<Trivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Trivector> for &Vector {
@@ -10023,11 +11132,39 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for Vector {
+        type Output = <Vector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Trivector> for &Vector {
         type Output = <Vector as ::core::ops::Sub<Trivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for Vector {
+        type Output = <Vector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Even> for &Vector {
@@ -10037,11 +11174,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Even> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for Vector {
+        type Output = <Vector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Even> for &Vector {
         type Output = <Vector as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Even> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for &Vector {
@@ -10051,11 +11216,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Even> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Even> for &Vector {
         type Output = <Vector as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Even> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for Vector {
+        type Output = <Vector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for &Vector {
@@ -10065,11 +11258,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Even> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for Vector {
+        type Output = <Vector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Odd> for &Vector {
         type Output = <Vector as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Odd> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for Vector {
+        type Output = <Vector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for &Vector {
@@ -10079,11 +11300,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Odd> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Odd> for &Vector {
         type Output = <Vector as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Odd> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for &Vector {
@@ -10093,11 +11342,39 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Odd> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for Vector {
+        type Output = <Vector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Odd> for &Vector {
         type Output = <Vector as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Odd> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for Vector {
+        type Output = <Vector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Multivector> for &Vector {
@@ -10107,11 +11384,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for Vector {
+        type Output = <Vector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Multivector> for &Vector {
         type Output = <Vector as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for &Vector {
@@ -10121,11 +11426,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Multivector> for &Vector {
         type Output = <Vector as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for Vector {
+        type Output = <Vector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for &Vector {
@@ -10135,11 +11468,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for Vector {
+        type Output = <Vector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&f32> for &Bivector {
         type Output = <Bivector as ::core::ops::Mul<f32>>::Output;
         #[inline]
         fn mul(self, rhs: &f32) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<f32> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<f32>>::Output;
+        #[inline]
+        fn mul(self, rhs: f32) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f32> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<f32>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&f32> for &Bivector {
@@ -10149,11 +11510,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<f32> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<f32>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: f32) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f32> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<f32>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f32) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&f32> for &Bivector {
         type Output = <Bivector as ::core::ops::BitOr<f32>>::Output;
         #[inline]
         fn bitor(self, rhs: &f32) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<f32> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<f32>>::Output;
+        #[inline]
+        fn bitor(self, rhs: f32) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f32> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<f32>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f32) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&f32> for &Bivector {
@@ -10163,11 +11552,39 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<f32> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<f32>>::Output;
+        #[inline]
+        fn add(self, rhs: f32) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&f32> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<f32>>::Output;
+        #[inline]
+        fn add(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&f32> for &Bivector {
         type Output = <Bivector as ::core::ops::Sub<f32>>::Output;
         #[inline]
         fn sub(self, rhs: &f32) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<f32> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<f32>>::Output;
+        #[inline]
+        fn sub(self, rhs: f32) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f32> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<f32>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Vector> for &Bivector {
@@ -10177,11 +11594,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Vector> for &Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for &Bivector {
@@ -10191,11 +11636,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Vector> for &Bivector {
         type Output = <Bivector as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for &Bivector {
@@ -10205,11 +11678,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Bivector> for &Bivector {
         type Output = <Bivector as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for &Bivector {
@@ -10219,11 +11720,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Bivector> for &Bivector {
         type Output = <Bivector as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for &Bivector {
@@ -10233,11 +11762,51 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Bivector> for &Bivector {
         type Output = <Bivector as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Bivector> for Bivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Bivector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Bivector> for Bivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Bivector) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Trivector> for &Bivector {
@@ -10247,11 +11816,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Trivector> for &Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for &Bivector {
@@ -10261,11 +11858,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Trivector> for &Bivector {
         type Output = <Bivector as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for &Bivector {
@@ -10275,11 +11900,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Even> for &Bivector {
         type Output = <Bivector as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for &Bivector {
@@ -10289,11 +11942,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Even> for &Bivector {
         type Output = <Bivector as ::core::ops::BitOr<Even>>::Output;
         #[inline]
         fn bitor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Even> for &Bivector {
@@ -10303,11 +11984,39 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Even> for &Bivector {
         type Output = <Bivector as ::core::ops::Sub<Even>>::Output;
         #[inline]
         fn sub(self, rhs: &Even) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Odd> for &Bivector {
@@ -10317,11 +12026,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Odd> for &Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Odd>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Odd> for &Bivector {
@@ -10331,11 +12068,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Odd> for &Bivector {
         type Output = <Bivector as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for &Bivector {
@@ -10345,11 +12110,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Multivector> for &Bivector {
         type Output = <Bivector as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for &Bivector {
@@ -10359,11 +12152,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Multivector> for &Bivector {
         type Output = <Bivector as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Multivector> for &Bivector {
@@ -10373,11 +12194,39 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Multivector> for &Bivector {
         type Output = <Bivector as ::core::ops::Sub<Multivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&f32> for &Trivector {
@@ -10387,11 +12236,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<f32> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<f32>>::Output;
+        #[inline]
+        fn mul(self, rhs: f32) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f32> for Trivector {
+        type Output = <Trivector as ::core::ops::Mul<f32>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&f32> for &Trivector {
         type Output = <Trivector as ::core::ops::BitXor<f32>>::Output;
         #[inline]
         fn bitxor(self, rhs: &f32) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<f32> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<f32>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: f32) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f32> for Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<f32>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f32) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&f32> for &Trivector {
@@ -10401,11 +12278,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<f32> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<f32>>::Output;
+        #[inline]
+        fn bitor(self, rhs: f32) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f32> for Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<f32>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f32) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&f32> for &Trivector {
         type Output = <Trivector as ::core::ops::Add<f32>>::Output;
         #[inline]
         fn add(self, rhs: &f32) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<f32> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<f32>>::Output;
+        #[inline]
+        fn add(self, rhs: f32) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&f32> for Trivector {
+        type Output = <Trivector as ::core::ops::Add<f32>>::Output;
+        #[inline]
+        fn add(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&f32> for &Trivector {
@@ -10415,11 +12320,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<f32> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<f32>>::Output;
+        #[inline]
+        fn sub(self, rhs: f32) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f32> for Trivector {
+        type Output = <Trivector as ::core::ops::Sub<f32>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Vector> for &Trivector {
         type Output = <Trivector as ::core::ops::Mul<Vector>>::Output;
         #[inline]
         fn mul(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Vector> for &Trivector {
@@ -10429,11 +12362,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Vector> for &Trivector {
         type Output = <Trivector as ::core::ops::BitOr<Vector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Vector> for &Trivector {
@@ -10443,11 +12404,39 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for Trivector {
+        type Output = <Trivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Vector> for &Trivector {
         type Output = <Trivector as ::core::ops::Sub<Vector>>::Output;
         #[inline]
         fn sub(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Bivector> for &Trivector {
@@ -10457,11 +12446,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Bivector> for &Trivector {
         type Output = <Trivector as ::core::ops::BitXor<Bivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Bivector> for &Trivector {
@@ -10471,11 +12488,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Bivector> for &Trivector {
         type Output = <Trivector as ::core::ops::Add<Bivector>>::Output;
         #[inline]
         fn add(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for Trivector {
+        type Output = <Trivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Bivector> for &Trivector {
@@ -10485,11 +12530,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Trivector> for &Trivector {
         type Output = <Trivector as ::core::ops::Mul<Trivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Trivector> for &Trivector {
@@ -10499,11 +12572,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Trivector> for &Trivector {
         type Output = <Trivector as ::core::ops::BitOr<Trivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Trivector> for &Trivector {
@@ -10513,11 +12614,51 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for Trivector {
+        type Output = <Trivector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Trivector> for &Trivector {
         type Output = <Trivector as ::core::ops::Sub<Trivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Trivector> for Trivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Trivector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Trivector> for Trivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Trivector) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Even> for &Trivector {
@@ -10527,11 +12668,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Even> for &Trivector {
         type Output = <Trivector as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for &Trivector {
@@ -10541,11 +12710,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Even> for &Trivector {
         type Output = <Trivector as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for Trivector {
+        type Output = <Trivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for &Trivector {
@@ -10555,11 +12752,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Odd> for &Trivector {
         type Output = <Trivector as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for &Trivector {
@@ -10569,11 +12794,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Odd> for &Trivector {
         type Output = <Trivector as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for &Trivector {
@@ -10583,11 +12836,39 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for Trivector {
+        type Output = <Trivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Odd> for &Trivector {
         type Output = <Trivector as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Multivector> for &Trivector {
@@ -10597,11 +12878,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Multivector> for &Trivector {
         type Output = <Trivector as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for &Trivector {
@@ -10611,11 +12920,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Multivector> for &Trivector {
         type Output = <Trivector as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for Trivector {
+        type Output = <Trivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for &Trivector {
@@ -10625,11 +12962,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&f32> for &Even {
         type Output = <Even as ::core::ops::Mul<f32>>::Output;
         #[inline]
         fn mul(self, rhs: &f32) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<f32> for &Even {
+        type Output = <Even as ::core::ops::Mul<f32>>::Output;
+        #[inline]
+        fn mul(self, rhs: f32) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f32> for Even {
+        type Output = <Even as ::core::ops::Mul<f32>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&f32> for &Even {
@@ -10639,11 +13004,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<f32> for &Even {
+        type Output = <Even as ::core::ops::BitXor<f32>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: f32) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f32> for Even {
+        type Output = <Even as ::core::ops::BitXor<f32>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f32) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&f32> for &Even {
         type Output = <Even as ::core::ops::BitOr<f32>>::Output;
         #[inline]
         fn bitor(self, rhs: &f32) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<f32> for &Even {
+        type Output = <Even as ::core::ops::BitOr<f32>>::Output;
+        #[inline]
+        fn bitor(self, rhs: f32) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f32> for Even {
+        type Output = <Even as ::core::ops::BitOr<f32>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f32) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&f32> for &Even {
@@ -10653,11 +13046,51 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<f32> for &Even {
+        type Output = <Even as ::core::ops::Add<f32>>::Output;
+        #[inline]
+        fn add(self, rhs: f32) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&f32> for Even {
+        type Output = <Even as ::core::ops::Add<f32>>::Output;
+        #[inline]
+        fn add(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&f32> for &Even {
         type Output = <Even as ::core::ops::Sub<f32>>::Output;
         #[inline]
         fn sub(self, rhs: &f32) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<f32> for &Even {
+        type Output = <Even as ::core::ops::Sub<f32>>::Output;
+        #[inline]
+        fn sub(self, rhs: f32) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f32> for Even {
+        type Output = <Even as ::core::ops::Sub<f32>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&f32> for Even {
+        #[inline]
+        fn add_assign(&mut self, rhs: &f32) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&f32> for Even {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &f32) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Vector> for &Even {
@@ -10667,11 +13100,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Vector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for Even {
+        type Output = <Even as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Vector> for &Even {
         type Output = <Even as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Vector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for Even {
+        type Output = <Even as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for &Even {
@@ -10681,11 +13142,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Vector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for Even {
+        type Output = <Even as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Vector> for &Even {
         type Output = <Even as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Vector> for &Even {
+        type Output = <Even as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for Even {
+        type Output = <Even as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for &Even {
@@ -10695,11 +13184,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Vector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for Even {
+        type Output = <Even as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Bivector> for &Even {
         type Output = <Even as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Bivector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for Even {
+        type Output = <Even as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for &Even {
@@ -10709,11 +13226,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Bivector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for Even {
+        type Output = <Even as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Bivector> for &Even {
         type Output = <Even as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Bivector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for Even {
+        type Output = <Even as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for &Even {
@@ -10723,11 +13268,51 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Bivector> for &Even {
+        type Output = <Even as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for Even {
+        type Output = <Even as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Bivector> for &Even {
         type Output = <Even as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Bivector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for Even {
+        type Output = <Even as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Bivector> for Even {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Bivector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Bivector> for Even {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Bivector) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Trivector> for &Even {
@@ -10737,11 +13322,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Trivector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for Even {
+        type Output = <Even as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Trivector> for &Even {
         type Output = <Even as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Trivector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for Even {
+        type Output = <Even as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for &Even {
@@ -10751,11 +13364,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Trivector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for Even {
+        type Output = <Even as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Trivector> for &Even {
         type Output = <Even as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Trivector> for &Even {
+        type Output = <Even as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for Even {
+        type Output = <Even as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for &Even {
@@ -10765,11 +13406,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Trivector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for Even {
+        type Output = <Even as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Even> for &Even {
         type Output = <Even as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Even> for &Even {
+        type Output = <Even as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for Even {
+        type Output = <Even as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for &Even {
@@ -10779,11 +13448,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Even> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for Even {
+        type Output = <Even as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Even> for &Even {
         type Output = <Even as ::core::ops::BitOr<Even>>::Output;
         #[inline]
         fn bitor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Even> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for Even {
+        type Output = <Even as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Even> for &Even {
@@ -10793,11 +13490,51 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Even> for &Even {
+        type Output = <Even as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for Even {
+        type Output = <Even as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Even> for &Even {
         type Output = <Even as ::core::ops::Sub<Even>>::Output;
         #[inline]
         fn sub(self, rhs: &Even) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Even> for &Even {
+        type Output = <Even as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for Even {
+        type Output = <Even as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Even> for Even {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Even) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Even> for Even {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Even) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Odd> for &Even {
@@ -10807,11 +13544,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Odd> for &Even {
+        type Output = <Even as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for Even {
+        type Output = <Even as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Odd> for &Even {
         type Output = <Even as ::core::ops::BitXor<Odd>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Odd> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for Even {
+        type Output = <Even as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Odd> for &Even {
@@ -10821,11 +13586,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Odd> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for Even {
+        type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Odd> for &Even {
         type Output = <Even as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Odd> for &Even {
+        type Output = <Even as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for Even {
+        type Output = <Even as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for &Even {
@@ -10835,11 +13628,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Odd> for &Even {
+        type Output = <Even as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for Even {
+        type Output = <Even as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Multivector> for &Even {
         type Output = <Even as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Multivector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for Even {
+        type Output = <Even as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for &Even {
@@ -10849,11 +13670,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Multivector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for Even {
+        type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Multivector> for &Even {
         type Output = <Even as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Multivector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for Even {
+        type Output = <Even as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Multivector> for &Even {
@@ -10863,11 +13712,39 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Multivector> for &Even {
+        type Output = <Even as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for Even {
+        type Output = <Even as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Multivector> for &Even {
         type Output = <Even as ::core::ops::Sub<Multivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Multivector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for Even {
+        type Output = <Even as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&f32> for &Odd {
@@ -10877,11 +13754,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<f32> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<f32>>::Output;
+        #[inline]
+        fn mul(self, rhs: f32) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f32> for Odd {
+        type Output = <Odd as ::core::ops::Mul<f32>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&f32> for &Odd {
         type Output = <Odd as ::core::ops::BitXor<f32>>::Output;
         #[inline]
         fn bitxor(self, rhs: &f32) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<f32> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<f32>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: f32) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f32> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<f32>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f32) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&f32> for &Odd {
@@ -10891,11 +13796,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<f32> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<f32>>::Output;
+        #[inline]
+        fn bitor(self, rhs: f32) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f32> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<f32>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f32) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&f32> for &Odd {
         type Output = <Odd as ::core::ops::Add<f32>>::Output;
         #[inline]
         fn add(self, rhs: &f32) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<f32> for &Odd {
+        type Output = <Odd as ::core::ops::Add<f32>>::Output;
+        #[inline]
+        fn add(self, rhs: f32) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&f32> for Odd {
+        type Output = <Odd as ::core::ops::Add<f32>>::Output;
+        #[inline]
+        fn add(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&f32> for &Odd {
@@ -10905,11 +13838,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<f32> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<f32>>::Output;
+        #[inline]
+        fn sub(self, rhs: f32) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f32> for Odd {
+        type Output = <Odd as ::core::ops::Sub<f32>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Vector> for &Odd {
         type Output = <Odd as ::core::ops::Mul<Vector>>::Output;
         #[inline]
         fn mul(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Vector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for Odd {
+        type Output = <Odd as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Vector> for &Odd {
@@ -10919,11 +13880,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Vector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Vector> for &Odd {
         type Output = <Odd as ::core::ops::BitOr<Vector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Vector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Vector> for &Odd {
@@ -10933,11 +13922,51 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Vector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for Odd {
+        type Output = <Odd as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Vector> for &Odd {
         type Output = <Odd as ::core::ops::Sub<Vector>>::Output;
         #[inline]
         fn sub(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Vector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for Odd {
+        type Output = <Odd as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Vector> for Odd {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Vector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Vector> for Odd {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Vector) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Bivector> for &Odd {
@@ -10947,11 +13976,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for Odd {
+        type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Bivector> for &Odd {
         type Output = <Odd as ::core::ops::BitXor<Bivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Bivector> for &Odd {
@@ -10961,11 +14018,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Bivector> for &Odd {
         type Output = <Odd as ::core::ops::Add<Bivector>>::Output;
         #[inline]
         fn add(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for Odd {
+        type Output = <Odd as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Bivector> for &Odd {
@@ -10975,11 +14060,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for Odd {
+        type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Trivector> for &Odd {
         type Output = <Odd as ::core::ops::Mul<Trivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for Odd {
+        type Output = <Odd as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Trivector> for &Odd {
@@ -10989,11 +14102,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Trivector> for &Odd {
         type Output = <Odd as ::core::ops::BitOr<Trivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Trivector> for &Odd {
@@ -11003,11 +14144,51 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for Odd {
+        type Output = <Odd as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Trivector> for &Odd {
         type Output = <Odd as ::core::ops::Sub<Trivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for Odd {
+        type Output = <Odd as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Trivector> for Odd {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Trivector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Trivector> for Odd {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Trivector) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Even> for &Odd {
@@ -11017,11 +14198,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Even> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for Odd {
+        type Output = <Odd as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Even> for &Odd {
         type Output = <Odd as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Even> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for &Odd {
@@ -11031,11 +14240,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Even> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Even> for &Odd {
         type Output = <Odd as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Even> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for Odd {
+        type Output = <Odd as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for &Odd {
@@ -11045,11 +14282,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Even> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for Odd {
+        type Output = <Odd as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Odd> for &Odd {
         type Output = <Odd as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Odd> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for Odd {
+        type Output = <Odd as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for &Odd {
@@ -11059,11 +14324,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Odd> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Odd> for &Odd {
         type Output = <Odd as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Odd> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for &Odd {
@@ -11073,11 +14366,51 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Odd> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for Odd {
+        type Output = <Odd as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Odd> for &Odd {
         type Output = <Odd as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Odd> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for Odd {
+        type Output = <Odd as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Odd> for Odd {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Odd) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Odd> for Odd {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Odd) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Multivector> for &Odd {
@@ -11087,11 +14420,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for Odd {
+        type Output = <Odd as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Multivector> for &Odd {
         type Output = <Odd as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for &Odd {
@@ -11101,11 +14462,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Multivector> for &Odd {
         type Output = <Odd as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for Odd {
+        type Output = <Odd as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for &Odd {
@@ -11115,11 +14504,39 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for Odd {
+        type Output = <Odd as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&f32> for &Multivector {
         type Output = <Multivector as ::core::ops::Mul<f32>>::Output;
         #[inline]
         fn mul(self, rhs: &f32) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<f32> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<f32>>::Output;
+        #[inline]
+        fn mul(self, rhs: f32) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f32> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<f32>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&f32> for &Multivector {
@@ -11129,11 +14546,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<f32> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<f32>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: f32) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f32> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<f32>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f32) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&f32> for &Multivector {
         type Output = <Multivector as ::core::ops::BitOr<f32>>::Output;
         #[inline]
         fn bitor(self, rhs: &f32) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<f32> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<f32>>::Output;
+        #[inline]
+        fn bitor(self, rhs: f32) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f32> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<f32>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f32) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&f32> for &Multivector {
@@ -11143,11 +14588,51 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<f32> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<f32>>::Output;
+        #[inline]
+        fn add(self, rhs: f32) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&f32> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<f32>>::Output;
+        #[inline]
+        fn add(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&f32> for &Multivector {
         type Output = <Multivector as ::core::ops::Sub<f32>>::Output;
         #[inline]
         fn sub(self, rhs: &f32) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<f32> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<f32>>::Output;
+        #[inline]
+        fn sub(self, rhs: f32) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f32> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<f32>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f32) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&f32> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &f32) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&f32> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &f32) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Vector> for &Multivector {
@@ -11157,11 +14642,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Vector> for &Multivector {
         type Output = <Multivector as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for &Multivector {
@@ -11171,11 +14684,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Vector> for &Multivector {
         type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for &Multivector {
@@ -11185,11 +14726,51 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Vector> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Vector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Vector> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Vector) {
+            *self -= *rhs;
+        }
+    }
     impl ::core::ops::Mul<&Bivector> for &Multivector {
         type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for &Multivector {
@@ -11199,11 +14780,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Bivector> for &Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for &Multivector {
@@ -11213,11 +14822,51 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Bivector> for &Multivector {
         type Output = <Multivector as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Bivector> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Bivector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Bivector> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Bivector) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Trivector> for &Multivector {
@@ -11227,11 +14876,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Trivector> for &Multivector {
         type Output = <Multivector as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for &Multivector {
@@ -11241,11 +14918,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Trivector> for &Multivector {
         type Output = <Multivector as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for &Multivector {
@@ -11255,11 +14960,51 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Trivector> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Trivector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Trivector> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Trivector) {
+            *self -= *rhs;
+        }
+    }
     impl ::core::ops::Mul<&Even> for &Multivector {
         type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for &Multivector {
@@ -11269,11 +15014,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Even> for &Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
         #[inline]
         fn bitor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Even> for &Multivector {
@@ -11283,11 +15056,51 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Even> for &Multivector {
         type Output = <Multivector as ::core::ops::Sub<Even>>::Output;
         #[inline]
         fn sub(self, rhs: &Even) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Even> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Even) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Even> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Even) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Odd> for &Multivector {
@@ -11297,11 +15110,39 @@ pub mod g3 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Odd> for &Multivector {
         type Output = <Multivector as ::core::ops::BitXor<Odd>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Odd> for &Multivector {
@@ -11311,11 +15152,39 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Odd> for &Multivector {
         type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for &Multivector {
@@ -11325,11 +15194,51 @@ pub mod g3 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Odd> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Odd) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Odd> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Odd) {
+            *self -= *rhs;
+        }
+    }
     impl ::core::ops::Mul<&Multivector> for &Multivector {
         type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for &Multivector {
@@ -11339,11 +15248,39 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Multivector> for &Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Multivector> for &Multivector {
@@ -11353,11 +15290,51 @@ pub mod g3 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Multivector> for &Multivector {
         type Output = <Multivector as ::core::ops::Sub<Multivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Multivector> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Multivector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Multivector> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Multivector) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Neg for &Vector {
@@ -11367,11 +15344,77 @@ pub mod g3 {
             -*self
         }
     }
+    impl ::core::ops::Div<f32> for &Vector {
+        type Output = Vector;
+        #[inline]
+        fn div(self, rhs: f32) -> Vector {
+            *self / rhs
+        }
+    }
+    impl ::core::ops::Div<&f32> for Vector {
+        type Output = Vector;
+        #[inline]
+        fn div(self, rhs: &f32) -> Vector {
+            self / *rhs
+        }
+    }
+    impl ::core::ops::Div<&f32> for &Vector {
+        type Output = Vector;
+        #[inline]
+        fn div(self, rhs: &f32) -> Vector {
+            *self / *rhs
+        }
+    }
+    impl ::core::ops::MulAssign<&f32> for Vector {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &f32) {
+            *self *= *rhs;
+        }
+    }
+    impl ::core::ops::DivAssign<&f32> for Vector {
+        #[inline]
+        fn div_assign(&mut self, rhs: &f32) {
+            *self /= *rhs;
+        }
+    }
     impl ::core::ops::Neg for &Bivector {
         type Output = Bivector;
         #[inline]
         fn neg(self) -> Bivector {
             -*self
+        }
+    }
+    impl ::core::ops::Div<f32> for &Bivector {
+        type Output = Bivector;
+        #[inline]
+        fn div(self, rhs: f32) -> Bivector {
+            *self / rhs
+        }
+    }
+    impl ::core::ops::Div<&f32> for Bivector {
+        type Output = Bivector;
+        #[inline]
+        fn div(self, rhs: &f32) -> Bivector {
+            self / *rhs
+        }
+    }
+    impl ::core::ops::Div<&f32> for &Bivector {
+        type Output = Bivector;
+        #[inline]
+        fn div(self, rhs: &f32) -> Bivector {
+            *self / *rhs
+        }
+    }
+    impl ::core::ops::MulAssign<&f32> for Bivector {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &f32) {
+            *self *= *rhs;
+        }
+    }
+    impl ::core::ops::DivAssign<&f32> for Bivector {
+        #[inline]
+        fn div_assign(&mut self, rhs: &f32) {
+            *self /= *rhs;
         }
     }
     impl ::core::ops::Neg for &Trivector {
@@ -11381,11 +15424,83 @@ pub mod g3 {
             -*self
         }
     }
+    impl ::core::ops::Div<f32> for &Trivector {
+        type Output = Trivector;
+        #[inline]
+        fn div(self, rhs: f32) -> Trivector {
+            *self / rhs
+        }
+    }
+    impl ::core::ops::Div<&f32> for Trivector {
+        type Output = Trivector;
+        #[inline]
+        fn div(self, rhs: &f32) -> Trivector {
+            self / *rhs
+        }
+    }
+    impl ::core::ops::Div<&f32> for &Trivector {
+        type Output = Trivector;
+        #[inline]
+        fn div(self, rhs: &f32) -> Trivector {
+            *self / *rhs
+        }
+    }
+    impl ::core::ops::MulAssign<&f32> for Trivector {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &f32) {
+            *self *= *rhs;
+        }
+    }
+    impl ::core::ops::DivAssign<&f32> for Trivector {
+        #[inline]
+        fn div_assign(&mut self, rhs: &f32) {
+            *self /= *rhs;
+        }
+    }
     impl ::core::ops::Neg for &Even {
         type Output = Even;
         #[inline]
         fn neg(self) -> Even {
             -*self
+        }
+    }
+    impl ::core::ops::Div<f32> for &Even {
+        type Output = Even;
+        #[inline]
+        fn div(self, rhs: f32) -> Even {
+            *self / rhs
+        }
+    }
+    impl ::core::ops::Div<&f32> for Even {
+        type Output = Even;
+        #[inline]
+        fn div(self, rhs: &f32) -> Even {
+            self / *rhs
+        }
+    }
+    impl ::core::ops::Div<&f32> for &Even {
+        type Output = Even;
+        #[inline]
+        fn div(self, rhs: &f32) -> Even {
+            *self / *rhs
+        }
+    }
+    impl ::core::ops::MulAssign<&f32> for Even {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &f32) {
+            *self *= *rhs;
+        }
+    }
+    impl ::core::ops::DivAssign<&f32> for Even {
+        #[inline]
+        fn div_assign(&mut self, rhs: &f32) {
+            *self /= *rhs;
+        }
+    }
+    impl ::core::ops::MulAssign<&Even> for Even {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &Even) {
+            *self *= *rhs;
         }
     }
     impl ::core::ops::Neg for &Odd {
@@ -11395,11 +15510,83 @@ pub mod g3 {
             -*self
         }
     }
+    impl ::core::ops::Div<f32> for &Odd {
+        type Output = Odd;
+        #[inline]
+        fn div(self, rhs: f32) -> Odd {
+            *self / rhs
+        }
+    }
+    impl ::core::ops::Div<&f32> for Odd {
+        type Output = Odd;
+        #[inline]
+        fn div(self, rhs: &f32) -> Odd {
+            self / *rhs
+        }
+    }
+    impl ::core::ops::Div<&f32> for &Odd {
+        type Output = Odd;
+        #[inline]
+        fn div(self, rhs: &f32) -> Odd {
+            *self / *rhs
+        }
+    }
+    impl ::core::ops::MulAssign<&f32> for Odd {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &f32) {
+            *self *= *rhs;
+        }
+    }
+    impl ::core::ops::DivAssign<&f32> for Odd {
+        #[inline]
+        fn div_assign(&mut self, rhs: &f32) {
+            *self /= *rhs;
+        }
+    }
     impl ::core::ops::Neg for &Multivector {
         type Output = Multivector;
         #[inline]
         fn neg(self) -> Multivector {
             -*self
+        }
+    }
+    impl ::core::ops::Div<f32> for &Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn div(self, rhs: f32) -> Multivector {
+            *self / rhs
+        }
+    }
+    impl ::core::ops::Div<&f32> for Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn div(self, rhs: &f32) -> Multivector {
+            self / *rhs
+        }
+    }
+    impl ::core::ops::Div<&f32> for &Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn div(self, rhs: &f32) -> Multivector {
+            *self / *rhs
+        }
+    }
+    impl ::core::ops::MulAssign<&f32> for Multivector {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &f32) {
+            *self *= *rhs;
+        }
+    }
+    impl ::core::ops::DivAssign<&f32> for Multivector {
+        #[inline]
+        fn div_assign(&mut self, rhs: &f32) {
+            *self /= *rhs;
+        }
+    }
+    impl ::core::ops::MulAssign<&Multivector> for Multivector {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &Multivector) {
+            *self *= *rhs;
         }
     }
     impl ::core::ops::Div<Vector> for f32 {

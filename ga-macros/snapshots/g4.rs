@@ -14024,13 +14024,17 @@ pub mod g4 {
     /// The versor product: `v x ~v` for even `v`, `v x^ ~v` for odd `v` (x^ the grade
     /// involution), in the form the generator's cost model picks (a quadratic form with
     /// like terms collected, or commutators). Returns `x`'s own type; exact for any
-    /// versor, so the result is scaled by |v|^2 when `v` is not unit.
+    /// versor, so the result is scaled by |v|^2 when `v` is not unit. Either side may
+    /// be a reference (`r.sandwich(&v)`, as glam's `q * &v`).
     pub trait Sandwich<X> {
+        /// `x`'s own type (the referenced type when `x` is a reference).
+        type Output;
         /// `v x ~v` (even `v`) or `v x^ ~v` (odd `v`).
         #[must_use]
-        fn sandwich(self, x: X) -> X;
+        fn sandwich(self, x: X) -> Self::Output;
     }
     impl Sandwich<Vector> for Vector {
+        type Output = Vector;
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
             let two_e1 = self.e1 + self.e1;
@@ -14062,7 +14066,29 @@ pub mod g4 {
             }
         }
     }
+    impl Sandwich<&Vector> for Vector {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: &Vector) -> Vector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Vector> for &Vector {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: Vector) -> Vector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Vector> for &Vector {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: &Vector) -> Vector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Bivector> for Vector {
+        type Output = Bivector;
         #[inline]
         fn sandwich(self, x: Bivector) -> Bivector {
             let two_e1 = self.e1 + self.e1;
@@ -14101,7 +14127,29 @@ pub mod g4 {
             }
         }
     }
+    impl Sandwich<&Bivector> for Vector {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: &Bivector) -> Bivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Bivector> for &Vector {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: Bivector) -> Bivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Bivector> for &Vector {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: &Bivector) -> Bivector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Trivector> for Vector {
+        type Output = Trivector;
         #[inline]
         fn sandwich(self, x: Trivector) -> Trivector {
             let two_e1 = self.e1 + self.e1;
@@ -14133,7 +14181,29 @@ pub mod g4 {
             }
         }
     }
+    impl Sandwich<&Trivector> for Vector {
+        type Output = Trivector;
+        #[inline]
+        fn sandwich(self, x: &Trivector) -> Trivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Trivector> for &Vector {
+        type Output = Trivector;
+        #[inline]
+        fn sandwich(self, x: Trivector) -> Trivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Trivector> for &Vector {
+        type Output = Trivector;
+        #[inline]
+        fn sandwich(self, x: &Trivector) -> Trivector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Quadvector> for Vector {
+        type Output = Quadvector;
         #[inline]
         fn sandwich(self, x: Quadvector) -> Quadvector {
             let e1_e1 = self.e1 * self.e1;
@@ -14145,7 +14215,29 @@ pub mod g4 {
             }
         }
     }
+    impl Sandwich<&Quadvector> for Vector {
+        type Output = Quadvector;
+        #[inline]
+        fn sandwich(self, x: &Quadvector) -> Quadvector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Quadvector> for &Vector {
+        type Output = Quadvector;
+        #[inline]
+        fn sandwich(self, x: Quadvector) -> Quadvector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Quadvector> for &Vector {
+        type Output = Quadvector;
+        #[inline]
+        fn sandwich(self, x: &Quadvector) -> Quadvector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Even> for Vector {
+        type Output = Even;
         #[inline]
         fn sandwich(self, x: Even) -> Even {
             let two_e1 = self.e1 + self.e1;
@@ -14187,7 +14279,29 @@ pub mod g4 {
             }
         }
     }
+    impl Sandwich<&Even> for Vector {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: &Even) -> Even {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Even> for &Vector {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: Even) -> Even {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Even> for &Vector {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: &Even) -> Even {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Odd> for Vector {
+        type Output = Odd;
         #[inline]
         fn sandwich(self, x: Odd) -> Odd {
             let two_e1 = self.e1 + self.e1;
@@ -14227,7 +14341,29 @@ pub mod g4 {
             }
         }
     }
+    impl Sandwich<&Odd> for Vector {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: &Odd) -> Odd {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Odd> for &Vector {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: Odd) -> Odd {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Odd> for &Vector {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: &Odd) -> Odd {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Multivector> for Vector {
+        type Output = Multivector;
         #[inline]
         fn sandwich(self, x: Multivector) -> Multivector {
             let two_e1 = self.e1 + self.e1;
@@ -14285,6 +14421,27 @@ pub mod g4 {
             }
         }
     }
+    impl Sandwich<&Multivector> for Vector {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: &Multivector) -> Multivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Multivector> for &Vector {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: Multivector) -> Multivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Multivector> for &Vector {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: &Multivector) -> Multivector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Vector {
         /// The matrix of the vector map of [`Sandwich::sandwich`] (`x -> v x ~v`, or
         /// `v x^ ~v` for an odd versor; row = output component, column = input
@@ -14336,6 +14493,7 @@ pub mod g4 {
         }
     }
     impl Sandwich<Vector> for Even {
+        type Output = Vector;
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
             let two_s = self.s + self.s;
@@ -14417,7 +14575,29 @@ pub mod g4 {
             }
         }
     }
+    impl Sandwich<&Vector> for Even {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: &Vector) -> Vector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Vector> for &Even {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: Vector) -> Vector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Vector> for &Even {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: &Vector) -> Vector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Bivector> for Even {
+        type Output = Bivector;
         #[inline]
         fn sandwich(self, x: Bivector) -> Bivector {
             let two_s = self.s + self.s;
@@ -14527,7 +14707,29 @@ pub mod g4 {
             }
         }
     }
+    impl Sandwich<&Bivector> for Even {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: &Bivector) -> Bivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Bivector> for &Even {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: Bivector) -> Bivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Bivector> for &Even {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: &Bivector) -> Bivector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Trivector> for Even {
+        type Output = Trivector;
         #[inline]
         fn sandwich(self, x: Trivector) -> Trivector {
             let two_s = self.s + self.s;
@@ -14609,7 +14811,29 @@ pub mod g4 {
             }
         }
     }
+    impl Sandwich<&Trivector> for Even {
+        type Output = Trivector;
+        #[inline]
+        fn sandwich(self, x: &Trivector) -> Trivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Trivector> for &Even {
+        type Output = Trivector;
+        #[inline]
+        fn sandwich(self, x: Trivector) -> Trivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Trivector> for &Even {
+        type Output = Trivector;
+        #[inline]
+        fn sandwich(self, x: &Trivector) -> Trivector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Quadvector> for Even {
+        type Output = Quadvector;
         #[inline]
         fn sandwich(self, x: Quadvector) -> Quadvector {
             let s_s = self.s * self.s;
@@ -14626,7 +14850,29 @@ pub mod g4 {
             }
         }
     }
+    impl Sandwich<&Quadvector> for Even {
+        type Output = Quadvector;
+        #[inline]
+        fn sandwich(self, x: &Quadvector) -> Quadvector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Quadvector> for &Even {
+        type Output = Quadvector;
+        #[inline]
+        fn sandwich(self, x: Quadvector) -> Quadvector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Quadvector> for &Even {
+        type Output = Quadvector;
+        #[inline]
+        fn sandwich(self, x: &Quadvector) -> Quadvector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Even> for Even {
+        type Output = Even;
         #[inline]
         fn sandwich(self, x: Even) -> Even {
             let two_s = self.s + self.s;
@@ -14740,7 +14986,29 @@ pub mod g4 {
             }
         }
     }
+    impl Sandwich<&Even> for Even {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: &Even) -> Even {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Even> for &Even {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: Even) -> Even {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Even> for &Even {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: &Even) -> Even {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Odd> for Even {
+        type Output = Odd;
         #[inline]
         fn sandwich(self, x: Odd) -> Odd {
             let two_s = self.s + self.s;
@@ -14838,7 +15106,29 @@ pub mod g4 {
             }
         }
     }
+    impl Sandwich<&Odd> for Even {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: &Odd) -> Odd {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Odd> for &Even {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: Odd) -> Odd {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Odd> for &Even {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: &Odd) -> Odd {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Multivector> for Even {
+        type Output = Multivector;
         #[inline]
         fn sandwich(self, x: Multivector) -> Multivector {
             let two_s = self.s + self.s;
@@ -15004,6 +15294,27 @@ pub mod g4 {
             }
         }
     }
+    impl Sandwich<&Multivector> for Even {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: &Multivector) -> Multivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Multivector> for &Even {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: Multivector) -> Multivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Multivector> for &Even {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: &Multivector) -> Multivector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Even {
         /// The matrix of the vector map of [`Sandwich::sandwich`] (`x -> v x ~v`, or
         /// `v x^ ~v` for an odd versor; row = output component, column = input
@@ -15117,6 +15428,7 @@ pub mod g4 {
         }
     }
     impl Sandwich<Vector> for Odd {
+        type Output = Vector;
         #[inline]
         fn sandwich(self, x: Vector) -> Vector {
             let two_e1 = self.e1 + self.e1;
@@ -15198,7 +15510,29 @@ pub mod g4 {
             }
         }
     }
+    impl Sandwich<&Vector> for Odd {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: &Vector) -> Vector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Vector> for &Odd {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: Vector) -> Vector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Vector> for &Odd {
+        type Output = Vector;
+        #[inline]
+        fn sandwich(self, x: &Vector) -> Vector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Bivector> for Odd {
+        type Output = Bivector;
         #[inline]
         fn sandwich(self, x: Bivector) -> Bivector {
             let two_e1 = self.e1 + self.e1;
@@ -15308,7 +15642,29 @@ pub mod g4 {
             }
         }
     }
+    impl Sandwich<&Bivector> for Odd {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: &Bivector) -> Bivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Bivector> for &Odd {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: Bivector) -> Bivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Bivector> for &Odd {
+        type Output = Bivector;
+        #[inline]
+        fn sandwich(self, x: &Bivector) -> Bivector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Trivector> for Odd {
+        type Output = Trivector;
         #[inline]
         fn sandwich(self, x: Trivector) -> Trivector {
             let two_e1 = self.e1 + self.e1;
@@ -15390,7 +15746,29 @@ pub mod g4 {
             }
         }
     }
+    impl Sandwich<&Trivector> for Odd {
+        type Output = Trivector;
+        #[inline]
+        fn sandwich(self, x: &Trivector) -> Trivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Trivector> for &Odd {
+        type Output = Trivector;
+        #[inline]
+        fn sandwich(self, x: Trivector) -> Trivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Trivector> for &Odd {
+        type Output = Trivector;
+        #[inline]
+        fn sandwich(self, x: &Trivector) -> Trivector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Quadvector> for Odd {
+        type Output = Quadvector;
         #[inline]
         fn sandwich(self, x: Quadvector) -> Quadvector {
             let e1_e1 = self.e1 * self.e1;
@@ -15407,7 +15785,29 @@ pub mod g4 {
             }
         }
     }
+    impl Sandwich<&Quadvector> for Odd {
+        type Output = Quadvector;
+        #[inline]
+        fn sandwich(self, x: &Quadvector) -> Quadvector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Quadvector> for &Odd {
+        type Output = Quadvector;
+        #[inline]
+        fn sandwich(self, x: Quadvector) -> Quadvector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Quadvector> for &Odd {
+        type Output = Quadvector;
+        #[inline]
+        fn sandwich(self, x: &Quadvector) -> Quadvector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Even> for Odd {
+        type Output = Even;
         #[inline]
         fn sandwich(self, x: Even) -> Even {
             let two_e1 = self.e1 + self.e1;
@@ -15521,7 +15921,29 @@ pub mod g4 {
             }
         }
     }
+    impl Sandwich<&Even> for Odd {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: &Even) -> Even {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Even> for &Odd {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: Even) -> Even {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Even> for &Odd {
+        type Output = Even;
+        #[inline]
+        fn sandwich(self, x: &Even) -> Even {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Odd> for Odd {
+        type Output = Odd;
         #[inline]
         fn sandwich(self, x: Odd) -> Odd {
             let two_e1 = self.e1 + self.e1;
@@ -15619,7 +16041,29 @@ pub mod g4 {
             }
         }
     }
+    impl Sandwich<&Odd> for Odd {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: &Odd) -> Odd {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Odd> for &Odd {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: Odd) -> Odd {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Odd> for &Odd {
+        type Output = Odd;
+        #[inline]
+        fn sandwich(self, x: &Odd) -> Odd {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Sandwich<Multivector> for Odd {
+        type Output = Multivector;
         #[inline]
         fn sandwich(self, x: Multivector) -> Multivector {
             let two_e1 = self.e1 + self.e1;
@@ -15785,6 +16229,27 @@ pub mod g4 {
             }
         }
     }
+    impl Sandwich<&Multivector> for Odd {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: &Multivector) -> Multivector {
+            Sandwich::sandwich(self, *x)
+        }
+    }
+    impl Sandwich<Multivector> for &Odd {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: Multivector) -> Multivector {
+            Sandwich::sandwich(*self, x)
+        }
+    }
+    impl Sandwich<&Multivector> for &Odd {
+        type Output = Multivector;
+        #[inline]
+        fn sandwich(self, x: &Multivector) -> Multivector {
+            Sandwich::sandwich(*self, *x)
+        }
+    }
     impl Odd {
         /// The matrix of the vector map of [`Sandwich::sandwich`] (`x -> v x ~v`, or
         /// `v x^ ~v` for an odd versor; row = output component, column = input
@@ -15897,22 +16362,43 @@ pub mod g4 {
             }
         }
     }
-    /// Writes `1 + 2e1 - 0.5e12`: each non-zero component with its blade (the scalar
-    /// without one), honouring the formatter's precision; at a precision `p`, terms
-    /// that would print as zero are left out. Zero prints as `0`.
+    /// Writes `1 + 2 e1 - 0.5 e12`: each non-zero component, a space, its blade (the
+    /// scalar without one; the space keeps `1 e12` apart from ten to the twelfth),
+    /// honouring the formatter's precision; at a precision `p`, terms that would print
+    /// as zero are left out. Magnitudes below `1e-5` or from `1e16` print in exponent
+    /// form (`5e-324`, not 324 digits), except below `1e-5` at a precision, where the
+    /// fixed form shows what rounds away. Zero prints as `0`.
     fn display_terms(
         f: &mut ::core::fmt::Formatter<'_>,
         terms: &[(f64, &str)],
     ) -> ::core::fmt::Result {
-        let threshold: f64 = match f.precision() {
-            Some(p) => (0..p.min(400)).fold(0.5, |t, _| t / 10.0),
-            None => 0.0,
-        };
+        /// Notes whether a non-zero digit is written: a term "prints as zero" exactly
+        /// when the formatter's own rounding leaves none (no buffer, so `no_std`).
+        struct NonZeroDigit(bool);
+        impl ::core::fmt::Write for NonZeroDigit {
+            fn write_str(&mut self, s: &str) -> ::core::fmt::Result {
+                self.0 |= s.bytes().any(|b| (b'1'..=b'9').contains(&b));
+                Ok(())
+            }
+        }
         let mut first = true;
         for &(value, blade) in terms {
             let magnitude = value.abs();
-            if magnitude <= threshold {
+            if magnitude == 0.0 {
                 continue;
+            }
+            let large = magnitude >= 1e16 && magnitude.is_finite();
+            let small = magnitude < 1e-5;
+            let exponent = large || (small && f.precision().is_none());
+            if let (Some(p), false) = (
+                f.precision(),
+                exponent || !magnitude.is_finite(),
+            ) {
+                let mut digits = NonZeroDigit(false);
+                ::core::fmt::write(&mut digits, format_args!("{:.*}", p, magnitude))?;
+                if !digits.0 {
+                    continue;
+                }
             }
             let negative = value.is_sign_negative() && !value.is_nan();
             match (first, negative) {
@@ -15921,9 +16407,14 @@ pub mod g4 {
                 (false, true) => f.write_str(" - ")?,
                 (false, false) => f.write_str(" + ")?,
             }
-            match f.precision() {
-                Some(p) => write!(f, "{:.*}{}", p, magnitude, blade)?,
-                None => write!(f, "{}{}", magnitude, blade)?,
+            match (f.precision(), exponent) {
+                (Some(p), true) => write!(f, "{:.*e}", p, magnitude)?,
+                (Some(p), false) => write!(f, "{:.*}", p, magnitude)?,
+                (None, true) => write!(f, "{:e}", magnitude)?,
+                (None, false) => write!(f, "{}", magnitude)?,
+            }
+            if !blade.is_empty() {
+                write!(f, " {}", blade)?;
             }
             first = false;
         }
@@ -16721,11 +17212,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Vector> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for f64 {
+        type Output = <f64 as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Vector> for &f64 {
         type Output = <f64 as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Vector> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for f64 {
+        type Output = <f64 as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for &f64 {
@@ -16735,11 +17254,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Vector> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for f64 {
+        type Output = <f64 as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Vector> for &f64 {
         type Output = <f64 as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Vector> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for f64 {
+        type Output = <f64 as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for &f64 {
@@ -16749,11 +17296,39 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Vector> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for f64 {
+        type Output = <f64 as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Bivector> for &f64 {
         type Output = <f64 as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Bivector> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for f64 {
+        type Output = <f64 as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for &f64 {
@@ -16763,11 +17338,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Bivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for f64 {
+        type Output = <f64 as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Bivector> for &f64 {
         type Output = <f64 as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Bivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for f64 {
+        type Output = <f64 as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for &f64 {
@@ -16777,11 +17380,39 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Bivector> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for f64 {
+        type Output = <f64 as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Bivector> for &f64 {
         type Output = <f64 as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Bivector> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for f64 {
+        type Output = <f64 as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Trivector> for &f64 {
@@ -16791,11 +17422,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Trivector> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for f64 {
+        type Output = <f64 as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Trivector> for &f64 {
         type Output = <f64 as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Trivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for f64 {
+        type Output = <f64 as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for &f64 {
@@ -16805,11 +17464,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Trivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for f64 {
+        type Output = <f64 as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Trivector> for &f64 {
         type Output = <f64 as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Trivector> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for f64 {
+        type Output = <f64 as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for &f64 {
@@ -16819,11 +17506,39 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Trivector> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for f64 {
+        type Output = <f64 as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Quadvector> for &f64 {
         type Output = <f64 as ::core::ops::Mul<Quadvector>>::Output;
         #[inline]
         fn mul(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Quadvector> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Quadvector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Quadvector> for f64 {
+        type Output = <f64 as ::core::ops::Mul<Quadvector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Quadvector> for &f64 {
@@ -16833,11 +17548,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Quadvector> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Quadvector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Quadvector> for f64 {
+        type Output = <f64 as ::core::ops::BitXor<Quadvector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Quadvector> for &f64 {
         type Output = <f64 as ::core::ops::BitOr<Quadvector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Quadvector> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Quadvector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Quadvector> for f64 {
+        type Output = <f64 as ::core::ops::BitOr<Quadvector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Quadvector> for &f64 {
@@ -16847,11 +17590,39 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Quadvector> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Quadvector>>::Output;
+        #[inline]
+        fn add(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Quadvector> for f64 {
+        type Output = <f64 as ::core::ops::Add<Quadvector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Quadvector> for &f64 {
         type Output = <f64 as ::core::ops::Sub<Quadvector>>::Output;
         #[inline]
         fn sub(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Quadvector> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Quadvector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Quadvector> for f64 {
+        type Output = <f64 as ::core::ops::Sub<Quadvector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Even> for &f64 {
@@ -16861,11 +17632,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Even> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for f64 {
+        type Output = <f64 as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Even> for &f64 {
         type Output = <f64 as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Even> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for f64 {
+        type Output = <f64 as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for &f64 {
@@ -16875,11 +17674,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Even> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for f64 {
+        type Output = <f64 as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Even> for &f64 {
         type Output = <f64 as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Even> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for f64 {
+        type Output = <f64 as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for &f64 {
@@ -16889,11 +17716,39 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Even> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for f64 {
+        type Output = <f64 as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Odd> for &f64 {
         type Output = <f64 as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Odd> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for f64 {
+        type Output = <f64 as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for &f64 {
@@ -16903,11 +17758,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Odd> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for f64 {
+        type Output = <f64 as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Odd> for &f64 {
         type Output = <f64 as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Odd> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for f64 {
+        type Output = <f64 as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for &f64 {
@@ -16917,11 +17800,39 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Odd> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for f64 {
+        type Output = <f64 as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Odd> for &f64 {
         type Output = <f64 as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Odd> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for f64 {
+        type Output = <f64 as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Multivector> for &f64 {
@@ -16931,11 +17842,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Multivector> for &f64 {
+        type Output = <f64 as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for f64 {
+        type Output = <f64 as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Multivector> for &f64 {
         type Output = <f64 as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Multivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for f64 {
+        type Output = <f64 as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for &f64 {
@@ -16945,11 +17884,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Multivector> for &f64 {
+        type Output = <f64 as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for f64 {
+        type Output = <f64 as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Multivector> for &f64 {
         type Output = <f64 as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Multivector> for &f64 {
+        type Output = <f64 as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for f64 {
+        type Output = <f64 as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for &f64 {
@@ -16959,11 +17926,39 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Multivector> for &f64 {
+        type Output = <f64 as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for f64 {
+        type Output = <f64 as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&f64> for &Vector {
         type Output = <Vector as ::core::ops::Mul<f64>>::Output;
         #[inline]
         fn mul(self, rhs: &f64) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<f64> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for Vector {
+        type Output = <Vector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&f64> for &Vector {
@@ -16973,11 +17968,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<f64> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&f64> for &Vector {
         type Output = <Vector as ::core::ops::BitOr<f64>>::Output;
         #[inline]
         fn bitor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<f64> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&f64> for &Vector {
@@ -16987,11 +18010,39 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<f64> for &Vector {
+        type Output = <Vector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: f64) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for Vector {
+        type Output = <Vector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&f64> for &Vector {
         type Output = <Vector as ::core::ops::Sub<f64>>::Output;
         #[inline]
         fn sub(self, rhs: &f64) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<f64> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for Vector {
+        type Output = <Vector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Vector> for &Vector {
@@ -17001,11 +18052,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Vector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for Vector {
+        type Output = <Vector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Vector> for &Vector {
         type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Vector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for &Vector {
@@ -17015,11 +18094,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Vector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Vector> for &Vector {
         type Output = <Vector as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Vector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for Vector {
+        type Output = <Vector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for &Vector {
@@ -17029,11 +18136,51 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Vector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for Vector {
+        type Output = <Vector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Vector> for Vector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Vector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Vector> for Vector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Vector) {
+            *self -= *rhs;
+        }
+    }
     impl ::core::ops::Mul<&Bivector> for &Vector {
         type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for Vector {
+        type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for &Vector {
@@ -17043,11 +18190,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Bivector> for &Vector {
         type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for &Vector {
@@ -17057,11 +18232,39 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for Vector {
+        type Output = <Vector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Bivector> for &Vector {
         type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Bivector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for Vector {
+        type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Trivector> for &Vector {
@@ -17071,11 +18274,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for Vector {
+        type Output = <Vector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Trivector> for &Vector {
         type Output = <Vector as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for &Vector {
@@ -17085,11 +18316,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Trivector> for &Vector {
         type Output = <Vector as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for Vector {
+        type Output = <Vector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for &Vector {
@@ -17099,11 +18358,39 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Trivector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for Vector {
+        type Output = <Vector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Quadvector> for &Vector {
         type Output = <Vector as ::core::ops::Mul<Quadvector>>::Output;
         #[inline]
         fn mul(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Quadvector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Quadvector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Quadvector> for Vector {
+        type Output = <Vector as ::core::ops::Mul<Quadvector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Quadvector> for &Vector {
@@ -17113,11 +18400,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Quadvector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Quadvector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Quadvector> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<Quadvector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Quadvector> for &Vector {
         type Output = <Vector as ::core::ops::BitOr<Quadvector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Quadvector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Quadvector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Quadvector> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<Quadvector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Quadvector> for &Vector {
@@ -17127,11 +18442,39 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Quadvector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Quadvector>>::Output;
+        #[inline]
+        fn add(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Quadvector> for Vector {
+        type Output = <Vector as ::core::ops::Add<Quadvector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Quadvector> for &Vector {
         type Output = <Vector as ::core::ops::Sub<Quadvector>>::Output;
         #[inline]
         fn sub(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Quadvector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Quadvector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Quadvector> for Vector {
+        type Output = <Vector as ::core::ops::Sub<Quadvector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Even> for &Vector {
@@ -17141,11 +18484,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Even> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for Vector {
+        type Output = <Vector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Even> for &Vector {
         type Output = <Vector as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Even> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for &Vector {
@@ -17155,11 +18526,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Even> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Even> for &Vector {
         type Output = <Vector as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Even> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for Vector {
+        type Output = <Vector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for &Vector {
@@ -17169,11 +18568,39 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Even> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for Vector {
+        type Output = <Vector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Odd> for &Vector {
         type Output = <Vector as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Odd> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for Vector {
+        type Output = <Vector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for &Vector {
@@ -17183,11 +18610,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Odd> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Odd> for &Vector {
         type Output = <Vector as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Odd> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for &Vector {
@@ -17197,11 +18652,39 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Odd> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for Vector {
+        type Output = <Vector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Odd> for &Vector {
         type Output = <Vector as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Odd> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for Vector {
+        type Output = <Vector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Multivector> for &Vector {
@@ -17211,11 +18694,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for Vector {
+        type Output = <Vector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Multivector> for &Vector {
         type Output = <Vector as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for Vector {
+        type Output = <Vector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for &Vector {
@@ -17225,11 +18736,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for Vector {
+        type Output = <Vector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Multivector> for &Vector {
         type Output = <Vector as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for Vector {
+        type Output = <Vector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for &Vector {
@@ -17239,11 +18778,39 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Multivector> for &Vector {
+        type Output = <Vector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for Vector {
+        type Output = <Vector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&f64> for &Bivector {
         type Output = <Bivector as ::core::ops::Mul<f64>>::Output;
         #[inline]
         fn mul(self, rhs: &f64) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<f64> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&f64> for &Bivector {
@@ -17253,11 +18820,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<f64> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&f64> for &Bivector {
         type Output = <Bivector as ::core::ops::BitOr<f64>>::Output;
         #[inline]
         fn bitor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<f64> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&f64> for &Bivector {
@@ -17267,11 +18862,39 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<f64> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: f64) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&f64> for &Bivector {
         type Output = <Bivector as ::core::ops::Sub<f64>>::Output;
         #[inline]
         fn sub(self, rhs: &f64) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<f64> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Vector> for &Bivector {
@@ -17281,11 +18904,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Vector> for &Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for &Bivector {
@@ -17295,11 +18946,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Vector> for &Bivector {
         type Output = <Bivector as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for &Bivector {
@@ -17309,11 +18988,39 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Vector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Bivector> for &Bivector {
         type Output = <Bivector as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for &Bivector {
@@ -17323,11 +19030,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Bivector> for &Bivector {
         type Output = <Bivector as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for &Bivector {
@@ -17337,11 +19072,51 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Bivector> for &Bivector {
         type Output = <Bivector as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Bivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Bivector> for Bivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Bivector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Bivector> for Bivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Bivector) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Trivector> for &Bivector {
@@ -17351,11 +19126,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Trivector> for &Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for &Bivector {
@@ -17365,11 +19168,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Trivector> for &Bivector {
         type Output = <Bivector as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for &Bivector {
@@ -17379,11 +19210,39 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Trivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Quadvector> for &Bivector {
         type Output = <Bivector as ::core::ops::Mul<Quadvector>>::Output;
         #[inline]
         fn mul(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Quadvector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Quadvector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Quadvector> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Quadvector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Quadvector> for &Bivector {
@@ -17393,11 +19252,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Quadvector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Quadvector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Quadvector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Quadvector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Quadvector> for &Bivector {
         type Output = <Bivector as ::core::ops::BitOr<Quadvector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Quadvector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Quadvector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Quadvector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Quadvector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Quadvector> for &Bivector {
@@ -17407,11 +19294,39 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Quadvector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Quadvector>>::Output;
+        #[inline]
+        fn add(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Quadvector> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<Quadvector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Quadvector> for &Bivector {
         type Output = <Bivector as ::core::ops::Sub<Quadvector>>::Output;
         #[inline]
         fn sub(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Quadvector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Quadvector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Quadvector> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Quadvector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Even> for &Bivector {
@@ -17421,11 +19336,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Even> for &Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for &Bivector {
@@ -17435,11 +19378,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Even> for &Bivector {
         type Output = <Bivector as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for &Bivector {
@@ -17449,11 +19420,39 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Even> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Odd> for &Bivector {
         type Output = <Bivector as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for &Bivector {
@@ -17463,11 +19462,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Odd> for &Bivector {
         type Output = <Bivector as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for &Bivector {
@@ -17477,11 +19504,39 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Odd> for &Bivector {
         type Output = <Bivector as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Odd> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Multivector> for &Bivector {
@@ -17491,11 +19546,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Multivector> for &Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for &Bivector {
@@ -17505,11 +19588,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for Bivector {
+        type Output = <Bivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Multivector> for &Bivector {
         type Output = <Bivector as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for &Bivector {
@@ -17519,11 +19630,39 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Multivector> for &Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for Bivector {
+        type Output = <Bivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&f64> for &Trivector {
         type Output = <Trivector as ::core::ops::Mul<f64>>::Output;
         #[inline]
         fn mul(self, rhs: &f64) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<f64> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for Trivector {
+        type Output = <Trivector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&f64> for &Trivector {
@@ -17533,11 +19672,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<f64> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&f64> for &Trivector {
         type Output = <Trivector as ::core::ops::BitOr<f64>>::Output;
         #[inline]
         fn bitor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<f64> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&f64> for &Trivector {
@@ -17547,11 +19714,39 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<f64> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: f64) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for Trivector {
+        type Output = <Trivector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&f64> for &Trivector {
         type Output = <Trivector as ::core::ops::Sub<f64>>::Output;
         #[inline]
         fn sub(self, rhs: &f64) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<f64> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for Trivector {
+        type Output = <Trivector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Vector> for &Trivector {
@@ -17561,11 +19756,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Vector> for &Trivector {
         type Output = <Trivector as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for &Trivector {
@@ -17575,11 +19798,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Vector> for &Trivector {
         type Output = <Trivector as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for Trivector {
+        type Output = <Trivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for &Trivector {
@@ -17589,11 +19840,39 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Vector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Bivector> for &Trivector {
         type Output = <Trivector as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for &Trivector {
@@ -17603,11 +19882,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Bivector> for &Trivector {
         type Output = <Trivector as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for &Trivector {
@@ -17617,11 +19924,39 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for Trivector {
+        type Output = <Trivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Bivector> for &Trivector {
         type Output = <Trivector as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Bivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Trivector> for &Trivector {
@@ -17631,11 +19966,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Trivector> for &Trivector {
         type Output = <Trivector as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for &Trivector {
@@ -17645,11 +20008,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Trivector> for &Trivector {
         type Output = <Trivector as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for Trivector {
+        type Output = <Trivector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for &Trivector {
@@ -17659,11 +20050,51 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Trivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Trivector> for Trivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Trivector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Trivector> for Trivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Trivector) {
+            *self -= *rhs;
+        }
+    }
     impl ::core::ops::Mul<&Quadvector> for &Trivector {
         type Output = <Trivector as ::core::ops::Mul<Quadvector>>::Output;
         #[inline]
         fn mul(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Quadvector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Quadvector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Quadvector> for Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Quadvector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Quadvector> for &Trivector {
@@ -17673,11 +20104,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Quadvector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Quadvector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Quadvector> for Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Quadvector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Quadvector> for &Trivector {
         type Output = <Trivector as ::core::ops::BitOr<Quadvector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Quadvector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Quadvector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Quadvector> for Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Quadvector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Quadvector> for &Trivector {
@@ -17687,11 +20146,39 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Quadvector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Quadvector>>::Output;
+        #[inline]
+        fn add(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Quadvector> for Trivector {
+        type Output = <Trivector as ::core::ops::Add<Quadvector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Quadvector> for &Trivector {
         type Output = <Trivector as ::core::ops::Sub<Quadvector>>::Output;
         #[inline]
         fn sub(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Quadvector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Quadvector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Quadvector> for Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Quadvector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Even> for &Trivector {
@@ -17701,11 +20188,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Even> for &Trivector {
         type Output = <Trivector as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for &Trivector {
@@ -17715,11 +20230,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Even> for &Trivector {
         type Output = <Trivector as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for Trivector {
+        type Output = <Trivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for &Trivector {
@@ -17729,11 +20272,39 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Even> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Odd> for &Trivector {
         type Output = <Trivector as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for &Trivector {
@@ -17743,11 +20314,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Odd> for &Trivector {
         type Output = <Trivector as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for &Trivector {
@@ -17757,11 +20356,39 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for Trivector {
+        type Output = <Trivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Odd> for &Trivector {
         type Output = <Trivector as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Odd> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Multivector> for &Trivector {
@@ -17771,11 +20398,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for Trivector {
+        type Output = <Trivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Multivector> for &Trivector {
         type Output = <Trivector as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for Trivector {
+        type Output = <Trivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for &Trivector {
@@ -17785,11 +20440,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for Trivector {
+        type Output = <Trivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Multivector> for &Trivector {
         type Output = <Trivector as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for Trivector {
+        type Output = <Trivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for &Trivector {
@@ -17799,11 +20482,39 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Multivector> for &Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for Trivector {
+        type Output = <Trivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&f64> for &Quadvector {
         type Output = <Quadvector as ::core::ops::Mul<f64>>::Output;
         #[inline]
         fn mul(self, rhs: &f64) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<f64> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for Quadvector {
+        type Output = <Quadvector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&f64> for &Quadvector {
@@ -17813,11 +20524,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<f64> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for Quadvector {
+        type Output = <Quadvector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&f64> for &Quadvector {
         type Output = <Quadvector as ::core::ops::BitOr<f64>>::Output;
         #[inline]
         fn bitor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<f64> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for Quadvector {
+        type Output = <Quadvector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&f64> for &Quadvector {
@@ -17827,11 +20566,39 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<f64> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: f64) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for Quadvector {
+        type Output = <Quadvector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&f64> for &Quadvector {
         type Output = <Quadvector as ::core::ops::Sub<f64>>::Output;
         #[inline]
         fn sub(self, rhs: &f64) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<f64> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for Quadvector {
+        type Output = <Quadvector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Vector> for &Quadvector {
@@ -17841,11 +20608,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Vector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for Quadvector {
+        type Output = <Quadvector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Vector> for &Quadvector {
         type Output = <Quadvector as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Vector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for Quadvector {
+        type Output = <Quadvector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for &Quadvector {
@@ -17855,11 +20650,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Vector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for Quadvector {
+        type Output = <Quadvector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Vector> for &Quadvector {
         type Output = <Quadvector as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Vector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for Quadvector {
+        type Output = <Quadvector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for &Quadvector {
@@ -17869,11 +20692,39 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Vector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for Quadvector {
+        type Output = <Quadvector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Bivector> for &Quadvector {
         type Output = <Quadvector as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Bivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for Quadvector {
+        type Output = <Quadvector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for &Quadvector {
@@ -17883,11 +20734,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Bivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for Quadvector {
+        type Output = <Quadvector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Bivector> for &Quadvector {
         type Output = <Quadvector as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Bivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for Quadvector {
+        type Output = <Quadvector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for &Quadvector {
@@ -17897,11 +20776,39 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Bivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for Quadvector {
+        type Output = <Quadvector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Bivector> for &Quadvector {
         type Output = <Quadvector as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Bivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for Quadvector {
+        type Output = <Quadvector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Trivector> for &Quadvector {
@@ -17911,11 +20818,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Trivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for Quadvector {
+        type Output = <Quadvector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Trivector> for &Quadvector {
         type Output = <Quadvector as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Trivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for Quadvector {
+        type Output = <Quadvector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for &Quadvector {
@@ -17925,11 +20860,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Trivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for Quadvector {
+        type Output = <Quadvector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Trivector> for &Quadvector {
         type Output = <Quadvector as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Trivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for Quadvector {
+        type Output = <Quadvector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for &Quadvector {
@@ -17939,11 +20902,39 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Trivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for Quadvector {
+        type Output = <Quadvector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Quadvector> for &Quadvector {
         type Output = <Quadvector as ::core::ops::Mul<Quadvector>>::Output;
         #[inline]
         fn mul(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Quadvector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Mul<Quadvector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Quadvector> for Quadvector {
+        type Output = <Quadvector as ::core::ops::Mul<Quadvector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Quadvector> for &Quadvector {
@@ -17953,11 +20944,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Quadvector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitXor<Quadvector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Quadvector> for Quadvector {
+        type Output = <Quadvector as ::core::ops::BitXor<Quadvector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Quadvector> for &Quadvector {
         type Output = <Quadvector as ::core::ops::BitOr<Quadvector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Quadvector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitOr<Quadvector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Quadvector> for Quadvector {
+        type Output = <Quadvector as ::core::ops::BitOr<Quadvector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Quadvector> for &Quadvector {
@@ -17967,11 +20986,51 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Quadvector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Add<Quadvector>>::Output;
+        #[inline]
+        fn add(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Quadvector> for Quadvector {
+        type Output = <Quadvector as ::core::ops::Add<Quadvector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Quadvector> for &Quadvector {
         type Output = <Quadvector as ::core::ops::Sub<Quadvector>>::Output;
         #[inline]
         fn sub(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Quadvector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Sub<Quadvector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Quadvector> for Quadvector {
+        type Output = <Quadvector as ::core::ops::Sub<Quadvector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Quadvector> for Quadvector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Quadvector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Quadvector> for Quadvector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Quadvector) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Even> for &Quadvector {
@@ -17981,11 +21040,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Even> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for Quadvector {
+        type Output = <Quadvector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Even> for &Quadvector {
         type Output = <Quadvector as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Even> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for Quadvector {
+        type Output = <Quadvector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for &Quadvector {
@@ -17995,11 +21082,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Even> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for Quadvector {
+        type Output = <Quadvector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Even> for &Quadvector {
         type Output = <Quadvector as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Even> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for Quadvector {
+        type Output = <Quadvector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for &Quadvector {
@@ -18009,11 +21124,39 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Even> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for Quadvector {
+        type Output = <Quadvector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Odd> for &Quadvector {
         type Output = <Quadvector as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Odd> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for Quadvector {
+        type Output = <Quadvector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for &Quadvector {
@@ -18023,11 +21166,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Odd> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for Quadvector {
+        type Output = <Quadvector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Odd> for &Quadvector {
         type Output = <Quadvector as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Odd> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for Quadvector {
+        type Output = <Quadvector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for &Quadvector {
@@ -18037,11 +21208,39 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Odd> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for Quadvector {
+        type Output = <Quadvector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Odd> for &Quadvector {
         type Output = <Quadvector as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Odd> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for Quadvector {
+        type Output = <Quadvector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Multivector> for &Quadvector {
@@ -18051,11 +21250,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Multivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for Quadvector {
+        type Output = <Quadvector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Multivector> for &Quadvector {
         type Output = <Quadvector as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Multivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for Quadvector {
+        type Output = <Quadvector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for &Quadvector {
@@ -18065,11 +21292,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Multivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for Quadvector {
+        type Output = <Quadvector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Multivector> for &Quadvector {
         type Output = <Quadvector as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Multivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for Quadvector {
+        type Output = <Quadvector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for &Quadvector {
@@ -18079,11 +21334,39 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Multivector> for &Quadvector {
+        type Output = <Quadvector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for Quadvector {
+        type Output = <Quadvector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&f64> for &Even {
         type Output = <Even as ::core::ops::Mul<f64>>::Output;
         #[inline]
         fn mul(self, rhs: &f64) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<f64> for &Even {
+        type Output = <Even as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for Even {
+        type Output = <Even as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&f64> for &Even {
@@ -18093,11 +21376,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<f64> for &Even {
+        type Output = <Even as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for Even {
+        type Output = <Even as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&f64> for &Even {
         type Output = <Even as ::core::ops::BitOr<f64>>::Output;
         #[inline]
         fn bitor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<f64> for &Even {
+        type Output = <Even as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for Even {
+        type Output = <Even as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&f64> for &Even {
@@ -18107,11 +21418,51 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<f64> for &Even {
+        type Output = <Even as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: f64) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for Even {
+        type Output = <Even as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&f64> for &Even {
         type Output = <Even as ::core::ops::Sub<f64>>::Output;
         #[inline]
         fn sub(self, rhs: &f64) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<f64> for &Even {
+        type Output = <Even as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for Even {
+        type Output = <Even as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&f64> for Even {
+        #[inline]
+        fn add_assign(&mut self, rhs: &f64) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&f64> for Even {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &f64) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Vector> for &Even {
@@ -18121,11 +21472,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Vector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for Even {
+        type Output = <Even as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Vector> for &Even {
         type Output = <Even as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Vector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for Even {
+        type Output = <Even as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for &Even {
@@ -18135,11 +21514,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Vector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for Even {
+        type Output = <Even as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Vector> for &Even {
         type Output = <Even as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Vector> for &Even {
+        type Output = <Even as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for Even {
+        type Output = <Even as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for &Even {
@@ -18149,11 +21556,39 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Vector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for Even {
+        type Output = <Even as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Bivector> for &Even {
         type Output = <Even as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Bivector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for Even {
+        type Output = <Even as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for &Even {
@@ -18163,11 +21598,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Bivector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for Even {
+        type Output = <Even as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Bivector> for &Even {
         type Output = <Even as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Bivector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for Even {
+        type Output = <Even as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for &Even {
@@ -18177,11 +21640,51 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Bivector> for &Even {
+        type Output = <Even as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for Even {
+        type Output = <Even as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Bivector> for &Even {
         type Output = <Even as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Bivector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for Even {
+        type Output = <Even as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Bivector> for Even {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Bivector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Bivector> for Even {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Bivector) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Trivector> for &Even {
@@ -18191,11 +21694,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Trivector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for Even {
+        type Output = <Even as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Trivector> for &Even {
         type Output = <Even as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Trivector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for Even {
+        type Output = <Even as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for &Even {
@@ -18205,11 +21736,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Trivector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for Even {
+        type Output = <Even as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Trivector> for &Even {
         type Output = <Even as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Trivector> for &Even {
+        type Output = <Even as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for Even {
+        type Output = <Even as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for &Even {
@@ -18219,11 +21778,39 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Trivector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for Even {
+        type Output = <Even as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Quadvector> for &Even {
         type Output = <Even as ::core::ops::Mul<Quadvector>>::Output;
         #[inline]
         fn mul(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Quadvector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Quadvector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Quadvector> for Even {
+        type Output = <Even as ::core::ops::Mul<Quadvector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Quadvector> for &Even {
@@ -18233,11 +21820,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Quadvector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Quadvector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Quadvector> for Even {
+        type Output = <Even as ::core::ops::BitXor<Quadvector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Quadvector> for &Even {
         type Output = <Even as ::core::ops::BitOr<Quadvector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Quadvector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Quadvector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Quadvector> for Even {
+        type Output = <Even as ::core::ops::BitOr<Quadvector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Quadvector> for &Even {
@@ -18247,11 +21862,51 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Quadvector> for &Even {
+        type Output = <Even as ::core::ops::Add<Quadvector>>::Output;
+        #[inline]
+        fn add(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Quadvector> for Even {
+        type Output = <Even as ::core::ops::Add<Quadvector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Quadvector> for &Even {
         type Output = <Even as ::core::ops::Sub<Quadvector>>::Output;
         #[inline]
         fn sub(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Quadvector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Quadvector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Quadvector> for Even {
+        type Output = <Even as ::core::ops::Sub<Quadvector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Quadvector> for Even {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Quadvector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Quadvector> for Even {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Quadvector) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Even> for &Even {
@@ -18261,11 +21916,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Even> for &Even {
+        type Output = <Even as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for Even {
+        type Output = <Even as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Even> for &Even {
         type Output = <Even as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Even> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for Even {
+        type Output = <Even as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for &Even {
@@ -18275,11 +21958,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Even> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for Even {
+        type Output = <Even as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Even> for &Even {
         type Output = <Even as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Even> for &Even {
+        type Output = <Even as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for Even {
+        type Output = <Even as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for &Even {
@@ -18289,11 +22000,51 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Even> for &Even {
+        type Output = <Even as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for Even {
+        type Output = <Even as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Even> for Even {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Even) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Even> for Even {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Even) {
+            *self -= *rhs;
+        }
+    }
     impl ::core::ops::Mul<&Odd> for &Even {
         type Output = <Even as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Odd> for &Even {
+        type Output = <Even as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for Even {
+        type Output = <Even as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for &Even {
@@ -18303,11 +22054,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Odd> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for Even {
+        type Output = <Even as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Odd> for &Even {
         type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Odd> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for Even {
+        type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for &Even {
@@ -18317,11 +22096,39 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Odd> for &Even {
+        type Output = <Even as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for Even {
+        type Output = <Even as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Odd> for &Even {
         type Output = <Even as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Odd> for &Even {
+        type Output = <Even as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for Even {
+        type Output = <Even as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Multivector> for &Even {
@@ -18331,11 +22138,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Multivector> for &Even {
+        type Output = <Even as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for Even {
+        type Output = <Even as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Multivector> for &Even {
         type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Multivector> for &Even {
+        type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for Even {
+        type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for &Even {
@@ -18345,11 +22180,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Multivector> for &Even {
+        type Output = <Even as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for Even {
+        type Output = <Even as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Multivector> for &Even {
         type Output = <Even as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Multivector> for &Even {
+        type Output = <Even as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for Even {
+        type Output = <Even as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for &Even {
@@ -18359,11 +22222,39 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Multivector> for &Even {
+        type Output = <Even as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for Even {
+        type Output = <Even as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&f64> for &Odd {
         type Output = <Odd as ::core::ops::Mul<f64>>::Output;
         #[inline]
         fn mul(self, rhs: &f64) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<f64> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for Odd {
+        type Output = <Odd as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&f64> for &Odd {
@@ -18373,11 +22264,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<f64> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&f64> for &Odd {
         type Output = <Odd as ::core::ops::BitOr<f64>>::Output;
         #[inline]
         fn bitor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<f64> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&f64> for &Odd {
@@ -18387,11 +22306,39 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<f64> for &Odd {
+        type Output = <Odd as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: f64) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for Odd {
+        type Output = <Odd as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&f64> for &Odd {
         type Output = <Odd as ::core::ops::Sub<f64>>::Output;
         #[inline]
         fn sub(self, rhs: &f64) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<f64> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for Odd {
+        type Output = <Odd as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Vector> for &Odd {
@@ -18401,11 +22348,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Vector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for Odd {
+        type Output = <Odd as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Vector> for &Odd {
         type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Vector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for &Odd {
@@ -18415,11 +22390,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Vector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Vector> for &Odd {
         type Output = <Odd as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Vector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for Odd {
+        type Output = <Odd as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for &Odd {
@@ -18429,11 +22432,51 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Vector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for Odd {
+        type Output = <Odd as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Vector> for Odd {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Vector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Vector> for Odd {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Vector) {
+            *self -= *rhs;
+        }
+    }
     impl ::core::ops::Mul<&Bivector> for &Odd {
         type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for Odd {
+        type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for &Odd {
@@ -18443,11 +22486,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Bivector> for &Odd {
         type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for &Odd {
@@ -18457,11 +22528,39 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for Odd {
+        type Output = <Odd as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Bivector> for &Odd {
         type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Bivector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for Odd {
+        type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Trivector> for &Odd {
@@ -18471,11 +22570,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for Odd {
+        type Output = <Odd as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Trivector> for &Odd {
         type Output = <Odd as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for &Odd {
@@ -18485,11 +22612,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Trivector> for &Odd {
         type Output = <Odd as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for Odd {
+        type Output = <Odd as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for &Odd {
@@ -18499,11 +22654,51 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Trivector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for Odd {
+        type Output = <Odd as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Trivector> for Odd {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Trivector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Trivector> for Odd {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Trivector) {
+            *self -= *rhs;
+        }
+    }
     impl ::core::ops::Mul<&Quadvector> for &Odd {
         type Output = <Odd as ::core::ops::Mul<Quadvector>>::Output;
         #[inline]
         fn mul(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Quadvector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Quadvector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Quadvector> for Odd {
+        type Output = <Odd as ::core::ops::Mul<Quadvector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Quadvector> for &Odd {
@@ -18513,11 +22708,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Quadvector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Quadvector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Quadvector> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<Quadvector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Quadvector> for &Odd {
         type Output = <Odd as ::core::ops::BitOr<Quadvector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Quadvector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Quadvector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Quadvector> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<Quadvector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Quadvector> for &Odd {
@@ -18527,11 +22750,39 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Quadvector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Quadvector>>::Output;
+        #[inline]
+        fn add(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Quadvector> for Odd {
+        type Output = <Odd as ::core::ops::Add<Quadvector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Quadvector> for &Odd {
         type Output = <Odd as ::core::ops::Sub<Quadvector>>::Output;
         #[inline]
         fn sub(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Quadvector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Quadvector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Quadvector> for Odd {
+        type Output = <Odd as ::core::ops::Sub<Quadvector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Even> for &Odd {
@@ -18541,11 +22792,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Even> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for Odd {
+        type Output = <Odd as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Even> for &Odd {
         type Output = <Odd as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Even> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for &Odd {
@@ -18555,11 +22834,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Even> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Even> for &Odd {
         type Output = <Odd as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Even> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for Odd {
+        type Output = <Odd as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for &Odd {
@@ -18569,11 +22876,39 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Even> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for Odd {
+        type Output = <Odd as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&Odd> for &Odd {
         type Output = <Odd as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Odd> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for Odd {
+        type Output = <Odd as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for &Odd {
@@ -18583,11 +22918,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Odd> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Odd> for &Odd {
         type Output = <Odd as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Odd> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for &Odd {
@@ -18597,11 +22960,51 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Odd> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for Odd {
+        type Output = <Odd as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Odd> for &Odd {
         type Output = <Odd as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Odd> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for Odd {
+        type Output = <Odd as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Odd> for Odd {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Odd) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Odd> for Odd {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Odd) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Multivector> for &Odd {
@@ -18611,11 +23014,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for Odd {
+        type Output = <Odd as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Multivector> for &Odd {
         type Output = <Odd as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for Odd {
+        type Output = <Odd as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for &Odd {
@@ -18625,11 +23056,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for Odd {
+        type Output = <Odd as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Multivector> for &Odd {
         type Output = <Odd as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for Odd {
+        type Output = <Odd as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for &Odd {
@@ -18639,11 +23098,39 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Multivector> for &Odd {
+        type Output = <Odd as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for Odd {
+        type Output = <Odd as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
     impl ::core::ops::Mul<&f64> for &Multivector {
         type Output = <Multivector as ::core::ops::Mul<f64>>::Output;
         #[inline]
         fn mul(self, rhs: &f64) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<f64> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: f64) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&f64> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<f64>>::Output;
+        #[inline]
+        fn mul(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&f64> for &Multivector {
@@ -18653,11 +23140,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<f64> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&f64> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<f64>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&f64> for &Multivector {
         type Output = <Multivector as ::core::ops::BitOr<f64>>::Output;
         #[inline]
         fn bitor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<f64> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&f64> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<f64>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &f64) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&f64> for &Multivector {
@@ -18667,11 +23182,51 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<f64> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: f64) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&f64> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<f64>>::Output;
+        #[inline]
+        fn add(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&f64> for &Multivector {
         type Output = <Multivector as ::core::ops::Sub<f64>>::Output;
         #[inline]
         fn sub(self, rhs: &f64) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<f64> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: f64) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&f64> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<f64>>::Output;
+        #[inline]
+        fn sub(self, rhs: &f64) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&f64> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &f64) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&f64> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &f64) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Vector> for &Multivector {
@@ -18681,11 +23236,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Vector> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Vector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Vector> for &Multivector {
         type Output = <Multivector as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Vector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Vector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for &Multivector {
@@ -18695,11 +23278,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Vector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Vector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Vector> for &Multivector {
         type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Vector> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for &Multivector {
@@ -18709,11 +23320,51 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Vector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Vector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Vector> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Vector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Vector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Vector> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Vector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Vector> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Vector) {
+            *self -= *rhs;
+        }
+    }
     impl ::core::ops::Mul<&Bivector> for &Multivector {
         type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Bivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for &Multivector {
@@ -18723,11 +23374,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Bivector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Bivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Bivector> for &Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Bivector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for &Multivector {
@@ -18737,11 +23416,51 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Bivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<Bivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Bivector> for &Multivector {
         type Output = <Multivector as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Bivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Bivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Bivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Bivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Bivector> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Bivector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Bivector> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Bivector) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Trivector> for &Multivector {
@@ -18751,11 +23470,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Trivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Trivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Trivector> for &Multivector {
         type Output = <Multivector as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Trivector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Trivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for &Multivector {
@@ -18765,11 +23512,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Trivector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Trivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Trivector> for &Multivector {
         type Output = <Multivector as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Trivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<Trivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for &Multivector {
@@ -18779,11 +23554,51 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Trivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Trivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Trivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Trivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Trivector> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Trivector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Trivector> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Trivector) {
+            *self -= *rhs;
+        }
+    }
     impl ::core::ops::Mul<&Quadvector> for &Multivector {
         type Output = <Multivector as ::core::ops::Mul<Quadvector>>::Output;
         #[inline]
         fn mul(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Quadvector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Quadvector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Quadvector> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Quadvector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Quadvector> for &Multivector {
@@ -18793,11 +23608,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Quadvector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Quadvector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Quadvector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Quadvector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Quadvector> for &Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Quadvector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Quadvector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Quadvector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Quadvector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Quadvector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Quadvector> for &Multivector {
@@ -18807,11 +23650,51 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Quadvector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Quadvector>>::Output;
+        #[inline]
+        fn add(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Quadvector> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<Quadvector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Quadvector> for &Multivector {
         type Output = <Multivector as ::core::ops::Sub<Quadvector>>::Output;
         #[inline]
         fn sub(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Quadvector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Quadvector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Quadvector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Quadvector> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Quadvector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Quadvector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Quadvector> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Quadvector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Quadvector> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Quadvector) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Even> for &Multivector {
@@ -18821,11 +23704,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: Even) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Even> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Even> for &Multivector {
         type Output = <Multivector as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Even> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Even>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for &Multivector {
@@ -18835,11 +23746,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Even> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Even) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Even> for &Multivector {
         type Output = <Multivector as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: Even) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Even> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<Even>>::Output;
+        #[inline]
+        fn add(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for &Multivector {
@@ -18849,11 +23788,51 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Even> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: Even) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Even> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Even>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Even) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Even> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Even) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Even> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Even) {
+            *self -= *rhs;
+        }
+    }
     impl ::core::ops::Mul<&Odd> for &Multivector {
         type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Mul<Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Odd> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for &Multivector {
@@ -18863,11 +23842,39 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitXor<Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Odd> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Odd>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
+        }
+    }
     impl ::core::ops::BitOr<&Odd> for &Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitOr<Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Odd> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for &Multivector {
@@ -18877,11 +23884,51 @@ pub mod g4 {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
+    impl ::core::ops::Add<Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Odd> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
+        #[inline]
+        fn add(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
+        }
+    }
     impl ::core::ops::Sub<&Odd> for &Multivector {
         type Output = <Multivector as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Sub<Odd> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: Odd) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Odd> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Odd>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Odd) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Odd> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Odd) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Odd> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Odd) {
+            *self -= *rhs;
         }
     }
     impl ::core::ops::Mul<&Multivector> for &Multivector {
@@ -18891,11 +23938,39 @@ pub mod g4 {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
+    impl ::core::ops::Mul<Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl ::core::ops::Mul<&Multivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
+        #[inline]
+        fn mul(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Mul::mul(self, *rhs)
+        }
+    }
     impl ::core::ops::BitXor<&Multivector> for &Multivector {
         type Output = <Multivector as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
+        }
+    }
+    impl ::core::ops::BitXor<Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitXor<&Multivector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitXor<Multivector>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for &Multivector {
@@ -18905,11 +23980,39 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
+    impl ::core::ops::BitOr<Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl ::core::ops::BitOr<&Multivector> for Multivector {
+        type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
+        #[inline]
+        fn bitor(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::BitOr::bitor(self, *rhs)
+        }
+    }
     impl ::core::ops::Add<&Multivector> for &Multivector {
         type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
+        }
+    }
+    impl ::core::ops::Add<Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl ::core::ops::Add<&Multivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
+        #[inline]
+        fn add(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for &Multivector {
@@ -18919,11 +24022,70 @@ pub mod g4 {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
+    impl ::core::ops::Sub<Multivector> for &Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl ::core::ops::Sub<&Multivector> for Multivector {
+        type Output = <Multivector as ::core::ops::Sub<Multivector>>::Output;
+        #[inline]
+        fn sub(self, rhs: &Multivector) -> Self::Output {
+            ::core::ops::Sub::sub(self, *rhs)
+        }
+    }
+    impl ::core::ops::AddAssign<&Multivector> for Multivector {
+        #[inline]
+        fn add_assign(&mut self, rhs: &Multivector) {
+            *self += *rhs;
+        }
+    }
+    impl ::core::ops::SubAssign<&Multivector> for Multivector {
+        #[inline]
+        fn sub_assign(&mut self, rhs: &Multivector) {
+            *self -= *rhs;
+        }
+    }
     impl ::core::ops::Neg for &Vector {
         type Output = Vector;
         #[inline]
         fn neg(self) -> Vector {
             -*self
+        }
+    }
+    impl ::core::ops::Div<f64> for &Vector {
+        type Output = Vector;
+        #[inline]
+        fn div(self, rhs: f64) -> Vector {
+            *self / rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for Vector {
+        type Output = Vector;
+        #[inline]
+        fn div(self, rhs: &f64) -> Vector {
+            self / *rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for &Vector {
+        type Output = Vector;
+        #[inline]
+        fn div(self, rhs: &f64) -> Vector {
+            *self / *rhs
+        }
+    }
+    impl ::core::ops::MulAssign<&f64> for Vector {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &f64) {
+            *self *= *rhs;
+        }
+    }
+    impl ::core::ops::DivAssign<&f64> for Vector {
+        #[inline]
+        fn div_assign(&mut self, rhs: &f64) {
+            *self /= *rhs;
         }
     }
     impl ::core::ops::Neg for &Bivector {
@@ -18933,11 +24095,77 @@ pub mod g4 {
             -*self
         }
     }
+    impl ::core::ops::Div<f64> for &Bivector {
+        type Output = Bivector;
+        #[inline]
+        fn div(self, rhs: f64) -> Bivector {
+            *self / rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for Bivector {
+        type Output = Bivector;
+        #[inline]
+        fn div(self, rhs: &f64) -> Bivector {
+            self / *rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for &Bivector {
+        type Output = Bivector;
+        #[inline]
+        fn div(self, rhs: &f64) -> Bivector {
+            *self / *rhs
+        }
+    }
+    impl ::core::ops::MulAssign<&f64> for Bivector {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &f64) {
+            *self *= *rhs;
+        }
+    }
+    impl ::core::ops::DivAssign<&f64> for Bivector {
+        #[inline]
+        fn div_assign(&mut self, rhs: &f64) {
+            *self /= *rhs;
+        }
+    }
     impl ::core::ops::Neg for &Trivector {
         type Output = Trivector;
         #[inline]
         fn neg(self) -> Trivector {
             -*self
+        }
+    }
+    impl ::core::ops::Div<f64> for &Trivector {
+        type Output = Trivector;
+        #[inline]
+        fn div(self, rhs: f64) -> Trivector {
+            *self / rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for Trivector {
+        type Output = Trivector;
+        #[inline]
+        fn div(self, rhs: &f64) -> Trivector {
+            self / *rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for &Trivector {
+        type Output = Trivector;
+        #[inline]
+        fn div(self, rhs: &f64) -> Trivector {
+            *self / *rhs
+        }
+    }
+    impl ::core::ops::MulAssign<&f64> for Trivector {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &f64) {
+            *self *= *rhs;
+        }
+    }
+    impl ::core::ops::DivAssign<&f64> for Trivector {
+        #[inline]
+        fn div_assign(&mut self, rhs: &f64) {
+            *self /= *rhs;
         }
     }
     impl ::core::ops::Neg for &Quadvector {
@@ -18947,11 +24175,83 @@ pub mod g4 {
             -*self
         }
     }
+    impl ::core::ops::Div<f64> for &Quadvector {
+        type Output = Quadvector;
+        #[inline]
+        fn div(self, rhs: f64) -> Quadvector {
+            *self / rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for Quadvector {
+        type Output = Quadvector;
+        #[inline]
+        fn div(self, rhs: &f64) -> Quadvector {
+            self / *rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for &Quadvector {
+        type Output = Quadvector;
+        #[inline]
+        fn div(self, rhs: &f64) -> Quadvector {
+            *self / *rhs
+        }
+    }
+    impl ::core::ops::MulAssign<&f64> for Quadvector {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &f64) {
+            *self *= *rhs;
+        }
+    }
+    impl ::core::ops::DivAssign<&f64> for Quadvector {
+        #[inline]
+        fn div_assign(&mut self, rhs: &f64) {
+            *self /= *rhs;
+        }
+    }
     impl ::core::ops::Neg for &Even {
         type Output = Even;
         #[inline]
         fn neg(self) -> Even {
             -*self
+        }
+    }
+    impl ::core::ops::Div<f64> for &Even {
+        type Output = Even;
+        #[inline]
+        fn div(self, rhs: f64) -> Even {
+            *self / rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for Even {
+        type Output = Even;
+        #[inline]
+        fn div(self, rhs: &f64) -> Even {
+            self / *rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for &Even {
+        type Output = Even;
+        #[inline]
+        fn div(self, rhs: &f64) -> Even {
+            *self / *rhs
+        }
+    }
+    impl ::core::ops::MulAssign<&f64> for Even {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &f64) {
+            *self *= *rhs;
+        }
+    }
+    impl ::core::ops::DivAssign<&f64> for Even {
+        #[inline]
+        fn div_assign(&mut self, rhs: &f64) {
+            *self /= *rhs;
+        }
+    }
+    impl ::core::ops::MulAssign<&Even> for Even {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &Even) {
+            *self *= *rhs;
         }
     }
     impl ::core::ops::Neg for &Odd {
@@ -18961,11 +24261,83 @@ pub mod g4 {
             -*self
         }
     }
+    impl ::core::ops::Div<f64> for &Odd {
+        type Output = Odd;
+        #[inline]
+        fn div(self, rhs: f64) -> Odd {
+            *self / rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for Odd {
+        type Output = Odd;
+        #[inline]
+        fn div(self, rhs: &f64) -> Odd {
+            self / *rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for &Odd {
+        type Output = Odd;
+        #[inline]
+        fn div(self, rhs: &f64) -> Odd {
+            *self / *rhs
+        }
+    }
+    impl ::core::ops::MulAssign<&f64> for Odd {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &f64) {
+            *self *= *rhs;
+        }
+    }
+    impl ::core::ops::DivAssign<&f64> for Odd {
+        #[inline]
+        fn div_assign(&mut self, rhs: &f64) {
+            *self /= *rhs;
+        }
+    }
     impl ::core::ops::Neg for &Multivector {
         type Output = Multivector;
         #[inline]
         fn neg(self) -> Multivector {
             -*self
+        }
+    }
+    impl ::core::ops::Div<f64> for &Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn div(self, rhs: f64) -> Multivector {
+            *self / rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn div(self, rhs: &f64) -> Multivector {
+            self / *rhs
+        }
+    }
+    impl ::core::ops::Div<&f64> for &Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn div(self, rhs: &f64) -> Multivector {
+            *self / *rhs
+        }
+    }
+    impl ::core::ops::MulAssign<&f64> for Multivector {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &f64) {
+            *self *= *rhs;
+        }
+    }
+    impl ::core::ops::DivAssign<&f64> for Multivector {
+        #[inline]
+        fn div_assign(&mut self, rhs: &f64) {
+            *self /= *rhs;
+        }
+    }
+    impl ::core::ops::MulAssign<&Multivector> for Multivector {
+        #[inline]
+        fn mul_assign(&mut self, rhs: &Multivector) {
+            *self *= *rhs;
         }
     }
     impl ::core::ops::Div<Vector> for f64 {

@@ -27,8 +27,8 @@ impl Values {
     }
 }
 
-/// Reads `Display`'s `1 + 2e1 - 0.5e12` back into (blade name, value) pairs. `{}` never
-/// writes a float in exponent notation, so the first `e` of a term starts its blade.
+/// Reads `Display`'s `1 + 2 e1 - 0.5 e12` back into (blade name, value) pairs: a space
+/// separates each coefficient (in exponent notation below 1e-5 and from 1e16) from its blade.
 fn parse_terms(text: &str) -> Vec<(String, f64)> {
     if text == "0" {
         return Vec::new();
@@ -47,10 +47,7 @@ fn parse_terms(text: &str) -> Vec<(String, f64)> {
             (Some(p), None) => (&rest[..p], Some((1.0, &rest[p + 3..]))),
             (None, None) => (rest, None),
         };
-        let (number, blade) = match term.find('e') {
-            Some(i) => (&term[..i], &term[i..]),
-            None => (term, ""),
-        };
+        let (number, blade) = term.split_once(' ').unwrap_or((term, ""));
         let value: f64 = number.parse().expect("a decimal coefficient");
         terms.push((blade.to_owned(), sign * value));
         match next {
@@ -70,31 +67,60 @@ fn g3_blade_names() -> [&'static str; 8] {
 #[test]
 fn display_writes_terms_in_canonical_order_with_signs() {
     let m = Multivector::from_array([1.0, 2.0, 0.0, 0.0, -0.5, 0.0, 0.0, 0.0]);
-    assert_eq!(m.to_string(), "1 + 2e1 - 0.5e12");
-    assert_eq!(Vector::new(-1.0, 0.0, 3.0).to_string(), "-1e1 + 3e3");
+    assert_eq!(m.to_string(), "1 + 2 e1 - 0.5 e12");
+    assert_eq!(Vector::new(-1.0, 0.0, 3.0).to_string(), "-1 e1 + 3 e3");
     assert_eq!(Multivector::ZERO.to_string(), "0");
     assert_eq!(Bivector::ZERO.to_string(), "0");
     assert_eq!(Even::ONE.to_string(), "1");
-    assert_eq!(Trivector::new(-2.0).to_string(), "-2e123");
+    assert_eq!(Trivector::new(-2.0).to_string(), "-2 e123");
 }
 
 #[test]
 fn display_honours_precision_and_drops_terms_that_round_to_zero() {
     let v = Vector::new(1.0 / 3.0, -2.0 / 3.0, 1e-9);
-    assert_eq!(format!("{v:.3}"), "0.333e1 - 0.667e2");
+    assert_eq!(format!("{v:.3}"), "0.333 e1 - 0.667 e2");
     assert_eq!(
         format!("{v:.12}"),
-        "0.333333333333e1 - 0.666666666667e2 + 0.000000001000e3"
+        "0.333333333333 e1 - 0.666666666667 e2 + 0.000000001000 e3"
     );
     assert_eq!(format!("{:.2}", Vector::new(1e-5, 0.0, 0.0)), "0");
     let g2 = ga_core::f32::g2::Even::new(0.5, -0.25);
-    assert_eq!(format!("{g2:.1}"), "0.5 - 0.2e12");
+    assert_eq!(format!("{g2:.1}"), "0.5 - 0.2 e12");
+}
+
+#[test]
+fn display_rounds_like_the_formatter_and_keeps_exponents_apart_from_blades() {
+    // Each failed before: `{:.1}` of 0.05 printed "0" (0.05 rounds up to 0.1), a
+    // subnormal printed about 330 digits, and `1e12` read as ten to the twelfth.
+    assert_eq!(format!("{:.1}", Vector::new(0.05, 0.0, 0.0)), "0.1 e1");
+    assert_eq!(format!("{:.1}", Vector::new(0.04, 0.0, 0.0)), "0");
+    assert_eq!(
+        format!("{:.1}", ga_core::f32::g3::Vector::new(0.05, 0.0, 0.0)),
+        "0.1 e1"
+    );
+    assert_eq!(Vector::new(5e-324, 0.0, 0.0).to_string(), "5e-324 e1");
+    assert_eq!(Vector::new(-1e-7, 0.0, 0.0).to_string(), "-1e-7 e1");
+    assert_eq!(format!("{:.3}", Vector::new(1e-7, 0.0, 0.0)), "0");
+    assert_eq!(Vector::new(1e300, 0.0, 0.0).to_string(), "1e300 e1");
+    assert_eq!(
+        format!("{:.2}", Vector::new(1e300, 0.0, 0.0)),
+        "1.00e300 e1"
+    );
+    assert_eq!(
+        Even::new(1.0, 1e12, 0.0, 0.0).to_string(),
+        "1 + 1000000000000 e12"
+    );
+    assert_eq!(Bivector::new(1.0, 0.0, 0.0).to_string(), "1 e12");
+    assert_eq!(
+        format!("{:.2}", Vector::new(f64::INFINITY, 0.0, 0.0)),
+        "inf e1"
+    );
 }
 
 #[test]
 fn display_keeps_non_finite_components() {
     let v = Vector::new(f64::NAN, f64::NEG_INFINITY, 0.0);
-    assert_eq!(v.to_string(), "NaNe1 - infe2");
+    assert_eq!(v.to_string(), "NaN e1 - inf e2");
 }
 
 #[test]
@@ -376,8 +402,8 @@ ga_macros::algebra! {
 fn a_user_type_gets_the_conveniences_too() {
     use planes::*;
     let p = Plane::new(2.0, -0.5);
-    assert_eq!(p.to_string(), "2e12 - 0.5e13");
-    assert_eq!(format!("{:.2}", Plane::new(1.0 / 3.0, 0.0)), "0.33e12");
+    assert_eq!(p.to_string(), "2 e12 - 0.5 e13");
+    assert_eq!(format!("{:.2}", Plane::new(1.0 / 3.0, 0.0)), "0.33 e12");
     assert_eq!((p[0], p[1]), (2.0, -0.5));
     assert_eq!(<[f64; 2]>::from(p), [2.0, -0.5]);
     assert_eq!([p, p].iter().sum::<Plane>(), p + p);
@@ -391,4 +417,42 @@ fn a_user_type_gets_the_conveniences_too() {
     let quotient = r / p;
     let actual = algebra.from_components(&[0, 0b011, 0b101, 0b110], &quotient.to_array());
     assert_close!(actual, expected, rel = 1e-14);
+}
+
+#[test]
+#[allow(clippy::op_ref)]
+fn mixed_reference_operators_forward_to_the_by_value_ones() {
+    // glam's forms: `&a + b`, `a * &b`, `a += &b`, the scalar `/` by and of references,
+    // and `Sandwich<&Vector>`. The values are exact in binary, so `==` is fair.
+    let (a, b) = (Vector::new(1.0, 2.0, 3.0), Vector::new(-0.5, 0.25, 2.0));
+    let r = Even::new(0.8, 0.6, 0.0, 0.0);
+    assert_eq!(&a + b, a + b);
+    assert_eq!(a - &b, a - b);
+    assert_eq!(&a * b, a * b);
+    assert_eq!(a ^ &b, a ^ b);
+    assert_eq!(&a | b, a | b);
+    assert_eq!(r * &a, r * a);
+    assert_eq!(2.0 * &a, 2.0 * a);
+    assert_eq!(&a * 2.0, a * 2.0);
+    assert_eq!(&a / 2.0, a / 2.0);
+    assert_eq!(a / &2.0, a / 2.0);
+    assert_eq!(&a / &2.0, a / 2.0);
+    let mut c = a;
+    c += &b;
+    assert_eq!(c, a + b);
+    c -= &b;
+    assert_eq!(c, a);
+    c *= &2.0;
+    assert_eq!(c, a * 2.0);
+    c /= &2.0;
+    assert_eq!(c, a);
+    let mut q = r;
+    q *= &r;
+    assert_eq!(q, r * r);
+    let mut m = Multivector::ZERO;
+    m += &a;
+    assert_eq!(m, Multivector::from(a));
+    assert_eq!(r.sandwich(&a), r.sandwich(a));
+    assert_eq!((&r).sandwich(a), r.sandwich(a));
+    assert_eq!((&r).sandwich(&a), r.sandwich(a));
 }

@@ -47,25 +47,41 @@ fn closed_under_geometric(plan: &Plan, t: TypeId) -> bool {
 fn display_helper(plan: &Plan) -> TokenStream {
     let s = scalar_type(plan);
     quote! {
-        /// Writes `1 + 2e1 - 0.5e12`: each non-zero component with its blade (the scalar
-        /// without one), honouring the formatter's precision; at a precision `p`, terms
-        /// that would print as zero are left out. Zero prints as `0`.
+        /// Writes `1 + 2 e1 - 0.5 e12`: each non-zero component, a space, its blade (the
+        /// scalar without one; the space keeps `1 e12` apart from ten to the twelfth),
+        /// honouring the formatter's precision; at a precision `p`, terms that would print
+        /// as zero are left out. Magnitudes below `1e-5` or from `1e16` print in exponent
+        /// form (`5e-324`, not 324 digits), except below `1e-5` at a precision, where the
+        /// fixed form shows what rounds away. Zero prints as `0`.
         fn display_terms(
             f: &mut ::core::fmt::Formatter<'_>,
             terms: &[(#s, &str)],
         ) -> ::core::fmt::Result {
-            // Half a unit in the last printed digit; divided out step by step so that no
-            // float function (absent without `std`) is needed.
-            let threshold: #s = match f.precision() {
-                Some(p) => (0..p.min(400)).fold(0.5, |t, _| t / 10.0),
-                None => 0.0,
-            };
+            /// Notes whether a non-zero digit is written: a term "prints as zero" exactly
+            /// when the formatter's own rounding leaves none (no buffer, so `no_std`).
+            struct NonZeroDigit(bool);
+            impl ::core::fmt::Write for NonZeroDigit {
+                fn write_str(&mut self, s: &str) -> ::core::fmt::Result {
+                    self.0 |= s.bytes().any(|b| (b'1'..=b'9').contains(&b));
+                    Ok(())
+                }
+            }
             let mut first = true;
             for &(value, blade) in terms {
                 let magnitude = value.abs();
-                // Written so that NaN, for which every comparison is false, is kept.
-                if magnitude <= threshold {
+                if magnitude == 0.0 {
                     continue;
+                }
+                // NaN and infinities print as they are, in the plain form.
+                let large = magnitude >= 1e16 && magnitude.is_finite();
+                let small = magnitude < 1e-5;
+                let exponent = large || (small && f.precision().is_none());
+                if let (Some(p), false) = (f.precision(), exponent || !magnitude.is_finite()) {
+                    let mut digits = NonZeroDigit(false);
+                    ::core::fmt::write(&mut digits, format_args!("{:.*}", p, magnitude))?;
+                    if !digits.0 {
+                        continue;
+                    }
                 }
                 let negative = value.is_sign_negative() && !value.is_nan();
                 match (first, negative) {
@@ -74,9 +90,14 @@ fn display_helper(plan: &Plan) -> TokenStream {
                     (false, true) => f.write_str(" - ")?,
                     (false, false) => f.write_str(" + ")?,
                 }
-                match f.precision() {
-                    Some(p) => write!(f, "{:.*}{}", p, magnitude, blade)?,
-                    None => write!(f, "{}{}", magnitude, blade)?,
+                match (f.precision(), exponent) {
+                    (Some(p), true) => write!(f, "{:.*e}", p, magnitude)?,
+                    (Some(p), false) => write!(f, "{:.*}", p, magnitude)?,
+                    (None, true) => write!(f, "{:e}", magnitude)?,
+                    (None, false) => write!(f, "{}", magnitude)?,
+                }
+                if !blade.is_empty() {
+                    write!(f, " {}", blade)?;
                 }
                 first = false;
             }
@@ -251,8 +272,13 @@ fn folds(plan: &Plan, t: TypeId) -> TokenStream {
 }
 
 /// `&a op &b` for every operator the by-value impls have, over the same operand pairs,
-/// and `-&a`: each forwards to the by-value impl (all types are `Copy`).
+/// and `-&a`: each forwards to the by-value impl (all types are `Copy`). Outside the batch
+/// modules also the mixed forms glam has (`&a op b`, `a op &b`), the assigning forms with
+/// a reference (`a += &b`, `r *= &q`, `a *= &s`, `a /= &s`) and scalar division by and of
+/// references (`&a / s`, `a / &s`, `&a / &s`); the batch modules keep the first two, whose
+/// impls are a quarter of the count.
 fn reference_operators(plan: &Plan) -> TokenStream {
+    let batch = plan.lanes.is_some();
     let mut operators = Vec::new();
     for &kind in &plan.products {
         match kind {
@@ -279,8 +305,49 @@ fn reference_operators(plan: &Plan) -> TokenStream {
                     }
                 }
             });
+            if !batch {
+                out.extend(quote! {
+                    impl ::core::ops::#op<#rhs> for &#lhs {
+                        type Output = <#lhs as ::core::ops::#op<#rhs>>::Output;
+                        #[inline]
+                        fn #method(self, rhs: #rhs) -> Self::Output {
+                            ::core::ops::#op::#method(*self, rhs)
+                        }
+                    }
+
+                    impl ::core::ops::#op<&#rhs> for #lhs {
+                        type Output = <#lhs as ::core::ops::#op<#rhs>>::Output;
+                        #[inline]
+                        fn #method(self, rhs: &#rhs) -> Self::Output {
+                            ::core::ops::#op::#method(self, *rhs)
+                        }
+                    }
+                });
+            }
+        }
+        if !batch
+            && a != TypeId::SCALAR
+            && plan.has(Op::Add)
+            && plan.sum_output(a, b) == Output::Type(a)
+        {
+            out.extend(quote! {
+                impl ::core::ops::AddAssign<&#rhs> for #lhs {
+                    #[inline]
+                    fn add_assign(&mut self, rhs: &#rhs) {
+                        *self += *rhs;
+                    }
+                }
+
+                impl ::core::ops::SubAssign<&#rhs> for #lhs {
+                    #[inline]
+                    fn sub_assign(&mut self, rhs: &#rhs) {
+                        *self -= *rhs;
+                    }
+                }
+            });
         }
     }
+    let s = scalar_type(plan);
     for &t in &plan.emitted {
         let name = type_tokens(plan, t);
         out.extend(quote! {
@@ -292,6 +359,58 @@ fn reference_operators(plan: &Plan) -> TokenStream {
                 }
             }
         });
+        if batch {
+            continue;
+        }
+        out.extend(quote! {
+            impl ::core::ops::Div<#s> for &#name {
+                type Output = #name;
+                #[inline]
+                fn div(self, rhs: #s) -> #name {
+                    *self / rhs
+                }
+            }
+
+            impl ::core::ops::Div<&#s> for #name {
+                type Output = #name;
+                #[inline]
+                fn div(self, rhs: &#s) -> #name {
+                    self / *rhs
+                }
+            }
+
+            impl ::core::ops::Div<&#s> for &#name {
+                type Output = #name;
+                #[inline]
+                fn div(self, rhs: &#s) -> #name {
+                    *self / *rhs
+                }
+            }
+
+            impl ::core::ops::MulAssign<&#s> for #name {
+                #[inline]
+                fn mul_assign(&mut self, rhs: &#s) {
+                    *self *= *rhs;
+                }
+            }
+
+            impl ::core::ops::DivAssign<&#s> for #name {
+                #[inline]
+                fn div_assign(&mut self, rhs: &#s) {
+                    *self /= *rhs;
+                }
+            }
+        });
+        if closed_under_geometric(plan, t) {
+            out.extend(quote! {
+                impl ::core::ops::MulAssign<&#name> for #name {
+                    #[inline]
+                    fn mul_assign(&mut self, rhs: &#name) {
+                        *self *= *rhs;
+                    }
+                }
+            });
+        }
     }
     out
 }

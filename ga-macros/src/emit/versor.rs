@@ -22,11 +22,14 @@ pub fn emit_sandwiches(plan: &Plan) -> TokenStream {
         /// The versor product: `v x ~v` for even `v`, `v x^ ~v` for odd `v` (x^ the grade
         /// involution), in the form the generator's cost model picks (a quadratic form with
         /// like terms collected, or commutators). Returns `x`'s own type; exact for any
-        /// versor, so the result is scaled by |v|^2 when `v` is not unit.
+        /// versor, so the result is scaled by |v|^2 when `v` is not unit. Either side may
+        /// be a reference (`r.sandwich(&v)`, as glam's `q * &v`).
         pub trait Sandwich<X> {
+            /// `x`'s own type (the referenced type when `x` is a reference).
+            type Output;
             /// `v x ~v` (even `v`) or `v x^ ~v` (odd `v`).
             #[must_use]
-            fn sandwich(self, x: X) -> X;
+            fn sandwich(self, x: X) -> Self::Output;
         }
     };
     let mut unit = TokenStream::new();
@@ -73,9 +76,34 @@ fn sandwich_impl(plan: &Plan, v: TypeId, x: TypeId) -> TokenStream {
     };
     quote! {
         impl Sandwich<#x_ty> for #v_ty {
+            type Output = #x_ty;
             #[inline]
             fn sandwich(self, x: #x_ty) -> #x_ty {
                 #body
+            }
+        }
+
+        impl Sandwich<&#x_ty> for #v_ty {
+            type Output = #x_ty;
+            #[inline]
+            fn sandwich(self, x: &#x_ty) -> #x_ty {
+                Sandwich::sandwich(self, *x)
+            }
+        }
+
+        impl Sandwich<#x_ty> for &#v_ty {
+            type Output = #x_ty;
+            #[inline]
+            fn sandwich(self, x: #x_ty) -> #x_ty {
+                Sandwich::sandwich(*self, x)
+            }
+        }
+
+        impl Sandwich<&#x_ty> for &#v_ty {
+            type Output = #x_ty;
+            #[inline]
+            fn sandwich(self, x: &#x_ty) -> #x_ty {
+                Sandwich::sandwich(*self, *x)
             }
         }
     }

@@ -60,7 +60,9 @@ macro_rules! rotor_product {
 /// Four registers of `f32` rotors (one rotor per 128-bit lane) to four registers of
 /// components, or back: a 4 x 4 transpose within each 128-bit lane, which is its own
 /// inverse. The items come out in a permuted order (0, 2, 4, 6, 1, 3, 5, 7 for 256 bits),
-/// the same for every component, which is all a lane-wise product needs.
+/// the same for every component, which is all a lane-wise product needs. Only the `f32`
+/// copies use it: without the `f32` feature (ga-rigid's build) it would be an unused macro.
+#[cfg(feature = "f32")]
 macro_rules! transpose_in_lanes {
     ($y:expr, $lo:ident, $hi:ident, $shuffle:ident) => {{
         let [y0, y1, y2, y3] = $y;

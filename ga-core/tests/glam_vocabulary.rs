@@ -1,0 +1,534 @@
+//! Every glam name ga-core carries, checked against glam 0.32 itself on glam's own edge
+//! cases (zero, opposite and colinear vectors, angles near 0 and pi, non-unit input) in
+//! f32 and f64; and the fixes of issue 23, each with the case that failed before.
+
+use ga_core::EulerRot;
+
+/// A small deterministic generator (xorshift64*), so failures reproduce.
+struct Rng(u64);
+
+impl Rng {
+    /// Uniform in [-1, 1).
+    fn next(&mut self) -> f64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        let bits = self.0.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11;
+        bits as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+    }
+}
+
+const ORDERS: [EulerRot; 24] = {
+    use EulerRot::*;
+    [
+        ZYX, ZXY, YXZ, YZX, XYZ, XZY, ZYZ, ZXZ, YXY, YZY, XYX, XZX, ZYXEx, ZXYEx, YXZEx, YZXEx,
+        XYZEx, XZYEx, ZYZEx, ZXZEx, YXYEx, YZYEx, XYXEx, XZXEx,
+    ]
+};
+
+/// Whether an order repeats its first axis (proper Euler angles).
+fn proper(order: EulerRot) -> bool {
+    let name = format!("{order:?}");
+    let name = name.as_bytes();
+    name[0] == name[2]
+}
+
+macro_rules! vocabulary_tests {
+    ($name:ident, $s:ident, $vec3:ident, $quat:ident, $mat3:ident, $mat4:ident, $tol:expr) => {
+        mod $name {
+            use super::*;
+            use core::$s::consts::{FRAC_PI_2, PI};
+            use ga_core::glam::{$mat3, $mat4, $quat, $vec3};
+            use ga_core::$s::g3::*;
+
+            const TOL: $s = $tol;
+
+            fn vector(rng: &mut Rng) -> Vector {
+                Vector::new(rng.next() as $s, rng.next() as $s, rng.next() as $s)
+            }
+
+            fn unit(rng: &mut Rng) -> Vector {
+                loop {
+                    let v = vector(rng);
+                    if v.norm() > 0.1 {
+                        return v.normalized();
+                    }
+                }
+            }
+
+            fn rotor(rng: &mut Rng) -> Rotor {
+                Rotor::from_axis_angle(unit(rng), rng.next() as $s * 0.999 * PI)
+            }
+
+            /// The distance between a rotor and glam's quaternion, up to the sign.
+            fn gap(r: Rotor, q: $quat) -> $s {
+                let q = Rotor::from(q);
+                (r - q).norm().min((r + q).norm())
+            }
+
+            fn close(a: Vector, b: $vec3, tol: $s) -> bool {
+                (a - Vector::from(b)).norm() <= tol * (1.0 + b.length())
+            }
+
+            /// glam's edge-case vectors: axes, zero, tiny, huge, non-unit.
+            fn edge_vectors() -> Vec<Vector> {
+                vec![
+                    Vector::ZERO,
+                    Vector::X,
+                    -Vector::Y,
+                    Vector::Z * 3.0,
+                    Vector::new(1e-20, 0.0, 0.0),
+                    Vector::new(1.0, 1.0, 1.0),
+                    Vector::new(-0.5, 0.25, 2.0),
+                ]
+            }
+
+            #[test]
+            fn vector_vocabulary_matches_glam() {
+                assert_eq!($vec3::from(Vector::X), $vec3::X);
+                assert_eq!($vec3::from(Vector::Y), $vec3::Y);
+                assert_eq!($vec3::from(Vector::Z), $vec3::Z);
+                let mut rng = Rng(11);
+                let mut vectors = edge_vectors();
+                vectors.extend((0..200).map(|_| vector(&mut rng) * 4.0));
+                for &a in &vectors {
+                    let ga = $vec3::from(a);
+                    assert_eq!(a.length_squared(), ga.length_squared());
+                    assert!((a.length() - ga.length()).abs() <= TOL * ga.length());
+                    assert_eq!(a.is_normalized(), ga.is_normalized(), "{a}");
+                    let (ours, theirs) = (a.normalize(), ga.normalize());
+                    if theirs.is_finite() {
+                        assert!(close(ours, theirs, TOL), "{a}");
+                    } else {
+                        assert!(!ours.is_finite(), "{a}");
+                    }
+                    for &b in &vectors {
+                        let gb = $vec3::from(b);
+                        assert!(
+                            (a.dot(b) - ga.dot(gb)).abs()
+                                <= TOL * (1.0 + ga.length() * gb.length())
+                        );
+                        assert!(close(
+                            a.cross(b),
+                            ga.cross(gb),
+                            TOL * (1.0 + ga.length() * gb.length())
+                        ));
+                    }
+                    let mut slice = [0.0; 5];
+                    a.write_to_slice(&mut slice[1..]);
+                    let mut glam_slice = [0.0; 5];
+                    ga.write_to_slice(&mut glam_slice[1..]);
+                    assert_eq!(slice, glam_slice);
+                    assert_eq!(Vector::from_slice(&slice[1..]), a);
+                }
+                for scale in [1.0, 1.0 + 9e-5, 1.0 - 9e-5, 1.0 + 2e-4, 1.01, 0.0] {
+                    let v = Vector::X * scale;
+                    assert_eq!(v.is_normalized(), $vec3::from(v).is_normalized(), "{scale}");
+                }
+            }
+
+            #[test]
+            fn elementary_rotations_match_glam_near_zero_and_pi() {
+                for angle in [
+                    0.0,
+                    1e-8,
+                    1e-4,
+                    0.3,
+                    FRAC_PI_2,
+                    PI - 1e-6,
+                    PI,
+                    -PI,
+                    2.0 * PI,
+                    3.0,
+                    -7.0,
+                ] {
+                    assert!(
+                        gap(Rotor::from_rotation_x(angle), $quat::from_rotation_x(angle)) < TOL
+                    );
+                    assert!(
+                        gap(Rotor::from_rotation_y(angle), $quat::from_rotation_y(angle)) < TOL
+                    );
+                    assert!(
+                        gap(Rotor::from_rotation_z(angle), $quat::from_rotation_z(angle)) < TOL
+                    );
+                }
+                assert_eq!($quat::from(Rotor::IDENTITY), $quat::IDENTITY);
+            }
+
+            #[test]
+            fn quaternion_layout_matches_glam() {
+                let mut rng = Rng(12);
+                for _ in 0..50 {
+                    let r = rotor(&mut rng) * 1.5;
+                    let q = $quat::from(r);
+                    assert_eq!(r.to_xyzw(), q.to_array());
+                    assert_eq!(Rotor::from_xyzw(q.x, q.y, q.z, q.w), r);
+                    let mut ours = [0.0; 6];
+                    let mut theirs = [0.0; 6];
+                    r.write_to_slice(&mut ours[2..]);
+                    q.write_to_slice(&mut theirs[2..]);
+                    assert_eq!(ours, theirs);
+                    assert_eq!(Rotor::from_slice(&theirs[2..]), r);
+                    assert_eq!(Rotor::from($quat::from_slice(&ours[2..])), r);
+                    assert!((r.dot(r * 0.5) - q.dot(q * 0.5)).abs() <= 4.0 * TOL);
+                    assert!((r.length_squared() - q.length_squared()).abs() <= 4.0 * TOL);
+                    assert!((r.length() - q.length()).abs() <= TOL);
+                    assert!(gap(r.normalize(), q.normalize()) <= TOL);
+                    assert_eq!(r.is_normalized(), q.is_normalized());
+                }
+                for scale in [1.0, 1.0 + 9e-5, 1.0 + 2e-4, 0.9, 0.0] {
+                    let r = Rotor::IDENTITY * scale;
+                    assert_eq!(r.is_normalized(), $quat::from(r).is_normalized(), "{scale}");
+                }
+                assert!(!Rotor::ZERO.normalize().is_finite());
+            }
+
+            #[test]
+            fn mul_vec3_is_glams_rotation_for_unit_and_non_unit_rotors() {
+                let mut rng = Rng(13);
+                for i in 0..300 {
+                    // Non-unit rotors too: glam's formula is the sandwich for any quaternion.
+                    let r = rotor(&mut rng) * if i % 3 == 0 { 1.7 } else { 1.0 };
+                    let v = vector(&mut rng) * 10.0;
+                    let theirs = $quat::from(r).mul_vec3(v.into());
+                    assert!(close(r.mul_vec3(v), theirs, 8.0 * TOL), "{r} {v}");
+                    assert!(close(
+                        r.mul_vec3(v),
+                        $quat::from(r) * $vec3::from(v),
+                        8.0 * TOL
+                    ));
+                }
+            }
+
+            #[test]
+            fn near_identity_agrees_with_glam_off_its_threshold() {
+                // The threshold angles (f32 0.0028474 rad, f64 2.8273e-7 rad), away from
+                // them by a factor, both signs of the rotor, and non-unit input.
+                let threshold: $s = if core::mem::size_of::<$s>() == 4 {
+                    0.002_847_144_6
+                } else {
+                    2.827e-7
+                };
+                for factor in [0.0, 0.1, 0.5, 0.9, 1.2, 2.0, 100.0] {
+                    for axis in [Vector::X, Vector::new(0.0, 0.6, 0.8)] {
+                        let r = Rotor::from_axis_angle(axis, threshold * factor);
+                        for r in [r, -r] {
+                            assert_eq!(
+                                r.is_near_identity(),
+                                $quat::from(r).is_near_identity(),
+                                "{factor}"
+                            );
+                        }
+                    }
+                }
+                assert!(Rotor::from_rotation_x(2.0 * PI).is_near_identity());
+                assert!(!Rotor::from_rotation_x(PI).is_near_identity());
+            }
+
+            #[test]
+            fn rotate_towards_matches_glam() {
+                let mut rng = Rng(14);
+                for _ in 0..200 {
+                    let (a, b) = (rotor(&mut rng), rotor(&mut rng));
+                    let (qa, qb) = ($quat::from(a), $quat::from(b));
+                    for max in [0.0, 0.05, 0.5, 2.0, 10.0, -0.3] {
+                        let ours = a.rotate_towards(b, max);
+                        let theirs = qa.rotate_towards(qb, max);
+                        assert!(
+                            gap(ours, theirs) < 64.0 * TOL,
+                            "{a} {b} {max}: {ours} {theirs:?}"
+                        );
+                    }
+                    // Within 1e-4 rad: the target itself.
+                    let near = a * Rotor::from_rotation_y(5e-5);
+                    assert_eq!(a.rotate_towards(near, 0.0), near);
+                    // Opposite signs of the same rotation: no turn at all.
+                    assert!(gap(a.rotate_towards(-a, 1.0), qa) < TOL);
+                }
+            }
+
+            #[test]
+            fn euler_angles_match_glam_in_every_order() {
+                let mut rng = Rng(15);
+                for order in ORDERS {
+                    let glam_order = ga_core::glam::EulerRot::from(order);
+                    assert_eq!(EulerRot::from(glam_order), order);
+                    let lock: &[$s] = if proper(order) {
+                        &[0.0, PI]
+                    } else {
+                        &[FRAC_PI_2, -FRAC_PI_2]
+                    };
+                    let mut cases: Vec<($s, $s, $s)> = (0..100)
+                        .map(|_| {
+                            let middle = if proper(order) {
+                                (rng.next() * 0.5 + 0.5) as $s * PI
+                            } else {
+                                rng.next() as $s * 1.5
+                            };
+                            (rng.next() as $s * 3.1, middle, rng.next() as $s * 3.1)
+                        })
+                        .collect();
+                    for &b in lock {
+                        cases.push((0.4, b, -0.7));
+                        cases.push((0.4, b + 1e-3, -0.7));
+                    }
+                    cases.push((0.0, 0.0, 0.0));
+                    cases.push((1e-7, 1e-7, 1e-7));
+                    for (a, b, c) in cases {
+                        let r = Rotor::from_euler(order, a, b, c);
+                        let q = $quat::from_euler(glam_order, a, b, c);
+                        assert!(gap(r, q) < 4.0 * TOL, "{order:?} {a} {b} {c}: {r} vs {q:?}");
+                        let ours = r.to_euler(order);
+                        let theirs = q.to_euler(glam_order);
+                        // The angles give back the rotation in every case, gimbal lock included;
+                        // near it the outer angles are ill-conditioned (errors grow as one over
+                        // the distance to the lock), as glam's are.
+                        let distance = lock
+                            .iter()
+                            .map(|&l| (b - l).abs())
+                            .fold($s::INFINITY, $s::min);
+                        let back = Rotor::from_euler(order, ours.0, ours.1, ours.2);
+                        let tolerance = 64.0 * TOL / distance.max(1e-3);
+                        assert!(gap(back, q) < tolerance, "{order:?} {a} {b} {c}: {ours:?}");
+                        // Away from gimbal lock the angles are glam's.
+                        let locked = distance < 1e-2;
+                        if !locked {
+                            for (x, y) in
+                                [(ours.0, theirs.0), (ours.1, theirs.1), (ours.2, theirs.2)]
+                            {
+                                let d = (x - y).abs();
+                                assert!(
+                                    d.min(2.0 * PI - d) < 512.0 * TOL,
+                                    "{order:?} {a} {b} {c}: {ours:?} vs {theirs:?}"
+                                );
+                            }
+                        }
+                    }
+                }
+            }
+
+            #[test]
+            fn rotation_arcs_match_glam_on_its_edge_cases() {
+                let mut rng = Rng(16);
+                let mut pairs = vec![
+                    (Vector::X, Vector::X),
+                    (Vector::X, -Vector::X),
+                    (Vector::Z, -Vector::Z),
+                    (Vector::Y, Vector::Z),
+                ];
+                for _ in 0..200 {
+                    let a = unit(&mut rng);
+                    pairs.push((a, unit(&mut rng)));
+                    pairs.push((a, a));
+                    pairs.push((a, -a));
+                }
+                for (from, to) in pairs {
+                    let (gf, gt) = ($vec3::from(from), $vec3::from(to));
+                    let ours = Rotor::from_rotation_arc(from, to);
+                    let theirs = $quat::from_rotation_arc(gf, gt);
+                    // Opposite vectors have many shortest arcs: what counts is where `from`
+                    // goes. (glam's is the identity when `from` and `-from` are an ulp off
+                    // unit length: `1 + dot` then passes its threshold and its cross
+                    // product is zero; see docs/glam.md.)
+                    assert!((ours.mul_vec3(from) - to).norm() < 8.0 * TOL, "{from} {to}");
+                    if from.dot(to) > -0.99 {
+                        assert!(gap(ours, theirs) < 8.0 * TOL, "{from} {to}");
+                    }
+                    let ours = Rotor::from_rotation_arc_colinear(from, to);
+                    let theirs = $quat::from_rotation_arc_colinear(gf, gt);
+                    assert!(
+                        gap(ours, theirs) < 8.0 * TOL,
+                        "{from} {to}: {ours} {theirs:?}"
+                    );
+                    assert!((ours.mul_vec3(from).dot(to).abs() - 1.0).abs() < 8.0 * TOL);
+                    // Non-unit input counts by its direction (glam asks for unit input).
+                    let scaled = Rotor::from_rotation_arc(from * 3.0, to * 0.25);
+                    assert!(
+                        (scaled.mul_vec3(from) - to).norm() < 8.0 * TOL,
+                        "{from} {to}"
+                    );
+                    assert!((scaled.norm() - 1.0).abs() < 4.0 * TOL);
+                }
+            }
+
+            #[test]
+            fn rotation_arc_with_a_zero_input_is_zero_as_documented() {
+                // Failed before: (X, ZERO) gave the identity.
+                for v in [Vector::X, Vector::new(0.0, 0.6, -0.8), Vector::ZERO] {
+                    assert_eq!(Rotor::from_rotation_arc(v, Vector::ZERO), Rotor::ZERO);
+                    assert_eq!(Rotor::from_rotation_arc(Vector::ZERO, v), Rotor::ZERO);
+                }
+            }
+
+            #[test]
+            fn rotation_arc_lands_on_to_near_opposite_vectors() {
+                // Failed before: the bisector form missed `to` by about 2 eps / |from + to|
+                // (3.3e-4 rad in f32 at |from + to| = 1e-3). The error is measured in f64.
+                let mut rng = Rng(17);
+                let mut worst = 0.0f64;
+                for _ in 0..300 {
+                    let from = unit(&mut rng);
+                    let side = from.cross(unit(&mut rng)).normalized();
+                    for gap in [1e-2, 1e-3, 1e-4, 1e-5] {
+                        let to = (-from + side * (gap as $s)).normalized();
+                        use ga_core::f64::g3 as wide;
+                        use wide::Sandwich as _;
+                        let r = wide::Rotor::from_array(
+                            Rotor::from_rotation_arc(from, to).to_array().map(f64::from),
+                        );
+                        let widen =
+                            |v: Vector| wide::Vector::from_array(v.to_array().map(f64::from));
+                        let (from, to) = (widen(from), widen(to));
+                        let image = r.sandwich(from) / r.norm_squared();
+                        let miss = image.normalized().cross(to.normalized()).norm();
+                        worst = worst.max(miss);
+                    }
+                }
+                assert!(worst < 8.0 * $s::EPSILON as f64, "worst miss {worst:e}");
+            }
+
+            #[test]
+            fn from_matrix_refuses_what_is_not_a_rotation() {
+                // Failed before: these gave a unit rotor (diag(3, 0, 0) and ones exactly 1).
+                let r = Rotor::from_axis_angle(Vector::new(0.0, 0.6, 0.8), 1.1);
+                let m = r.to_matrix();
+                let mut with_shear = m;
+                for c in 0..3 {
+                    for row in 0..3 {
+                        // A symmetric traceless part: diag(1, -1, 0) / 100.
+                        let s = [[0.01, 0.0, 0.0], [0.0, -0.01, 0.0], [0.0, 0.0, 0.0]][c][row];
+                        with_shear[c][row] += s;
+                    }
+                }
+                let reflection = [m[0], m[1], m[2].map(|x| -x)];
+                for bad in [
+                    [[3.0, 0.0, 0.0], [0.0; 3], [0.0; 3]],
+                    [[1.0; 3]; 3],
+                    with_shear,
+                    reflection,
+                    [[$s::NAN; 3]; 3],
+                    [[0.0; 3]; 3],
+                ] {
+                    assert!(Rotor::from_matrix(bad).is_none(), "{bad:?}");
+                }
+                let back = Rotor::from_matrix(m).unwrap();
+                assert!((back - r).norm() < 4.0 * TOL);
+                let glam_m = $mat3::from_quat(r.into());
+                assert!(
+                    gap(
+                        Rotor::from_matrix(&glam_m).unwrap(),
+                        $quat::from_mat3(&glam_m)
+                    ) < 4.0 * TOL
+                );
+                assert!(gap(Rotor::from_mat3(&glam_m), $quat::from_mat3(&glam_m)) < 4.0 * TOL);
+            }
+
+            #[test]
+            fn mat4_conversions_match_glam() {
+                let mut rng = Rng(18);
+                for _ in 0..100 {
+                    let r = rotor(&mut rng);
+                    let ours = $mat4::from(r);
+                    let theirs = $mat4::from_quat(r.into());
+                    assert!(ours.abs_diff_eq(theirs, 4.0 * TOL));
+                    let with_translation =
+                        $mat4::from_rotation_translation(r.into(), $vec3::new(1.0, 2.0, 3.0));
+                    let back = Rotor::from_matrix(&with_translation).unwrap();
+                    assert!(gap(back, $quat::from_mat4(&with_translation)) < 4.0 * TOL);
+                }
+            }
+
+            #[test]
+            fn look_constructors_match_glam() {
+                let mut rng = Rng(19);
+                for _ in 0..300 {
+                    let dir = unit(&mut rng);
+                    let up = unit(&mut rng);
+                    if dir.cross(up).norm() < 0.05 {
+                        continue;
+                    }
+                    let (gd, gu) = ($vec3::from(dir), $vec3::from(up));
+                    assert!(
+                        gap(
+                            Rotor::look_to_rh(dir, up).unwrap(),
+                            $quat::look_to_rh(gd, gu)
+                        ) < 16.0 * TOL
+                    );
+                    assert!(
+                        gap(
+                            Rotor::look_to_lh(dir, up).unwrap(),
+                            $quat::look_to_lh(gd, gu)
+                        ) < 16.0 * TOL
+                    );
+                    let eye = vector(&mut rng) * 5.0;
+                    let center = eye + dir * 2.5;
+                    let (ge, gc) = ($vec3::from(eye), $vec3::from(center));
+                    assert!(
+                        gap(
+                            Rotor::look_at_rh(eye, center, up).unwrap(),
+                            $quat::look_at_rh(ge, gc, gu)
+                        ) < 64.0 * TOL
+                    );
+                    assert!(
+                        gap(
+                            Rotor::look_at_lh(eye, center, up).unwrap(),
+                            $quat::look_at_lh(ge, gc, gu)
+                        ) < 64.0 * TOL
+                    );
+                    // Non-unit input (glam asks for unit): the same rotation as the unit one.
+                    assert!(
+                        gap(
+                            Rotor::look_to_rh(dir * 7.0, up * 0.5).unwrap(),
+                            $quat::look_to_rh(gd, gu)
+                        ) < 16.0 * TOL
+                    );
+                    // The old `look_to`, now `from_forward_up`, is glam's `look_to_lh` inverted.
+                    let object = Rotor::from_forward_up(dir, up).unwrap();
+                    assert!(gap(object, $quat::look_to_lh(gd, gu).inverse()) < 16.0 * TOL);
+                }
+                assert!(Rotor::look_to_rh(Vector::ZERO, Vector::Y).is_none());
+                assert!(Rotor::look_to_lh(Vector::Y, Vector::Y * -2.0).is_none());
+                assert!(Rotor::look_at_rh(Vector::X, Vector::X, Vector::Y).is_none());
+                assert!(Rotor::look_to_rh(Vector::new($s::NAN, 0.0, 1.0), Vector::Y).is_none());
+            }
+
+            #[test]
+            fn default_rotor_is_the_algebras_zero_and_identity_is_named() {
+                // Deliberately different from glam (docs/glam.md): `Rotor` is the algebra's
+                // `Even`, whose `Default` is the additive zero.
+                assert_eq!(Rotor::default(), Rotor::ZERO);
+                assert_eq!(Rotor::IDENTITY, Rotor::ONE);
+                assert_eq!($quat::from(Rotor::IDENTITY), $quat::default());
+            }
+        }
+    };
+}
+
+vocabulary_tests!(f32_vocabulary, f32, Vec3, Quat, Mat3, Mat4, 2e-7);
+vocabulary_tests!(f64_vocabulary, f64, DVec3, DQuat, DMat3, DMat4, 4e-16);
+
+#[test]
+fn small_angle_series_of_from_scaled_axis_has_the_right_sign() {
+    // Below 1e-4 rad `sin(a/2)/a` comes from its series `1/2 - a^2/48`. With the sign
+    // flipped the bivector part is off by a relative a^2/24: 4e-10 at 1e-4 rad, which a
+    // tolerance of a few ulps in f64 sees (one at 1e-6 does not: the old test's).
+    use ga_core::f64::g3::*;
+    let axis = Vector::new(0.48, -0.6, 0.64);
+    for angle in [9.9e-5, 7e-5, 5e-5, 2e-5] {
+        let ours = Rotor::from_scaled_axis(axis * angle);
+        let reference = Rotor::from_axis_angle(axis, angle);
+        let glam = Rotor::from(ga_core::glam::DQuat::from_scaled_axis(
+            (axis * angle).into(),
+        ));
+        for (x, y) in ours
+            .iter()
+            .zip(reference.iter())
+            .chain(ours.iter().zip(glam.iter()))
+        {
+            assert!(
+                (x - y).abs() <= 4.0 * f64::EPSILON * y.abs(),
+                "{angle}: {ours} vs {reference}"
+            );
+        }
+    }
+}
