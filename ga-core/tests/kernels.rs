@@ -150,9 +150,12 @@ macro_rules! kernel_tests {
                     .collect();
                 // All 65,536 ordered pairs, in one slice each, so that every copy runs its
                 // full-width rounds on them.
-                let a: Vec<g3::Rotor> =
-                    rotors.iter().flat_map(|&p| rotors.iter().map(move |_| p)).collect();
-                let b: Vec<g3::Rotor> = rotors.iter().flat_map(|_| rotors.iter().copied()).collect();
+                let a: Vec<g3::Rotor> = rotors
+                    .iter()
+                    .flat_map(|&p| rotors.iter().map(move |_| p))
+                    .collect();
+                let b: Vec<g3::Rotor> =
+                    rotors.iter().flat_map(|_| rotors.iter().copied()).collect();
                 for set in [
                     InstructionSet::Avx512f,
                     InstructionSet::Avx2Fma,

@@ -441,5 +441,13 @@ mod degenerate_metric {
         };
     }
 
-    pga_norms!(Vector, Bivector, Trivector, Quadvector, Even, Odd, Multivector);
+    pga_norms!(
+        Vector,
+        Bivector,
+        Trivector,
+        Quadvector,
+        Even,
+        Odd,
+        Multivector
+    );
 }

@@ -202,26 +202,45 @@ mod unit_sandwiches {
     }
 
     unit_sandwich_test!(
-        g2, ga_core::f64::g2, PRODUCT_TOLERANCE, [1, 1], [Vector, Bivector, Even, Odd, Multivector]
-    );
-    unit_sandwich_test!(
-        g3, ga_core::f64::g3, PRODUCT_TOLERANCE, [1, 1, 1],
-        [Vector, Bivector, Trivector, Even, Odd, Multivector]
-    );
-    unit_sandwich_test!(
-        f32_g2, ga_core::f32::g2, F32_PRODUCT_TOLERANCE, [1, 1],
+        g2,
+        ga_core::f64::g2,
+        PRODUCT_TOLERANCE,
+        [1, 1],
         [Vector, Bivector, Even, Odd, Multivector]
     );
     unit_sandwich_test!(
-        f32_g3, ga_core::f32::g3, F32_PRODUCT_TOLERANCE, [1, 1, 1],
+        g3,
+        ga_core::f64::g3,
+        PRODUCT_TOLERANCE,
+        [1, 1, 1],
         [Vector, Bivector, Trivector, Even, Odd, Multivector]
     );
     unit_sandwich_test!(
-        lorentz3_metric, self::lorentz3, PRODUCT_TOLERANCE, [1, 1, -1],
+        f32_g2,
+        ga_core::f32::g2,
+        F32_PRODUCT_TOLERANCE,
+        [1, 1],
+        [Vector, Bivector, Even, Odd, Multivector]
+    );
+    unit_sandwich_test!(
+        f32_g3,
+        ga_core::f32::g3,
+        F32_PRODUCT_TOLERANCE,
+        [1, 1, 1],
         [Vector, Bivector, Trivector, Even, Odd, Multivector]
     );
     unit_sandwich_test!(
-        pga2_metric, self::pga2, PRODUCT_TOLERANCE, [1, 1, 0],
+        lorentz3_metric,
+        self::lorentz3,
+        PRODUCT_TOLERANCE,
+        [1, 1, -1],
+        [Vector, Bivector, Trivector, Even, Odd, Multivector]
+    );
+    unit_sandwich_test!(
+        pga2_metric,
+        self::pga2,
+        PRODUCT_TOLERANCE,
+        [1, 1, 0],
         [Vector, Bivector, Trivector, Even, Odd, Multivector]
     );
 }

@@ -99,11 +99,10 @@ macro_rules! transpose_in_lanes {
 pub mod f32 {
     use core::arch::x86_64::{
         __m256, __m512, _mm256_add_ps, _mm256_loadu_ps, _mm256_mul_ps, _mm256_set1_ps,
-        _mm256_shuffle_ps, _mm256_storeu_ps, _mm256_sub_ps, _mm256_unpackhi_ps,
-        _mm256_unpacklo_ps, _mm256_xor_ps, _mm512_add_ps, _mm512_castps_si512,
-        _mm512_castsi512_ps, _mm512_loadu_ps, _mm512_mul_ps, _mm512_set1_epi32,
-        _mm512_shuffle_ps, _mm512_storeu_ps, _mm512_sub_ps, _mm512_unpackhi_ps,
-        _mm512_unpacklo_ps, _mm512_xor_si512,
+        _mm256_shuffle_ps, _mm256_storeu_ps, _mm256_sub_ps, _mm256_unpackhi_ps, _mm256_unpacklo_ps,
+        _mm256_xor_ps, _mm512_add_ps, _mm512_castps_si512, _mm512_castsi512_ps, _mm512_loadu_ps,
+        _mm512_mul_ps, _mm512_set1_epi32, _mm512_shuffle_ps, _mm512_storeu_ps, _mm512_sub_ps,
+        _mm512_unpackhi_ps, _mm512_unpacklo_ps, _mm512_xor_si512,
     };
 
     use crate::f32::g3::Rotor;
@@ -122,7 +121,10 @@ pub mod f32 {
     #[inline]
     #[target_feature(enable = "avx512f")]
     fn negate_512(x: __m512) -> __m512 {
-        _mm512_castsi512_ps(_mm512_xor_si512(_mm512_castps_si512(x), _mm512_set1_epi32(i32::MIN)))
+        _mm512_castsi512_ps(_mm512_xor_si512(
+            _mm512_castps_si512(x),
+            _mm512_set1_epi32(i32::MIN),
+        ))
     }
 
     /// One `f32` copy: `$items` rotors a round, four registers of `$items / 4` rotors each,
