@@ -55,60 +55,73 @@ impl Dd {
         self.hi + self.lo
     }
 
-    /// `self + other`, to about 2^-104 relative (the accurate sum of QD).
+    /// `|self|`.
     #[must_use]
-    pub fn add(self, other: Dd) -> Dd {
+    pub fn abs(self) -> Dd {
+        if self.hi < 0.0 || (self.hi == 0.0 && self.lo < 0.0) {
+            -self
+        } else {
+            self
+        }
+    }
+}
+
+impl core::ops::Add for Dd {
+    type Output = Dd;
+
+    /// To about 2^-104 relative (the accurate sum of QD).
+    fn add(self, other: Dd) -> Dd {
         let (s, e) = two_sum(self.hi, other.hi);
         let (t, f) = two_sum(self.lo, other.lo);
         let (s, e) = quick_two_sum(s, e + t);
         let (hi, lo) = quick_two_sum(s, e + f);
         Dd { hi, lo }
     }
+}
 
-    /// `-self`.
-    #[must_use]
-    pub fn neg(self) -> Dd {
+impl core::ops::Neg for Dd {
+    type Output = Dd;
+
+    fn neg(self) -> Dd {
         Dd {
             hi: -self.hi,
             lo: -self.lo,
         }
     }
+}
 
-    /// `self - other`.
-    #[must_use]
-    pub fn sub(self, other: Dd) -> Dd {
-        self.add(other.neg())
+impl core::ops::Sub for Dd {
+    type Output = Dd;
+
+    fn sub(self, other: Dd) -> Dd {
+        self + -other
     }
+}
 
-    /// `self * other`, to about 2^-104 relative.
-    #[must_use]
-    pub fn mul(self, other: Dd) -> Dd {
+impl core::ops::Mul for Dd {
+    type Output = Dd;
+
+    /// To about 2^-104 relative.
+    fn mul(self, other: Dd) -> Dd {
         let (p, e) = two_prod(self.hi, other.hi);
         let e = e + (self.hi * other.lo + self.lo * other.hi);
         let (hi, lo) = quick_two_sum(p, e);
         Dd { hi, lo }
     }
+}
 
-    /// `self / other` by three rounds of long division.
-    #[must_use]
-    pub fn div(self, other: Dd) -> Dd {
+impl core::ops::Div for Dd {
+    type Output = Dd;
+
+    /// By three rounds of long division.
+    fn div(self, other: Dd) -> Dd {
         let q1 = self.hi / other.hi;
-        let r = self.sub(other.mul(Dd::from_f64(q1)));
+        let r = self - other * Dd::from_f64(q1);
         let q2 = r.hi / other.hi;
-        let r = r.sub(other.mul(Dd::from_f64(q2)));
+        let r = r - other * Dd::from_f64(q2);
         let q3 = r.hi / other.hi;
         let (hi, lo) = quick_two_sum(q1, q2);
-        Dd { hi, lo }.add(Dd::from_f64(q3))
-    }
-
-    /// `|self|`.
-    #[must_use]
-    pub fn abs(self) -> Dd {
-        if self.hi < 0.0 || (self.hi == 0.0 && self.lo < 0.0) {
-            self.neg()
-        } else {
-            self
-        }
+        Dd { hi, lo } + Dd::from_f64(q3)
     }
 }
 
@@ -124,10 +137,13 @@ pub fn inverse(algebra: &Algebra, a: &[f64]) -> Option<(Vec<f64>, f64)> {
         if ai == 0.0 {
             continue;
         }
+        // Column j's entries land on rows k that the blade product picks, so the loop
+        // indexes rather than iterates.
+        #[allow(clippy::needless_range_loop)]
         for j in 0..size {
             let (sign, k) = algebra.blade_product(i, j);
             if sign != 0.0 {
-                m[k][j] = m[k][j].add(Dd::from_f64(sign * ai));
+                m[k][j] = m[k][j] + Dd::from_f64(sign * ai);
             }
         }
     }
@@ -141,13 +157,15 @@ pub fn inverse(algebra: &Algebra, a: &[f64]) -> Option<(Vec<f64>, f64)> {
         }
         m.swap(col, pivot);
         rhs.swap(col, pivot);
-        for row in col + 1..size {
-            let factor = m[row][col].div(m[col][col]);
+        let (done, below) = m.split_at_mut(col + 1);
+        let pivot_row = &done[col];
+        for (offset, row) in below.iter_mut().enumerate() {
+            let factor = row[col] / pivot_row[col];
             if factor.hi != 0.0 {
-                for c in col..size {
-                    m[row][c] = m[row][c].sub(factor.mul(m[col][c]));
+                for (x, p) in row.iter_mut().zip(pivot_row).skip(col) {
+                    *x = *x - factor * *p;
                 }
-                rhs[row] = rhs[row].sub(factor.mul(rhs[col]));
+                rhs[col + 1 + offset] = rhs[col + 1 + offset] - factor * rhs[col];
             }
         }
     }
@@ -155,9 +173,9 @@ pub fn inverse(algebra: &Algebra, a: &[f64]) -> Option<(Vec<f64>, f64)> {
     for row in (0..size).rev() {
         let mut sum = rhs[row];
         for c in row + 1..size {
-            sum = sum.sub(m[row][c].mul(y[c]));
+            sum = sum - m[row][c] * y[c];
         }
-        y[row] = sum.div(m[row][row]);
+        y[row] = sum / m[row][row];
     }
     // The residual a y - 1, in double-double, from the matrix of the original a.
     let mut residual = vec![Dd::ZERO; size];
@@ -166,7 +184,7 @@ pub fn inverse(algebra: &Algebra, a: &[f64]) -> Option<(Vec<f64>, f64)> {
         for (j, yj) in y.iter().enumerate() {
             let (sign, k) = algebra.blade_product(i, j);
             if sign != 0.0 && ai != 0.0 {
-                residual[k] = residual[k].add(Dd::from_f64(sign * ai).mul(*yj));
+                residual[k] = residual[k] + Dd::from_f64(sign * ai) * *yj;
             }
         }
     }
@@ -180,13 +198,11 @@ mod tests {
 
     #[test]
     fn double_double_keeps_what_f64_loses() {
-        let third = Dd::from_f64(1.0).div(Dd::from_f64(3.0));
-        let back = third.mul(Dd::from_f64(3.0)).sub(Dd::from_f64(1.0));
+        let third = Dd::from_f64(1.0) / Dd::from_f64(3.0);
+        let back = third * Dd::from_f64(3.0) - Dd::from_f64(1.0);
         assert!(back.to_f64().abs() < 1e-30, "{back:?}");
         // (1 + 2^-60) - 1 is 2^-60, which f64 rounds away.
-        let tiny = Dd::from_f64(1.0)
-            .add(Dd::from_f64(2f64.powi(-60)))
-            .sub(Dd::from_f64(1.0));
+        let tiny = Dd::from_f64(1.0) + Dd::from_f64(2f64.powi(-60)) - Dd::from_f64(1.0);
         assert_eq!(tiny.to_f64(), 2f64.powi(-60));
     }
 

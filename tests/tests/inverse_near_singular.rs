@@ -50,14 +50,17 @@ fn keep(dense: &[f64], parity: Parity) -> Vec<f64> {
 fn zero_divisors(algebra: &Algebra, parity: Parity) -> Vec<Vec<f64>> {
     (1..algebra.size())
         .filter(|blade| matches!(parity, Parity::Full) || blade.count_ones() % 2 == 0)
-        .filter_map(|blade| match algebra.blade_product(blade, blade).0 {
-            square if square == 1.0 => {
+        .filter_map(|blade| {
+            let square = algebra.blade_product(blade, blade).0;
+            if square == 1.0 {
                 let mut z = algebra.scalar(1.0);
                 z[blade] = 1.0;
                 Some(z)
+            } else if square == 0.0 {
+                Some(algebra.basis(blade, 1.0))
+            } else {
+                None
             }
-            square if square == 0.0 => Some(algebra.basis(blade, 1.0)),
-            _ => None,
         })
         .collect()
 }
