@@ -1,5 +1,6 @@
 //! G4 against the table-driven algebra (no peer library has G4): the full product,
-//! rotor * rotor (`Even * Even`), the rotor sandwich of a vector and bivector exp, in
+//! rotor * rotor (`Even * Even`), the rotor sandwich of a vector, bivector exp and the
+//! general inverse, in
 //! f32 and f64; per item over a batch (throughput) and per step of a dependent chain
 //! (latency).
 
@@ -149,6 +150,28 @@ macro_rules! g4_benches {
                 g.finish();
             }
 
+            /// The general inverse (a 16 x 16 solve, refined once and certified), with the
+            /// full product beside it as the unit of cost.
+            pub fn inverse(c: &mut Criterion) {
+                let a: Vec<[S; 16]> = cast_all(&g4_multivectors(BATCH, 1.0, 50));
+                let b: Vec<[S; 16]> = cast_all(&g4_multivectors(BATCH, 1.0, 51));
+                let mut g = group(c, &format!("g4/multivector_inverse/{PRECISION}/batch"));
+                batch1(
+                    &mut g,
+                    "ga-core inverse",
+                    &conv(&a, ga::Multivector::from_array),
+                    |a| a.inverse(),
+                );
+                batch2(
+                    &mut g,
+                    "ga-core product",
+                    &conv(&a, ga::Multivector::from_array),
+                    &conv(&b, ga::Multivector::from_array),
+                    |a, b| a * b,
+                );
+                g.finish();
+            }
+
             /// Bivector exp (non-simple bivectors: two invariant planes).
             pub fn exp(c: &mut Criterion) {
                 let b: Vec<[S; 6]> = cast_all(&g4_bivectors(BATCH, 48));
@@ -199,6 +222,7 @@ criterion_group! {
         single::multivector_mul, double::multivector_mul,
         single::rotor_mul, double::rotor_mul,
         single::sandwich, double::sandwich,
-        single::exp, double::exp
+        single::exp, double::exp,
+        single::inverse, double::inverse
 }
 criterion_main!(benches);

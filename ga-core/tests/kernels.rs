@@ -136,6 +136,54 @@ macro_rules! kernel_tests {
                 }
             }
 
+            /// Every copy of `mul_pairs` against the one-item product, bit for bit, on every
+            /// pair of rotors with components in {+0, -0, 1, -1}: where two products cancel
+            /// exactly, `-(p + q)` and `(-p) + (-q)` differ in the sign of the zero, so any
+            /// regrouping or negation that the one-item product does not do shows here.
+            #[test]
+            fn every_copy_of_mul_pairs_keeps_the_sign_of_zero() {
+                let values: [$scalar; 4] = [0.0, -0.0, 1.0, -1.0];
+                let rotors: Vec<g3::Rotor> = (0..256)
+                    .map(|code: usize| {
+                        g3::Rotor::from_array([0, 1, 2, 3].map(|k| values[(code >> (2 * k)) & 3]))
+                    })
+                    .collect();
+                // All 65,536 ordered pairs, in one slice each, so that every copy runs its
+                // full-width rounds on them.
+                let a: Vec<g3::Rotor> = rotors
+                    .iter()
+                    .flat_map(|&p| rotors.iter().map(move |_| p))
+                    .collect();
+                let b: Vec<g3::Rotor> =
+                    rotors.iter().flat_map(|_| rotors.iter().copied()).collect();
+                for set in [
+                    InstructionSet::Avx512f,
+                    InstructionSet::Avx2Fma,
+                    InstructionSet::Baseline,
+                ] {
+                    let mut out = vec![g3::Rotor::ZERO; a.len()];
+                    kernels::$scalar::mul_pairs_on(set, &a, &b, &mut out).unwrap();
+                    let mut differing = 0;
+                    let mut first = None;
+                    for i in 0..a.len() {
+                        let expected = a[i] * b[i];
+                        let same = out[i]
+                            .to_array()
+                            .iter()
+                            .zip(expected.to_array())
+                            .all(|(x, y)| x.to_bits() == y.to_bits());
+                        if !same {
+                            differing += 1;
+                            first.get_or_insert((a[i], b[i], out[i], expected));
+                        }
+                    }
+                    assert_eq!(
+                        differing, 0,
+                        "{set:?}: {differing} pairs differ, first (a, b, kernel, a * b): {first:?}"
+                    );
+                }
+            }
+
             #[test]
             fn mismatched_lengths_are_refused_and_nothing_is_written() {
                 let mut rng = Rng(12);

@@ -1780,8 +1780,9 @@ pub mod g3 {
                 None
             }
         }
-        /// The inverse, by solving `A X = 1` (`A ~A` is not a scalar for this type), or
-        /// `None` when `A` is singular.
+        /// The inverse, by solving `A X = 1` (`A ~A` is not a scalar for this type).
+        ///
+        ///`Some(x)` is within 2^-23 (`f32::EPSILON`) of the exact inverse `X` relative to it, summing absolute values: `sum |x_i - X_i| <= 2^-23 sum |X_i|`, plus `2^-150` per component below `f32::MIN_POSITIVE`; the solve runs in `f64`, is certified to 2^-26 by its residual and then rounded. `None` when `A` is singular, too ill-conditioned (a condition number beyond about 1e6), or its inverse overflows `f32`.
         #[must_use]
         pub fn inverse(self) -> Option<Multivector> {
             let inverse = multivector_inverse(Multivector::from(self))?;
@@ -9302,6 +9303,14 @@ pub mod g3 {
     /// `C(x) = (Bx - xB) / 2` for `v = s + B`, as glam's `Quat * Vec3` assumes a unit
     /// quaternion. For a rotor of norm `1 + e` the result is off by about `2e |x|`;
     /// [`Sandwich::sandwich`] is exact for any versor.
+    ///
+    /// Its range is narrower than `sandwich`'s: `2 (s C(x) + C(C(x)))` is `y - x`,
+    /// up to `2 |x|`, and every intermediate is at most
+    /// `(1 + 2 n |s| + 2 n^2) max |x_k|` with `n` the sum of `|v_i|` over the
+    /// bivector components. The result is finite when that is below `MAX`: for a
+    /// unit rotor of G2 or G3 (`n <= sqrt 3`), whenever every `|x_k| <= MAX / 16`
+    /// (about 1.1e307 in `f64`, 2.1e37 in `f32`). Above that it may overflow to
+    /// infinity where `sandwich` stays finite; use `sandwich` for such values.
     pub trait SandwichUnit<X> {
         /// `v x ~v` for a unit `v`.
         #[must_use]
@@ -16234,24 +16243,54 @@ pub mod g3 {
             (0usize, -1i8),
         ],
     ];
-    /// Solves `A X = 1` by Gaussian elimination with partial pivoting; `None` when a
-    /// pivot vanishes relative to the largest entry.
+    /// The relative error (summing absolute values) that a general inverse's `f64`
+    /// solution is certified to before it is returned: 2^-26, half the digits.
     #[allow(dead_code)]
-    fn multivector_inverse(a: Multivector) -> Option<Multivector> {
-        let a = a.to_array();
-        let largest = a.iter().fold(0.0 as f32, |m, x| m.max(x.abs()));
+    const INVERSE_TOLERANCE: f64 = 1.0 / 67_108_864.0;
+    /// `a b` in `f64` through `LEFT`: the residual's product, each component a sum of
+    /// `len` signed products of one component of each.
+    #[allow(dead_code)]
+    fn left_product(a: &[f64; 8usize], b: &[f64; 8usize]) -> [f64; 8usize] {
+        let mut out = [0.0f64; 8usize];
+        for (i, &ai) in a.iter().enumerate() {
+            for (j, &(k, sign)) in LEFT[i].iter().enumerate() {
+                if sign != 0 {
+                    out[k] += f64::from(sign) * (ai * b[j]);
+                }
+            }
+        }
+        out
+    }
+    /// Solves `A X = 1` by Gaussian elimination with partial pivoting on `A` divided by
+    /// its largest component, refines `X` once by the residual, and returns it only when
+    /// the residual certifies it. `None` when a pivot vanishes relative to the largest
+    /// entry (1), or when the certificate fails: the matrix is singular or too
+    /// ill-conditioned for the tolerance (a condition number, summing absolute
+    /// values, beyond about `2^-27 / ((len + 2) f64::EPSILON)`: 3e6 for 8 components).
+    ///
+    /// The certificate: with `r = A X - 1`, `X - A^-1 = A^-1 r`, and the sum of absolute
+    /// values `|.|` is submultiplicative for a metric of squares 1, -1 and 0, so
+    /// `|X - A^-1| <= |A^-1| |r|`. The computed residual is off by at most
+    /// `(len + 1) u |A| |X|` plus the underflow of `len^2` products; `|r|`, with those
+    /// added twice over, must be at most half of `INVERSE_TOLERANCE`.
+    #[allow(dead_code)]
+    fn inverse_f64(a: [f64; 8usize]) -> Option<[f64; 8usize]> {
+        let largest = a.iter().fold(0.0f64, |m, x| m.max(x.abs()));
         if !(largest > 0.0) || !largest.is_finite() {
             return None;
         }
-        let mut m = [[0.0 as f32; 8usize]; 8usize];
-        for (i, &ai) in a.iter().enumerate() {
+        let scaled = a.map(|v| v / largest);
+        let mut m = [[0.0f64; 8usize]; 8usize];
+        for (i, &ai) in scaled.iter().enumerate() {
             for (j, &(k, sign)) in LEFT[i].iter().enumerate() {
-                m[k][j] += f32::from(sign) * (ai / largest);
+                m[k][j] += f64::from(sign) * ai;
             }
         }
-        let mut rhs = [0.0 as f32; 8usize];
-        rhs[0] = 1.0;
-        let tolerance = f32::EPSILON * (8usize as f32);
+        let mut order = [0usize; 8usize];
+        for (i, slot) in order.iter_mut().enumerate() {
+            *slot = i;
+        }
+        let tolerance = f64::EPSILON * (8usize as f64);
         for col in 0..8usize {
             let mut pivot = col;
             for row in col + 1..8usize {
@@ -16259,30 +16298,70 @@ pub mod g3 {
                     pivot = row;
                 }
             }
-            if m[pivot][col].abs() <= tolerance {
+            if !(m[pivot][col].abs() > tolerance) {
                 return None;
             }
             m.swap(col, pivot);
-            rhs.swap(col, pivot);
+            order.swap(col, pivot);
             for row in col + 1..8usize {
                 let factor = m[row][col] / m[col][col];
+                m[row][col] = factor;
                 if factor != 0.0 {
-                    for c in col..8usize {
+                    for c in col + 1..8usize {
                         m[row][c] -= factor * m[col][c];
                     }
-                    rhs[row] -= factor * rhs[col];
                 }
             }
         }
-        let mut x = [0.0 as f32; 8usize];
-        for row in (0..8usize).rev() {
-            let mut sum = rhs[row];
-            for c in row + 1..8usize {
-                sum -= m[row][c] * x[c];
+        let solve = |rhs: &[f64; 8usize]| {
+            let mut y = [0.0f64; 8usize];
+            for row in 0..8usize {
+                let mut sum = rhs[order[row]];
+                for c in 0..row {
+                    sum -= m[row][c] * y[c];
+                }
+                y[row] = sum;
             }
-            x[row] = sum / m[row][row];
+            for row in (0..8usize).rev() {
+                let mut sum = y[row];
+                for c in row + 1..8usize {
+                    sum -= m[row][c] * y[c];
+                }
+                y[row] = sum / m[row][row];
+            }
+            y
+        };
+        let mut one = [0.0f64; 8usize];
+        one[0] = 1.0;
+        let mut x = solve(&one);
+        let mut residual = left_product(&scaled, &x);
+        for (k, r) in residual.iter_mut().enumerate() {
+            *r = one[k] - *r;
+        }
+        let correction = solve(&residual);
+        for (v, d) in x.iter_mut().zip(correction) {
+            *v += d;
         }
         let x = x.map(|v| v / largest);
+        let mut residual = left_product(&a, &x);
+        residual[0] -= 1.0;
+        let residual_sum = residual.iter().fold(0.0f64, |sum, r| sum + r.abs());
+        let a_sum = a.iter().fold(0.0f64, |sum, v| sum + (v / largest).abs());
+        let x_sum = x.iter().fold(0.0f64, |sum, v| sum + (v * largest).abs());
+        let bound = residual_sum + (8usize as f64 + 2.0) * f64::EPSILON * (a_sum * x_sum)
+            + (8usize as f64 * 8usize as f64) * (f64::MIN_POSITIVE * f64::EPSILON);
+        if bound <= 0.5 * INVERSE_TOLERANCE && x.iter().all(|v| v.is_finite()) {
+            Some(x)
+        } else {
+            None
+        }
+    }
+    /// The inverse of any multivector, or `None`. See `inverse_f64` for the method.
+    ///`Some(x)` is within 2^-23 (`f32::EPSILON`) of the exact inverse `X` relative to it, summing absolute values: `sum |x_i - X_i| <= 2^-23 sum |X_i|`, plus `2^-150` per component below `f32::MIN_POSITIVE`; the solve runs in `f64`, is certified to 2^-26 by its residual and then rounded. `None` when `A` is singular, too ill-conditioned (a condition number beyond about 1e6), or its inverse overflows `f32`.
+    #[allow(dead_code)]
+    fn multivector_inverse(a: Multivector) -> Option<Multivector> {
+        let x = inverse_f64(a.to_array().map(f64::from))?;
+        let x = x.map(|v| v as f32);
         if x.iter().all(|v| v.is_finite()) {
             Some(Multivector::from_array(x))
         } else {
@@ -16465,7 +16544,8 @@ pub mod g3 {
     /// `r = sqrt |x|` is given (only the sign of `x` is read); the ratio by its series
     /// where `r` is tiny. `sin_cos` reduces any finite angle modulo 2 pi exactly. The
     /// reciprocal of `r` is taken before the sine, so that the division runs beside
-    /// the series rather than after them.
+    /// the series rather than after them. A NaN `x` (a bivector holding NaN) fails
+    /// both comparisons; `1 + x` keeps it NaN instead of the identity's `[1, 1]`.
     #[allow(dead_code)]
     #[inline]
     fn cosh_sinhc(x: f32, r: f32) -> [f32; 2] {
@@ -16476,7 +16556,7 @@ pub mod g3 {
         } else if x > 0.0 {
             [math::cosh(r), if r < 1e-4 { 1.0 + r * r / 6.0 } else { math::sinh(r) / r }]
         } else {
-            [1.0, 1.0]
+            [1.0 + x, 1.0 + x]
         }
     }
     /// sinh(sqrt x)/sqrt x (sin(sqrt -x)/sqrt -x for x < 0), by its series near 0.

@@ -284,6 +284,51 @@ pub fn check_sandwiches(algebra: &Algebra, cases: &[SandwichCase], tolerance: f6
     });
 }
 
+/// Checks every case's `sandwich_unit` against the reference `v x ~v` for **unit** even
+/// versors `v`: products of two random vectors divided by `sqrt(<v ~v>)`, where that is
+/// well above zero (a versor with `<v ~v>` negative or nearly null has no scaling to
+/// `v ~v = 1`, and is skipped; at least a quarter of the cases must be checked).
+///
+/// # Panics
+/// On the first disagreement, naming the operand type and the metric, or when too few
+/// versors could be made unit.
+pub fn check_unit_sandwiches(algebra: &Algebra, cases: &[SandwichCase], tolerance: f64) {
+    assert!(!cases.is_empty(), "no unit sandwiches to check");
+    let checked = std::cell::Cell::new(0u32);
+    run(64, &sandwich_inputs(algebra.size(), 2), |(factors, x)| {
+        let v = product_of_vectors(algebra, &factors);
+        let unit = algebra.geometric(&v, &algebra.reverse(&v))[0];
+        let size: f64 = v.iter().map(|c| c * c).sum();
+        // Also skips a NaN, which no versor built from finite vectors has.
+        if unit.partial_cmp(&(1e-3 * size)) != Some(std::cmp::Ordering::Greater) {
+            return Ok(());
+        }
+        checked.set(checked.get() + 1);
+        let v = algebra.scale(&v, 1.0 / unit.sqrt());
+        for case in cases {
+            let [v, x, got] = (case.eval)(&v, &x);
+            let expected = reference_sandwich(algebra, Versor::Even, &v, &x);
+            prop_assert_close!(
+                got,
+                expected,
+                scale = sandwich_magnitude(algebra, &v, &x),
+                rel = tolerance,
+                "for the unit {:?}.sandwich_unit({}), with metric {:?}",
+                v,
+                case.operand,
+                algebra.metric()
+            );
+        }
+        Ok(())
+    });
+    assert!(
+        checked.get() >= 16,
+        "only {} of 64 versors could be made unit with metric {:?}",
+        checked.get(),
+        algebra.metric()
+    );
+}
+
 /// What a versor type's `sandwich_matrix` and `sandwich_vectors` give, in the
 /// reference's terms.
 pub struct MatrixEval {

@@ -10,6 +10,8 @@
 //!   blades read from their field names;
 //! - [`algebras`]: the six algebras under test (STA, PGA and CGA generated here)
 //!   and the macros that enumerate them and their type pairs;
+//! - [`double_double`]: double-double arithmetic and an inverse in it, the
+//!   high-precision reference for inverses near singular input;
 //! - [`harness`]: the fixed-seed proptest drivers that check tables of generated
 //!   operations against the reference.
 //!
@@ -19,6 +21,7 @@
 pub mod algebras;
 pub mod blade;
 pub mod close;
+pub mod double_double;
 pub mod embed;
 pub mod harness;
 pub mod reference;

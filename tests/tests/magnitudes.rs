@@ -372,3 +372,82 @@ magnitude_tests!(
     ],
     blade_test = true
 );
+
+/// The norm's rescaling in a degenerate metric (PGA, `e4` null): only the components that
+/// enter `<A ~A>_0` may decide the scale. Counting a null component would divide a norm
+/// of 1e-200 by a null 1e300 and return 0; the reference is the norm of the non-null part,
+/// descaled as above.
+mod degenerate_metric {
+    use super::*;
+    use ga_tests::algebras::pga::*;
+    use ga_tests::embed::Embed;
+
+    const U: f64 = f64::EPSILON;
+    /// `e4`'s bit: a blade holding it squares to 0.
+    const NULL: usize = 1 << 3;
+
+    /// `value`'s reference norm from its non-null components only, descaled.
+    fn expected_norm(value: &[f64]) -> f64 {
+        let algebra = Algebra::new(&[1, 1, 1, 0]);
+        let non_null: Vec<f64> = value
+            .iter()
+            .enumerate()
+            .map(|(blade, &c)| if blade & NULL == 0 { c } else { 0.0 })
+            .collect();
+        let (scaled, power) = descale(&non_null);
+        algebra.norm_squared(&scaled).abs().sqrt() * power
+    }
+
+    macro_rules! pga_norms {
+        ($($ty:ident),*) => {
+            #[test]
+            fn a_null_1e300_beside_1e_200_leaves_the_norm_1e_200() {
+                $({
+                    let blades = <$ty as Embed<Multivector>>::blades();
+                    let mut array = <$ty>::ZERO.to_array();
+                    let first = blades.iter().position(|&b| b & NULL == 0);
+                    let null = blades.iter().position(|&b| b & NULL != 0);
+                    if let (Some(first), Some(null)) = (first, null) {
+                        array[first] = 1e-200;
+                        array[null] = 1e300;
+                        let value = <$ty>::from_array(array);
+                        assert_eq!(value.norm(), 1e-200, "{}: {:?}", stringify!($ty), value);
+                    }
+                })*
+            }
+
+            #[test]
+            fn norm_rescales_by_the_non_null_components_only_at_every_magnitude() {
+                $({
+                    let len = <$ty>::ZERO.to_array().len();
+                    run(CASES, &components(len, -300.0, 300.0), |x| {
+                        let value = <$ty>::from_array(::std::array::from_fn(|k| x[k]));
+                        let expected = expected_norm(&value.to_reference());
+                        if !expected.is_finite() {
+                            return Ok(());
+                        }
+                        let got = value.norm();
+                        let bound = (len as f64 / 2.0 + 3.0) * U * expected
+                            + 4.0 * f64::MIN_POSITIVE * U;
+                        prop_assert!(
+                            (got - expected).abs() <= bound,
+                            "{}::norm of {:?} is {:e}, expected {:e}",
+                            stringify!($ty), value, got, expected
+                        );
+                        Ok(())
+                    });
+                })*
+            }
+        };
+    }
+
+    pga_norms!(
+        Vector,
+        Bivector,
+        Trivector,
+        Quadvector,
+        Even,
+        Odd,
+        Multivector
+    );
+}

@@ -5,10 +5,15 @@
 //! of 1 to n random vectors. An odd versor's sandwich is a reflection, which the
 //! rotor tests of `versors.rs` never reach. Likewise every lane of the sandwiches of
 //! the batch modules (`x4`, `x8`) of `ga_core`'s G3 and G4.
+//!
+//! `sandwich_unit` (even versors, dimension <= 3) is checked against the reference too,
+//! not only against `sandwich`, whose derivation it shares: in G2 and G3 in both
+//! precisions, and in two three-dimensional metrics generated here where the bivectors'
+//! squares differ in sign ([1, 1, -1]) or vanish ([1, 1, 0]).
 
 use ga_tests::harness::{
     check_lane_sandwich_matrices, check_lane_sandwiches, check_sandwich_matrices, check_sandwiches,
-    LaneMatrixCase, LaneSandwichCase, MatrixCase, SandwichCase,
+    check_unit_sandwiches, LaneMatrixCase, LaneSandwichCase, MatrixCase, SandwichCase,
 };
 use ga_tests::Algebra;
 
@@ -125,6 +130,118 @@ mod single_precision {
     sandwich_tests!(
         @scalar g4, ga_core::f32::g4, F32_PRODUCT_TOLERANCE, [1, 1, 1, 1],
         [Scalar, Vector, Bivector, Trivector, Quadvector, Even, Odd, Multivector]
+    );
+}
+
+/// Pushes the case `Even.sandwich_unit(X)`.
+macro_rules! push_unit_sandwich {
+    ($cases:ident, $x:ident) => {
+        $cases.push(SandwichCase {
+            versor: ga_tests::harness::Versor::Even,
+            operand: stringify!($x),
+            eval: |v, x| {
+                let v = <Even as Embed<Multivector>>::from_reference(v);
+                let x = <$x as Embed<Multivector>>::from_reference(x);
+                let out: $x = v.sandwich_unit(x);
+                [
+                    <Even as Embed<Multivector>>::to_reference(v),
+                    <$x as Embed<Multivector>>::to_reference(x),
+                    <$x as Embed<Multivector>>::to_reference(out),
+                ]
+            },
+        });
+    };
+}
+
+/// `sandwich_unit` of a unit `Even` on each listed type, against the reference.
+macro_rules! unit_sandwich_test {
+    ($test:ident, $($path:ident)::+, $tolerance:ident, $metric:expr, [$($x:ident),*]) => {
+        #[test]
+        fn $test() {
+            use ga_tests::embed::Embed;
+            #[allow(clippy::wildcard_imports)] // `SandwichUnit` is a trait of the module
+            use $($path)::+::*;
+            let mut cases = Vec::new();
+            $(push_unit_sandwich!(cases, $x);)*
+            check_unit_sandwiches(&Algebra::new(&$metric), &cases, ga_tests::harness::$tolerance);
+        }
+    };
+}
+
+/// `sandwich_unit` in every metric that has it (even versors, dimension <= 3).
+mod unit_sandwiches {
+    use super::{check_unit_sandwiches, Algebra, SandwichCase};
+
+    ga_macros::algebra! {
+        /// A three-dimensional metric with one negative square: `e13` and `e23` square
+        /// to +1 (boosts), `e12` to -1.
+        pub mod lorentz3 {
+            metric: [1, 1, -1],
+            scalar: f64,
+        }
+    }
+
+    ga_macros::algebra! {
+        /// Two-dimensional projective geometric algebra: `e3` is null, so `e13` and
+        /// `e23` square to 0 (translations).
+        pub mod pga2 {
+            metric: [1, 1, 0],
+            scalar: f64,
+        }
+    }
+
+    mod embedding {
+        mod lorentz3 {
+            use super::super::lorentz3::*;
+            ga_tests::embed_types!(f64; Vector, Bivector, Trivector, Even, Odd, Multivector);
+        }
+        mod pga2 {
+            use super::super::pga2::*;
+            ga_tests::embed_types!(f64; Vector, Bivector, Trivector, Even, Odd, Multivector);
+        }
+    }
+
+    unit_sandwich_test!(
+        g2,
+        ga_core::f64::g2,
+        PRODUCT_TOLERANCE,
+        [1, 1],
+        [Vector, Bivector, Even, Odd, Multivector]
+    );
+    unit_sandwich_test!(
+        g3,
+        ga_core::f64::g3,
+        PRODUCT_TOLERANCE,
+        [1, 1, 1],
+        [Vector, Bivector, Trivector, Even, Odd, Multivector]
+    );
+    unit_sandwich_test!(
+        f32_g2,
+        ga_core::f32::g2,
+        F32_PRODUCT_TOLERANCE,
+        [1, 1],
+        [Vector, Bivector, Even, Odd, Multivector]
+    );
+    unit_sandwich_test!(
+        f32_g3,
+        ga_core::f32::g3,
+        F32_PRODUCT_TOLERANCE,
+        [1, 1, 1],
+        [Vector, Bivector, Trivector, Even, Odd, Multivector]
+    );
+    unit_sandwich_test!(
+        lorentz3_metric,
+        self::lorentz3,
+        PRODUCT_TOLERANCE,
+        [1, 1, -1],
+        [Vector, Bivector, Trivector, Even, Odd, Multivector]
+    );
+    unit_sandwich_test!(
+        pga2_metric,
+        self::pga2,
+        PRODUCT_TOLERANCE,
+        [1, 1, 0],
+        [Vector, Bivector, Trivector, Even, Odd, Multivector]
     );
 }
 

@@ -189,7 +189,9 @@ macro_rules! g3_kernels {
                 )
             }
 
-            /// `out[i] = a[i] b[i]` for every `i`, bit for bit what `a[i] * b[i]` gives.
+            /// `out[i] = a[i] b[i]` for every `i`, bit for bit what `a[i] * b[i]` gives
+            /// (signed zeros included; where an input holds a NaN, the same components
+            /// are NaN, with sign and payload not promised).
             /// With AVX2 (AVX-512) the rotors are taken 8 (16) at a time for `f32`, 4
             /// (8) for `f64`, transposed into one register per component, multiplied
             /// with the one-item product's operations in its order, and transposed back.

@@ -403,7 +403,8 @@ pub fn emit_scalar_functions(plan: &Plan) -> TokenStream {
         /// `r = sqrt |x|` is given (only the sign of `x` is read); the ratio by its series
         /// where `r` is tiny. `sin_cos` reduces any finite angle modulo 2 pi exactly. The
         /// reciprocal of `r` is taken before the sine, so that the division runs beside
-        /// the series rather than after them.
+        /// the series rather than after them. A NaN `x` (a bivector holding NaN) fails
+        /// both comparisons; `1 + x` keeps it NaN instead of the identity's `[1, 1]`.
         #[allow(dead_code)]
         #[inline]
         fn cosh_sinhc(x: #s, r: #s) -> [#s; 2] {
@@ -414,7 +415,7 @@ pub fn emit_scalar_functions(plan: &Plan) -> TokenStream {
             } else if x > 0.0 {
                 [math::cosh(r), if r < 1e-4 { 1.0 + r * r / 6.0 } else { math::sinh(r) / r }]
             } else {
-                [1.0, 1.0]
+                [1.0 + x, 1.0 + x]
             }
         }
 

@@ -269,9 +269,11 @@ fn inverse(plan: &Plan, t: TypeId) -> TokenStream {
         let f = field_ident(blade);
         Some(quote!(inverse.#f))
     });
+    let bound_doc = inverse_bound_doc(plan);
     quote! {
-        /// The inverse, by solving `A X = 1` (`A ~A` is not a scalar for this type), or
-        /// `None` when `A` is singular.
+        /// The inverse, by solving `A X = 1` (`A ~A` is not a scalar for this type).
+        #[doc = ""]
+        #[doc = #bound_doc]
         #[must_use]
         pub fn inverse(self) -> Option<#out_ty> {
             let inverse = multivector_inverse(Multivector::from(self))?;
@@ -324,8 +326,31 @@ fn projections(plan: &Plan, t: TypeId) -> TokenStream {
     out
 }
 
+/// What a general inverse's `Some` promises, in the precision's words.
+fn inverse_bound_doc(plan: &Plan) -> &'static str {
+    match plan.scalar {
+        crate::spec::Scalar::F64 => {
+            "`Some(x)` is within 2^-26 (about 1.5e-8) of the exact inverse `X` relative to \
+             it, summing absolute values: `sum |x_i - X_i| <= 2^-26 sum |X_i|`, certified \
+             by the residual `A x - 1` of the value returned; `None` when `A` is singular, \
+             or too ill-conditioned for that (a condition number beyond about 1e6)."
+        }
+        crate::spec::Scalar::F32 => {
+            "`Some(x)` is within 2^-23 (`f32::EPSILON`) of the exact inverse `X` relative \
+             to it, summing absolute values: `sum |x_i - X_i| <= 2^-23 sum |X_i|`, plus \
+             `2^-150` per component below `f32::MIN_POSITIVE`; the solve runs in `f64`, is \
+             certified to 2^-26 by its residual and then rounded. `None` when `A` is \
+             singular, too ill-conditioned (a condition number beyond about 1e6), or its \
+             inverse overflows `f32`."
+        }
+    }
+}
+
 /// The general inverse by Gaussian elimination on the left-multiplication matrix of the
-/// full algebra; emitted only when some type needs it.
+/// full algebra, refined once and certified by its residual; emitted only when some type
+/// needs it. The solve runs in `f64` for both precisions (for `f32` a wider work type, so
+/// that the certificate is not spent on the final rounding). See
+/// docs/derivations/inverse.md for the bound.
 pub fn emit_multivector_inverse(plan: &Plan) -> TokenStream {
     let n = plan.metric.dimension();
     let mv = TypeId::multivector(n);
@@ -341,32 +366,67 @@ pub fn emit_multivector_inverse(plan: &Plan) -> TokenStream {
         });
         quote!([#(#entries),*])
     });
+    let bound_doc = inverse_bound_doc(plan);
     quote! {
         /// `LEFT[i][j] = (k, sign)`: `e_i e_j = sign e_k` by component index. Used only by
         /// the general inverse, never by a product.
         #[allow(dead_code)]
         const LEFT: [[(usize, i8); #len]; #len] = [#(#rows),*];
 
-        /// Solves `A X = 1` by Gaussian elimination with partial pivoting; `None` when a
-        /// pivot vanishes relative to the largest entry.
+        /// The relative error (summing absolute values) that a general inverse's `f64`
+        /// solution is certified to before it is returned: 2^-26, half the digits.
         #[allow(dead_code)]
-        fn multivector_inverse(a: Multivector) -> Option<Multivector> {
-            let a = a.to_array();
-            let largest = a.iter().fold(0.0 as #s, |m, x| m.max(x.abs()));
+        const INVERSE_TOLERANCE: f64 = 1.0 / 67_108_864.0;
+
+        /// `a b` in `f64` through `LEFT`: the residual's product, each component a sum of
+        /// `len` signed products of one component of each.
+        #[allow(dead_code)]
+        fn left_product(a: &[f64; #len], b: &[f64; #len]) -> [f64; #len] {
+            let mut out = [0.0f64; #len];
+            for (i, &ai) in a.iter().enumerate() {
+                for (j, &(k, sign)) in LEFT[i].iter().enumerate() {
+                    if sign != 0 {
+                        out[k] += f64::from(sign) * (ai * b[j]);
+                    }
+                }
+            }
+            out
+        }
+
+        /// Solves `A X = 1` by Gaussian elimination with partial pivoting on `A` divided by
+        /// its largest component, refines `X` once by the residual, and returns it only when
+        /// the residual certifies it. `None` when a pivot vanishes relative to the largest
+        /// entry (1), or when the certificate fails: the matrix is singular or too
+        /// ill-conditioned for the tolerance (a condition number, summing absolute
+        /// values, beyond about `2^-27 / ((len + 2) f64::EPSILON)`: 3e6 for 8 components).
+        ///
+        /// The certificate: with `r = A X - 1`, `X - A^-1 = A^-1 r`, and the sum of absolute
+        /// values `|.|` is submultiplicative for a metric of squares 1, -1 and 0, so
+        /// `|X - A^-1| <= |A^-1| |r|`. The computed residual is off by at most
+        /// `(len + 1) u |A| |X|` plus the underflow of `len^2` products; `|r|`, with those
+        /// added twice over, must be at most half of `INVERSE_TOLERANCE`.
+        #[allow(dead_code)]
+        fn inverse_f64(a: [f64; #len]) -> Option<[f64; #len]> {
+            let largest = a.iter().fold(0.0f64, |m, x| m.max(x.abs()));
             if !(largest > 0.0) || !largest.is_finite() {
                 return None;
             }
             // Solve for A / largest, whose entries are at most 1, so that the elimination
             // neither overflows nor underflows; then X = (A / largest)^-1 / largest.
-            let mut m = [[0.0 as #s; #len]; #len];
-            for (i, &ai) in a.iter().enumerate() {
+            let scaled = a.map(|v| v / largest);
+            let mut m = [[0.0f64; #len]; #len];
+            for (i, &ai) in scaled.iter().enumerate() {
                 for (j, &(k, sign)) in LEFT[i].iter().enumerate() {
-                    m[k][j] += #s::from(sign) * (ai / largest);
+                    m[k][j] += f64::from(sign) * ai;
                 }
             }
-            let mut rhs = [0.0 as #s; #len];
-            rhs[0] = 1.0;
-            let tolerance = #s::EPSILON * (#len as #s);
+            // LU in place: U above the diagonal, the multipliers of L below it, and the
+            // row order in `order`.
+            let mut order = [0usize; #len];
+            for (i, slot) in order.iter_mut().enumerate() {
+                *slot = i;
+            }
+            let tolerance = f64::EPSILON * (#len as f64);
             for col in 0..#len {
                 let mut pivot = col;
                 for row in col + 1..#len {
@@ -374,30 +434,74 @@ pub fn emit_multivector_inverse(plan: &Plan) -> TokenStream {
                         pivot = row;
                     }
                 }
-                if m[pivot][col].abs() <= tolerance {
+                if !(m[pivot][col].abs() > tolerance) {
                     return None;
                 }
                 m.swap(col, pivot);
-                rhs.swap(col, pivot);
+                order.swap(col, pivot);
                 for row in col + 1..#len {
                     let factor = m[row][col] / m[col][col];
+                    m[row][col] = factor;
                     if factor != 0.0 {
-                        for c in col..#len {
+                        for c in col + 1..#len {
                             m[row][c] -= factor * m[col][c];
                         }
-                        rhs[row] -= factor * rhs[col];
                     }
                 }
             }
-            let mut x = [0.0 as #s; #len];
-            for row in (0..#len).rev() {
-                let mut sum = rhs[row];
-                for c in row + 1..#len {
-                    sum -= m[row][c] * x[c];
+            let solve = |rhs: &[f64; #len]| {
+                let mut y = [0.0f64; #len];
+                for row in 0..#len {
+                    let mut sum = rhs[order[row]];
+                    for c in 0..row {
+                        sum -= m[row][c] * y[c];
+                    }
+                    y[row] = sum;
                 }
-                x[row] = sum / m[row][row];
+                for row in (0..#len).rev() {
+                    let mut sum = y[row];
+                    for c in row + 1..#len {
+                        sum -= m[row][c] * y[c];
+                    }
+                    y[row] = sum / m[row][row];
+                }
+                y
+            };
+            let mut one = [0.0f64; #len];
+            one[0] = 1.0;
+            let mut x = solve(&one);
+            // One step of refinement: x += (A / largest)^-1 (1 - (A / largest) x).
+            let mut residual = left_product(&scaled, &x);
+            for (k, r) in residual.iter_mut().enumerate() {
+                *r = one[k] - *r;
+            }
+            let correction = solve(&residual);
+            for (v, d) in x.iter_mut().zip(correction) {
+                *v += d;
             }
             let x = x.map(|v| v / largest);
+            // The certificate, on the value returned and the input as given.
+            let mut residual = left_product(&a, &x);
+            residual[0] -= 1.0;
+            let residual_sum = residual.iter().fold(0.0f64, |sum, r| sum + r.abs());
+            let a_sum = a.iter().fold(0.0f64, |sum, v| sum + (v / largest).abs());
+            let x_sum = x.iter().fold(0.0f64, |sum, v| sum + (v * largest).abs());
+            let bound = residual_sum
+                + (#len as f64 + 2.0) * f64::EPSILON * (a_sum * x_sum)
+                + (#len as f64 * #len as f64) * (f64::MIN_POSITIVE * f64::EPSILON);
+            if bound <= 0.5 * INVERSE_TOLERANCE && x.iter().all(|v| v.is_finite()) {
+                Some(x)
+            } else {
+                None
+            }
+        }
+
+        /// The inverse of any multivector, or `None`. See `inverse_f64` for the method.
+        #[doc = #bound_doc]
+        #[allow(dead_code)]
+        fn multivector_inverse(a: Multivector) -> Option<Multivector> {
+            let x = inverse_f64(a.to_array().map(f64::from))?;
+            let x = x.map(|v| v as #s);
             if x.iter().all(|v| v.is_finite()) {
                 Some(Multivector::from_array(x))
             } else {

@@ -49,6 +49,14 @@ pub fn emit_sandwiches(plan: &Plan) -> TokenStream {
             /// `C(x) = (Bx - xB) / 2` for `v = s + B`, as glam's `Quat * Vec3` assumes a unit
             /// quaternion. For a rotor of norm `1 + e` the result is off by about `2e |x|`;
             /// [`Sandwich::sandwich`] is exact for any versor.
+            ///
+            /// Its range is narrower than `sandwich`'s: `2 (s C(x) + C(C(x)))` is `y - x`,
+            /// up to `2 |x|`, and every intermediate is at most
+            /// `(1 + 2 n |s| + 2 n^2) max |x_k|` with `n` the sum of `|v_i|` over the
+            /// bivector components. The result is finite when that is below `MAX`: for a
+            /// unit rotor of G2 or G3 (`n <= sqrt 3`), whenever every `|x_k| <= MAX / 16`
+            /// (about 1.1e307 in `f64`, 2.1e37 in `f32`). Above that it may overflow to
+            /// infinity where `sandwich` stays finite; use `sandwich` for such values.
             pub trait SandwichUnit<X> {
                 /// `v x ~v` for a unit `v`.
                 #[must_use]

@@ -11,23 +11,24 @@
 //! per item and 4 broadcasts.
 //!
 //! The arithmetic is the one-item product's, operation for operation and in its order,
-//! without fused multiply-adds: each result is bit for bit `a[i] * b[i]`. The `f32` and
-//! `f64` products pair the terms of `e23` differently (the `f32` one follows its lane
-//! form), so each precision has its own order below; `ga-core/tests/kernels.rs` checks
-//! every copy against the one-item product with `==`.
+//! without fused multiply-adds, and with its negations where they decide the sign of a
+//! zero: each result is bit for bit `a[i] * b[i]`, signed zeros included, for every input
+//! without NaN (a NaN input gives NaN in the same components, its sign and payload not
+//! promised: the compiler may swap a product's operands, which picks the NaN that
+//! survives). The `f32` and `f64` products order the terms of `s` and `e23` differently
+//! (the `f32` one follows its lane form), so each precision has its own order below;
+//! `ga-core/tests/kernels.rs` checks every copy against the one-item product bit for bit,
+//! on every rotor pair with components in {+0, -0, 1, -1} among others.
 
 /// `[s, e12, e13, e23]` of `a b`, component registers in, component registers out, with
-/// `add`, `sub` and `mul` the lane-wise operations; `e23` pairs its terms as the
-/// precision's one-item product does.
+/// `add`, `sub` and `mul` the lane-wise operations; `s` and `e23` group and negate their
+/// terms as the precision's one-item product does.
 macro_rules! rotor_product {
-    ($a:expr, $b:expr, $add:ident, $sub:ident, $mul:ident, e23: $e23:ident) => {{
+    ($a:expr, $b:expr, $add:ident, $sub:ident, $mul:ident, s: $s:tt, e23: $e23:ident) => {{
         let [a_s, a_12, a_13, a_23] = $a;
         let [b_s, b_12, b_13, b_23] = $b;
         [
-            $sub(
-                $sub($mul(a_s, b_s), $mul(a_12, b_12)),
-                $add($mul(a_13, b_13), $mul(a_23, b_23)),
-            ),
+            rotor_product!(@s $s a_s, a_12, a_13, a_23, b_s, b_12, b_13, b_23, $add, $sub, $mul),
             $add(
                 $add($mul(a_s, b_12), $mul(a_12, b_s)),
                 $sub($mul(a_23, b_13), $mul(a_13, b_23)),
@@ -39,6 +40,25 @@ macro_rules! rotor_product {
             rotor_product!(@$e23 a_s, a_12, a_13, a_23, b_s, b_12, b_13, b_23, $add, $sub, $mul),
         ]
     }};
+    // (s bs - a12 b12) - (a13 b13 + a23 b23): the f64 product's order.
+    (@s subtracted $as:ident, $a12:ident, $a13:ident, $a23:ident,
+     $bs:ident, $b12:ident, $b13:ident, $b23:ident, $add:ident, $sub:ident, $mul:ident) => {
+        $sub(
+            $sub($mul($as, $bs), $mul($a12, $b12)),
+            $add($mul($a13, $b13), $mul($a23, $b23)),
+        )
+    };
+    // (s bs - a12 b12) + (a13 (-b13) - a23 b23): the f32 lane form's, which adds products
+    // by negated operands. `-(p + q)` and `(-p) + (-q)` differ in the sign of an exact
+    // zero (`p = -q`), so the kernel negates `b13` as the lane form does; `x + (-y)` is
+    // `x - y` in IEEE 754, sign of zero included, so the rest subtracts.
+    (@s (negated $neg:ident) $as:ident, $a12:ident, $a13:ident, $a23:ident,
+     $bs:ident, $b12:ident, $b13:ident, $b23:ident, $add:ident, $sub:ident, $mul:ident) => {
+        $add(
+            $sub($mul($as, $bs), $mul($a12, $b12)),
+            $sub($mul($a13, $neg($b13)), $mul($a23, $b23)),
+        )
+    };
     // (s b23 + a13 b12) + (a23 bs - a12 b13): the f64 product's order.
     (@scalar_first $as:ident, $a12:ident, $a13:ident, $a23:ident,
      $bs:ident, $b12:ident, $b13:ident, $b23:ident, $add:ident, $sub:ident, $mul:ident) => {
@@ -80,14 +100,34 @@ macro_rules! transpose_in_lanes {
 #[cfg(feature = "f32")]
 pub mod f32 {
     use core::arch::x86_64::{
-        _mm256_add_ps, _mm256_loadu_ps, _mm256_mul_ps, _mm256_shuffle_ps, _mm256_storeu_ps,
-        _mm256_sub_ps, _mm256_unpackhi_ps, _mm256_unpacklo_ps, _mm512_add_ps, _mm512_loadu_ps,
-        _mm512_mul_ps, _mm512_shuffle_ps, _mm512_storeu_ps, _mm512_sub_ps, _mm512_unpackhi_ps,
-        _mm512_unpacklo_ps,
+        __m256, __m512, _mm256_add_ps, _mm256_loadu_ps, _mm256_mul_ps, _mm256_set1_ps,
+        _mm256_shuffle_ps, _mm256_storeu_ps, _mm256_sub_ps, _mm256_unpackhi_ps, _mm256_unpacklo_ps,
+        _mm256_xor_ps, _mm512_add_ps, _mm512_castps_si512, _mm512_castsi512_ps, _mm512_loadu_ps,
+        _mm512_mul_ps, _mm512_set1_epi32, _mm512_shuffle_ps, _mm512_storeu_ps, _mm512_sub_ps,
+        _mm512_unpackhi_ps, _mm512_unpacklo_ps, _mm512_xor_si512,
     };
 
     use crate::f32::g3::Rotor;
     use crate::kernels::InstructionSet;
+
+    /// `-x` lane by lane, by flipping the sign bit as the one-item lane form's `negate`
+    /// does: exact for every value, zeros included.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn negate_256(x: __m256) -> __m256 {
+        _mm256_xor_ps(x, _mm256_set1_ps(-0.0))
+    }
+
+    /// [`negate_256`] for 512 bits, with an integer xor (`vxorps` on 512 bits needs
+    /// AVX-512DQ, which the copy does not ask for).
+    #[inline]
+    #[target_feature(enable = "avx512f")]
+    fn negate_512(x: __m512) -> __m512 {
+        _mm512_castsi512_ps(_mm512_xor_si512(
+            _mm512_castps_si512(x),
+            _mm512_set1_epi32(i32::MIN),
+        ))
+    }
 
     /// One `f32` copy: `$items` rotors a round, four registers of `$items / 4` rotors each,
     /// with the width's load, store, unpacks, shuffle and arithmetic.
@@ -96,7 +136,7 @@ pub mod f32 {
             $(#[$doc:meta])*
             $name:ident, $feature:literal, $set:expr, items: $items:literal,
             $load:ident, $store:ident, $lo:ident, $hi:ident, $shuffle:ident,
-            $add:ident, $sub:ident, $mul:ident
+            $add:ident, $sub:ident, $mul:ident, $neg:ident
         ) => {
             $(#[$doc])*
             #[target_feature(enable = $feature)]
@@ -119,7 +159,7 @@ pub mod f32 {
                     };
                     let x = transpose_in_lanes!(x, $lo, $hi, $shuffle);
                     let y = transpose_in_lanes!(y, $lo, $hi, $shuffle);
-                    let p = rotor_product!(x, y, $add, $sub, $mul, e23: lane_order);
+                    let p = rotor_product!(x, y, $add, $sub, $mul, s: (negated $neg), e23: lane_order);
                     let p = transpose_in_lanes!(p, $lo, $hi, $shuffle);
                     for (k, register) in starts.into_iter().zip(p) {
                         // SAFETY: as for the loads.
@@ -139,7 +179,7 @@ pub mod f32 {
         /// The CPU has AVX2, and the three slices have the same length.
         mul_pairs_avx2, "avx2", InstructionSet::Avx2Fma, items: 8,
         _mm256_loadu_ps, _mm256_storeu_ps, _mm256_unpacklo_ps, _mm256_unpackhi_ps,
-        _mm256_shuffle_ps, _mm256_add_ps, _mm256_sub_ps, _mm256_mul_ps
+        _mm256_shuffle_ps, _mm256_add_ps, _mm256_sub_ps, _mm256_mul_ps, negate_256
     }
 
     f32_copy! {
@@ -149,7 +189,7 @@ pub mod f32 {
         /// The CPU has AVX-512F, and the three slices have the same length.
         mul_pairs_avx512, "avx512f", InstructionSet::Avx512f, items: 16,
         _mm512_loadu_ps, _mm512_storeu_ps, _mm512_unpacklo_ps, _mm512_unpackhi_ps,
-        _mm512_shuffle_ps, _mm512_add_ps, _mm512_sub_ps, _mm512_mul_ps
+        _mm512_shuffle_ps, _mm512_add_ps, _mm512_sub_ps, _mm512_mul_ps, negate_512
     }
 }
 
@@ -203,7 +243,7 @@ pub mod f64 {
                 _mm256_unpacklo_pd(y[2], y[3]),
                 _mm256_unpackhi_pd(y[2], y[3]),
             ];
-            let [s, e12, e13, e23] = rotor_product!(x, y, _mm256_add_pd, _mm256_sub_pd, _mm256_mul_pd, e23: scalar_first);
+            let [s, e12, e13, e23] = rotor_product!(x, y, _mm256_add_pd, _mm256_sub_pd, _mm256_mul_pd, s: subtracted, e23: scalar_first);
             let halves = [
                 _mm256_unpacklo_pd(s, e12),
                 _mm256_unpackhi_pd(s, e12),
@@ -276,7 +316,7 @@ pub mod f64 {
                 )
             };
             let (x, y) = (to_components(x), to_components(y));
-            let [s, e12, e13, e23] = rotor_product!(x, y, _mm512_add_pd, _mm512_sub_pd, _mm512_mul_pd, e23: scalar_first);
+            let [s, e12, e13, e23] = rotor_product!(x, y, _mm512_add_pd, _mm512_sub_pd, _mm512_mul_pd, s: subtracted, e23: scalar_first);
             // Back: the same two rounds in the opposite order. Each round is a transpose
             // (of 4 x 4 elements across a pair of registers, or of their halves), so it
             // undoes itself.
