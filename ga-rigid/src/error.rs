@@ -36,8 +36,8 @@ pub enum Error {
     /// Principal moments that no mass distribution can have: i_a + i_b < i_c.
     #[error(
         "{field}: moments must satisfy the triangle inequality i_a + i_b >= i_c, \
-         but {} + {} < {}; a test body no mass has may set allow_unphysical = true in [body]",
-        num(*a), num(*b), num(*c)
+         but {} + {} < {}; a test body may set allow_unphysical = true in [body]",
+        num_short(*a), num_short(*b), num_short(*c)
     )]
     TriangleInequality {
         /// The field or parameter at fault.
@@ -245,6 +245,18 @@ pub fn num(x: f64) -> String {
         format!("{x}")
     } else {
         format!("{x:e}")
+    }
+}
+
+/// [`num`], to six significant digits when it would be longer than twelve characters: for
+/// messages that hold several numbers and must stay under 200 characters.
+#[must_use]
+pub fn num_short(x: f64) -> String {
+    let full = num(x);
+    if full.len() > 12 {
+        format!("{x:.5e}")
+    } else {
+        full
     }
 }
 
