@@ -410,3 +410,30 @@ fn golden_bits_of_ten_thousand_steps() {
 
 /// Recorded by `golden_bits_of_ten_thousand_steps` (printed with `--nocapture`).
 const GOLDEN: (u64, u64) = (0x31ce_cf1f_2410_8981, 0x84c3_fd87_5a64_efca);
+
+#[test]
+fn step_with_a_constant_torque_is_step_and_keeps_a_heavy_tops_energy() {
+    let body = e64::Body::from_principal(DVec3::new(1.0, 1.0, 0.4), DQuat::IDENTITY).unwrap();
+    let t = DVec3::new(0.3, -0.2, 0.1);
+    let q0 = DQuat::from_rotation_x(0.3);
+    let l0 = DVec3::new(0.1, 0.2, 12.0);
+    assert_eq!(
+        e64::step_with(&body, q0, l0, 0.01, |_| t),
+        e64::step(&body, q0, l0, t, 0.01)
+    );
+    // Gravity on a top (a torque from a potential): the energy stays within O(h^2).
+    let gravity = |q: DQuat| (q * DVec3::Z * 0.1).cross(DVec3::new(0.0, 0.0, -2.0 * 9.81));
+    let energy =
+        |q: DQuat, l: DVec3| body.kinetic_energy(q, l) + 2.0 * 9.81 * 0.1 * (q * DVec3::Z).z;
+    let (mut q, mut l) = (
+        q0,
+        body.angular_momentum(q0, q0 * DVec3::new(0.0, 0.0, 30.0)),
+    );
+    let e0 = energy(q, l);
+    let mut worst: f64 = 0.0;
+    for _ in 0..20_000 {
+        (q, l) = e64::step_with(&body, q, l, 1.0 / 60.0, gravity);
+        worst = worst.max((energy(q, l) / e0 - 1.0).abs());
+    }
+    assert!(worst < 1e-4, "{worst:e}");
+}

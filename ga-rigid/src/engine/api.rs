@@ -133,6 +133,30 @@ macro_rules! precision_api {
             (q_out(q), v_out(l))
         }
 
+        /// As [`step`] for a torque that depends on the orientation (gravity on a top,
+        /// a spring to a fixed direction): `torque(q)` is read at the start and at the
+        /// end of the step, half a kick each (Strang's splitting), which keeps the
+        /// energy of a torque from a potential from drifting; holding the start's torque
+        /// over the step, as [`step`] with `torque(q)` would, lets it drift.
+        #[must_use]
+        #[inline]
+        pub fn step_with(
+            body: &Body,
+            orientation: $quat,
+            momentum: $vec3,
+            dt: $t,
+            mut torque: impl FnMut($quat) -> $vec3,
+        ) -> ($quat, $vec3) {
+            let (q, l) = crate::engine::splitting::step2_with(
+                &body.inertia,
+                q_in(orientation),
+                v_in(momentum),
+                dt,
+                |q| v_in(torque(q_out(q))),
+            );
+            (q_out(q), v_out(l))
+        }
+
         /// As [`step`], fourth order (three times the work; for large steps or long
         /// runs where accuracy matters more than cost).
         #[must_use]

@@ -26,31 +26,37 @@ use super::real::Real;
 use super::rotation::{unturn_about, Q, V};
 use super::trig::cos_sin_mod_pi;
 
-/// The axes and fractions of `h` of the free flow's five sub-rotations.
-const SEQUENCE: [(usize, f64); 5] = [(0, 0.5), (1, 0.5), (2, 1.0), (1, 0.5), (0, 0.5)];
+/// One sub-rotation about axis `K` with the half-angle rate `rate` (`h f / 2 I_K`):
+/// `q -> q (cos a + sin a e_K)`, `a = rate L_K`, and the body momentum turned back.
+#[inline(always)]
+fn sub_rotation<R: Real, const K: usize>(q: Q<R>, body: V<R>, rate: R) -> (Q<R>, V<R>, R, R) {
+    let (c, s) = cos_sin_mod_pi(rate * body.get(K));
+    (q.turn_about(K, c, s), body, c, s)
+}
 
 /// The free flow over `h`: `q_p` (principal axes to world) turned by the five
-/// sub-rotations for the world momentum `l`.
+/// sub-rotations `1(h/2) 2(h/2) 3(h) 2(h/2) 1(h/2)` for the world momentum `l`.
 #[inline(always)]
 fn free_flow<R: Real>(inertia: &Inertia<R>, q_p: Q<R>, l: V<R>, h: R) -> Q<R> {
-    // Half-angle rates: the sub-rotation about axis k by h L_k / I_k is the quaternion
-    // cos(a) + sin(a) e_k with a = h L_k / (2 I_k).
+    // The sub-rotation about axis k over h f is by h f L_k / I_k: the quaternion
+    // cos(a) + sin(a) e_k with a = (h f / 2 I_k) L_k.
+    let quarter = h * R::splat(0.25);
     let half = h * R::splat(0.5);
-    let rate = [
-        half * inertia.inverse.x,
-        half * inertia.inverse.y,
+    let (r1, r2, r3) = (
+        quarter * inertia.inverse.x,
+        quarter * inertia.inverse.y,
         half * inertia.inverse.z,
-    ];
-    let mut body = q_p.rotate_inv(l);
-    let mut q = q_p;
-    for (i, &(k, fraction)) in SEQUENCE.iter().enumerate() {
-        let a = (R::splat(fraction) * rate[k]) * body.get(k);
-        let (c, s) = cos_sin_mod_pi(a);
-        q = q.turn_about(k, c, s);
-        if i + 1 < SEQUENCE.len() {
-            body = unturn_about(k, c, s, body);
-        }
-    }
+    );
+    let body = q_p.rotate_inv(l);
+    let (q, body, c, s) = sub_rotation::<R, 0>(q_p, body, r1);
+    let body = unturn_about(0, c, s, body);
+    let (q, body, c, s) = sub_rotation::<R, 1>(q, body, r2);
+    let body = unturn_about(1, c, s, body);
+    let (q, body, c, s) = sub_rotation::<R, 2>(q, body, r3);
+    let body = unturn_about(2, c, s, body);
+    let (q, body, c, s) = sub_rotation::<R, 1>(q, body, r2);
+    let body = unturn_about(1, c, s, body);
+    let (q, _, _, _) = sub_rotation::<R, 0>(q, body, r1);
     q
 }
 
@@ -70,6 +76,27 @@ pub(crate) fn step2<R: Real>(
     let q_p = free_flow(inertia, q_p, l, h).normalized_near(q_p);
     let l = l.add_scaled(half, t);
     (inertia.from_principal_orientation(q_p), l)
+}
+
+/// One second-order step of `h` under a torque that depends on the orientation:
+/// `kick(h/2, T(q_n)) free(h) kick(h/2, T(q_n+1))`, Strang's splitting with the torque
+/// read at both ends. For a torque from a potential (gravity on a top) it is symplectic,
+/// so the energy does not drift; holding `T(q_n)` over the whole step would not be.
+#[inline(always)]
+pub(crate) fn step2_with<R: Real>(
+    inertia: &Inertia<R>,
+    q: Q<R>,
+    l: V<R>,
+    h: R,
+    mut torque: impl FnMut(Q<R>) -> V<R>,
+) -> (Q<R>, V<R>) {
+    let half = h * R::splat(0.5);
+    let l = l.add_scaled(half, torque(q));
+    let q_p = inertia.to_principal(q);
+    let q_p = free_flow(inertia, q_p, l, h).normalized_near(q_p);
+    let q = inertia.from_principal_orientation(q_p);
+    let l = l.add_scaled(half, torque(q));
+    (q, l)
 }
 
 /// The triple jump's outer weight `1/(2 - 2^(1/3))`.

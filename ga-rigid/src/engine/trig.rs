@@ -19,24 +19,53 @@ use super::real::Real;
 /// that precision).
 #[inline(always)]
 pub(crate) fn cos_sin_mod_pi<R: Real>(a: R) -> (R, R) {
-    let n = (a * R::splat(core::f64::consts::FRAC_1_PI)).round_small();
-    let r = (a - n * R::splat(R::PI_HI)) - n * R::splat(R::PI_LO);
     let half_pi = R::splat(core::f64::consts::FRAC_PI_2);
+    // Within [-pi/2, pi/2] the reduction gives n = 0 and r = a exactly, so skipping it
+    // (the usual case, and off the step's critical path) changes no bit; a group of lanes
+    // skips it only if every lane may.
+    let r = if R::any(a.lt(-half_pi)) || R::any(half_pi.lt(a)) {
+        let n = (a * R::splat(core::f64::consts::FRAC_1_PI)).round_small();
+        (a - n * R::splat(R::PI_HI)) - n * R::splat(R::PI_LO)
+    } else {
+        a
+    };
     // Written so that a NaN (an angle that overflowed) also lands in range.
     let r = R::select(r.lt(half_pi), r, half_pi);
     let r = R::select((-half_pi).lt(r), r, -half_pi);
     let x2 = r * r;
-    (horner(x2, R::COS), r * horner(x2, R::SIN))
+    let x4 = x2 * x2;
+    (estrin(x2, x4, R::COS), r * estrin(x2, x4, R::SIN))
 }
 
-/// `c[0] + x (c[1] + x (c[2] + ...))`.
+/// `c[0] + c[1] x + c[2] x^2 + ...` by Estrin's scheme (pairs `c[2i] + c[2i+1] x`, then
+/// pairs of pairs with `x^2`, ...): a third of Horner's dependency chain, which is what
+/// bounds a step's latency. `x2` is `x * x`; at most 16 coefficients.
 #[inline(always)]
-fn horner<R: Real>(x: R, c: &[f64]) -> R {
-    let mut acc = R::splat(c[c.len() - 1]);
-    for &k in c[..c.len() - 1].iter().rev() {
-        acc = acc * x + R::splat(k);
+fn estrin<R: Real>(x: R, x2: R, c: &[f64]) -> R {
+    let mut terms = [R::splat(0.0); 8];
+    let mut n = 0;
+    for pair in c.chunks(2) {
+        terms[n] = match pair {
+            [a, b] => R::splat(*a) + R::splat(*b) * x,
+            _ => R::splat(pair[0]),
+        };
+        n += 1;
     }
-    acc
+    let mut power = x2;
+    while n > 1 {
+        let mut m = 0;
+        for i in (0..n).step_by(2) {
+            terms[m] = if i + 1 < n {
+                terms[i] + terms[i + 1] * power
+            } else {
+                terms[i]
+            };
+            m += 1;
+        }
+        n = m;
+        power = power * power;
+    }
+    terms[0]
 }
 
 #[cfg(all(test, feature = "std"))]
