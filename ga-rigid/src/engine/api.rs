@@ -89,7 +89,7 @@ macro_rules! precision_api {
             /// and world angular momentum `momentum`.
             #[must_use]
             pub fn angular_velocity(&self, orientation: $quat, momentum: $vec3) -> $vec3 {
-                let q_p = self.inertia.to_principal(q_in(orientation));
+                let q_p = self.inertia.principal_orientation(q_in(orientation));
                 v_out(self.inertia.velocity(q_p, v_in(momentum)))
             }
 
@@ -97,14 +97,14 @@ macro_rules! precision_api {
             /// world angular velocity `velocity`.
             #[must_use]
             pub fn angular_momentum(&self, orientation: $quat, velocity: $vec3) -> $vec3 {
-                let q_p = self.inertia.to_principal(q_in(orientation));
+                let q_p = self.inertia.principal_orientation(q_in(orientation));
                 v_out(self.inertia.momentum(q_p, v_in(velocity)))
             }
 
             /// The rotational kinetic energy `L . w / 2`.
             #[must_use]
             pub fn kinetic_energy(&self, orientation: $quat, momentum: $vec3) -> $t {
-                let q_p = self.inertia.to_principal(q_in(orientation));
+                let q_p = self.inertia.principal_orientation(q_in(orientation));
                 self.inertia.energy(q_p, v_in(momentum))
             }
         }

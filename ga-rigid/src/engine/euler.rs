@@ -51,7 +51,7 @@ pub(crate) fn explicit<R: Real>(
     t: V<R>,
     h: R,
 ) -> (Q<R>, V<R>) {
-    let q_p = inertia.to_principal(q);
+    let q_p = inertia.principal_orientation(q);
     let wb = q_p.rotate_inv(w);
     let tb = q_p.rotate_inv(t);
     let gyro = wb.cross(wb.scale(inertia.moments));
@@ -69,7 +69,7 @@ pub(crate) fn implicit<R: Real>(
     t: V<R>,
     h: R,
 ) -> (Q<R>, V<R>) {
-    let q_p = inertia.to_principal(q);
+    let q_p = inertia.principal_orientation(q);
     let wb = q_p.rotate_inv(w);
     let tb = q_p.rotate_inv(t);
     let i = inertia.moments;

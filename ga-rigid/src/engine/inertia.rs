@@ -73,7 +73,7 @@ impl<R: Precision> Inertia<R> {
         }
         let wide = parts.map(R::wide);
         let n2 = wide.iter().map(|x| x * x).sum::<f64>();
-        if !(n2 > 1e-30) || !n2.is_finite() {
+        if n2.partial_cmp(&1e-30) != Some(core::cmp::Ordering::Greater) || !n2.is_finite() {
             return Err(BodyError::ZeroFrame);
         }
         let inv = 1.0 / libm::sqrt(n2);
@@ -95,7 +95,8 @@ impl<R: Precision> Inertia<R> {
                 return Err(BodyError::NotFinite);
             }
             let inv = R::splat(1.0) / m;
-            if !(m > R::splat(0.0)) || !inv.finite() {
+            if m.partial_cmp(&R::splat(0.0)) != Some(core::cmp::Ordering::Greater) || !inv.finite()
+            {
                 return Err(BodyError::NotPositive { axis });
             }
         }
@@ -120,7 +121,7 @@ impl<R: Precision> Inertia<R> {
 impl<R: Real> Inertia<R> {
     /// The orientation of the principal axes, `q p`, from the body's `q`.
     #[inline(always)]
-    pub(crate) fn to_principal(&self, q: Q<R>) -> Q<R> {
+    pub(crate) fn principal_orientation(&self, q: Q<R>) -> Q<R> {
         if R::any(self.turned) {
             Q::select(self.turned, q.mul(self.frame), q)
         } else {
@@ -130,7 +131,7 @@ impl<R: Real> Inertia<R> {
 
     /// The body's orientation `q_p p*` from the principal axes' `q_p`.
     #[inline(always)]
-    pub(crate) fn from_principal_orientation(&self, q: Q<R>) -> Q<R> {
+    pub(crate) fn body_orientation(&self, q: Q<R>) -> Q<R> {
         if R::any(self.turned) {
             Q::select(self.turned, q.mul(self.frame.conj()), q)
         } else {

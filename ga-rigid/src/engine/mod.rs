@@ -15,7 +15,7 @@
 //! ```
 //!
 //! # What is here
-//! - [`f32`] and [`f64`] (glam 0.32, feature `glam`; `glam_0_29` ... `glam_0_32` for
+//! - [`f32`](mod@f32) and [`f64`](mod@f64) (glam 0.32, feature `glam`; `glam_0_29` ... `glam_0_32` for
 //!   the glam a project pins, features `glam-0-29` ...): a [`f32::Body`] from an inertia
 //!   tensor in the body frame or from principal moments and their frame, diagonalised
 //!   once; [`f32::step`] (free flow plus kick, second order) and [`f32::step_order4`]
@@ -83,7 +83,7 @@ pub mod glam_0_31 {
     engine_api!(glam_0_31);
 }
 
-/// The engine on glam 0.32 (feature `glam-0-32`, or `glam`), also at [`f32`] and [`f64`].
+/// The engine on glam 0.32 (feature `glam-0-32`, or `glam`), also at [`f32`](mod@f32) and [`f64`](mod@f64).
 #[cfg(feature = "glam-0-32")]
 pub mod glam_0_32 {
     engine_api!(glam_0_32);

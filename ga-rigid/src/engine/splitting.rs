@@ -72,10 +72,10 @@ pub(crate) fn step2<R: Real>(
 ) -> (Q<R>, V<R>) {
     let half = h * R::splat(0.5);
     let l = l.add_scaled(half, t);
-    let q_p = inertia.to_principal(q);
+    let q_p = inertia.principal_orientation(q);
     let q_p = free_flow(inertia, q_p, l, h).normalized_near(q_p);
     let l = l.add_scaled(half, t);
-    (inertia.from_principal_orientation(q_p), l)
+    (inertia.body_orientation(q_p), l)
 }
 
 /// One second-order step of `h` under a torque that depends on the orientation:
@@ -92,9 +92,9 @@ pub(crate) fn step2_with<R: Real>(
 ) -> (Q<R>, V<R>) {
     let half = h * R::splat(0.5);
     let l = l.add_scaled(half, torque(q));
-    let q_p = inertia.to_principal(q);
+    let q_p = inertia.principal_orientation(q);
     let q_p = free_flow(inertia, q_p, l, h).normalized_near(q_p);
-    let q = inertia.from_principal_orientation(q_p);
+    let q = inertia.body_orientation(q_p);
     let l = l.add_scaled(half, torque(q));
     (q, l)
 }
@@ -117,7 +117,7 @@ pub(crate) fn step4<R: Real>(
     let (h1, h0) = (h * R::splat(G1), h * R::splat(G0));
     let outer_kick = h * R::splat(0.5 * G1);
     let inner_kick = h * R::splat(0.5 * (G1 + G0));
-    let q_p = inertia.to_principal(q);
+    let q_p = inertia.principal_orientation(q);
     let l = l.add_scaled(outer_kick, t);
     let q1 = free_flow(inertia, q_p, l, h1);
     let l = l.add_scaled(inner_kick, t);
@@ -125,5 +125,5 @@ pub(crate) fn step4<R: Real>(
     let l = l.add_scaled(inner_kick, t);
     let q3 = free_flow(inertia, q2, l, h1).normalized_near(q_p);
     let l = l.add_scaled(outer_kick, t);
-    (inertia.from_principal_orientation(q3), l)
+    (inertia.body_orientation(q3), l)
 }
