@@ -21,8 +21,10 @@ pub use composition::{Composition, Nystrom};
 pub use dopri::{DormandPrince, DormandPrinceStats};
 pub use exact::ExactFreeBody;
 pub use exact_splitting::ExactSplitting;
+#[cfg(feature = "peers")]
+pub(crate) use integrator::check_finite;
 pub use integrator::Integrator;
-pub(crate) use integrator::{check_finite, check_step, fixed_steps};
+pub(crate) use integrator::{check_step, fixed_steps};
 pub use lie_dop853::{DenseStep, LieDop853, LieDop853Stats};
 pub use lie_rk4::LieRk4;
 pub use method::{

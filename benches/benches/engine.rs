@@ -1,0 +1,174 @@
+//! `ga_rigid::engine` against the step engines use today (issue 19), f32, 60 Hz:
+//!
+//! - `engine/f32/one_body`: 1024 different bodies, each stepped once by a one-body call
+//!   (`step`, `step_order4`, the module's own baselines) against the explicit gyroscopic
+//!   Euler step written here directly on glam, the way an engine writes it
+//!   (`glam_explicit_euler`). Targets: `step` at most 1.5x `glam_explicit_euler`.
+//! - `engine/f32/slice`: the same 1024 bodies by `step_slice` (lanes of 8). Target: at
+//!   most 0.5x `glam_explicit_euler` per body.
+//! - `engine/f32/rayon`: 2^20 bodies by `par_step_slice` on 1 and on all threads.
+//!
+//! Times are per body (criterion's throughput is bodies per second).
+
+mod common;
+
+use common::config;
+use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
+use ga_core::glam::{Quat, Vec3};
+use ga_rigid::engine::f32::{
+    explicit_gyroscopic_euler, implicit_gyroscopic_euler, par_step_slice, step, step_order4,
+    step_slice, Body, BodyState,
+};
+
+/// Bodies per batch.
+const BODIES: usize = 1024;
+/// 60 Hz.
+const DT: f32 = 1.0 / 60.0;
+
+/// Seeded, varied T-handle-like bodies: diagonal inertia (the common case in engines,
+/// and the glam step below assumes it), turning at a few rad/s, small torques.
+fn crowd(n: usize) -> Vec<BodyState> {
+    let mut seed = 0x9e37_79b9_7f4a_7c15_u64;
+    let mut next = move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 40) as f32 / (1u64 << 24) as f32
+    };
+    (0..n)
+        .map(|_| {
+            let moments = Vec3::new(1.0 + next(), 2.0 + next(), 3.0 + next());
+            let body = Body::from_principal(moments, Quat::IDENTITY).expect("positive");
+            let q = Quat::from_xyzw(next() - 0.5, next() - 0.5, next() - 0.5, 1.0).normalize();
+            let l = Vec3::new(next() - 0.5, 4.0 * next(), next() - 0.5) * 4.0;
+            let mut s = BodyState::new(body, q, l);
+            s.torque = Vec3::new(next() - 0.5, next() - 0.5, next() - 0.5) * 0.1;
+            s
+        })
+        .collect()
+}
+
+/// Explicit gyroscopic Euler on glam: body-frame Euler equations, then the orientation by
+/// the new world angular velocity, normalised. `i` principal moments (diagonal inertia).
+#[inline]
+fn glam_explicit_euler(i: Vec3, inv_i: Vec3, q: Quat, w: Vec3, t: Vec3, h: f32) -> (Quat, Vec3) {
+    let q_inv = q.conjugate();
+    let wb = q_inv * w;
+    let tb = q_inv * t;
+    let wb = wb + h * (tb - wb.cross(i * wb)) * inv_i;
+    let w = q * wb;
+    let q = (q + Quat::from_vec4((0.5 * h * w).extend(0.0)) * q).normalize();
+    (q, w)
+}
+
+fn engine(c: &mut Criterion) {
+    let states = crowd(BODIES);
+    let velocities: Vec<Vec3> = states.iter().map(BodyState::angular_velocity).collect();
+    let moments: Vec<(Vec3, Vec3)> = states
+        .iter()
+        .map(|s| {
+            (
+                s.body.principal_moments(),
+                s.body.principal_moments().recip(),
+            )
+        })
+        .collect();
+
+    let mut g = c.benchmark_group("engine/f32/one_body");
+    g.throughput(Throughput::Elements(BODIES as u64));
+    g.bench_function("glam_explicit_euler", |b| {
+        let mut qw: Vec<(Quat, Vec3)> = states
+            .iter()
+            .zip(&velocities)
+            .map(|(s, &w)| (s.orientation, w))
+            .collect();
+        b.iter(|| {
+            for ((q, w), (s, &(i, inv))) in qw.iter_mut().zip(states.iter().zip(&moments)) {
+                (*q, *w) = glam_explicit_euler(i, inv, *q, *w, s.torque, black_box(DT));
+            }
+            black_box(&qw);
+        });
+    });
+    g.bench_function("step", |b| {
+        let mut ql: Vec<(Quat, Vec3)> = states
+            .iter()
+            .map(|s| (s.orientation, s.angular_momentum))
+            .collect();
+        b.iter(|| {
+            for ((q, l), s) in ql.iter_mut().zip(&states) {
+                (*q, *l) = step(&s.body, *q, *l, s.torque, black_box(DT));
+            }
+            black_box(&ql);
+        });
+    });
+    g.bench_function("step_order4", |b| {
+        let mut ql: Vec<(Quat, Vec3)> = states
+            .iter()
+            .map(|s| (s.orientation, s.angular_momentum))
+            .collect();
+        b.iter(|| {
+            for ((q, l), s) in ql.iter_mut().zip(&states) {
+                (*q, *l) = step_order4(&s.body, *q, *l, s.torque, black_box(DT));
+            }
+            black_box(&ql);
+        });
+    });
+    g.bench_function("explicit_gyroscopic_euler", |b| {
+        let mut qw: Vec<(Quat, Vec3)> = states
+            .iter()
+            .zip(&velocities)
+            .map(|(s, &w)| (s.orientation, w))
+            .collect();
+        b.iter(|| {
+            for ((q, w), s) in qw.iter_mut().zip(&states) {
+                (*q, *w) = explicit_gyroscopic_euler(&s.body, *q, *w, s.torque, black_box(DT));
+            }
+            black_box(&qw);
+        });
+    });
+    g.bench_function("implicit_gyroscopic_euler", |b| {
+        let mut qw: Vec<(Quat, Vec3)> = states
+            .iter()
+            .zip(&velocities)
+            .map(|(s, &w)| (s.orientation, w))
+            .collect();
+        b.iter(|| {
+            for ((q, w), s) in qw.iter_mut().zip(&states) {
+                (*q, *w) = implicit_gyroscopic_euler(&s.body, *q, *w, s.torque, black_box(DT));
+            }
+            black_box(&qw);
+        });
+    });
+    g.finish();
+
+    let mut g = c.benchmark_group("engine/f32/slice");
+    g.throughput(Throughput::Elements(BODIES as u64));
+    g.bench_function("step_slice", |b| {
+        let mut s = states.clone();
+        b.iter(|| step_slice(black_box(&mut s), black_box(DT)));
+    });
+    g.finish();
+
+    let big = crowd(1 << 20);
+    let mut g = c.benchmark_group("engine/f32/rayon");
+    g.throughput(Throughput::Elements(big.len() as u64));
+    g.sample_size(10);
+    for threads in [1, rayon::current_num_threads()] {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .expect("pool");
+        let mut s = big.clone();
+        g.bench_function(format!("par_step_slice/{threads}_threads"), |b| {
+            b.iter(|| pool.install(|| par_step_slice(black_box(&mut s), black_box(DT))));
+        });
+    }
+    g.finish();
+}
+
+criterion_group! {
+    name = benches;
+    config = config();
+    targets = engine
+}
+criterion_main!(benches);

@@ -1,0 +1,331 @@
+//! The public, glam-typed face of the engine, written once and stamped out for each
+//! enabled glam version and both precisions.
+
+/// The items of one precision on one glam: `$glam` is ga-core's re-export of that glam,
+/// `$t` the float, `$lanes` the group width of the slice form.
+macro_rules! precision_api {
+    ($glam:ident, $t:ident, $quat:ident, $vec3:ident, $mat3:ident, $lanes:literal) => {
+        use crate::engine::error::BodyError;
+        use crate::engine::inertia::Inertia;
+        use crate::engine::rotation::{Q, V};
+        use crate::engine::slice::{self, Order, Parts};
+        use ::ga_core::$glam::{$mat3, $quat, $vec3};
+
+        #[inline(always)]
+        fn q_in(q: $quat) -> Q<$t> {
+            Q {
+                x: q.x,
+                y: q.y,
+                z: q.z,
+                w: q.w,
+            }
+        }
+
+        #[inline(always)]
+        fn q_out(q: Q<$t>) -> $quat {
+            $quat::from_xyzw(q.x, q.y, q.z, q.w)
+        }
+
+        #[inline(always)]
+        fn v_in(v: $vec3) -> V<$t> {
+            V {
+                x: v.x,
+                y: v.y,
+                z: v.z,
+            }
+        }
+
+        #[inline(always)]
+        fn v_out(v: V<$t>) -> $vec3 {
+            $vec3::new(v.x, v.y, v.z)
+        }
+
+        /// A body's inertia, diagonalised once: principal moments, their reciprocals and
+        /// the principal frame. Cheap to copy; build it when the shape changes, not per
+        /// step.
+        #[derive(Clone, Copy, Debug)]
+        pub struct Body {
+            inertia: Inertia<$t>,
+        }
+
+        impl Body {
+            /// From the inertia tensor in the body frame (symmetric; its symmetric part
+            /// is used), diagonalised here in f64 by Jacobi rotations. A diagonal tensor
+            /// keeps its axes in the given order and costs the steps nothing extra.
+            ///
+            /// # Errors
+            /// A non-finite entry, or a principal moment that is not positive (or whose
+            /// reciprocal overflows).
+            pub fn from_tensor(tensor: $mat3) -> Result<Self, BodyError> {
+                let c = [tensor.x_axis, tensor.y_axis, tensor.z_axis];
+                Inertia::from_tensor(c.map(|a| [a.x, a.y, a.z])).map(|inertia| Body { inertia })
+            }
+
+            /// From principal moments and the principal frame: `frame` turns the
+            /// principal axes into the body frame (so the tensor is
+            /// `R diag(moments) R^T`, `R` the rotation of `frame`; any non-zero
+            /// quaternion, normalised here).
+            ///
+            /// # Errors
+            /// As [`Body::from_tensor`], and a zero `frame`.
+            pub fn from_principal(moments: $vec3, frame: $quat) -> Result<Self, BodyError> {
+                Inertia::from_principal([moments.x, moments.y, moments.z], q_in(frame))
+                    .map(|inertia| Body { inertia })
+            }
+
+            /// The principal moments, in the order of [`Body::principal_frame`]'s axes.
+            #[must_use]
+            pub fn principal_moments(&self) -> $vec3 {
+                v_out(self.inertia.moments)
+            }
+
+            /// The rotation from the principal axes to the body frame.
+            #[must_use]
+            pub fn principal_frame(&self) -> $quat {
+                q_out(self.inertia.frame)
+            }
+
+            /// The world angular velocity of a body with `orientation` (body to world)
+            /// and world angular momentum `momentum`.
+            #[must_use]
+            pub fn angular_velocity(&self, orientation: $quat, momentum: $vec3) -> $vec3 {
+                let q_p = self.inertia.principal_orientation(q_in(orientation));
+                v_out(self.inertia.velocity(q_p, v_in(momentum)))
+            }
+
+            /// The world angular momentum of a body with `orientation` turning at the
+            /// world angular velocity `velocity`.
+            #[must_use]
+            pub fn angular_momentum(&self, orientation: $quat, velocity: $vec3) -> $vec3 {
+                let q_p = self.inertia.principal_orientation(q_in(orientation));
+                v_out(self.inertia.momentum(q_p, v_in(velocity)))
+            }
+
+            /// The rotational kinetic energy `L . w / 2`.
+            #[must_use]
+            pub fn kinetic_energy(&self, orientation: $quat, momentum: $vec3) -> $t {
+                let q_p = self.inertia.principal_orientation(q_in(orientation));
+                self.inertia.energy(q_p, v_in(momentum))
+            }
+        }
+
+        /// The recommended step: free flow plus kick, second order (see the module
+        /// docs). `orientation` body to world, `momentum` and `torque` in the world
+        /// frame (the torque held over the step); returns the new orientation
+        /// (normalised, in the hemisphere of the old one) and momentum. Without torque
+        /// `|momentum|` is returned unchanged, bit for bit.
+        #[must_use]
+        #[inline]
+        pub fn step(
+            body: &Body,
+            orientation: $quat,
+            momentum: $vec3,
+            torque: $vec3,
+            dt: $t,
+        ) -> ($quat, $vec3) {
+            let (q, l) = crate::engine::splitting::step2(
+                &body.inertia,
+                q_in(orientation),
+                v_in(momentum),
+                v_in(torque),
+                dt,
+            );
+            (q_out(q), v_out(l))
+        }
+
+        /// As [`step`] for a torque that depends on the orientation (gravity on a top,
+        /// a spring to a fixed direction): `torque(q)` is read at the start and at the
+        /// end of the step, half a kick each (Strang's splitting), which keeps the
+        /// energy of a torque from a potential from drifting; holding the start's torque
+        /// over the step, as [`step`] with `torque(q)` would, lets it drift.
+        #[must_use]
+        #[inline]
+        pub fn step_with(
+            body: &Body,
+            orientation: $quat,
+            momentum: $vec3,
+            dt: $t,
+            mut torque: impl FnMut($quat) -> $vec3,
+        ) -> ($quat, $vec3) {
+            let (q, l) = crate::engine::splitting::step2_with(
+                &body.inertia,
+                q_in(orientation),
+                v_in(momentum),
+                dt,
+                |q| v_in(torque(q_out(q))),
+            );
+            (q_out(q), v_out(l))
+        }
+
+        /// As [`step`], fourth order (three times the work; for large steps or long
+        /// runs where accuracy matters more than cost).
+        #[must_use]
+        #[inline]
+        pub fn step_order4(
+            body: &Body,
+            orientation: $quat,
+            momentum: $vec3,
+            torque: $vec3,
+            dt: $t,
+        ) -> ($quat, $vec3) {
+            let (q, l) = crate::engine::splitting::step4(
+                &body.inertia,
+                q_in(orientation),
+                v_in(momentum),
+                v_in(torque),
+                dt,
+            );
+            (q_out(q), v_out(l))
+        }
+
+        /// Baseline: explicit gyroscopic Euler on the world angular velocity
+        /// (`w += dt J^-1 (T - w x J w)`, then the orientation by the new `w`).
+        #[must_use]
+        #[inline]
+        pub fn explicit_gyroscopic_euler(
+            body: &Body,
+            orientation: $quat,
+            velocity: $vec3,
+            torque: $vec3,
+            dt: $t,
+        ) -> ($quat, $vec3) {
+            let (q, w) = crate::engine::euler::explicit(
+                &body.inertia,
+                q_in(orientation),
+                v_in(velocity),
+                v_in(torque),
+                dt,
+            );
+            (q_out(q), v_out(w))
+        }
+
+        /// Baseline: implicit gyroscopic Euler with one Newton iteration, as in Bullet
+        /// (Catto, GDC 2015), on the world angular velocity.
+        #[must_use]
+        #[inline]
+        pub fn implicit_gyroscopic_euler(
+            body: &Body,
+            orientation: $quat,
+            velocity: $vec3,
+            torque: $vec3,
+            dt: $t,
+        ) -> ($quat, $vec3) {
+            let (q, w) = crate::engine::euler::implicit(
+                &body.inertia,
+                q_in(orientation),
+                v_in(velocity),
+                v_in(torque),
+                dt,
+            );
+            (q_out(q), v_out(w))
+        }
+
+        /// One body of a slice: its inertia, orientation (body to world), world angular
+        /// momentum and the world torque held over the next step.
+        #[derive(Clone, Copy, Debug)]
+        pub struct BodyState {
+            /// The body's inertia.
+            pub body: Body,
+            /// Body to world.
+            pub orientation: $quat,
+            /// World angular momentum.
+            pub angular_momentum: $vec3,
+            /// World torque, held over a step.
+            pub torque: $vec3,
+        }
+
+        impl BodyState {
+            /// At rest, no torque.
+            #[must_use]
+            pub fn new(body: Body, orientation: $quat, angular_momentum: $vec3) -> Self {
+                BodyState {
+                    body,
+                    orientation,
+                    angular_momentum,
+                    torque: $vec3::ZERO,
+                }
+            }
+
+            /// [`step`] in place.
+            #[inline]
+            pub fn step(&mut self, dt: $t) {
+                slice::step_one(self, dt, Order::Two);
+            }
+
+            /// [`step_order4`] in place.
+            #[inline]
+            pub fn step_order4(&mut self, dt: $t) {
+                slice::step_one(self, dt, Order::Four);
+            }
+
+            /// The world angular velocity.
+            #[must_use]
+            pub fn angular_velocity(&self) -> $vec3 {
+                self.body
+                    .angular_velocity(self.orientation, self.angular_momentum)
+            }
+
+            /// The rotational kinetic energy.
+            #[must_use]
+            pub fn kinetic_energy(&self) -> $t {
+                self.body
+                    .kinetic_energy(self.orientation, self.angular_momentum)
+            }
+        }
+
+        impl Parts<$t> for BodyState {
+            #[inline(always)]
+            fn parts(&self) -> (&Inertia<$t>, Q<$t>, V<$t>, V<$t>) {
+                (
+                    &self.body.inertia,
+                    q_in(self.orientation),
+                    v_in(self.angular_momentum),
+                    v_in(self.torque),
+                )
+            }
+            #[inline(always)]
+            fn store(&mut self, q: Q<$t>, l: V<$t>) {
+                self.orientation = q_out(q);
+                self.angular_momentum = v_out(l);
+            }
+        }
+
+        /// Every body by [`step`], several at a time in lanes: the same bits as
+        /// stepping each alone.
+        pub fn step_slice(states: &mut [BodyState], dt: $t) {
+            slice::step_all::<$t, BodyState, $lanes>(states, dt, Order::Two);
+        }
+
+        /// Every body by [`step_order4`], likewise.
+        pub fn step_slice_order4(states: &mut [BodyState], dt: $t) {
+            slice::step_all::<$t, BodyState, $lanes>(states, dt, Order::Four);
+        }
+
+        /// [`step_slice`] on rayon's current pool, in fixed chunks: the results do not
+        /// depend on the number of threads.
+        #[cfg(feature = "rayon")]
+        pub fn par_step_slice(states: &mut [BodyState], dt: $t) {
+            crate::engine::parallel::for_chunks(states, |chunk| step_slice(chunk, dt));
+        }
+
+        /// [`step_slice_order4`] on rayon's current pool, likewise.
+        #[cfg(feature = "rayon")]
+        pub fn par_step_slice_order4(states: &mut [BodyState], dt: $t) {
+            crate::engine::parallel::for_chunks(states, |chunk| step_slice_order4(chunk, dt));
+        }
+    };
+}
+
+/// `f32` and `f64` modules on one glam.
+macro_rules! engine_api {
+    ($glam:ident) => {
+        /// The engine in `f32` (`Quat`, `Vec3`, `Mat3`).
+        pub mod f32 {
+            precision_api!($glam, f32, Quat, Vec3, Mat3, 8);
+        }
+        /// The engine in `f64` (`DQuat`, `DVec3`, `DMat3`).
+        pub mod f64 {
+            precision_api!($glam, f64, DQuat, DVec3, DMat3, 4);
+        }
+    };
+}

@@ -1,0 +1,93 @@
+//! A rotation step an engine can call once per body per frame: glam types in and out,
+//! `f32` or `f64`, no allocation, no `std`, the same bits on every machine.
+//!
+//! ```
+//! use ga_rigid::engine::f32::{step, Body};
+//! use ga_core::glam::{Mat3, Quat, Vec3};
+//!
+//! // A T-handle's tensor in its own frame; any symmetric tensor will do.
+//! let body = Body::from_tensor(Mat3::from_diagonal(Vec3::new(1.0, 2.0, 3.0))).unwrap();
+//! let (mut q, mut l) = (Quat::IDENTITY, Vec3::new(0.01, 2.0, 0.0)); // world momentum
+//! for _ in 0..600 {
+//!     (q, l) = step(&body, q, l, Vec3::ZERO, 1.0 / 60.0); // 60 Hz, no torque
+//! }
+//! assert_eq!(l, Vec3::new(0.01, 2.0, 0.0)); // |L| kept to the bit without torque
+//! ```
+//!
+//! # What is here
+//! - [`f32`](mod@f32) and [`f64`](mod@f64) (glam 0.32, feature `glam`; `glam_0_29` ... `glam_0_32` for
+//!   the glam a project pins, features `glam-0-29` ...): a [`f32::Body`] from an inertia
+//!   tensor in the body frame or from principal moments and their frame, diagonalised
+//!   once; [`f32::step`] (free flow plus kick, second order) and [`f32::step_order4`]
+//!   (its fourth-order composition) on the orientation and the world angular momentum;
+//!   the engines' baselines [`f32::explicit_gyroscopic_euler`] and
+//!   [`f32::implicit_gyroscopic_euler`] on the world angular velocity; the slice forms
+//!   [`f32::step_slice`] and, with feature `rayon`, `par_step_slice`.
+//! - The state is the world angular momentum, not the velocity: a world torque changes
+//!   it exactly, and the free flow does not change it at all, so `|L|` of a free body is
+//!   kept to the bit. [`f32::Body::angular_velocity`] and
+//!   [`f32::Body::angular_momentum`] convert for engines that store the velocity (each
+//!   conversion rounds, so storing the momentum is better).
+//!
+//! # The same bits everywhere: what is promised
+//! The steps use only IEEE-754 `+ - * /` and `sqrt` (each correctly rounded), in a fixed
+//! order: no fused multiply-add (Rust never contracts `a * b + c`, with or without
+//! `-C target-cpu=native`), no library `sin`/`cos` (polynomials, `trig.rs`), no
+//! reassociation, no run-time CPU dispatch in the arithmetic. So on every target where
+//! `f32`/`f64` are IEEE binary32/binary64 with round-to-nearest and no flush of
+//! subnormals (x86-64 with SSE2, AVX2 or AVX-512; AArch64; wasm32), the same inputs give
+//! the same bits, in the one-body, slice and parallel forms alike
+//! (`tests/engine.rs` compares golden bit patterns of 10^4 steps). Not promised: 32-bit
+//! x86 without SSE2 (x87 keeps extra precision), a flush-to-zero mode set by the caller,
+//! and NaN payloads. glam's own operations (which may round differently between its
+//! SIMD and scalar builds) are used only to move values in and out. Building the body
+//! description ([`f32::Body::from_tensor`]) uses `libm`'s `sqrt`, also correctly
+//! rounded, in f64.
+//!
+//! # Errors and panics
+//! Bodies are checked once ([`BodyError`]). The steps never panic and never allocate;
+//! finite input gives finite output unless the numbers overflow (a momentum near
+//! `f32::MAX`), and an orientation must be non-zero (it is normalised every step).
+
+#[macro_use]
+mod api;
+mod eigen;
+mod error;
+mod euler;
+mod inertia;
+#[cfg(feature = "rayon")]
+mod parallel;
+mod real;
+mod rotation;
+mod slice;
+mod splitting;
+mod trig;
+
+pub use error::BodyError;
+
+/// The engine on glam 0.29 (feature `glam-0-29`).
+#[cfg(feature = "glam-0-29")]
+pub mod glam_0_29 {
+    engine_api!(glam_0_29);
+}
+
+/// The engine on glam 0.30 (feature `glam-0-30`).
+#[cfg(feature = "glam-0-30")]
+pub mod glam_0_30 {
+    engine_api!(glam_0_30);
+}
+
+/// The engine on glam 0.31 (feature `glam-0-31`).
+#[cfg(feature = "glam-0-31")]
+pub mod glam_0_31 {
+    engine_api!(glam_0_31);
+}
+
+/// The engine on glam 0.32 (feature `glam-0-32`, or `glam`), also at [`f32`](mod@f32) and [`f64`](mod@f64).
+#[cfg(feature = "glam-0-32")]
+pub mod glam_0_32 {
+    engine_api!(glam_0_32);
+}
+
+#[cfg(feature = "glam-0-32")]
+pub use glam_0_32::{f32, f64};

@@ -1,0 +1,220 @@
+//! Quaternions and vectors in components, generic over [`Real`], in glam's conventions.
+//!
+//! `Q { x, y, z, w }` is glam's quaternion: it turns a vector by `v -> q v q*`, and the
+//! rotor of the lecture's convention is `s = w, e23 = -x, e13 = y, e12 = -z` (README,
+//! "Conventions"). Every formula is written out once here, with a fixed order of
+//! operations, so that the scalar and the lane forms round alike (see `real.rs`).
+
+use super::real::Real;
+
+/// A quaternion `w + x i + y j + z k`.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Q<R> {
+    pub(crate) x: R,
+    pub(crate) y: R,
+    pub(crate) z: R,
+    pub(crate) w: R,
+}
+
+/// A 3-vector.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct V<R> {
+    pub(crate) x: R,
+    pub(crate) y: R,
+    pub(crate) z: R,
+}
+
+impl<R: Real> V<R> {
+    /// The vector's component `k` (0, 1 or 2).
+    #[inline(always)]
+    pub(crate) fn get(self, k: usize) -> R {
+        match k {
+            0 => self.x,
+            1 => self.y,
+            _ => self.z,
+        }
+    }
+
+    /// `self + s v`.
+    #[inline(always)]
+    pub(crate) fn add_scaled(self, s: R, v: V<R>) -> V<R> {
+        V {
+            x: self.x + s * v.x,
+            y: self.y + s * v.y,
+            z: self.z + s * v.z,
+        }
+    }
+
+    /// Component-wise product.
+    #[inline(always)]
+    pub(crate) fn scale(self, k: V<R>) -> V<R> {
+        V {
+            x: self.x * k.x,
+            y: self.y * k.y,
+            z: self.z * k.z,
+        }
+    }
+
+    /// `self x v`.
+    #[inline(always)]
+    pub(crate) fn cross(self, v: V<R>) -> V<R> {
+        V {
+            x: self.y * v.z - self.z * v.y,
+            y: self.z * v.x - self.x * v.z,
+            z: self.x * v.y - self.y * v.x,
+        }
+    }
+
+    /// `self . v`.
+    #[inline(always)]
+    pub(crate) fn dot(self, v: V<R>) -> R {
+        self.x * v.x + self.y * v.y + self.z * v.z
+    }
+
+    /// `self - v`.
+    #[inline(always)]
+    pub(crate) fn sub(self, v: V<R>) -> V<R> {
+        V {
+            x: self.x - v.x,
+            y: self.y - v.y,
+            z: self.z - v.z,
+        }
+    }
+}
+
+impl<R: Real> Q<R> {
+    /// The Hamilton product `self b`.
+    #[inline(always)]
+    pub(crate) fn mul(self, b: Q<R>) -> Q<R> {
+        let a = self;
+        Q {
+            w: (a.w * b.w - a.x * b.x) - (a.y * b.y + a.z * b.z),
+            x: (a.w * b.x + a.x * b.w) + (a.y * b.z - a.z * b.y),
+            y: (a.w * b.y - a.x * b.z) + (a.y * b.w + a.z * b.x),
+            z: (a.w * b.z + a.x * b.y) - (a.y * b.x - a.z * b.w),
+        }
+    }
+
+    /// The conjugate (the inverse of a unit quaternion).
+    #[inline(always)]
+    pub(crate) fn conj(self) -> Q<R> {
+        Q {
+            x: -self.x,
+            y: -self.y,
+            z: -self.z,
+            w: self.w,
+        }
+    }
+
+    /// `q v q*` for a unit `q`: `v + w t + u x t` with `t = 2 u x v`, `u` the vector part.
+    #[inline(always)]
+    pub(crate) fn rotate(self, v: V<R>) -> V<R> {
+        let u = V {
+            x: self.x,
+            y: self.y,
+            z: self.z,
+        };
+        let t = u.cross(v);
+        let t = V {
+            x: t.x + t.x,
+            y: t.y + t.y,
+            z: t.z + t.z,
+        };
+        v.add_scaled(self.w, t)
+            .add_scaled(R::splat(1.0), u.cross(t))
+    }
+
+    /// `q* v q`: the inverse rotation.
+    #[inline(always)]
+    pub(crate) fn rotate_inv(self, v: V<R>) -> V<R> {
+        self.conj().rotate(v)
+    }
+
+    /// `self q_k`, where `q_k = c + s e_k` turns about the body axis `k`.
+    #[inline(always)]
+    pub(crate) fn turn_about(self, k: usize, c: R, s: R) -> Q<R> {
+        let Q { x, y, z, w } = self;
+        match k {
+            0 => Q {
+                w: w * c - x * s,
+                x: w * s + x * c,
+                y: y * c + z * s,
+                z: z * c - y * s,
+            },
+            1 => Q {
+                w: w * c - y * s,
+                x: x * c - z * s,
+                y: w * s + y * c,
+                z: z * c + x * s,
+            },
+            _ => Q {
+                w: w * c - z * s,
+                x: x * c + y * s,
+                y: y * c - x * s,
+                z: w * s + z * c,
+            },
+        }
+    }
+
+    /// `self . b` as 4-vectors.
+    #[inline(always)]
+    pub(crate) fn dot(self, b: Q<R>) -> R {
+        (self.x * b.x + self.y * b.y) + (self.z * b.z + self.w * b.w)
+    }
+
+    /// `self` scaled by `k`.
+    #[inline(always)]
+    pub(crate) fn scaled(self, k: R) -> Q<R> {
+        Q {
+            x: self.x * k,
+            y: self.y * k,
+            z: self.z * k,
+            w: self.w * k,
+        }
+    }
+
+    /// `self / |self|`, then negated if that puts it in the other hemisphere from
+    /// `reference`: the same rotation, continuous from step to step.
+    #[inline(always)]
+    pub(crate) fn normalized_near(self, reference: Q<R>) -> Q<R> {
+        let inv = R::splat(1.0) / self.dot(self).sqrt();
+        let k = R::select(self.dot(reference).lt(R::splat(0.0)), -inv, inv);
+        self.scaled(k)
+    }
+
+    /// `yes` where `mask` holds, `no` elsewhere.
+    #[inline(always)]
+    pub(crate) fn select(mask: R::Mask, yes: Q<R>, no: Q<R>) -> Q<R> {
+        Q {
+            x: R::select(mask, yes.x, no.x),
+            y: R::select(mask, yes.y, no.y),
+            z: R::select(mask, yes.z, no.z),
+            w: R::select(mask, yes.w, no.w),
+        }
+    }
+}
+
+/// `L_b` seen from a body turned by `2 alpha` about its axis `k` (`cos 2a = c^2 - s^2`,
+/// `sin 2a = 2 s c`): the body momentum after the sub-rotation `q -> q (c + s e_k)`.
+#[inline(always)]
+pub(crate) fn unturn_about<R: Real>(k: usize, c: R, s: R, l: V<R>) -> V<R> {
+    let cc = c * c - s * s;
+    let ss = (s + s) * c;
+    match k {
+        0 => V {
+            x: l.x,
+            y: cc * l.y + ss * l.z,
+            z: cc * l.z - ss * l.y,
+        },
+        1 => V {
+            x: cc * l.x - ss * l.z,
+            y: l.y,
+            z: cc * l.z + ss * l.x,
+        },
+        _ => V {
+            x: cc * l.x + ss * l.y,
+            y: cc * l.y - ss * l.x,
+            z: l.z,
+        },
+    }
+}

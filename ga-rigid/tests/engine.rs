@@ -1,0 +1,439 @@
+//! `ga_rigid::engine` against references it does not share code with: the exact free
+//! rigid-body flow (elliptic functions, `exact_flow.rs`), glam's own matrices and
+//! quaternions, and a step written here on glam; plus its invariants (|L| to the bit,
+//! slice and one-body forms bit-equal, thread count irrelevant, golden bits).
+
+use ga_core::glam::{DMat3, DQuat, DVec3, Mat3, Quat, Vec3};
+use ga_rigid::engine::{f32 as e32, f64 as e64, BodyError};
+use ga_rigid::exact_flow::{exact_free_body, free_body_orbit};
+
+/// glam's quaternion as the lecture's rotor `[s, e12, e13, e23]` (README conventions).
+fn rotor_of(q: DQuat) -> [f64; 4] {
+    [q.w, -q.z, q.y, -q.x]
+}
+
+/// The rotor `[s, e12, e13, e23]` as glam's quaternion.
+fn quat_of(r: [f64; 4]) -> DQuat {
+    DQuat::from_xyzw(-r[3], r[2], -r[1], r[0])
+}
+
+/// The angle between two orientations (by atan2, accurate for tiny angles).
+fn angle(a: DQuat, b: DQuat) -> f64 {
+    let d = a * b.inverse();
+    2.0 * d.xyz().length().atan2(d.w.abs())
+}
+
+/// The exact flow from `(q, L_world)` over `t` for principal moments `i` (frame = body).
+fn exact(i: [f64; 3], q: DQuat, l: DVec3, t: f64) -> (DQuat, DVec3) {
+    let m0 = q.inverse() * l;
+    let (r, _) = exact_free_body(i, m0.to_array(), rotor_of(q), t);
+    (quat_of(r), l)
+}
+
+const T_HANDLE: [f64; 3] = [1.0, 2.0, 3.0];
+
+#[test]
+fn splitting_converges_to_the_exact_flow_at_order_two_and_four() {
+    let body = e64::Body::from_principal(DVec3::from(T_HANDLE), DQuat::IDENTITY).unwrap();
+    let q0 = DQuat::from_rotation_x(0.3) * DQuat::from_rotation_z(-0.2);
+    let l0 = DVec3::new(0.3, 2.0, 0.4);
+    let t_end = 2.0;
+    let (q_ref, _) = exact(T_HANDLE, q0, l0, t_end);
+    let error = |n: usize, order4: bool| {
+        let h = t_end / n as f64;
+        let (mut q, mut l) = (q0, l0);
+        for _ in 0..n {
+            (q, l) = if order4 {
+                e64::step_order4(&body, q, l, DVec3::ZERO, h)
+            } else {
+                e64::step(&body, q, l, DVec3::ZERO, h)
+            };
+        }
+        angle(q, q_ref)
+    };
+    let (e1, e2) = (error(100, false), error(200, false));
+    let p2 = (e1 / e2).log2();
+    assert!((p2 - 2.0).abs() < 0.1, "order {p2} ({e1:e}, {e2:e})");
+    assert!(e2 < 1e-3);
+    let (e1, e2) = (error(25, true), error(50, true));
+    let p4 = (e1 / e2).log2();
+    assert!((p4 - 4.0).abs() < 0.2, "order {p4} ({e1:e}, {e2:e})");
+    assert!(e2 < 1e-5);
+}
+
+#[test]
+fn free_momentum_is_kept_to_the_bit_and_a_world_torque_adds_exactly_h_t() {
+    let body = e32::Body::from_tensor(Mat3::from_diagonal(Vec3::new(1.0, 2.0, 3.0))).unwrap();
+    let (mut q, mut l) = (Quat::from_rotation_y(0.4), Vec3::new(0.01, 2.0, -0.3));
+    let l0 = l;
+    for _ in 0..10_000 {
+        (q, l) = e32::step(&body, q, l, Vec3::ZERO, 1.0 / 60.0);
+        assert_eq!(l, l0);
+    }
+    assert!((q.length() - 1.0).abs() < 1e-6);
+    // Two half-kicks of h/2 T per step: 2^-7 and T exactly representable, so exact sums.
+    let t = Vec3::new(0.0, 0.5, -1.0);
+    let (_, l) = e32::step(&body, q, Vec3::ZERO, t, 1.0 / 128.0);
+    assert_eq!(l, t / 128.0);
+}
+
+#[test]
+fn energy_of_the_t_handle_stays_bounded_over_many_flips() {
+    let body = e64::Body::from_principal(DVec3::from(T_HANDLE), DQuat::IDENTITY).unwrap();
+    let (mut q, mut l) = (DQuat::IDENTITY, DVec3::new(0.05, 2.0, 0.05));
+    let e0 = body.kinetic_energy(q, l);
+    let period = free_body_orbit(T_HANDLE, l.to_array()).period;
+    let h = 1.0 / 60.0;
+    let mut worst: f64 = 0.0;
+    let steps = (20.0 * period / h) as usize;
+    for _ in 0..steps {
+        (q, l) = e64::step(&body, q, l, DVec3::ZERO, h);
+        worst = worst.max((body.kinetic_energy(q, l) / e0 - 1.0).abs());
+    }
+    // Splitting error O((h |w|)^2), bounded, not growing: 20 flips, 4e-4 at most.
+    assert!(worst < 4e-4, "{worst:e}");
+    // The explicit gyroscopic Euler step gains energy on the same run.
+    let (mut q, mut w) = (
+        DQuat::IDENTITY,
+        body.angular_velocity(DQuat::IDENTITY, DVec3::new(0.05, 2.0, 0.05)),
+    );
+    for _ in 0..steps {
+        (q, w) = e64::explicit_gyroscopic_euler(&body, q, w, DVec3::ZERO, h);
+    }
+    let e_euler = body.kinetic_energy(q, body.angular_momentum(q, w));
+    assert!(e_euler / e0 - 1.0 > 10.0 * worst, "{}", e_euler / e0 - 1.0);
+}
+
+#[test]
+fn a_tensor_is_diagonalised_into_a_right_handed_frame_that_rebuilds_it() {
+    let r = DMat3::from_quat(DQuat::from_euler(
+        ga_core::glam::EulerRot::ZYX,
+        0.7,
+        -0.4,
+        1.1,
+    ));
+    let d = DMat3::from_diagonal(DVec3::new(1.5, 2.5, 3.25));
+    let tensor = r * d * r.transpose();
+    let body = e64::Body::from_tensor(tensor).unwrap();
+    let p = DMat3::from_quat(body.principal_frame());
+    let rebuilt = p * DMat3::from_diagonal(body.principal_moments()) * p.transpose();
+    assert!(
+        (rebuilt - tensor).abs_diff_eq(DMat3::ZERO, 1e-14),
+        "{rebuilt}"
+    );
+    assert!((p.determinant() - 1.0).abs() < 1e-14);
+    let mut m = body.principal_moments().to_array();
+    m.sort_by(f64::total_cmp);
+    for (a, b) in m.iter().zip([1.5, 2.5, 3.25]) {
+        assert!((a - b).abs() < 1e-14);
+    }
+    // A body described by either tensor turns the same way in the world.
+    let aligned = e64::Body::from_principal(DVec3::new(1.5, 2.5, 3.25), DQuat::IDENTITY).unwrap();
+    let frame = DQuat::from_mat3(&r);
+    let q_body = DQuat::from_rotation_y(0.2);
+    let l = DVec3::new(0.3, -1.0, 2.0);
+    let (mut qa, mut qb) = (q_body * frame, q_body);
+    let (mut la, mut lb) = (l, l);
+    // Fourth order at a small step: the order of the axes in the splitting (the eigen
+    // solver may permute them) changes the result only at the method's error, ~1e-11.
+    for _ in 0..100 {
+        (qa, la) = e64::step_order4(&aligned, qa, la, DVec3::X, 0.01);
+        (qb, lb) = e64::step_order4(&body, qb, lb, DVec3::X, 0.01);
+    }
+    assert!(angle(qa, qb * frame) < 1e-9, "{}", angle(qa, qb * frame));
+    assert!((la - lb).length() < 1e-12);
+}
+
+#[test]
+fn bad_inertia_is_an_error_not_a_panic() {
+    let nan = Mat3::from_diagonal(Vec3::new(1.0, f32::NAN, 1.0));
+    assert_eq!(
+        e32::Body::from_tensor(nan).unwrap_err(),
+        BodyError::NotFinite
+    );
+    let negative = Mat3::from_diagonal(Vec3::new(1.0, -2.0, 1.0));
+    assert_eq!(
+        e32::Body::from_tensor(negative).unwrap_err(),
+        BodyError::NotPositive { axis: 1 }
+    );
+    let tiny = Vec3::new(1.0, 1.0, 1e-39);
+    assert_eq!(
+        e32::Body::from_principal(tiny, Quat::IDENTITY).unwrap_err(),
+        BodyError::NotPositive { axis: 2 }
+    );
+    let zero_frame = Quat::from_xyzw(0.0, 0.0, 0.0, 0.0);
+    assert_eq!(
+        e32::Body::from_principal(Vec3::ONE, zero_frame).unwrap_err(),
+        BodyError::ZeroFrame
+    );
+    assert!(!BodyError::ZeroFrame.to_string().is_empty());
+}
+
+#[test]
+fn extreme_finite_input_gives_finite_unit_orientations() {
+    let body =
+        e32::Body::from_principal(Vec3::new(1e-30, 1.0, 1e30), Quat::from_rotation_x(0.1)).unwrap();
+    for l in [
+        Vec3::new(1e30, -1e30, 3.0),
+        Vec3::new(1e-30, 0.0, 0.0),
+        Vec3::ZERO,
+    ] {
+        for dt in [1e-30, 1.0 / 60.0, 1e10, -5.0] {
+            let (q, l2) = e32::step_order4(&body, Quat::from_rotation_z(2.0), l, Vec3::ONE, dt);
+            assert!(
+                q.is_finite() && (q.length() - 1.0).abs() < 1e-5,
+                "{l} {dt} {q}"
+            );
+            assert!(l2.is_finite());
+        }
+    }
+}
+
+/// Explicit gyroscopic Euler written directly on glam, the way engines write it.
+fn glam_explicit(i: DVec3, q: DQuat, w: DVec3, t: DVec3, h: f64) -> (DQuat, DVec3) {
+    let wb = q.inverse() * w;
+    let tb = q.inverse() * t;
+    let wb = wb + h * (tb - wb.cross(i * wb)) / i;
+    let w = q * wb;
+    let q = (q + DQuat::from_vec4((0.5 * h * w).extend(0.0)) * q).normalize();
+    (q, w)
+}
+
+#[test]
+fn the_explicit_baseline_is_the_glam_written_step() {
+    let i = DVec3::new(1.0, 2.0, 3.0);
+    let body = e64::Body::from_principal(i, DQuat::IDENTITY).unwrap();
+    let (mut qa, mut wa) = (DQuat::from_rotation_x(0.3), DVec3::new(0.1, 1.0, 0.2));
+    let (mut qb, mut wb) = (qa, wa);
+    let t = DVec3::new(0.0, 0.1, 0.3);
+    for _ in 0..1000 {
+        (qa, wa) = e64::explicit_gyroscopic_euler(&body, qa, wa, t, 0.01);
+        (qb, wb) = glam_explicit(i, qb, wb, t, 0.01);
+    }
+    assert!(angle(qa, qb) < 1e-11 && (wa - wb).length() < 1e-11);
+}
+
+#[test]
+fn the_implicit_baseline_solves_its_equation_to_first_order_and_loses_energy() {
+    let i = DVec3::new(1.0, 2.0, 3.0);
+    let body = e64::Body::from_principal(i, DQuat::IDENTITY).unwrap();
+    let w0 = DVec3::new(0.1, 2.0, 0.1);
+    // One Newton step from w: the residual of J (w' - w) + h w' x J w' = 0 is O(h^2).
+    for h in [1e-2, 5e-3] {
+        let (_, w1) = e64::implicit_gyroscopic_euler(&body, DQuat::IDENTITY, w0, DVec3::ZERO, h);
+        let residual = i * (w1 - w0) + h * w1.cross(i * w1);
+        assert!(residual.length() < 10.0 * h * h * h, "{h} {residual}");
+    }
+    let (mut q, mut w) = (DQuat::IDENTITY, w0);
+    let e0 = body.kinetic_energy(q, body.angular_momentum(q, w));
+    for _ in 0..6000 {
+        (q, w) = e64::implicit_gyroscopic_euler(&body, q, w, DVec3::ZERO, 1.0 / 60.0);
+    }
+    let e = body.kinetic_energy(q, body.angular_momentum(q, w));
+    assert!(e < 0.99 * e0, "{e} {e0}");
+}
+
+/// A mixed crowd: different tensors (diagonal and turned), orientations, torques.
+fn crowd32(n: usize) -> Vec<e32::BodyState> {
+    (0..n)
+        .map(|k| {
+            let x = (k % 17) as f32;
+            let moments = Vec3::new(1.0 + 0.1 * x, 2.0, 3.0 - 0.05 * x);
+            let body = if k % 3 == 0 {
+                e32::Body::from_principal(moments, Quat::IDENTITY).unwrap()
+            } else {
+                let r = Mat3::from_quat(Quat::from_rotation_y(0.1 * x));
+                e32::Body::from_tensor(r * Mat3::from_diagonal(moments) * r.transpose()).unwrap()
+            };
+            let mut s = e32::BodyState::new(
+                body,
+                Quat::from_rotation_z(0.3 * x).normalize(),
+                Vec3::new(0.01 * x, 2.0 + x, -0.5),
+            );
+            if k % 2 == 1 {
+                s.torque = Vec3::new(0.1, -0.2 * x, 0.0);
+            }
+            s
+        })
+        .collect()
+}
+
+fn crowd64(n: usize) -> Vec<e64::BodyState> {
+    crowd32(n)
+        .iter()
+        .map(|s| {
+            let b = &s.body;
+            let body = e64::Body::from_principal(
+                b.principal_moments().as_dvec3(),
+                b.principal_frame().as_dquat(),
+            )
+            .unwrap();
+            let mut d = e64::BodyState::new(
+                body,
+                s.orientation.as_dquat(),
+                s.angular_momentum.as_dvec3(),
+            );
+            d.torque = s.torque.as_dvec3();
+            d
+        })
+        .collect()
+}
+
+fn bits32(states: &[e32::BodyState]) -> Vec<u32> {
+    states
+        .iter()
+        .flat_map(|s| {
+            s.orientation
+                .to_array()
+                .into_iter()
+                .chain(s.angular_momentum.to_array())
+        })
+        .map(f32::to_bits)
+        .collect()
+}
+
+fn bits64(states: &[e64::BodyState]) -> Vec<u64> {
+    states
+        .iter()
+        .flat_map(|s| {
+            s.orientation
+                .to_array()
+                .into_iter()
+                .chain(s.angular_momentum.to_array())
+        })
+        .map(f64::to_bits)
+        .collect()
+}
+
+#[test]
+fn slice_form_gives_the_bits_of_one_body_at_a_time() {
+    for n in [1, 7, 8, 13, 21] {
+        let mut one = crowd32(n);
+        let mut many = one.clone();
+        for _ in 0..50 {
+            for s in &mut one {
+                s.step(0.02);
+            }
+            e32::step_slice(&mut many, 0.02);
+        }
+        assert_eq!(bits32(&one), bits32(&many), "f32 n={n}");
+        for _ in 0..10 {
+            for s in &mut one {
+                s.step_order4(0.02);
+            }
+            e32::step_slice_order4(&mut many, 0.02);
+        }
+        assert_eq!(bits32(&one), bits32(&many), "f32 order 4 n={n}");
+
+        let mut one = crowd64(n);
+        let mut many = one.clone();
+        for _ in 0..50 {
+            for s in &mut one {
+                s.step(0.02);
+            }
+            e64::step_slice(&mut many, 0.02);
+        }
+        assert_eq!(bits64(&one), bits64(&many), "f64 n={n}");
+    }
+}
+
+#[cfg(feature = "rayon")]
+#[test]
+fn thread_count_determinism() {
+    let run = |threads: usize| {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        let mut a = crowd32(2000);
+        let mut b = crowd64(1100);
+        pool.install(|| {
+            for _ in 0..20 {
+                e32::par_step_slice(&mut a, 0.02);
+                e64::par_step_slice_order4(&mut b, 0.02);
+            }
+        });
+        (bits32(&a), bits64(&b))
+    };
+    let one = run(1);
+    assert_eq!(one, run(2));
+    let mut serial = crowd32(2000);
+    for _ in 0..20 {
+        e32::step_slice(&mut serial, 0.02);
+    }
+    assert_eq!(one.0, bits32(&serial));
+}
+
+/// FNV-1a over the bits of every state after every 100th step.
+fn fnv(hash: &mut u64, bits: impl IntoIterator<Item = u64>) {
+    for b in bits {
+        for byte in b.to_le_bytes() {
+            *hash ^= u64::from(byte);
+            *hash = hash.wrapping_mul(0x0000_0100_0000_01b3);
+        }
+    }
+}
+
+/// 10^4 steps of a crowd in f32 and f64 (order 2 and 4, with torques), hashed. The
+/// golden values were recorded on x86-64 (see the module docs of `engine` for what is
+/// promised); the slice form must give them too.
+#[test]
+fn golden_bits_of_ten_thousand_steps() {
+    let mut hash32 = 0xcbf2_9ce4_8422_2325_u64;
+    let mut hash64 = 0xcbf2_9ce4_8422_2325_u64;
+    let mut a = crowd32(9);
+    let mut b = crowd64(9);
+    let mut a_slice = a.clone();
+    for step in 0..10_000 {
+        for s in &mut a {
+            if step % 10 == 0 {
+                s.step_order4(1.0 / 60.0);
+            } else {
+                s.step(1.0 / 60.0);
+            }
+        }
+        if step % 10 == 0 {
+            e32::step_slice_order4(&mut a_slice, 1.0 / 60.0);
+        } else {
+            e32::step_slice(&mut a_slice, 1.0 / 60.0);
+        }
+        e64::step_slice(&mut b, 1.0 / 60.0);
+        if step % 100 == 99 {
+            fnv(&mut hash32, bits32(&a).into_iter().map(u64::from));
+            fnv(&mut hash64, bits64(&b));
+        }
+    }
+    assert_eq!(bits32(&a), bits32(&a_slice));
+    println!("golden: {hash32:#018x} {hash64:#018x}");
+    assert_eq!((hash32, hash64), GOLDEN);
+}
+
+/// Recorded by `golden_bits_of_ten_thousand_steps` (printed with `--nocapture`).
+const GOLDEN: (u64, u64) = (0xfe60_c079_4dd5_db97, 0xc590_a860_033c_d5cd);
+
+#[test]
+fn step_with_a_constant_torque_is_step_and_keeps_a_heavy_tops_energy() {
+    let body = e64::Body::from_principal(DVec3::new(1.0, 1.0, 0.4), DQuat::IDENTITY).unwrap();
+    let t = DVec3::new(0.3, -0.2, 0.1);
+    let q0 = DQuat::from_rotation_x(0.3);
+    let l0 = DVec3::new(0.1, 0.2, 12.0);
+    assert_eq!(
+        e64::step_with(&body, q0, l0, 0.01, |_| t),
+        e64::step(&body, q0, l0, t, 0.01)
+    );
+    // Gravity on a top (a torque from a potential): the energy stays within O(h^2).
+    let gravity = |q: DQuat| (q * DVec3::Z * 0.1).cross(DVec3::new(0.0, 0.0, -2.0 * 9.81));
+    let energy =
+        |q: DQuat, l: DVec3| body.kinetic_energy(q, l) + 2.0 * 9.81 * 0.1 * (q * DVec3::Z).z;
+    let (mut q, mut l) = (
+        q0,
+        body.angular_momentum(q0, q0 * DVec3::new(0.0, 0.0, 30.0)),
+    );
+    let e0 = energy(q, l);
+    let mut worst: f64 = 0.0;
+    for _ in 0..20_000 {
+        (q, l) = e64::step_with(&body, q, l, 1.0 / 60.0, gravity);
+        worst = worst.max((energy(q, l) / e0 - 1.0).abs());
+    }
+    assert!(worst < 1e-4, "{worst:e}");
+}
