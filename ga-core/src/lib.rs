@@ -86,7 +86,10 @@ pub use glam_0_32;
 macro_rules! algebra {
     (
         #[doc = $doc:tt]
-        $name:tt { metric: $metric:tt, scalar: $scalar:tt, lanes: $lanes:tt $(, $mint:tt)? }
+        $name:tt {
+            metric: $metric:tt, scalar: $scalar:tt, lanes: $lanes:tt, shaders: $shaders:tt
+            $(, $mint:tt)?
+        }
     ) => {
         #[cfg(feature = "batch")]
         ga_macros::algebra! {
@@ -95,6 +98,7 @@ macro_rules! algebra {
                 metric: $metric,
                 scalar: $scalar,
                 lanes: $lanes,
+                shaders: $shaders,
                 math: auto,
                 derive: [
                     #[cfg(feature = "serde")] serde,
@@ -110,6 +114,7 @@ macro_rules! algebra {
             pub mod $name {
                 metric: $metric,
                 scalar: $scalar,
+                shaders: $shaders,
                 math: auto,
                 derive: [
                     #[cfg(feature = "serde")] serde,
@@ -128,17 +133,17 @@ pub mod f64 {
     #[cfg(feature = "g2")]
     algebra! {
         #[doc = "The Euclidean plane, G(2, 0, 0), in `f64`."]
-        g2 { metric: [1, 1], scalar: f64, lanes: [] }
+        g2 { metric: [1, 1], scalar: f64, lanes: [], shaders: [] }
     }
     #[cfg(feature = "g3")]
     algebra! {
         #[doc = "Euclidean space, G(3, 0, 0), in `f64`."]
-        g3 { metric: [1, 1, 1], scalar: f64, lanes: [4], mint }
+        g3 { metric: [1, 1, 1], scalar: f64, lanes: [4], shaders: [], mint }
     }
     #[cfg(feature = "g4")]
     algebra! {
         #[doc = "Euclidean four-space, G(4, 0, 0), in `f64`."]
-        g4 { metric: [1, 1, 1, 1], scalar: f64, lanes: [] }
+        g4 { metric: [1, 1, 1, 1], scalar: f64, lanes: [], shaders: [] }
     }
 }
 
@@ -148,17 +153,26 @@ pub mod f32 {
     #[cfg(feature = "g2")]
     algebra! {
         #[doc = "The Euclidean plane, G(2, 0, 0), in `f32`."]
-        g2 { metric: [1, 1], scalar: f32, lanes: [] }
+        g2 {
+            metric: [1, 1], scalar: f32, lanes: [],
+            shaders: [#[cfg(feature = "wgsl")] wgsl]
+        }
     }
     #[cfg(feature = "g3")]
     algebra! {
         #[doc = "Euclidean space, G(3, 0, 0), in `f32`."]
-        g3 { metric: [1, 1, 1], scalar: f32, lanes: [4, 8], mint }
+        g3 {
+            metric: [1, 1, 1], scalar: f32, lanes: [4, 8],
+            shaders: [#[cfg(feature = "wgsl")] wgsl], mint
+        }
     }
     #[cfg(feature = "g4")]
     algebra! {
         #[doc = "Euclidean four-space, G(4, 0, 0), in `f32`."]
-        g4 { metric: [1, 1, 1, 1], scalar: f32, lanes: [4] }
+        g4 {
+            metric: [1, 1, 1, 1], scalar: f32, lanes: [4],
+            shaders: [#[cfg(feature = "wgsl")] wgsl]
+        }
     }
 }
 

@@ -1,0 +1,1 @@
+//! GPU tests only; see tests/.
