@@ -68,9 +68,7 @@ fn check(name: &str, source: &str) -> naga::Module {
     assert_eq!(words[0], 0x0723_0203, "{name}: SPIR-V magic number");
 
     // GLSL needs an entry point; one that uses a function keeps it in the output.
-    let with_entry = format!(
-        "{source}\n@compute @workgroup_size(1)\nfn main() {{\n}}\n",
-    );
+    let with_entry = format!("{source}\n@compute @workgroup_size(1)\nfn main() {{\n}}\n",);
     let entry_module = naga::front::wgsl::parse_str(&with_entry).expect("parsed above");
     let entry_info = Validator::new(ValidationFlags::all(), Capabilities::empty())
         .validate(&entry_module)
@@ -137,7 +135,10 @@ fn ga_core_g2_g3_g4_wgsl_validates_and_translates_to_spirv_and_glsl() {
             if name == "g2" && expected == "regressive_bivector_bivector" {
                 continue;
             }
-            assert!(names.iter().any(|n| n == expected), "{name} lacks {expected}");
+            assert!(
+                names.iter().any(|n| n == expected),
+                "{name} lacks {expected}"
+            );
         }
     }
 }

@@ -37,7 +37,10 @@ pub fn product_value_in(
         .types
         .smallest_holding_preferring(terms.keys().copied(), &[lhs.ty, rhs.ty]);
     if let Some(form) = plan.lane_form(kind, lhs.ty, rhs.ty) {
-        return (mirror_of_lanes(syntax, plan, &form, lhs, rhs, output), output);
+        return (
+            mirror_of_lanes(syntax, plan, &form, lhs, rhs, output),
+            output,
+        );
     }
     let value = construct_in(syntax, plan, output, |blade| {
         let list = terms.get(&blade)?;

@@ -64,13 +64,16 @@ pub fn wgsl_source(plan: &Plan) -> String {
             if output == Output::Zero {
                 continue;
             }
-            let name = format!(
-                "{}_{}_{}",
-                kind.name(),
-                snake(plan, a),
-                snake(plan, b)
+            let name = format!("{}_{}_{}", kind.name(), snake(plan, a), snake(plan, b));
+            function(
+                &mut out,
+                plan,
+                &name,
+                &[("a", a), ("b", b)],
+                output,
+                None,
+                &value,
             );
-            function(&mut out, plan, &name, &[("a", a), ("b", b)], output, None, &value);
         }
     }
     if plan.has(Op::Add) {
@@ -88,7 +91,15 @@ pub fn wgsl_source(plan: &Plan) -> String {
                     }
                 });
                 let name = format!("{word}_{}_{}", snake(plan, a), snake(plan, b));
-                function(&mut out, plan, &name, &[("a", a), ("b", b)], output, None, &value);
+                function(
+                    &mut out,
+                    plan,
+                    &name,
+                    &[("a", a), ("b", b)],
+                    output,
+                    None,
+                    &value,
+                );
             }
         }
     }
@@ -150,7 +161,11 @@ fn function(
         wgsl_type(plan, output)
     ));
     if let Some(lets) = lets {
-        for statement in text(lets).split(';').map(str::trim).filter(|s| !s.is_empty()) {
+        for statement in text(lets)
+            .split(';')
+            .map(str::trim)
+            .filter(|s| !s.is_empty())
+        {
             out.push_str(&format!("    {statement};\n"));
         }
     }
@@ -164,7 +179,11 @@ fn unary(out: &mut String, plan: &Plan, t: TypeId) {
     let one = [("a", t)];
     let involutions = [
         (Op::Reverse, Involution::Reverse, "reverse"),
-        (Op::GradeInvolution, Involution::GradeInvolution, "grade_involution"),
+        (
+            Op::GradeInvolution,
+            Involution::GradeInvolution,
+            "grade_involution",
+        ),
         (Op::Conjugate, Involution::Conjugate, "conjugate"),
     ];
     for (op, involution, word) in involutions {
@@ -177,14 +196,30 @@ fn unary(out: &mut String, plan: &Plan, t: TypeId) {
                     quote!(-#x)
                 })
             });
-            function(out, plan, &format!("{word}_{name}"), &one, Output::Type(t), None, &value);
+            function(
+                out,
+                plan,
+                &format!("{word}_{name}"),
+                &one,
+                Output::Type(t),
+                None,
+                &value,
+            );
         }
     }
     if plan.has(Op::Add) {
         let value = construct_in(Syntax::Wgsl, plan, Output::Type(t), |blade| {
             this.blade(plan, blade).map(|x| quote!(-#x))
         });
-        function(out, plan, &format!("neg_{name}"), &one, Output::Type(t), None, &value);
+        function(
+            out,
+            plan,
+            &format!("neg_{name}"),
+            &one,
+            Output::Type(t),
+            None,
+            &value,
+        );
     }
     if plan.has(Op::Dual) {
         let blades = plan.types.get(t).blades.clone();
@@ -212,19 +247,43 @@ fn unary(out: &mut String, plan: &Plan, t: TypeId) {
                     })
                 })
             });
-            function(out, plan, &format!("{word}_{name}"), &one, output, None, &value);
+            function(
+                out,
+                plan,
+                &format!("{word}_{name}"),
+                &one,
+                output,
+                None,
+                &value,
+            );
         }
     }
     if plan.has(Op::Norm) {
         let scalar = Output::Type(TypeId::SCALAR);
         let squared = norm_squared_expr(plan, &this);
-        function(out, plan, &format!("norm_squared_{name}"), &one, scalar, None, &squared);
+        function(
+            out,
+            plan,
+            &format!("norm_squared_{name}"),
+            &one,
+            scalar,
+            None,
+            &squared,
+        );
         // The Rust `norm` rescales when the squares could overflow or underflow; f32 on
         // a GPU takes the unscaled sum, right for components between about 1e-19 and 1e19.
         let norm: TokenStream = format!("sqrt(abs(norm_squared_{name}(a)))")
             .parse()
             .unwrap_or_default();
-        function(out, plan, &format!("norm_{name}"), &one, scalar, None, &norm);
+        function(
+            out,
+            plan,
+            &format!("norm_{name}"),
+            &one,
+            scalar,
+            None,
+            &norm,
+        );
         let lets: TokenStream = format!("let factor = 1.0 / sqrt(abs(norm_squared_{name}(a)));")
             .parse()
             .unwrap_or_default();
@@ -232,7 +291,15 @@ fn unary(out: &mut String, plan: &Plan, t: TypeId) {
             this.blade(plan, blade).map(|x| quote!(#x * factor))
         });
         let normalized = format!("normalized_{name}");
-        function(out, plan, &normalized, &one, Output::Type(t), Some(&lets), &value);
+        function(
+            out,
+            plan,
+            &normalized,
+            &one,
+            Output::Type(t),
+            Some(&lets),
+            &value,
+        );
     }
     if plan.has(Op::Grade) {
         for k in plan.types.grades_of(t) {
@@ -244,7 +311,15 @@ fn unary(out: &mut String, plan: &Plan, t: TypeId) {
             let value = construct_in(Syntax::Wgsl, plan, Output::Type(target), |blade| {
                 this.blade(plan, blade)
             });
-            function(out, plan, &format!("grade{k}_{name}"), &one, Output::Type(target), None, &value);
+            function(
+                out,
+                plan,
+                &format!("grade{k}_{name}"),
+                &one,
+                Output::Type(target),
+                None,
+                &value,
+            );
         }
     }
 }
@@ -258,7 +333,15 @@ fn sandwich(out: &mut String, plan: &Plan, v: TypeId, x: TypeId) {
         _ => chained_body_in(Syntax::Wgsl, plan, v, x, is_odd(plan, v)),
     };
     let name = format!("sandwich_{}_{}", snake(plan, v), snake(plan, x));
-    function(out, plan, &name, &[("v", v), ("x", x)], Output::Type(x), Some(&lets), &value);
+    function(
+        out,
+        plan,
+        &name,
+        &[("v", v), ("x", x)],
+        Output::Type(x),
+        Some(&lets),
+        &value,
+    );
 }
 
 /// `exp_bivector(a) -> Even` in two and three dimensions, where `B B` is a scalar `q`:
@@ -352,7 +435,9 @@ fn write_tokens(tokens: TokenStream, out: &mut String) {
                     out.push(c);
                     // A unary minus binds to what follows; a binary operator is spaced.
                     let unary = out.len() == 1
-                        || out[..out.len() - 1].trim_end().ends_with(['(', ',', '=', '-', '+', '*', '/']);
+                        || out[..out.len() - 1]
+                            .trim_end()
+                            .ends_with(['(', ',', '=', '-', '+', '*', '/']);
                     if !(c == '-' && unary) {
                         out.push(' ');
                     }
@@ -371,6 +456,9 @@ mod tests {
         let tokens = quote!((self.s * b.e1 + -a.e12 * b.e2) - 2.0 * (x.e1));
         assert_eq!(text(&tokens), "(v.s * b.e1 + -a.e12 * b.e2) - 2.0 * (x.e1)");
         assert_eq!(text(&quote!(-a.s)), "-a.s");
-        assert_eq!(text(&quote!(Even(a.s, -(a.e1 - b.e1)))), "Even(a.s, -(a.e1 - b.e1))");
+        assert_eq!(
+            text(&quote!(Even(a.s, -(a.e1 - b.e1)))),
+            "Even(a.s, -(a.e1 - b.e1))"
+        );
     }
 }

@@ -361,15 +361,15 @@ fn check_shaders(cx: &mut Ctxt, raw: RawIntegrations) -> Option<Vec<Attribute>> 
         if entry.name != "wgsl" || entry.path.is_some() {
             cx.error_spanned_by(
                 &entry.name,
-                format!(
-                    "unknown shader language `{}`: expected `wgsl`",
-                    entry.name
-                ),
+                format!("unknown shader language `{}`: expected `wgsl`", entry.name),
             );
             continue;
         }
         if wgsl.is_some() {
-            cx.error_spanned_by(&entry.name, "`wgsl` is listed twice in `shaders`: list it once");
+            cx.error_spanned_by(
+                &entry.name,
+                "`wgsl` is listed twice in `shaders`: list it once",
+            );
             continue;
         }
         if let Some(attr) = entry.attrs.iter().find(|a| !a.path().is_ident("cfg")) {
