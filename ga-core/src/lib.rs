@@ -78,9 +78,11 @@ pub use glam_0_31;
 #[cfg(feature = "glam-0-32")]
 pub use glam_0_32;
 
-/// One algebra module, with the batch modules when the `batch` feature is on (the
-/// macro's `lanes` key cannot itself carry a `cfg`), and the integrations the crate
-/// features ask for.
+/// One algebra module, with the batch modules when the `batch` feature is on and the
+/// WGSL constant when `wgsl` is (the macro's `lanes` and `shaders` keys cannot carry a
+/// `cfg` that stops the work itself: a `cfg` on the emitted item would still have the
+/// macro write the shader source on every build), and the integrations the crate features
+/// ask for.
 // Unused when no precision is on.
 #[allow(unused_macros)]
 macro_rules! algebra {
@@ -91,30 +93,22 @@ macro_rules! algebra {
             $(, $mint:tt)?
         }
     ) => {
-        #[cfg(feature = "batch")]
+        #[cfg(all(feature = "batch", feature = "wgsl"))]
+        algebra!(@one $doc $name $metric $scalar [lanes: $lanes, shaders: $shaders,] $($mint)?);
+        #[cfg(all(feature = "batch", not(feature = "wgsl")))]
+        algebra!(@one $doc $name $metric $scalar [lanes: $lanes,] $($mint)?);
+        #[cfg(all(not(feature = "batch"), feature = "wgsl"))]
+        algebra!(@one $doc $name $metric $scalar [shaders: $shaders,] $($mint)?);
+        #[cfg(all(not(feature = "batch"), not(feature = "wgsl")))]
+        algebra!(@one $doc $name $metric $scalar [] $($mint)?);
+    };
+    (@one $doc:tt $name:tt $metric:tt $scalar:tt [$($keys:tt)*] $($mint:tt)?) => {
         ga_macros::algebra! {
             #[doc = $doc]
             pub mod $name {
                 metric: $metric,
                 scalar: $scalar,
-                lanes: $lanes,
-                shaders: $shaders,
-                math: auto,
-                derive: [
-                    #[cfg(feature = "serde")] serde,
-                    #[cfg(feature = "bytemuck")] bytemuck,
-                    #[cfg(feature = "approx")] approx,
-                    $(#[cfg(feature = "mint")] $mint,)?
-                ],
-            }
-        }
-        #[cfg(not(feature = "batch"))]
-        ga_macros::algebra! {
-            #[doc = $doc]
-            pub mod $name {
-                metric: $metric,
-                scalar: $scalar,
-                shaders: $shaders,
+                $($keys)*
                 math: auto,
                 derive: [
                     #[cfg(feature = "serde")] serde,
@@ -155,7 +149,7 @@ pub mod f32 {
         #[doc = "The Euclidean plane, G(2, 0, 0), in `f32`."]
         g2 {
             metric: [1, 1], scalar: f32, lanes: [],
-            shaders: [#[cfg(feature = "wgsl")] wgsl]
+            shaders: [wgsl]
         }
     }
     #[cfg(feature = "g3")]
@@ -163,7 +157,7 @@ pub mod f32 {
         #[doc = "Euclidean space, G(3, 0, 0), in `f32`."]
         g3 {
             metric: [1, 1, 1], scalar: f32, lanes: [4, 8],
-            shaders: [#[cfg(feature = "wgsl")] wgsl], mint
+            shaders: [wgsl], mint
         }
     }
     #[cfg(feature = "g4")]
@@ -171,7 +165,7 @@ pub mod f32 {
         #[doc = "Euclidean four-space, G(4, 0, 0), in `f32`."]
         g4 {
             metric: [1, 1, 1, 1], scalar: f32, lanes: [4],
-            shaders: [#[cfg(feature = "wgsl")] wgsl]
+            shaders: [wgsl]
         }
     }
 }

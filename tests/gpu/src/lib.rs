@@ -157,7 +157,9 @@ impl Gpu {
             });
         // Kernels of a few dozen calls each: one giant kernel takes the driver's compiler
         // far longer than several small ones.
+        let (mut compile, mut execute) = (0.0, 0.0);
         for chunk in functions.chunks(48) {
+            let t0 = std::time::Instant::now();
             let (kernel, width) = kernel(source, manifest, chunk, n);
             let module = self
                 .device
@@ -175,6 +177,11 @@ impl Gpu {
                     compilation_options: Default::default(),
                     cache: None,
                 });
+            self.device
+                .poll(wgpu::PollType::wait_indefinitely())
+                .map_err(|e| format!("{e:?}"))?;
+            compile += t0.elapsed().as_secs_f64();
+            let t1 = std::time::Instant::now();
             let bytes = (items * width * 4) as u64;
             let output = self.device.create_buffer(&wgpu::BufferDescriptor {
                 label: Some("outputs"),
@@ -231,6 +238,7 @@ impl Gpu {
                 bytemuck::cast_slice(&view).to_vec()
             };
             readback.unmap();
+            execute += t1.elapsed().as_secs_f64();
             // Split per function: item-major, each function's components at its offset.
             let mut offset = 0;
             for f in chunk {
@@ -244,6 +252,7 @@ impl Gpu {
                 offset += len;
             }
         }
+        eprintln!("compile {compile:.1} s, execute {execute:.1} s");
         Ok(results)
     }
 }
