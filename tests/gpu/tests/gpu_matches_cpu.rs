@@ -278,9 +278,11 @@ fn compare(gpu: &Gpu, label: &str, source: &str, n: usize, table: &HashMap<Strin
     let mut families: Vec<_> = worst.into_iter().collect();
     families.sort_by(|a, b| a.0.cmp(b.0));
     for (family, (error, at)) in families {
-        lines.push(format!(
-            "  {family}: largest |gpu - cpu| = {error:.2} eps max(1, |cpu|) at {at}"
-        ));
+        lines.push(if at.is_empty() {
+            format!("  {family}: bit for bit")
+        } else {
+            format!("  {family}: largest |gpu - cpu| = {error:.2} eps max(1, |cpu|) at {at}")
+        });
     }
     lines.join("\n")
 }
