@@ -829,7 +829,9 @@ mod tests {
         /// with the blade-pair filter that term counts use.
         #[test]
         fn graded_products_agree_with_the_blade_pair_filter((algebra, a, b) in algebra_and_two()) {
-            for product in Product::ALL {
+            // The regressive product is no filter of the geometric product's pairs (its
+            // pairs land on `A & B`); its definition is its own, through complements.
+            for product in Product::ALL.into_iter().filter(|p| *p != Product::Regressive) {
                 let mut expected = algebra.zero();
                 for (i, x) in a.iter().enumerate() {
                     for (j, y) in b.iter().enumerate() {
