@@ -84,38 +84,37 @@ pub use glam_0_31;
 #[cfg(feature = "glam-0-32")]
 pub use glam_0_32;
 
-/// One algebra module, with the batch modules when the `batch` feature is on (the
-/// macro's `lanes` key cannot itself carry a `cfg`), and the integrations the crate
-/// features ask for.
+/// One algebra module, with the batch modules when the `batch` feature is on and the
+/// WGSL constant when `wgsl` is (the macro's `lanes` and `shaders` keys cannot carry a
+/// `cfg` that stops the work itself: a `cfg` on the emitted item would still have the
+/// macro write the shader source on every build), and the integrations the crate features
+/// ask for.
 // Unused when no precision is on.
 #[allow(unused_macros)]
 macro_rules! algebra {
     (
         #[doc = $doc:tt]
-        $name:tt { metric: $metric:tt, scalar: $scalar:tt, lanes: $lanes:tt $(, $mint:tt)? }
-    ) => {
-        #[cfg(feature = "batch")]
-        ga_macros::algebra! {
-            #[doc = $doc]
-            pub mod $name {
-                metric: $metric,
-                scalar: $scalar,
-                lanes: $lanes,
-                math: auto,
-                derive: [
-                    #[cfg(feature = "serde")] serde,
-                    #[cfg(feature = "bytemuck")] bytemuck,
-                    #[cfg(feature = "approx")] approx,
-                    $(#[cfg(feature = "mint")] $mint,)?
-                ],
-            }
+        $name:tt {
+            metric: $metric:tt, scalar: $scalar:tt, lanes: $lanes:tt, shaders: $shaders:tt
+            $(, $mint:tt)?
         }
-        #[cfg(not(feature = "batch"))]
+    ) => {
+        #[cfg(all(feature = "batch", feature = "wgsl"))]
+        algebra!(@one $doc $name $metric $scalar [lanes: $lanes, shaders: $shaders,] $($mint)?);
+        #[cfg(all(feature = "batch", not(feature = "wgsl")))]
+        algebra!(@one $doc $name $metric $scalar [lanes: $lanes,] $($mint)?);
+        #[cfg(all(not(feature = "batch"), feature = "wgsl"))]
+        algebra!(@one $doc $name $metric $scalar [shaders: $shaders,] $($mint)?);
+        #[cfg(all(not(feature = "batch"), not(feature = "wgsl")))]
+        algebra!(@one $doc $name $metric $scalar [] $($mint)?);
+    };
+    (@one $doc:tt $name:tt $metric:tt $scalar:tt [$($keys:tt)*] $($mint:tt)?) => {
         ga_macros::algebra! {
             #[doc = $doc]
             pub mod $name {
                 metric: $metric,
                 scalar: $scalar,
+                $($keys)*
                 math: auto,
                 derive: [
                     #[cfg(feature = "serde")] serde,
@@ -134,17 +133,17 @@ pub mod f64 {
     #[cfg(feature = "g2")]
     algebra! {
         #[doc = "The Euclidean plane, G(2, 0, 0), in `f64`."]
-        g2 { metric: [1, 1], scalar: f64, lanes: [] }
+        g2 { metric: [1, 1], scalar: f64, lanes: [], shaders: [] }
     }
     #[cfg(feature = "g3")]
     algebra! {
         #[doc = "Euclidean space, G(3, 0, 0), in `f64`."]
-        g3 { metric: [1, 1, 1], scalar: f64, lanes: [4], mint }
+        g3 { metric: [1, 1, 1], scalar: f64, lanes: [4], shaders: [], mint }
     }
     #[cfg(feature = "g4")]
     algebra! {
         #[doc = "Euclidean four-space, G(4, 0, 0), in `f64`."]
-        g4 { metric: [1, 1, 1, 1], scalar: f64, lanes: [] }
+        g4 { metric: [1, 1, 1, 1], scalar: f64, lanes: [], shaders: [] }
     }
 }
 
@@ -154,17 +153,26 @@ pub mod f32 {
     #[cfg(feature = "g2")]
     algebra! {
         #[doc = "The Euclidean plane, G(2, 0, 0), in `f32`."]
-        g2 { metric: [1, 1], scalar: f32, lanes: [] }
+        g2 {
+            metric: [1, 1], scalar: f32, lanes: [],
+            shaders: [wgsl]
+        }
     }
     #[cfg(feature = "g3")]
     algebra! {
         #[doc = "Euclidean space, G(3, 0, 0), in `f32`."]
-        g3 { metric: [1, 1, 1], scalar: f32, lanes: [4, 8], mint }
+        g3 {
+            metric: [1, 1, 1], scalar: f32, lanes: [4, 8],
+            shaders: [wgsl], mint
+        }
     }
     #[cfg(feature = "g4")]
     algebra! {
         #[doc = "Euclidean four-space, G(4, 0, 0), in `f32`."]
-        g4 { metric: [1, 1, 1, 1], scalar: f32, lanes: [4] }
+        g4 {
+            metric: [1, 1, 1, 1], scalar: f32, lanes: [4],
+            shaders: [wgsl]
+        }
     }
 }
 

@@ -36,6 +36,12 @@ pub mod g2 {
     /// An alias, not a new type: `Debug` prints a rotor as `Even { .. }` and
     /// `Display` as its terms (`0.7 - 0.7e12`).
     pub type Rotor = Even;
+    impl ::core::convert::From<f64> for Even {
+        #[inline]
+        fn from(value: f64) -> Even {
+            Even { s: value, ..Even::ZERO }
+        }
+    }
     impl ::core::convert::From<f64> for Multivector {
         #[inline]
         fn from(value: f64) -> Multivector {
@@ -191,6 +197,16 @@ pub mod g2 {
         #[inline]
         fn from(_: Zero) -> Vector {
             Vector::ZERO
+        }
+    }
+    impl ::core::convert::From<Vector> for Odd {
+        #[inline]
+        fn from(value: Vector) -> Odd {
+            Odd {
+                e1: value.e1,
+                e2: value.e2,
+                ..Odd::ZERO
+            }
         }
     }
     impl ::core::convert::From<Vector> for Multivector {
@@ -462,6 +478,15 @@ pub mod g2 {
         #[inline]
         fn from(_: Zero) -> Bivector {
             Bivector::ZERO
+        }
+    }
+    impl ::core::convert::From<Bivector> for Even {
+        #[inline]
+        fn from(value: Bivector) -> Even {
+            Even {
+                e12: value.e12,
+                ..Even::ZERO
+            }
         }
     }
     impl ::core::convert::From<Bivector> for Multivector {
@@ -1354,6 +1379,14 @@ pub mod g2 {
         ///The commutator product (AB - BA) / 2 (not the cross product).
         #[must_use]
         fn commutator(self, rhs: Rhs) -> Self::Output;
+    }
+    ///The regressive product (join) undual(dual(A) ^ dual(B)), through the right complement: metric-free.
+    pub trait Regressive<Rhs> {
+        /// The smallest type holding every grade the product can have.
+        type Output;
+        ///The regressive product (join) undual(dual(A) ^ dual(B)), through the right complement: metric-free.
+        #[must_use]
+        fn regressive(self, rhs: Rhs) -> Self::Output;
     }
     impl ::core::ops::Mul<Vector> for f64 {
         type Output = Vector;
@@ -3658,6 +3691,336 @@ pub mod g2 {
             }
         }
     }
+    impl Regressive<Vector> for f64 {
+        type Output = Zero;
+        #[inline]
+        fn regressive(self, rhs: Vector) -> Zero {
+            let _ = (self, rhs);
+            Zero
+        }
+    }
+    impl Regressive<Bivector> for f64 {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: Bivector) -> f64 {
+            self * rhs.e12
+        }
+    }
+    impl Regressive<Even> for f64 {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: Even) -> f64 {
+            self * rhs.e12
+        }
+    }
+    impl Regressive<Odd> for f64 {
+        type Output = Zero;
+        #[inline]
+        fn regressive(self, rhs: Odd) -> Zero {
+            let _ = (self, rhs);
+            Zero
+        }
+    }
+    impl Regressive<Multivector> for f64 {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: Multivector) -> f64 {
+            self * rhs.e12
+        }
+    }
+    impl Regressive<f64> for Vector {
+        type Output = Zero;
+        #[inline]
+        fn regressive(self, rhs: f64) -> Zero {
+            let _ = (self, rhs);
+            Zero
+        }
+    }
+    impl Regressive<Vector> for Vector {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: Vector) -> f64 {
+            self.e1 * rhs.e2 - self.e2 * rhs.e1
+        }
+    }
+    impl Regressive<Bivector> for Vector {
+        type Output = Vector;
+        #[inline]
+        fn regressive(self, rhs: Bivector) -> Vector {
+            Vector {
+                e1: self.e1 * rhs.e12,
+                e2: self.e2 * rhs.e12,
+            }
+        }
+    }
+    impl Regressive<Even> for Vector {
+        type Output = Vector;
+        #[inline]
+        fn regressive(self, rhs: Even) -> Vector {
+            Vector {
+                e1: self.e1 * rhs.e12,
+                e2: self.e2 * rhs.e12,
+            }
+        }
+    }
+    impl Regressive<Odd> for Vector {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: Odd) -> f64 {
+            self.e1 * rhs.e2 - self.e2 * rhs.e1
+        }
+    }
+    impl Regressive<Multivector> for Vector {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Multivector) -> Multivector {
+            Multivector {
+                s: self.e1 * rhs.e2 - self.e2 * rhs.e1,
+                e1: self.e1 * rhs.e12,
+                e2: self.e2 * rhs.e12,
+                e12: 0.0,
+            }
+        }
+    }
+    impl Regressive<f64> for Bivector {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: f64) -> f64 {
+            self.e12 * rhs
+        }
+    }
+    impl Regressive<Vector> for Bivector {
+        type Output = Vector;
+        #[inline]
+        fn regressive(self, rhs: Vector) -> Vector {
+            Vector {
+                e1: self.e12 * rhs.e1,
+                e2: self.e12 * rhs.e2,
+            }
+        }
+    }
+    impl Regressive<Bivector> for Bivector {
+        type Output = Bivector;
+        #[inline]
+        fn regressive(self, rhs: Bivector) -> Bivector {
+            Bivector {
+                e12: self.e12 * rhs.e12,
+            }
+        }
+    }
+    impl Regressive<Even> for Bivector {
+        type Output = Even;
+        #[inline]
+        fn regressive(self, rhs: Even) -> Even {
+            Even {
+                s: self.e12 * rhs.s,
+                e12: self.e12 * rhs.e12,
+            }
+        }
+    }
+    impl Regressive<Odd> for Bivector {
+        type Output = Odd;
+        #[inline]
+        fn regressive(self, rhs: Odd) -> Odd {
+            Odd {
+                e1: self.e12 * rhs.e1,
+                e2: self.e12 * rhs.e2,
+            }
+        }
+    }
+    impl Regressive<Multivector> for Bivector {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Multivector) -> Multivector {
+            Multivector {
+                s: self.e12 * rhs.s,
+                e1: self.e12 * rhs.e1,
+                e2: self.e12 * rhs.e2,
+                e12: self.e12 * rhs.e12,
+            }
+        }
+    }
+    impl Regressive<f64> for Even {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: f64) -> f64 {
+            self.e12 * rhs
+        }
+    }
+    impl Regressive<Vector> for Even {
+        type Output = Vector;
+        #[inline]
+        fn regressive(self, rhs: Vector) -> Vector {
+            Vector {
+                e1: self.e12 * rhs.e1,
+                e2: self.e12 * rhs.e2,
+            }
+        }
+    }
+    impl Regressive<Bivector> for Even {
+        type Output = Even;
+        #[inline]
+        fn regressive(self, rhs: Bivector) -> Even {
+            Even {
+                s: self.s * rhs.e12,
+                e12: self.e12 * rhs.e12,
+            }
+        }
+    }
+    impl Regressive<Even> for Even {
+        type Output = Even;
+        #[inline]
+        fn regressive(self, rhs: Even) -> Even {
+            Even {
+                s: self.s * rhs.e12 + self.e12 * rhs.s,
+                e12: self.e12 * rhs.e12,
+            }
+        }
+    }
+    impl Regressive<Odd> for Even {
+        type Output = Odd;
+        #[inline]
+        fn regressive(self, rhs: Odd) -> Odd {
+            Odd {
+                e1: self.e12 * rhs.e1,
+                e2: self.e12 * rhs.e2,
+            }
+        }
+    }
+    impl Regressive<Multivector> for Even {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Multivector) -> Multivector {
+            Multivector {
+                s: self.s * rhs.e12 + self.e12 * rhs.s,
+                e1: self.e12 * rhs.e1,
+                e2: self.e12 * rhs.e2,
+                e12: self.e12 * rhs.e12,
+            }
+        }
+    }
+    impl Regressive<f64> for Odd {
+        type Output = Zero;
+        #[inline]
+        fn regressive(self, rhs: f64) -> Zero {
+            let _ = (self, rhs);
+            Zero
+        }
+    }
+    impl Regressive<Vector> for Odd {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: Vector) -> f64 {
+            self.e1 * rhs.e2 - self.e2 * rhs.e1
+        }
+    }
+    impl Regressive<Bivector> for Odd {
+        type Output = Odd;
+        #[inline]
+        fn regressive(self, rhs: Bivector) -> Odd {
+            Odd {
+                e1: self.e1 * rhs.e12,
+                e2: self.e2 * rhs.e12,
+            }
+        }
+    }
+    impl Regressive<Even> for Odd {
+        type Output = Odd;
+        #[inline]
+        fn regressive(self, rhs: Even) -> Odd {
+            Odd {
+                e1: self.e1 * rhs.e12,
+                e2: self.e2 * rhs.e12,
+            }
+        }
+    }
+    impl Regressive<Odd> for Odd {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: Odd) -> f64 {
+            self.e1 * rhs.e2 - self.e2 * rhs.e1
+        }
+    }
+    impl Regressive<Multivector> for Odd {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Multivector) -> Multivector {
+            Multivector {
+                s: self.e1 * rhs.e2 - self.e2 * rhs.e1,
+                e1: self.e1 * rhs.e12,
+                e2: self.e2 * rhs.e12,
+                e12: 0.0,
+            }
+        }
+    }
+    impl Regressive<f64> for Multivector {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: f64) -> f64 {
+            self.e12 * rhs
+        }
+    }
+    impl Regressive<Vector> for Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Vector) -> Multivector {
+            Multivector {
+                s: self.e1 * rhs.e2 - self.e2 * rhs.e1,
+                e1: self.e12 * rhs.e1,
+                e2: self.e12 * rhs.e2,
+                e12: 0.0,
+            }
+        }
+    }
+    impl Regressive<Bivector> for Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Bivector) -> Multivector {
+            Multivector {
+                s: self.s * rhs.e12,
+                e1: self.e1 * rhs.e12,
+                e2: self.e2 * rhs.e12,
+                e12: self.e12 * rhs.e12,
+            }
+        }
+    }
+    impl Regressive<Even> for Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Even) -> Multivector {
+            Multivector {
+                s: self.s * rhs.e12 + self.e12 * rhs.s,
+                e1: self.e1 * rhs.e12,
+                e2: self.e2 * rhs.e12,
+                e12: self.e12 * rhs.e12,
+            }
+        }
+    }
+    impl Regressive<Odd> for Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Odd) -> Multivector {
+            Multivector {
+                s: self.e1 * rhs.e2 - self.e2 * rhs.e1,
+                e1: self.e12 * rhs.e1,
+                e2: self.e12 * rhs.e2,
+                e12: 0.0,
+            }
+        }
+    }
+    impl Regressive<Multivector> for Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Multivector) -> Multivector {
+            Multivector {
+                s: (self.s * rhs.e12 + self.e1 * rhs.e2)
+                    + (self.e12 * rhs.s - self.e2 * rhs.e1),
+                e1: self.e1 * rhs.e12 + self.e12 * rhs.e1,
+                e2: self.e2 * rhs.e12 + self.e12 * rhs.e2,
+                e12: self.e12 * rhs.e12,
+            }
+        }
+    }
     /// (product, lhs type, rhs type, number of multiply terms) for every emitted
     /// product; the scalar operand is named `Scalar`.
     pub const TERM_COUNTS: &[(&str, &str, &str, usize)] = &[
@@ -3906,6 +4269,41 @@ pub mod g2 {
         ("commutator", "Multivector", "Even", 2usize),
         ("commutator", "Multivector", "Odd", 4usize),
         ("commutator", "Multivector", "Multivector", 6usize),
+        ("regressive", "Scalar", "Vector", 0usize),
+        ("regressive", "Scalar", "Bivector", 1usize),
+        ("regressive", "Scalar", "Even", 1usize),
+        ("regressive", "Scalar", "Odd", 0usize),
+        ("regressive", "Scalar", "Multivector", 1usize),
+        ("regressive", "Vector", "Scalar", 0usize),
+        ("regressive", "Vector", "Vector", 2usize),
+        ("regressive", "Vector", "Bivector", 2usize),
+        ("regressive", "Vector", "Even", 2usize),
+        ("regressive", "Vector", "Odd", 2usize),
+        ("regressive", "Vector", "Multivector", 4usize),
+        ("regressive", "Bivector", "Scalar", 1usize),
+        ("regressive", "Bivector", "Vector", 2usize),
+        ("regressive", "Bivector", "Bivector", 1usize),
+        ("regressive", "Bivector", "Even", 2usize),
+        ("regressive", "Bivector", "Odd", 2usize),
+        ("regressive", "Bivector", "Multivector", 4usize),
+        ("regressive", "Even", "Scalar", 1usize),
+        ("regressive", "Even", "Vector", 2usize),
+        ("regressive", "Even", "Bivector", 2usize),
+        ("regressive", "Even", "Even", 3usize),
+        ("regressive", "Even", "Odd", 2usize),
+        ("regressive", "Even", "Multivector", 5usize),
+        ("regressive", "Odd", "Scalar", 0usize),
+        ("regressive", "Odd", "Vector", 2usize),
+        ("regressive", "Odd", "Bivector", 2usize),
+        ("regressive", "Odd", "Even", 2usize),
+        ("regressive", "Odd", "Odd", 2usize),
+        ("regressive", "Odd", "Multivector", 4usize),
+        ("regressive", "Multivector", "Scalar", 1usize),
+        ("regressive", "Multivector", "Vector", 4usize),
+        ("regressive", "Multivector", "Bivector", 4usize),
+        ("regressive", "Multivector", "Even", 5usize),
+        ("regressive", "Multivector", "Odd", 4usize),
+        ("regressive", "Multivector", "Multivector", 9usize),
     ];
     impl ::core::ops::Add<Vector> for f64 {
         type Output = Multivector;

@@ -36,6 +36,12 @@ pub mod g3 {
     /// An alias, not a new type: `Debug` prints a rotor as `Even { .. }` and
     /// `Display` as its terms (`0.7 - 0.7e12`).
     pub type Rotor = Even;
+    impl ::core::convert::From<f64> for Even {
+        #[inline]
+        fn from(value: f64) -> Even {
+            Even { s: value, ..Even::ZERO }
+        }
+    }
     impl ::core::convert::From<f64> for Multivector {
         #[inline]
         fn from(value: f64) -> Multivector {
@@ -196,6 +202,17 @@ pub mod g3 {
         #[inline]
         fn from(_: Zero) -> Vector {
             Vector::ZERO
+        }
+    }
+    impl ::core::convert::From<Vector> for Odd {
+        #[inline]
+        fn from(value: Vector) -> Odd {
+            Odd {
+                e1: value.e1,
+                e2: value.e2,
+                e3: value.e3,
+                ..Odd::ZERO
+            }
         }
     }
     impl ::core::convert::From<Vector> for Multivector {
@@ -505,6 +522,17 @@ pub mod g3 {
             Bivector::ZERO
         }
     }
+    impl ::core::convert::From<Bivector> for Even {
+        #[inline]
+        fn from(value: Bivector) -> Even {
+            Even {
+                e12: value.e12,
+                e13: value.e13,
+                e23: value.e23,
+                ..Even::ZERO
+            }
+        }
+    }
     impl ::core::convert::From<Bivector> for Multivector {
         #[inline]
         fn from(value: Bivector) -> Multivector {
@@ -808,6 +836,15 @@ pub mod g3 {
         #[inline]
         fn from(_: Zero) -> Trivector {
             Trivector::ZERO
+        }
+    }
+    impl ::core::convert::From<Trivector> for Odd {
+        #[inline]
+        fn from(value: Trivector) -> Odd {
+            Odd {
+                e123: value.e123,
+                ..Odd::ZERO
+            }
         }
     }
     impl ::core::convert::From<Trivector> for Multivector {
@@ -1934,6 +1971,14 @@ pub mod g3 {
         ///The commutator product (AB - BA) / 2 (not the cross product).
         #[must_use]
         fn commutator(self, rhs: Rhs) -> Self::Output;
+    }
+    ///The regressive product (join) undual(dual(A) ^ dual(B)), through the right complement: metric-free.
+    pub trait Regressive<Rhs> {
+        /// The smallest type holding every grade the product can have.
+        type Output;
+        ///The regressive product (join) undual(dual(A) ^ dual(B)), through the right complement: metric-free.
+        #[must_use]
+        fn regressive(self, rhs: Rhs) -> Self::Output;
     }
     impl ::core::ops::Mul<Vector> for f64 {
         type Output = Vector;
@@ -5752,6 +5797,547 @@ pub mod g3 {
             }
         }
     }
+    impl Regressive<Vector> for f64 {
+        type Output = Zero;
+        #[inline]
+        fn regressive(self, rhs: Vector) -> Zero {
+            let _ = (self, rhs);
+            Zero
+        }
+    }
+    impl Regressive<Bivector> for f64 {
+        type Output = Zero;
+        #[inline]
+        fn regressive(self, rhs: Bivector) -> Zero {
+            let _ = (self, rhs);
+            Zero
+        }
+    }
+    impl Regressive<Trivector> for f64 {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: Trivector) -> f64 {
+            self * rhs.e123
+        }
+    }
+    impl Regressive<Even> for f64 {
+        type Output = Zero;
+        #[inline]
+        fn regressive(self, rhs: Even) -> Zero {
+            let _ = (self, rhs);
+            Zero
+        }
+    }
+    impl Regressive<Odd> for f64 {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: Odd) -> f64 {
+            self * rhs.e123
+        }
+    }
+    impl Regressive<Multivector> for f64 {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: Multivector) -> f64 {
+            self * rhs.e123
+        }
+    }
+    impl Regressive<f64> for Vector {
+        type Output = Zero;
+        #[inline]
+        fn regressive(self, rhs: f64) -> Zero {
+            let _ = (self, rhs);
+            Zero
+        }
+    }
+    impl Regressive<Vector> for Vector {
+        type Output = Zero;
+        #[inline]
+        fn regressive(self, rhs: Vector) -> Zero {
+            let _ = (self, rhs);
+            Zero
+        }
+    }
+    impl Regressive<Bivector> for Vector {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: Bivector) -> f64 {
+            (self.e1 * rhs.e23 + self.e3 * rhs.e12) - self.e2 * rhs.e13
+        }
+    }
+    impl Regressive<Trivector> for Vector {
+        type Output = Vector;
+        #[inline]
+        fn regressive(self, rhs: Trivector) -> Vector {
+            Vector {
+                e1: self.e1 * rhs.e123,
+                e2: self.e2 * rhs.e123,
+                e3: self.e3 * rhs.e123,
+            }
+        }
+    }
+    impl Regressive<Even> for Vector {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: Even) -> f64 {
+            (self.e1 * rhs.e23 + self.e3 * rhs.e12) - self.e2 * rhs.e13
+        }
+    }
+    impl Regressive<Odd> for Vector {
+        type Output = Vector;
+        #[inline]
+        fn regressive(self, rhs: Odd) -> Vector {
+            Vector {
+                e1: self.e1 * rhs.e123,
+                e2: self.e2 * rhs.e123,
+                e3: self.e3 * rhs.e123,
+            }
+        }
+    }
+    impl Regressive<Multivector> for Vector {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Multivector) -> Multivector {
+            Multivector {
+                s: (self.e1 * rhs.e23 + self.e3 * rhs.e12) - self.e2 * rhs.e13,
+                e1: self.e1 * rhs.e123,
+                e2: self.e2 * rhs.e123,
+                e3: self.e3 * rhs.e123,
+                e12: 0.0,
+                e13: 0.0,
+                e23: 0.0,
+                e123: 0.0,
+            }
+        }
+    }
+    impl Regressive<f64> for Bivector {
+        type Output = Zero;
+        #[inline]
+        fn regressive(self, rhs: f64) -> Zero {
+            let _ = (self, rhs);
+            Zero
+        }
+    }
+    impl Regressive<Vector> for Bivector {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: Vector) -> f64 {
+            (self.e12 * rhs.e3 + self.e23 * rhs.e1) - self.e13 * rhs.e2
+        }
+    }
+    impl Regressive<Bivector> for Bivector {
+        type Output = Vector;
+        #[inline]
+        fn regressive(self, rhs: Bivector) -> Vector {
+            Vector {
+                e1: self.e12 * rhs.e13 - self.e13 * rhs.e12,
+                e2: self.e12 * rhs.e23 - self.e23 * rhs.e12,
+                e3: self.e13 * rhs.e23 - self.e23 * rhs.e13,
+            }
+        }
+    }
+    impl Regressive<Trivector> for Bivector {
+        type Output = Bivector;
+        #[inline]
+        fn regressive(self, rhs: Trivector) -> Bivector {
+            Bivector {
+                e12: self.e12 * rhs.e123,
+                e13: self.e13 * rhs.e123,
+                e23: self.e23 * rhs.e123,
+            }
+        }
+    }
+    impl Regressive<Even> for Bivector {
+        type Output = Vector;
+        #[inline]
+        fn regressive(self, rhs: Even) -> Vector {
+            Vector {
+                e1: self.e12 * rhs.e13 - self.e13 * rhs.e12,
+                e2: self.e12 * rhs.e23 - self.e23 * rhs.e12,
+                e3: self.e13 * rhs.e23 - self.e23 * rhs.e13,
+            }
+        }
+    }
+    impl Regressive<Odd> for Bivector {
+        type Output = Even;
+        #[inline]
+        fn regressive(self, rhs: Odd) -> Even {
+            Even {
+                s: (self.e12 * rhs.e3 + self.e23 * rhs.e1) - self.e13 * rhs.e2,
+                e12: self.e12 * rhs.e123,
+                e13: self.e13 * rhs.e123,
+                e23: self.e23 * rhs.e123,
+            }
+        }
+    }
+    impl Regressive<Multivector> for Bivector {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Multivector) -> Multivector {
+            Multivector {
+                s: (self.e12 * rhs.e3 + self.e23 * rhs.e1) - self.e13 * rhs.e2,
+                e1: self.e12 * rhs.e13 - self.e13 * rhs.e12,
+                e2: self.e12 * rhs.e23 - self.e23 * rhs.e12,
+                e3: self.e13 * rhs.e23 - self.e23 * rhs.e13,
+                e12: self.e12 * rhs.e123,
+                e13: self.e13 * rhs.e123,
+                e23: self.e23 * rhs.e123,
+                e123: 0.0,
+            }
+        }
+    }
+    impl Regressive<f64> for Trivector {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: f64) -> f64 {
+            self.e123 * rhs
+        }
+    }
+    impl Regressive<Vector> for Trivector {
+        type Output = Vector;
+        #[inline]
+        fn regressive(self, rhs: Vector) -> Vector {
+            Vector {
+                e1: self.e123 * rhs.e1,
+                e2: self.e123 * rhs.e2,
+                e3: self.e123 * rhs.e3,
+            }
+        }
+    }
+    impl Regressive<Bivector> for Trivector {
+        type Output = Bivector;
+        #[inline]
+        fn regressive(self, rhs: Bivector) -> Bivector {
+            Bivector {
+                e12: self.e123 * rhs.e12,
+                e13: self.e123 * rhs.e13,
+                e23: self.e123 * rhs.e23,
+            }
+        }
+    }
+    impl Regressive<Trivector> for Trivector {
+        type Output = Trivector;
+        #[inline]
+        fn regressive(self, rhs: Trivector) -> Trivector {
+            Trivector {
+                e123: self.e123 * rhs.e123,
+            }
+        }
+    }
+    impl Regressive<Even> for Trivector {
+        type Output = Even;
+        #[inline]
+        fn regressive(self, rhs: Even) -> Even {
+            Even {
+                s: self.e123 * rhs.s,
+                e12: self.e123 * rhs.e12,
+                e13: self.e123 * rhs.e13,
+                e23: self.e123 * rhs.e23,
+            }
+        }
+    }
+    impl Regressive<Odd> for Trivector {
+        type Output = Odd;
+        #[inline]
+        fn regressive(self, rhs: Odd) -> Odd {
+            Odd {
+                e1: self.e123 * rhs.e1,
+                e2: self.e123 * rhs.e2,
+                e3: self.e123 * rhs.e3,
+                e123: self.e123 * rhs.e123,
+            }
+        }
+    }
+    impl Regressive<Multivector> for Trivector {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Multivector) -> Multivector {
+            Multivector {
+                s: self.e123 * rhs.s,
+                e1: self.e123 * rhs.e1,
+                e2: self.e123 * rhs.e2,
+                e3: self.e123 * rhs.e3,
+                e12: self.e123 * rhs.e12,
+                e13: self.e123 * rhs.e13,
+                e23: self.e123 * rhs.e23,
+                e123: self.e123 * rhs.e123,
+            }
+        }
+    }
+    impl Regressive<f64> for Even {
+        type Output = Zero;
+        #[inline]
+        fn regressive(self, rhs: f64) -> Zero {
+            let _ = (self, rhs);
+            Zero
+        }
+    }
+    impl Regressive<Vector> for Even {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: Vector) -> f64 {
+            (self.e12 * rhs.e3 + self.e23 * rhs.e1) - self.e13 * rhs.e2
+        }
+    }
+    impl Regressive<Bivector> for Even {
+        type Output = Vector;
+        #[inline]
+        fn regressive(self, rhs: Bivector) -> Vector {
+            Vector {
+                e1: self.e12 * rhs.e13 - self.e13 * rhs.e12,
+                e2: self.e12 * rhs.e23 - self.e23 * rhs.e12,
+                e3: self.e13 * rhs.e23 - self.e23 * rhs.e13,
+            }
+        }
+    }
+    impl Regressive<Trivector> for Even {
+        type Output = Even;
+        #[inline]
+        fn regressive(self, rhs: Trivector) -> Even {
+            Even {
+                s: self.s * rhs.e123,
+                e12: self.e12 * rhs.e123,
+                e13: self.e13 * rhs.e123,
+                e23: self.e23 * rhs.e123,
+            }
+        }
+    }
+    impl Regressive<Even> for Even {
+        type Output = Vector;
+        #[inline]
+        fn regressive(self, rhs: Even) -> Vector {
+            Vector {
+                e1: self.e12 * rhs.e13 - self.e13 * rhs.e12,
+                e2: self.e12 * rhs.e23 - self.e23 * rhs.e12,
+                e3: self.e13 * rhs.e23 - self.e23 * rhs.e13,
+            }
+        }
+    }
+    impl Regressive<Odd> for Even {
+        type Output = Even;
+        #[inline]
+        fn regressive(self, rhs: Odd) -> Even {
+            Even {
+                s: (self.s * rhs.e123 + self.e12 * rhs.e3)
+                    + (self.e23 * rhs.e1 - self.e13 * rhs.e2),
+                e12: self.e12 * rhs.e123,
+                e13: self.e13 * rhs.e123,
+                e23: self.e23 * rhs.e123,
+            }
+        }
+    }
+    impl Regressive<Multivector> for Even {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Multivector) -> Multivector {
+            Multivector {
+                s: (self.s * rhs.e123 + self.e12 * rhs.e3)
+                    + (self.e23 * rhs.e1 - self.e13 * rhs.e2),
+                e1: self.e12 * rhs.e13 - self.e13 * rhs.e12,
+                e2: self.e12 * rhs.e23 - self.e23 * rhs.e12,
+                e3: self.e13 * rhs.e23 - self.e23 * rhs.e13,
+                e12: self.e12 * rhs.e123,
+                e13: self.e13 * rhs.e123,
+                e23: self.e23 * rhs.e123,
+                e123: 0.0,
+            }
+        }
+    }
+    impl Regressive<f64> for Odd {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: f64) -> f64 {
+            self.e123 * rhs
+        }
+    }
+    impl Regressive<Vector> for Odd {
+        type Output = Vector;
+        #[inline]
+        fn regressive(self, rhs: Vector) -> Vector {
+            Vector {
+                e1: self.e123 * rhs.e1,
+                e2: self.e123 * rhs.e2,
+                e3: self.e123 * rhs.e3,
+            }
+        }
+    }
+    impl Regressive<Bivector> for Odd {
+        type Output = Even;
+        #[inline]
+        fn regressive(self, rhs: Bivector) -> Even {
+            Even {
+                s: (self.e1 * rhs.e23 + self.e3 * rhs.e12) - self.e2 * rhs.e13,
+                e12: self.e123 * rhs.e12,
+                e13: self.e123 * rhs.e13,
+                e23: self.e123 * rhs.e23,
+            }
+        }
+    }
+    impl Regressive<Trivector> for Odd {
+        type Output = Odd;
+        #[inline]
+        fn regressive(self, rhs: Trivector) -> Odd {
+            Odd {
+                e1: self.e1 * rhs.e123,
+                e2: self.e2 * rhs.e123,
+                e3: self.e3 * rhs.e123,
+                e123: self.e123 * rhs.e123,
+            }
+        }
+    }
+    impl Regressive<Even> for Odd {
+        type Output = Even;
+        #[inline]
+        fn regressive(self, rhs: Even) -> Even {
+            Even {
+                s: (self.e1 * rhs.e23 + self.e3 * rhs.e12)
+                    + (self.e123 * rhs.s - self.e2 * rhs.e13),
+                e12: self.e123 * rhs.e12,
+                e13: self.e123 * rhs.e13,
+                e23: self.e123 * rhs.e23,
+            }
+        }
+    }
+    impl Regressive<Odd> for Odd {
+        type Output = Odd;
+        #[inline]
+        fn regressive(self, rhs: Odd) -> Odd {
+            Odd {
+                e1: self.e1 * rhs.e123 + self.e123 * rhs.e1,
+                e2: self.e2 * rhs.e123 + self.e123 * rhs.e2,
+                e3: self.e3 * rhs.e123 + self.e123 * rhs.e3,
+                e123: self.e123 * rhs.e123,
+            }
+        }
+    }
+    impl Regressive<Multivector> for Odd {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Multivector) -> Multivector {
+            Multivector {
+                s: (self.e1 * rhs.e23 + self.e3 * rhs.e12)
+                    + (self.e123 * rhs.s - self.e2 * rhs.e13),
+                e1: self.e1 * rhs.e123 + self.e123 * rhs.e1,
+                e2: self.e2 * rhs.e123 + self.e123 * rhs.e2,
+                e3: self.e3 * rhs.e123 + self.e123 * rhs.e3,
+                e12: self.e123 * rhs.e12,
+                e13: self.e123 * rhs.e13,
+                e23: self.e123 * rhs.e23,
+                e123: self.e123 * rhs.e123,
+            }
+        }
+    }
+    impl Regressive<f64> for Multivector {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: f64) -> f64 {
+            self.e123 * rhs
+        }
+    }
+    impl Regressive<Vector> for Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Vector) -> Multivector {
+            Multivector {
+                s: (self.e12 * rhs.e3 + self.e23 * rhs.e1) - self.e13 * rhs.e2,
+                e1: self.e123 * rhs.e1,
+                e2: self.e123 * rhs.e2,
+                e3: self.e123 * rhs.e3,
+                e12: 0.0,
+                e13: 0.0,
+                e23: 0.0,
+                e123: 0.0,
+            }
+        }
+    }
+    impl Regressive<Bivector> for Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Bivector) -> Multivector {
+            Multivector {
+                s: (self.e1 * rhs.e23 + self.e3 * rhs.e12) - self.e2 * rhs.e13,
+                e1: self.e12 * rhs.e13 - self.e13 * rhs.e12,
+                e2: self.e12 * rhs.e23 - self.e23 * rhs.e12,
+                e3: self.e13 * rhs.e23 - self.e23 * rhs.e13,
+                e12: self.e123 * rhs.e12,
+                e13: self.e123 * rhs.e13,
+                e23: self.e123 * rhs.e23,
+                e123: 0.0,
+            }
+        }
+    }
+    impl Regressive<Trivector> for Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Trivector) -> Multivector {
+            Multivector {
+                s: self.s * rhs.e123,
+                e1: self.e1 * rhs.e123,
+                e2: self.e2 * rhs.e123,
+                e3: self.e3 * rhs.e123,
+                e12: self.e12 * rhs.e123,
+                e13: self.e13 * rhs.e123,
+                e23: self.e23 * rhs.e123,
+                e123: self.e123 * rhs.e123,
+            }
+        }
+    }
+    impl Regressive<Even> for Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Even) -> Multivector {
+            Multivector {
+                s: (self.e1 * rhs.e23 + self.e3 * rhs.e12)
+                    + (self.e123 * rhs.s - self.e2 * rhs.e13),
+                e1: self.e12 * rhs.e13 - self.e13 * rhs.e12,
+                e2: self.e12 * rhs.e23 - self.e23 * rhs.e12,
+                e3: self.e13 * rhs.e23 - self.e23 * rhs.e13,
+                e12: self.e123 * rhs.e12,
+                e13: self.e123 * rhs.e13,
+                e23: self.e123 * rhs.e23,
+                e123: 0.0,
+            }
+        }
+    }
+    impl Regressive<Odd> for Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Odd) -> Multivector {
+            Multivector {
+                s: (self.s * rhs.e123 + self.e12 * rhs.e3)
+                    + (self.e23 * rhs.e1 - self.e13 * rhs.e2),
+                e1: self.e1 * rhs.e123 + self.e123 * rhs.e1,
+                e2: self.e2 * rhs.e123 + self.e123 * rhs.e2,
+                e3: self.e3 * rhs.e123 + self.e123 * rhs.e3,
+                e12: self.e12 * rhs.e123,
+                e13: self.e13 * rhs.e123,
+                e23: self.e23 * rhs.e123,
+                e123: self.e123 * rhs.e123,
+            }
+        }
+    }
+    impl Regressive<Multivector> for Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Multivector) -> Multivector {
+            Multivector {
+                s: ((self.s * rhs.e123 + self.e1 * rhs.e23)
+                    + (self.e3 * rhs.e12 + self.e12 * rhs.e3))
+                    + ((self.e23 * rhs.e1 + self.e123 * rhs.s)
+                        - (self.e2 * rhs.e13 + self.e13 * rhs.e2)),
+                e1: (self.e1 * rhs.e123 + self.e12 * rhs.e13)
+                    + (self.e123 * rhs.e1 - self.e13 * rhs.e12),
+                e2: (self.e2 * rhs.e123 + self.e12 * rhs.e23)
+                    + (self.e123 * rhs.e2 - self.e23 * rhs.e12),
+                e3: (self.e3 * rhs.e123 + self.e13 * rhs.e23)
+                    + (self.e123 * rhs.e3 - self.e23 * rhs.e13),
+                e12: self.e12 * rhs.e123 + self.e123 * rhs.e12,
+                e13: self.e13 * rhs.e123 + self.e123 * rhs.e13,
+                e23: self.e23 * rhs.e123 + self.e123 * rhs.e23,
+                e123: self.e123 * rhs.e123,
+            }
+        }
+    }
     /// (product, lhs type, rhs type, number of multiply terms) for every emitted
     /// product; the scalar operand is named `Scalar`.
     pub const TERM_COUNTS: &[(&str, &str, &str, usize)] = &[
@@ -6091,6 +6677,54 @@ pub mod g3 {
         ("commutator", "Multivector", "Even", 12usize),
         ("commutator", "Multivector", "Odd", 12usize),
         ("commutator", "Multivector", "Multivector", 24usize),
+        ("regressive", "Scalar", "Vector", 0usize),
+        ("regressive", "Scalar", "Bivector", 0usize),
+        ("regressive", "Scalar", "Trivector", 1usize),
+        ("regressive", "Scalar", "Even", 0usize),
+        ("regressive", "Scalar", "Odd", 1usize),
+        ("regressive", "Scalar", "Multivector", 1usize),
+        ("regressive", "Vector", "Scalar", 0usize),
+        ("regressive", "Vector", "Vector", 0usize),
+        ("regressive", "Vector", "Bivector", 3usize),
+        ("regressive", "Vector", "Trivector", 3usize),
+        ("regressive", "Vector", "Even", 3usize),
+        ("regressive", "Vector", "Odd", 3usize),
+        ("regressive", "Vector", "Multivector", 6usize),
+        ("regressive", "Bivector", "Scalar", 0usize),
+        ("regressive", "Bivector", "Vector", 3usize),
+        ("regressive", "Bivector", "Bivector", 6usize),
+        ("regressive", "Bivector", "Trivector", 3usize),
+        ("regressive", "Bivector", "Even", 6usize),
+        ("regressive", "Bivector", "Odd", 6usize),
+        ("regressive", "Bivector", "Multivector", 12usize),
+        ("regressive", "Trivector", "Scalar", 1usize),
+        ("regressive", "Trivector", "Vector", 3usize),
+        ("regressive", "Trivector", "Bivector", 3usize),
+        ("regressive", "Trivector", "Trivector", 1usize),
+        ("regressive", "Trivector", "Even", 4usize),
+        ("regressive", "Trivector", "Odd", 4usize),
+        ("regressive", "Trivector", "Multivector", 8usize),
+        ("regressive", "Even", "Scalar", 0usize),
+        ("regressive", "Even", "Vector", 3usize),
+        ("regressive", "Even", "Bivector", 6usize),
+        ("regressive", "Even", "Trivector", 4usize),
+        ("regressive", "Even", "Even", 6usize),
+        ("regressive", "Even", "Odd", 7usize),
+        ("regressive", "Even", "Multivector", 13usize),
+        ("regressive", "Odd", "Scalar", 1usize),
+        ("regressive", "Odd", "Vector", 3usize),
+        ("regressive", "Odd", "Bivector", 6usize),
+        ("regressive", "Odd", "Trivector", 4usize),
+        ("regressive", "Odd", "Even", 7usize),
+        ("regressive", "Odd", "Odd", 7usize),
+        ("regressive", "Odd", "Multivector", 14usize),
+        ("regressive", "Multivector", "Scalar", 1usize),
+        ("regressive", "Multivector", "Vector", 6usize),
+        ("regressive", "Multivector", "Bivector", 12usize),
+        ("regressive", "Multivector", "Trivector", 8usize),
+        ("regressive", "Multivector", "Even", 13usize),
+        ("regressive", "Multivector", "Odd", 14usize),
+        ("regressive", "Multivector", "Multivector", 27usize),
     ];
     impl ::core::ops::Add<Vector> for f64 {
         type Output = Multivector;

@@ -36,6 +36,12 @@ pub mod g4 {
     /// An alias, not a new type: `Debug` prints a rotor as `Even { .. }` and
     /// `Display` as its terms (`0.7 - 0.7e12`).
     pub type Rotor = Even;
+    impl ::core::convert::From<f64> for Even {
+        #[inline]
+        fn from(value: f64) -> Even {
+            Even { s: value, ..Even::ZERO }
+        }
+    }
     impl ::core::convert::From<f64> for Multivector {
         #[inline]
         fn from(value: f64) -> Multivector {
@@ -201,6 +207,18 @@ pub mod g4 {
         #[inline]
         fn from(_: Zero) -> Vector {
             Vector::ZERO
+        }
+    }
+    impl ::core::convert::From<Vector> for Odd {
+        #[inline]
+        fn from(value: Vector) -> Odd {
+            Odd {
+                e1: value.e1,
+                e2: value.e2,
+                e3: value.e3,
+                e4: value.e4,
+                ..Odd::ZERO
+            }
         }
     }
     impl ::core::convert::From<Vector> for Multivector {
@@ -569,6 +587,20 @@ pub mod g4 {
         #[inline]
         fn from(_: Zero) -> Bivector {
             Bivector::ZERO
+        }
+    }
+    impl ::core::convert::From<Bivector> for Even {
+        #[inline]
+        fn from(value: Bivector) -> Even {
+            Even {
+                e12: value.e12,
+                e13: value.e13,
+                e14: value.e14,
+                e23: value.e23,
+                e24: value.e24,
+                e34: value.e34,
+                ..Even::ZERO
+            }
         }
     }
     impl ::core::convert::From<Bivector> for Multivector {
@@ -945,6 +977,18 @@ pub mod g4 {
             Trivector::ZERO
         }
     }
+    impl ::core::convert::From<Trivector> for Odd {
+        #[inline]
+        fn from(value: Trivector) -> Odd {
+            Odd {
+                e123: value.e123,
+                e124: value.e124,
+                e134: value.e134,
+                e234: value.e234,
+                ..Odd::ZERO
+            }
+        }
+    }
     impl ::core::convert::From<Trivector> for Multivector {
         #[inline]
         fn from(value: Trivector) -> Multivector {
@@ -1270,6 +1314,15 @@ pub mod g4 {
         #[inline]
         fn from(_: Zero) -> Quadvector {
             Quadvector::ZERO
+        }
+    }
+    impl ::core::convert::From<Quadvector> for Even {
+        #[inline]
+        fn from(value: Quadvector) -> Even {
+            Even {
+                e1234: value.e1234,
+                ..Even::ZERO
+            }
         }
     }
     impl ::core::convert::From<Quadvector> for Multivector {
@@ -3022,6 +3075,14 @@ pub mod g4 {
         ///The commutator product (AB - BA) / 2 (not the cross product).
         #[must_use]
         fn commutator(self, rhs: Rhs) -> Self::Output;
+    }
+    ///The regressive product (join) undual(dual(A) ^ dual(B)), through the right complement: metric-free.
+    pub trait Regressive<Rhs> {
+        /// The smallest type holding every grade the product can have.
+        type Output;
+        ///The regressive product (join) undual(dual(A) ^ dual(B)), through the right complement: metric-free.
+        #[must_use]
+        fn regressive(self, rhs: Rhs) -> Self::Output;
     }
     impl ::core::ops::Mul<Vector> for f64 {
         type Output = Vector;
@@ -10411,6 +10472,960 @@ pub mod g4 {
             }
         }
     }
+    impl Regressive<Vector> for f64 {
+        type Output = Zero;
+        #[inline]
+        fn regressive(self, rhs: Vector) -> Zero {
+            let _ = (self, rhs);
+            Zero
+        }
+    }
+    impl Regressive<Bivector> for f64 {
+        type Output = Zero;
+        #[inline]
+        fn regressive(self, rhs: Bivector) -> Zero {
+            let _ = (self, rhs);
+            Zero
+        }
+    }
+    impl Regressive<Trivector> for f64 {
+        type Output = Zero;
+        #[inline]
+        fn regressive(self, rhs: Trivector) -> Zero {
+            let _ = (self, rhs);
+            Zero
+        }
+    }
+    impl Regressive<Quadvector> for f64 {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: Quadvector) -> f64 {
+            self * rhs.e1234
+        }
+    }
+    impl Regressive<Even> for f64 {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: Even) -> f64 {
+            self * rhs.e1234
+        }
+    }
+    impl Regressive<Odd> for f64 {
+        type Output = Zero;
+        #[inline]
+        fn regressive(self, rhs: Odd) -> Zero {
+            let _ = (self, rhs);
+            Zero
+        }
+    }
+    impl Regressive<Multivector> for f64 {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: Multivector) -> f64 {
+            self * rhs.e1234
+        }
+    }
+    impl Regressive<f64> for Vector {
+        type Output = Zero;
+        #[inline]
+        fn regressive(self, rhs: f64) -> Zero {
+            let _ = (self, rhs);
+            Zero
+        }
+    }
+    impl Regressive<Vector> for Vector {
+        type Output = Zero;
+        #[inline]
+        fn regressive(self, rhs: Vector) -> Zero {
+            let _ = (self, rhs);
+            Zero
+        }
+    }
+    impl Regressive<Bivector> for Vector {
+        type Output = Zero;
+        #[inline]
+        fn regressive(self, rhs: Bivector) -> Zero {
+            let _ = (self, rhs);
+            Zero
+        }
+    }
+    impl Regressive<Trivector> for Vector {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: Trivector) -> f64 {
+            (self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                - (self.e2 * rhs.e134 + self.e4 * rhs.e123)
+        }
+    }
+    impl Regressive<Quadvector> for Vector {
+        type Output = Vector;
+        #[inline]
+        fn regressive(self, rhs: Quadvector) -> Vector {
+            Vector {
+                e1: self.e1 * rhs.e1234,
+                e2: self.e2 * rhs.e1234,
+                e3: self.e3 * rhs.e1234,
+                e4: self.e4 * rhs.e1234,
+            }
+        }
+    }
+    impl Regressive<Even> for Vector {
+        type Output = Vector;
+        #[inline]
+        fn regressive(self, rhs: Even) -> Vector {
+            Vector {
+                e1: self.e1 * rhs.e1234,
+                e2: self.e2 * rhs.e1234,
+                e3: self.e3 * rhs.e1234,
+                e4: self.e4 * rhs.e1234,
+            }
+        }
+    }
+    impl Regressive<Odd> for Vector {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: Odd) -> f64 {
+            (self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                - (self.e2 * rhs.e134 + self.e4 * rhs.e123)
+        }
+    }
+    impl Regressive<Multivector> for Vector {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Multivector) -> Multivector {
+            Multivector {
+                s: (self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    - (self.e2 * rhs.e134 + self.e4 * rhs.e123),
+                e1: self.e1 * rhs.e1234,
+                e2: self.e2 * rhs.e1234,
+                e3: self.e3 * rhs.e1234,
+                e4: self.e4 * rhs.e1234,
+                e12: 0.0,
+                e13: 0.0,
+                e14: 0.0,
+                e23: 0.0,
+                e24: 0.0,
+                e34: 0.0,
+                e123: 0.0,
+                e124: 0.0,
+                e134: 0.0,
+                e234: 0.0,
+                e1234: 0.0,
+            }
+        }
+    }
+    impl Regressive<f64> for Bivector {
+        type Output = Zero;
+        #[inline]
+        fn regressive(self, rhs: f64) -> Zero {
+            let _ = (self, rhs);
+            Zero
+        }
+    }
+    impl Regressive<Vector> for Bivector {
+        type Output = Zero;
+        #[inline]
+        fn regressive(self, rhs: Vector) -> Zero {
+            let _ = (self, rhs);
+            Zero
+        }
+    }
+    impl Regressive<Bivector> for Bivector {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: Bivector) -> f64 {
+            ((self.e12 * rhs.e34 + self.e14 * rhs.e23) + self.e23 * rhs.e14)
+                + ((self.e34 * rhs.e12 - self.e13 * rhs.e24) - self.e24 * rhs.e13)
+        }
+    }
+    impl Regressive<Trivector> for Bivector {
+        type Output = Vector;
+        #[inline]
+        fn regressive(self, rhs: Trivector) -> Vector {
+            Vector {
+                e1: (self.e12 * rhs.e134 + self.e14 * rhs.e123) - self.e13 * rhs.e124,
+                e2: (self.e12 * rhs.e234 + self.e24 * rhs.e123) - self.e23 * rhs.e124,
+                e3: (self.e13 * rhs.e234 + self.e34 * rhs.e123) - self.e23 * rhs.e134,
+                e4: (self.e14 * rhs.e234 + self.e34 * rhs.e124) - self.e24 * rhs.e134,
+            }
+        }
+    }
+    impl Regressive<Quadvector> for Bivector {
+        type Output = Bivector;
+        #[inline]
+        fn regressive(self, rhs: Quadvector) -> Bivector {
+            Bivector {
+                e12: self.e12 * rhs.e1234,
+                e13: self.e13 * rhs.e1234,
+                e14: self.e14 * rhs.e1234,
+                e23: self.e23 * rhs.e1234,
+                e24: self.e24 * rhs.e1234,
+                e34: self.e34 * rhs.e1234,
+            }
+        }
+    }
+    impl Regressive<Even> for Bivector {
+        type Output = Even;
+        #[inline]
+        fn regressive(self, rhs: Even) -> Even {
+            Even {
+                s: ((self.e12 * rhs.e34 + self.e14 * rhs.e23) + self.e23 * rhs.e14)
+                    + ((self.e34 * rhs.e12 - self.e13 * rhs.e24) - self.e24 * rhs.e13),
+                e12: self.e12 * rhs.e1234,
+                e13: self.e13 * rhs.e1234,
+                e14: self.e14 * rhs.e1234,
+                e23: self.e23 * rhs.e1234,
+                e24: self.e24 * rhs.e1234,
+                e34: self.e34 * rhs.e1234,
+                e1234: 0.0,
+            }
+        }
+    }
+    impl Regressive<Odd> for Bivector {
+        type Output = Vector;
+        #[inline]
+        fn regressive(self, rhs: Odd) -> Vector {
+            Vector {
+                e1: (self.e12 * rhs.e134 + self.e14 * rhs.e123) - self.e13 * rhs.e124,
+                e2: (self.e12 * rhs.e234 + self.e24 * rhs.e123) - self.e23 * rhs.e124,
+                e3: (self.e13 * rhs.e234 + self.e34 * rhs.e123) - self.e23 * rhs.e134,
+                e4: (self.e14 * rhs.e234 + self.e34 * rhs.e124) - self.e24 * rhs.e134,
+            }
+        }
+    }
+    impl Regressive<Multivector> for Bivector {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Multivector) -> Multivector {
+            Multivector {
+                s: ((self.e12 * rhs.e34 + self.e14 * rhs.e23) + self.e23 * rhs.e14)
+                    + ((self.e34 * rhs.e12 - self.e13 * rhs.e24) - self.e24 * rhs.e13),
+                e1: (self.e12 * rhs.e134 + self.e14 * rhs.e123) - self.e13 * rhs.e124,
+                e2: (self.e12 * rhs.e234 + self.e24 * rhs.e123) - self.e23 * rhs.e124,
+                e3: (self.e13 * rhs.e234 + self.e34 * rhs.e123) - self.e23 * rhs.e134,
+                e4: (self.e14 * rhs.e234 + self.e34 * rhs.e124) - self.e24 * rhs.e134,
+                e12: self.e12 * rhs.e1234,
+                e13: self.e13 * rhs.e1234,
+                e14: self.e14 * rhs.e1234,
+                e23: self.e23 * rhs.e1234,
+                e24: self.e24 * rhs.e1234,
+                e34: self.e34 * rhs.e1234,
+                e123: 0.0,
+                e124: 0.0,
+                e134: 0.0,
+                e234: 0.0,
+                e1234: 0.0,
+            }
+        }
+    }
+    impl Regressive<f64> for Trivector {
+        type Output = Zero;
+        #[inline]
+        fn regressive(self, rhs: f64) -> Zero {
+            let _ = (self, rhs);
+            Zero
+        }
+    }
+    impl Regressive<Vector> for Trivector {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: Vector) -> f64 {
+            (self.e123 * rhs.e4 + self.e134 * rhs.e2)
+                - (self.e124 * rhs.e3 + self.e234 * rhs.e1)
+        }
+    }
+    impl Regressive<Bivector> for Trivector {
+        type Output = Vector;
+        #[inline]
+        fn regressive(self, rhs: Bivector) -> Vector {
+            Vector {
+                e1: (self.e123 * rhs.e14 + self.e134 * rhs.e12) - self.e124 * rhs.e13,
+                e2: (self.e123 * rhs.e24 + self.e234 * rhs.e12) - self.e124 * rhs.e23,
+                e3: (self.e123 * rhs.e34 + self.e234 * rhs.e13) - self.e134 * rhs.e23,
+                e4: (self.e124 * rhs.e34 + self.e234 * rhs.e14) - self.e134 * rhs.e24,
+            }
+        }
+    }
+    impl Regressive<Trivector> for Trivector {
+        type Output = Bivector;
+        #[inline]
+        fn regressive(self, rhs: Trivector) -> Bivector {
+            Bivector {
+                e12: self.e123 * rhs.e124 - self.e124 * rhs.e123,
+                e13: self.e123 * rhs.e134 - self.e134 * rhs.e123,
+                e14: self.e124 * rhs.e134 - self.e134 * rhs.e124,
+                e23: self.e123 * rhs.e234 - self.e234 * rhs.e123,
+                e24: self.e124 * rhs.e234 - self.e234 * rhs.e124,
+                e34: self.e134 * rhs.e234 - self.e234 * rhs.e134,
+            }
+        }
+    }
+    impl Regressive<Quadvector> for Trivector {
+        type Output = Trivector;
+        #[inline]
+        fn regressive(self, rhs: Quadvector) -> Trivector {
+            Trivector {
+                e123: self.e123 * rhs.e1234,
+                e124: self.e124 * rhs.e1234,
+                e134: self.e134 * rhs.e1234,
+                e234: self.e234 * rhs.e1234,
+            }
+        }
+    }
+    impl Regressive<Even> for Trivector {
+        type Output = Odd;
+        #[inline]
+        fn regressive(self, rhs: Even) -> Odd {
+            Odd {
+                e1: (self.e123 * rhs.e14 + self.e134 * rhs.e12) - self.e124 * rhs.e13,
+                e2: (self.e123 * rhs.e24 + self.e234 * rhs.e12) - self.e124 * rhs.e23,
+                e3: (self.e123 * rhs.e34 + self.e234 * rhs.e13) - self.e134 * rhs.e23,
+                e4: (self.e124 * rhs.e34 + self.e234 * rhs.e14) - self.e134 * rhs.e24,
+                e123: self.e123 * rhs.e1234,
+                e124: self.e124 * rhs.e1234,
+                e134: self.e134 * rhs.e1234,
+                e234: self.e234 * rhs.e1234,
+            }
+        }
+    }
+    impl Regressive<Odd> for Trivector {
+        type Output = Even;
+        #[inline]
+        fn regressive(self, rhs: Odd) -> Even {
+            Even {
+                s: (self.e123 * rhs.e4 + self.e134 * rhs.e2)
+                    - (self.e124 * rhs.e3 + self.e234 * rhs.e1),
+                e12: self.e123 * rhs.e124 - self.e124 * rhs.e123,
+                e13: self.e123 * rhs.e134 - self.e134 * rhs.e123,
+                e14: self.e124 * rhs.e134 - self.e134 * rhs.e124,
+                e23: self.e123 * rhs.e234 - self.e234 * rhs.e123,
+                e24: self.e124 * rhs.e234 - self.e234 * rhs.e124,
+                e34: self.e134 * rhs.e234 - self.e234 * rhs.e134,
+                e1234: 0.0,
+            }
+        }
+    }
+    impl Regressive<Multivector> for Trivector {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Multivector) -> Multivector {
+            Multivector {
+                s: (self.e123 * rhs.e4 + self.e134 * rhs.e2)
+                    - (self.e124 * rhs.e3 + self.e234 * rhs.e1),
+                e1: (self.e123 * rhs.e14 + self.e134 * rhs.e12) - self.e124 * rhs.e13,
+                e2: (self.e123 * rhs.e24 + self.e234 * rhs.e12) - self.e124 * rhs.e23,
+                e3: (self.e123 * rhs.e34 + self.e234 * rhs.e13) - self.e134 * rhs.e23,
+                e4: (self.e124 * rhs.e34 + self.e234 * rhs.e14) - self.e134 * rhs.e24,
+                e12: self.e123 * rhs.e124 - self.e124 * rhs.e123,
+                e13: self.e123 * rhs.e134 - self.e134 * rhs.e123,
+                e14: self.e124 * rhs.e134 - self.e134 * rhs.e124,
+                e23: self.e123 * rhs.e234 - self.e234 * rhs.e123,
+                e24: self.e124 * rhs.e234 - self.e234 * rhs.e124,
+                e34: self.e134 * rhs.e234 - self.e234 * rhs.e134,
+                e123: self.e123 * rhs.e1234,
+                e124: self.e124 * rhs.e1234,
+                e134: self.e134 * rhs.e1234,
+                e234: self.e234 * rhs.e1234,
+                e1234: 0.0,
+            }
+        }
+    }
+    impl Regressive<f64> for Quadvector {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: f64) -> f64 {
+            self.e1234 * rhs
+        }
+    }
+    impl Regressive<Vector> for Quadvector {
+        type Output = Vector;
+        #[inline]
+        fn regressive(self, rhs: Vector) -> Vector {
+            Vector {
+                e1: self.e1234 * rhs.e1,
+                e2: self.e1234 * rhs.e2,
+                e3: self.e1234 * rhs.e3,
+                e4: self.e1234 * rhs.e4,
+            }
+        }
+    }
+    impl Regressive<Bivector> for Quadvector {
+        type Output = Bivector;
+        #[inline]
+        fn regressive(self, rhs: Bivector) -> Bivector {
+            Bivector {
+                e12: self.e1234 * rhs.e12,
+                e13: self.e1234 * rhs.e13,
+                e14: self.e1234 * rhs.e14,
+                e23: self.e1234 * rhs.e23,
+                e24: self.e1234 * rhs.e24,
+                e34: self.e1234 * rhs.e34,
+            }
+        }
+    }
+    impl Regressive<Trivector> for Quadvector {
+        type Output = Trivector;
+        #[inline]
+        fn regressive(self, rhs: Trivector) -> Trivector {
+            Trivector {
+                e123: self.e1234 * rhs.e123,
+                e124: self.e1234 * rhs.e124,
+                e134: self.e1234 * rhs.e134,
+                e234: self.e1234 * rhs.e234,
+            }
+        }
+    }
+    impl Regressive<Quadvector> for Quadvector {
+        type Output = Quadvector;
+        #[inline]
+        fn regressive(self, rhs: Quadvector) -> Quadvector {
+            Quadvector {
+                e1234: self.e1234 * rhs.e1234,
+            }
+        }
+    }
+    impl Regressive<Even> for Quadvector {
+        type Output = Even;
+        #[inline]
+        fn regressive(self, rhs: Even) -> Even {
+            Even {
+                s: self.e1234 * rhs.s,
+                e12: self.e1234 * rhs.e12,
+                e13: self.e1234 * rhs.e13,
+                e14: self.e1234 * rhs.e14,
+                e23: self.e1234 * rhs.e23,
+                e24: self.e1234 * rhs.e24,
+                e34: self.e1234 * rhs.e34,
+                e1234: self.e1234 * rhs.e1234,
+            }
+        }
+    }
+    impl Regressive<Odd> for Quadvector {
+        type Output = Odd;
+        #[inline]
+        fn regressive(self, rhs: Odd) -> Odd {
+            Odd {
+                e1: self.e1234 * rhs.e1,
+                e2: self.e1234 * rhs.e2,
+                e3: self.e1234 * rhs.e3,
+                e4: self.e1234 * rhs.e4,
+                e123: self.e1234 * rhs.e123,
+                e124: self.e1234 * rhs.e124,
+                e134: self.e1234 * rhs.e134,
+                e234: self.e1234 * rhs.e234,
+            }
+        }
+    }
+    impl Regressive<Multivector> for Quadvector {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Multivector) -> Multivector {
+            Multivector {
+                s: self.e1234 * rhs.s,
+                e1: self.e1234 * rhs.e1,
+                e2: self.e1234 * rhs.e2,
+                e3: self.e1234 * rhs.e3,
+                e4: self.e1234 * rhs.e4,
+                e12: self.e1234 * rhs.e12,
+                e13: self.e1234 * rhs.e13,
+                e14: self.e1234 * rhs.e14,
+                e23: self.e1234 * rhs.e23,
+                e24: self.e1234 * rhs.e24,
+                e34: self.e1234 * rhs.e34,
+                e123: self.e1234 * rhs.e123,
+                e124: self.e1234 * rhs.e124,
+                e134: self.e1234 * rhs.e134,
+                e234: self.e1234 * rhs.e234,
+                e1234: self.e1234 * rhs.e1234,
+            }
+        }
+    }
+    impl Regressive<f64> for Even {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: f64) -> f64 {
+            self.e1234 * rhs
+        }
+    }
+    impl Regressive<Vector> for Even {
+        type Output = Vector;
+        #[inline]
+        fn regressive(self, rhs: Vector) -> Vector {
+            Vector {
+                e1: self.e1234 * rhs.e1,
+                e2: self.e1234 * rhs.e2,
+                e3: self.e1234 * rhs.e3,
+                e4: self.e1234 * rhs.e4,
+            }
+        }
+    }
+    impl Regressive<Bivector> for Even {
+        type Output = Even;
+        #[inline]
+        fn regressive(self, rhs: Bivector) -> Even {
+            Even {
+                s: ((self.e12 * rhs.e34 + self.e14 * rhs.e23) + self.e23 * rhs.e14)
+                    + ((self.e34 * rhs.e12 - self.e13 * rhs.e24) - self.e24 * rhs.e13),
+                e12: self.e1234 * rhs.e12,
+                e13: self.e1234 * rhs.e13,
+                e14: self.e1234 * rhs.e14,
+                e23: self.e1234 * rhs.e23,
+                e24: self.e1234 * rhs.e24,
+                e34: self.e1234 * rhs.e34,
+                e1234: 0.0,
+            }
+        }
+    }
+    impl Regressive<Trivector> for Even {
+        type Output = Odd;
+        #[inline]
+        fn regressive(self, rhs: Trivector) -> Odd {
+            Odd {
+                e1: (self.e12 * rhs.e134 + self.e14 * rhs.e123) - self.e13 * rhs.e124,
+                e2: (self.e12 * rhs.e234 + self.e24 * rhs.e123) - self.e23 * rhs.e124,
+                e3: (self.e13 * rhs.e234 + self.e34 * rhs.e123) - self.e23 * rhs.e134,
+                e4: (self.e14 * rhs.e234 + self.e34 * rhs.e124) - self.e24 * rhs.e134,
+                e123: self.e1234 * rhs.e123,
+                e124: self.e1234 * rhs.e124,
+                e134: self.e1234 * rhs.e134,
+                e234: self.e1234 * rhs.e234,
+            }
+        }
+    }
+    impl Regressive<Quadvector> for Even {
+        type Output = Even;
+        #[inline]
+        fn regressive(self, rhs: Quadvector) -> Even {
+            Even {
+                s: self.s * rhs.e1234,
+                e12: self.e12 * rhs.e1234,
+                e13: self.e13 * rhs.e1234,
+                e14: self.e14 * rhs.e1234,
+                e23: self.e23 * rhs.e1234,
+                e24: self.e24 * rhs.e1234,
+                e34: self.e34 * rhs.e1234,
+                e1234: self.e1234 * rhs.e1234,
+            }
+        }
+    }
+    impl Regressive<Even> for Even {
+        type Output = Even;
+        #[inline]
+        fn regressive(self, rhs: Even) -> Even {
+            Even {
+                s: ((self.s * rhs.e1234 + self.e12 * rhs.e34)
+                    + (self.e14 * rhs.e23 + self.e23 * rhs.e14))
+                    + ((self.e34 * rhs.e12 + self.e1234 * rhs.s)
+                        - (self.e13 * rhs.e24 + self.e24 * rhs.e13)),
+                e12: self.e12 * rhs.e1234 + self.e1234 * rhs.e12,
+                e13: self.e13 * rhs.e1234 + self.e1234 * rhs.e13,
+                e14: self.e14 * rhs.e1234 + self.e1234 * rhs.e14,
+                e23: self.e23 * rhs.e1234 + self.e1234 * rhs.e23,
+                e24: self.e24 * rhs.e1234 + self.e1234 * rhs.e24,
+                e34: self.e34 * rhs.e1234 + self.e1234 * rhs.e34,
+                e1234: self.e1234 * rhs.e1234,
+            }
+        }
+    }
+    impl Regressive<Odd> for Even {
+        type Output = Odd;
+        #[inline]
+        fn regressive(self, rhs: Odd) -> Odd {
+            Odd {
+                e1: (self.e12 * rhs.e134 + self.e14 * rhs.e123)
+                    + (self.e1234 * rhs.e1 - self.e13 * rhs.e124),
+                e2: (self.e12 * rhs.e234 + self.e24 * rhs.e123)
+                    + (self.e1234 * rhs.e2 - self.e23 * rhs.e124),
+                e3: (self.e13 * rhs.e234 + self.e34 * rhs.e123)
+                    + (self.e1234 * rhs.e3 - self.e23 * rhs.e134),
+                e4: (self.e14 * rhs.e234 + self.e34 * rhs.e124)
+                    + (self.e1234 * rhs.e4 - self.e24 * rhs.e134),
+                e123: self.e1234 * rhs.e123,
+                e124: self.e1234 * rhs.e124,
+                e134: self.e1234 * rhs.e134,
+                e234: self.e1234 * rhs.e234,
+            }
+        }
+    }
+    impl Regressive<Multivector> for Even {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Multivector) -> Multivector {
+            Multivector {
+                s: ((self.s * rhs.e1234 + self.e12 * rhs.e34)
+                    + (self.e14 * rhs.e23 + self.e23 * rhs.e14))
+                    + ((self.e34 * rhs.e12 + self.e1234 * rhs.s)
+                        - (self.e13 * rhs.e24 + self.e24 * rhs.e13)),
+                e1: (self.e12 * rhs.e134 + self.e14 * rhs.e123)
+                    + (self.e1234 * rhs.e1 - self.e13 * rhs.e124),
+                e2: (self.e12 * rhs.e234 + self.e24 * rhs.e123)
+                    + (self.e1234 * rhs.e2 - self.e23 * rhs.e124),
+                e3: (self.e13 * rhs.e234 + self.e34 * rhs.e123)
+                    + (self.e1234 * rhs.e3 - self.e23 * rhs.e134),
+                e4: (self.e14 * rhs.e234 + self.e34 * rhs.e124)
+                    + (self.e1234 * rhs.e4 - self.e24 * rhs.e134),
+                e12: self.e12 * rhs.e1234 + self.e1234 * rhs.e12,
+                e13: self.e13 * rhs.e1234 + self.e1234 * rhs.e13,
+                e14: self.e14 * rhs.e1234 + self.e1234 * rhs.e14,
+                e23: self.e23 * rhs.e1234 + self.e1234 * rhs.e23,
+                e24: self.e24 * rhs.e1234 + self.e1234 * rhs.e24,
+                e34: self.e34 * rhs.e1234 + self.e1234 * rhs.e34,
+                e123: self.e1234 * rhs.e123,
+                e124: self.e1234 * rhs.e124,
+                e134: self.e1234 * rhs.e134,
+                e234: self.e1234 * rhs.e234,
+                e1234: self.e1234 * rhs.e1234,
+            }
+        }
+    }
+    impl Regressive<f64> for Odd {
+        type Output = Zero;
+        #[inline]
+        fn regressive(self, rhs: f64) -> Zero {
+            let _ = (self, rhs);
+            Zero
+        }
+    }
+    impl Regressive<Vector> for Odd {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: Vector) -> f64 {
+            (self.e123 * rhs.e4 + self.e134 * rhs.e2)
+                - (self.e124 * rhs.e3 + self.e234 * rhs.e1)
+        }
+    }
+    impl Regressive<Bivector> for Odd {
+        type Output = Vector;
+        #[inline]
+        fn regressive(self, rhs: Bivector) -> Vector {
+            Vector {
+                e1: (self.e123 * rhs.e14 + self.e134 * rhs.e12) - self.e124 * rhs.e13,
+                e2: (self.e123 * rhs.e24 + self.e234 * rhs.e12) - self.e124 * rhs.e23,
+                e3: (self.e123 * rhs.e34 + self.e234 * rhs.e13) - self.e134 * rhs.e23,
+                e4: (self.e124 * rhs.e34 + self.e234 * rhs.e14) - self.e134 * rhs.e24,
+            }
+        }
+    }
+    impl Regressive<Trivector> for Odd {
+        type Output = Even;
+        #[inline]
+        fn regressive(self, rhs: Trivector) -> Even {
+            Even {
+                s: (self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    - (self.e2 * rhs.e134 + self.e4 * rhs.e123),
+                e12: self.e123 * rhs.e124 - self.e124 * rhs.e123,
+                e13: self.e123 * rhs.e134 - self.e134 * rhs.e123,
+                e14: self.e124 * rhs.e134 - self.e134 * rhs.e124,
+                e23: self.e123 * rhs.e234 - self.e234 * rhs.e123,
+                e24: self.e124 * rhs.e234 - self.e234 * rhs.e124,
+                e34: self.e134 * rhs.e234 - self.e234 * rhs.e134,
+                e1234: 0.0,
+            }
+        }
+    }
+    impl Regressive<Quadvector> for Odd {
+        type Output = Odd;
+        #[inline]
+        fn regressive(self, rhs: Quadvector) -> Odd {
+            Odd {
+                e1: self.e1 * rhs.e1234,
+                e2: self.e2 * rhs.e1234,
+                e3: self.e3 * rhs.e1234,
+                e4: self.e4 * rhs.e1234,
+                e123: self.e123 * rhs.e1234,
+                e124: self.e124 * rhs.e1234,
+                e134: self.e134 * rhs.e1234,
+                e234: self.e234 * rhs.e1234,
+            }
+        }
+    }
+    impl Regressive<Even> for Odd {
+        type Output = Odd;
+        #[inline]
+        fn regressive(self, rhs: Even) -> Odd {
+            Odd {
+                e1: (self.e1 * rhs.e1234 + self.e123 * rhs.e14)
+                    + (self.e134 * rhs.e12 - self.e124 * rhs.e13),
+                e2: (self.e2 * rhs.e1234 + self.e123 * rhs.e24)
+                    + (self.e234 * rhs.e12 - self.e124 * rhs.e23),
+                e3: (self.e3 * rhs.e1234 + self.e123 * rhs.e34)
+                    + (self.e234 * rhs.e13 - self.e134 * rhs.e23),
+                e4: (self.e4 * rhs.e1234 + self.e124 * rhs.e34)
+                    + (self.e234 * rhs.e14 - self.e134 * rhs.e24),
+                e123: self.e123 * rhs.e1234,
+                e124: self.e124 * rhs.e1234,
+                e134: self.e134 * rhs.e1234,
+                e234: self.e234 * rhs.e1234,
+            }
+        }
+    }
+    impl Regressive<Odd> for Odd {
+        type Output = Even;
+        #[inline]
+        fn regressive(self, rhs: Odd) -> Even {
+            Even {
+                s: ((self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    + (self.e123 * rhs.e4 + self.e134 * rhs.e2))
+                    - ((self.e2 * rhs.e134 + self.e4 * rhs.e123)
+                        + (self.e124 * rhs.e3 + self.e234 * rhs.e1)),
+                e12: self.e123 * rhs.e124 - self.e124 * rhs.e123,
+                e13: self.e123 * rhs.e134 - self.e134 * rhs.e123,
+                e14: self.e124 * rhs.e134 - self.e134 * rhs.e124,
+                e23: self.e123 * rhs.e234 - self.e234 * rhs.e123,
+                e24: self.e124 * rhs.e234 - self.e234 * rhs.e124,
+                e34: self.e134 * rhs.e234 - self.e234 * rhs.e134,
+                e1234: 0.0,
+            }
+        }
+    }
+    impl Regressive<Multivector> for Odd {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Multivector) -> Multivector {
+            Multivector {
+                s: ((self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    + (self.e123 * rhs.e4 + self.e134 * rhs.e2))
+                    - ((self.e2 * rhs.e134 + self.e4 * rhs.e123)
+                        + (self.e124 * rhs.e3 + self.e234 * rhs.e1)),
+                e1: (self.e1 * rhs.e1234 + self.e123 * rhs.e14)
+                    + (self.e134 * rhs.e12 - self.e124 * rhs.e13),
+                e2: (self.e2 * rhs.e1234 + self.e123 * rhs.e24)
+                    + (self.e234 * rhs.e12 - self.e124 * rhs.e23),
+                e3: (self.e3 * rhs.e1234 + self.e123 * rhs.e34)
+                    + (self.e234 * rhs.e13 - self.e134 * rhs.e23),
+                e4: (self.e4 * rhs.e1234 + self.e124 * rhs.e34)
+                    + (self.e234 * rhs.e14 - self.e134 * rhs.e24),
+                e12: self.e123 * rhs.e124 - self.e124 * rhs.e123,
+                e13: self.e123 * rhs.e134 - self.e134 * rhs.e123,
+                e14: self.e124 * rhs.e134 - self.e134 * rhs.e124,
+                e23: self.e123 * rhs.e234 - self.e234 * rhs.e123,
+                e24: self.e124 * rhs.e234 - self.e234 * rhs.e124,
+                e34: self.e134 * rhs.e234 - self.e234 * rhs.e134,
+                e123: self.e123 * rhs.e1234,
+                e124: self.e124 * rhs.e1234,
+                e134: self.e134 * rhs.e1234,
+                e234: self.e234 * rhs.e1234,
+                e1234: 0.0,
+            }
+        }
+    }
+    impl Regressive<f64> for Multivector {
+        type Output = f64;
+        #[inline]
+        fn regressive(self, rhs: f64) -> f64 {
+            self.e1234 * rhs
+        }
+    }
+    impl Regressive<Vector> for Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Vector) -> Multivector {
+            Multivector {
+                s: (self.e123 * rhs.e4 + self.e134 * rhs.e2)
+                    - (self.e124 * rhs.e3 + self.e234 * rhs.e1),
+                e1: self.e1234 * rhs.e1,
+                e2: self.e1234 * rhs.e2,
+                e3: self.e1234 * rhs.e3,
+                e4: self.e1234 * rhs.e4,
+                e12: 0.0,
+                e13: 0.0,
+                e14: 0.0,
+                e23: 0.0,
+                e24: 0.0,
+                e34: 0.0,
+                e123: 0.0,
+                e124: 0.0,
+                e134: 0.0,
+                e234: 0.0,
+                e1234: 0.0,
+            }
+        }
+    }
+    impl Regressive<Bivector> for Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Bivector) -> Multivector {
+            Multivector {
+                s: ((self.e12 * rhs.e34 + self.e14 * rhs.e23) + self.e23 * rhs.e14)
+                    + ((self.e34 * rhs.e12 - self.e13 * rhs.e24) - self.e24 * rhs.e13),
+                e1: (self.e123 * rhs.e14 + self.e134 * rhs.e12) - self.e124 * rhs.e13,
+                e2: (self.e123 * rhs.e24 + self.e234 * rhs.e12) - self.e124 * rhs.e23,
+                e3: (self.e123 * rhs.e34 + self.e234 * rhs.e13) - self.e134 * rhs.e23,
+                e4: (self.e124 * rhs.e34 + self.e234 * rhs.e14) - self.e134 * rhs.e24,
+                e12: self.e1234 * rhs.e12,
+                e13: self.e1234 * rhs.e13,
+                e14: self.e1234 * rhs.e14,
+                e23: self.e1234 * rhs.e23,
+                e24: self.e1234 * rhs.e24,
+                e34: self.e1234 * rhs.e34,
+                e123: 0.0,
+                e124: 0.0,
+                e134: 0.0,
+                e234: 0.0,
+                e1234: 0.0,
+            }
+        }
+    }
+    impl Regressive<Trivector> for Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Trivector) -> Multivector {
+            Multivector {
+                s: (self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    - (self.e2 * rhs.e134 + self.e4 * rhs.e123),
+                e1: (self.e12 * rhs.e134 + self.e14 * rhs.e123) - self.e13 * rhs.e124,
+                e2: (self.e12 * rhs.e234 + self.e24 * rhs.e123) - self.e23 * rhs.e124,
+                e3: (self.e13 * rhs.e234 + self.e34 * rhs.e123) - self.e23 * rhs.e134,
+                e4: (self.e14 * rhs.e234 + self.e34 * rhs.e124) - self.e24 * rhs.e134,
+                e12: self.e123 * rhs.e124 - self.e124 * rhs.e123,
+                e13: self.e123 * rhs.e134 - self.e134 * rhs.e123,
+                e14: self.e124 * rhs.e134 - self.e134 * rhs.e124,
+                e23: self.e123 * rhs.e234 - self.e234 * rhs.e123,
+                e24: self.e124 * rhs.e234 - self.e234 * rhs.e124,
+                e34: self.e134 * rhs.e234 - self.e234 * rhs.e134,
+                e123: self.e1234 * rhs.e123,
+                e124: self.e1234 * rhs.e124,
+                e134: self.e1234 * rhs.e134,
+                e234: self.e1234 * rhs.e234,
+                e1234: 0.0,
+            }
+        }
+    }
+    impl Regressive<Quadvector> for Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Quadvector) -> Multivector {
+            Multivector {
+                s: self.s * rhs.e1234,
+                e1: self.e1 * rhs.e1234,
+                e2: self.e2 * rhs.e1234,
+                e3: self.e3 * rhs.e1234,
+                e4: self.e4 * rhs.e1234,
+                e12: self.e12 * rhs.e1234,
+                e13: self.e13 * rhs.e1234,
+                e14: self.e14 * rhs.e1234,
+                e23: self.e23 * rhs.e1234,
+                e24: self.e24 * rhs.e1234,
+                e34: self.e34 * rhs.e1234,
+                e123: self.e123 * rhs.e1234,
+                e124: self.e124 * rhs.e1234,
+                e134: self.e134 * rhs.e1234,
+                e234: self.e234 * rhs.e1234,
+                e1234: self.e1234 * rhs.e1234,
+            }
+        }
+    }
+    impl Regressive<Even> for Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Even) -> Multivector {
+            Multivector {
+                s: ((self.s * rhs.e1234 + self.e12 * rhs.e34)
+                    + (self.e14 * rhs.e23 + self.e23 * rhs.e14))
+                    + ((self.e34 * rhs.e12 + self.e1234 * rhs.s)
+                        - (self.e13 * rhs.e24 + self.e24 * rhs.e13)),
+                e1: (self.e1 * rhs.e1234 + self.e123 * rhs.e14)
+                    + (self.e134 * rhs.e12 - self.e124 * rhs.e13),
+                e2: (self.e2 * rhs.e1234 + self.e123 * rhs.e24)
+                    + (self.e234 * rhs.e12 - self.e124 * rhs.e23),
+                e3: (self.e3 * rhs.e1234 + self.e123 * rhs.e34)
+                    + (self.e234 * rhs.e13 - self.e134 * rhs.e23),
+                e4: (self.e4 * rhs.e1234 + self.e124 * rhs.e34)
+                    + (self.e234 * rhs.e14 - self.e134 * rhs.e24),
+                e12: self.e12 * rhs.e1234 + self.e1234 * rhs.e12,
+                e13: self.e13 * rhs.e1234 + self.e1234 * rhs.e13,
+                e14: self.e14 * rhs.e1234 + self.e1234 * rhs.e14,
+                e23: self.e23 * rhs.e1234 + self.e1234 * rhs.e23,
+                e24: self.e24 * rhs.e1234 + self.e1234 * rhs.e24,
+                e34: self.e34 * rhs.e1234 + self.e1234 * rhs.e34,
+                e123: self.e123 * rhs.e1234,
+                e124: self.e124 * rhs.e1234,
+                e134: self.e134 * rhs.e1234,
+                e234: self.e234 * rhs.e1234,
+                e1234: self.e1234 * rhs.e1234,
+            }
+        }
+    }
+    impl Regressive<Odd> for Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Odd) -> Multivector {
+            Multivector {
+                s: ((self.e1 * rhs.e234 + self.e3 * rhs.e124)
+                    + (self.e123 * rhs.e4 + self.e134 * rhs.e2))
+                    - ((self.e2 * rhs.e134 + self.e4 * rhs.e123)
+                        + (self.e124 * rhs.e3 + self.e234 * rhs.e1)),
+                e1: (self.e12 * rhs.e134 + self.e14 * rhs.e123)
+                    + (self.e1234 * rhs.e1 - self.e13 * rhs.e124),
+                e2: (self.e12 * rhs.e234 + self.e24 * rhs.e123)
+                    + (self.e1234 * rhs.e2 - self.e23 * rhs.e124),
+                e3: (self.e13 * rhs.e234 + self.e34 * rhs.e123)
+                    + (self.e1234 * rhs.e3 - self.e23 * rhs.e134),
+                e4: (self.e14 * rhs.e234 + self.e34 * rhs.e124)
+                    + (self.e1234 * rhs.e4 - self.e24 * rhs.e134),
+                e12: self.e123 * rhs.e124 - self.e124 * rhs.e123,
+                e13: self.e123 * rhs.e134 - self.e134 * rhs.e123,
+                e14: self.e124 * rhs.e134 - self.e134 * rhs.e124,
+                e23: self.e123 * rhs.e234 - self.e234 * rhs.e123,
+                e24: self.e124 * rhs.e234 - self.e234 * rhs.e124,
+                e34: self.e134 * rhs.e234 - self.e234 * rhs.e134,
+                e123: self.e1234 * rhs.e123,
+                e124: self.e1234 * rhs.e124,
+                e134: self.e1234 * rhs.e134,
+                e234: self.e1234 * rhs.e234,
+                e1234: 0.0,
+            }
+        }
+    }
+    impl Regressive<Multivector> for Multivector {
+        type Output = Multivector;
+        #[inline]
+        fn regressive(self, rhs: Multivector) -> Multivector {
+            Multivector {
+                s: (((self.s * rhs.e1234 + self.e1 * rhs.e234)
+                    + (self.e3 * rhs.e124 + self.e12 * rhs.e34))
+                    + ((self.e14 * rhs.e23 + self.e23 * rhs.e14)
+                        + (self.e34 * rhs.e12 + self.e123 * rhs.e4)))
+                    + (((self.e134 * rhs.e2 + self.e1234 * rhs.s)
+                        - (self.e2 * rhs.e134 + self.e4 * rhs.e123))
+                        - ((self.e13 * rhs.e24 + self.e24 * rhs.e13)
+                            + (self.e124 * rhs.e3 + self.e234 * rhs.e1))),
+                e1: ((self.e1 * rhs.e1234 + self.e12 * rhs.e134)
+                    + (self.e14 * rhs.e123 + self.e123 * rhs.e14))
+                    + ((self.e134 * rhs.e12 + self.e1234 * rhs.e1)
+                        - (self.e13 * rhs.e124 + self.e124 * rhs.e13)),
+                e2: ((self.e2 * rhs.e1234 + self.e12 * rhs.e234)
+                    + (self.e24 * rhs.e123 + self.e123 * rhs.e24))
+                    + ((self.e234 * rhs.e12 + self.e1234 * rhs.e2)
+                        - (self.e23 * rhs.e124 + self.e124 * rhs.e23)),
+                e3: ((self.e3 * rhs.e1234 + self.e13 * rhs.e234)
+                    + (self.e34 * rhs.e123 + self.e123 * rhs.e34))
+                    + ((self.e234 * rhs.e13 + self.e1234 * rhs.e3)
+                        - (self.e23 * rhs.e134 + self.e134 * rhs.e23)),
+                e4: ((self.e4 * rhs.e1234 + self.e14 * rhs.e234)
+                    + (self.e34 * rhs.e124 + self.e124 * rhs.e34))
+                    + ((self.e234 * rhs.e14 + self.e1234 * rhs.e4)
+                        - (self.e24 * rhs.e134 + self.e134 * rhs.e24)),
+                e12: (self.e12 * rhs.e1234 + self.e123 * rhs.e124)
+                    + (self.e1234 * rhs.e12 - self.e124 * rhs.e123),
+                e13: (self.e13 * rhs.e1234 + self.e123 * rhs.e134)
+                    + (self.e1234 * rhs.e13 - self.e134 * rhs.e123),
+                e14: (self.e14 * rhs.e1234 + self.e124 * rhs.e134)
+                    + (self.e1234 * rhs.e14 - self.e134 * rhs.e124),
+                e23: (self.e23 * rhs.e1234 + self.e123 * rhs.e234)
+                    + (self.e1234 * rhs.e23 - self.e234 * rhs.e123),
+                e24: (self.e24 * rhs.e1234 + self.e124 * rhs.e234)
+                    + (self.e1234 * rhs.e24 - self.e234 * rhs.e124),
+                e34: (self.e34 * rhs.e1234 + self.e134 * rhs.e234)
+                    + (self.e1234 * rhs.e34 - self.e234 * rhs.e134),
+                e123: self.e123 * rhs.e1234 + self.e1234 * rhs.e123,
+                e124: self.e124 * rhs.e1234 + self.e1234 * rhs.e124,
+                e134: self.e134 * rhs.e1234 + self.e1234 * rhs.e134,
+                e234: self.e234 * rhs.e1234 + self.e1234 * rhs.e234,
+                e1234: self.e1234 * rhs.e1234,
+            }
+        }
+    }
     /// (product, lhs type, rhs type, number of multiply terms) for every emitted
     /// product; the scalar operand is named `Scalar`.
     pub const TERM_COUNTS: &[(&str, &str, &str, usize)] = &[
@@ -10855,6 +11870,69 @@ pub mod g4 {
         ("commutator", "Multivector", "Even", 56usize),
         ("commutator", "Multivector", "Odd", 64usize),
         ("commutator", "Multivector", "Multivector", 120usize),
+        ("regressive", "Scalar", "Vector", 0usize),
+        ("regressive", "Scalar", "Bivector", 0usize),
+        ("regressive", "Scalar", "Trivector", 0usize),
+        ("regressive", "Scalar", "Quadvector", 1usize),
+        ("regressive", "Scalar", "Even", 1usize),
+        ("regressive", "Scalar", "Odd", 0usize),
+        ("regressive", "Scalar", "Multivector", 1usize),
+        ("regressive", "Vector", "Scalar", 0usize),
+        ("regressive", "Vector", "Vector", 0usize),
+        ("regressive", "Vector", "Bivector", 0usize),
+        ("regressive", "Vector", "Trivector", 4usize),
+        ("regressive", "Vector", "Quadvector", 4usize),
+        ("regressive", "Vector", "Even", 4usize),
+        ("regressive", "Vector", "Odd", 4usize),
+        ("regressive", "Vector", "Multivector", 8usize),
+        ("regressive", "Bivector", "Scalar", 0usize),
+        ("regressive", "Bivector", "Vector", 0usize),
+        ("regressive", "Bivector", "Bivector", 6usize),
+        ("regressive", "Bivector", "Trivector", 12usize),
+        ("regressive", "Bivector", "Quadvector", 6usize),
+        ("regressive", "Bivector", "Even", 12usize),
+        ("regressive", "Bivector", "Odd", 12usize),
+        ("regressive", "Bivector", "Multivector", 24usize),
+        ("regressive", "Trivector", "Scalar", 0usize),
+        ("regressive", "Trivector", "Vector", 4usize),
+        ("regressive", "Trivector", "Bivector", 12usize),
+        ("regressive", "Trivector", "Trivector", 12usize),
+        ("regressive", "Trivector", "Quadvector", 4usize),
+        ("regressive", "Trivector", "Even", 16usize),
+        ("regressive", "Trivector", "Odd", 16usize),
+        ("regressive", "Trivector", "Multivector", 32usize),
+        ("regressive", "Quadvector", "Scalar", 1usize),
+        ("regressive", "Quadvector", "Vector", 4usize),
+        ("regressive", "Quadvector", "Bivector", 6usize),
+        ("regressive", "Quadvector", "Trivector", 4usize),
+        ("regressive", "Quadvector", "Quadvector", 1usize),
+        ("regressive", "Quadvector", "Even", 8usize),
+        ("regressive", "Quadvector", "Odd", 8usize),
+        ("regressive", "Quadvector", "Multivector", 16usize),
+        ("regressive", "Even", "Scalar", 1usize),
+        ("regressive", "Even", "Vector", 4usize),
+        ("regressive", "Even", "Bivector", 12usize),
+        ("regressive", "Even", "Trivector", 16usize),
+        ("regressive", "Even", "Quadvector", 8usize),
+        ("regressive", "Even", "Even", 21usize),
+        ("regressive", "Even", "Odd", 20usize),
+        ("regressive", "Even", "Multivector", 41usize),
+        ("regressive", "Odd", "Scalar", 0usize),
+        ("regressive", "Odd", "Vector", 4usize),
+        ("regressive", "Odd", "Bivector", 12usize),
+        ("regressive", "Odd", "Trivector", 16usize),
+        ("regressive", "Odd", "Quadvector", 8usize),
+        ("regressive", "Odd", "Even", 20usize),
+        ("regressive", "Odd", "Odd", 20usize),
+        ("regressive", "Odd", "Multivector", 40usize),
+        ("regressive", "Multivector", "Scalar", 1usize),
+        ("regressive", "Multivector", "Vector", 8usize),
+        ("regressive", "Multivector", "Bivector", 24usize),
+        ("regressive", "Multivector", "Trivector", 32usize),
+        ("regressive", "Multivector", "Quadvector", 16usize),
+        ("regressive", "Multivector", "Even", 41usize),
+        ("regressive", "Multivector", "Odd", 40usize),
+        ("regressive", "Multivector", "Multivector", 81usize),
     ];
     impl ::core::ops::Add<Vector> for f64 {
         type Output = Multivector;

@@ -27,6 +27,12 @@ pub fn algebra(input: RawAlgebra) -> syn::Result<TokenStream> {
     Ok(emit::module(&spec, &plan))
 }
 
+/// The validated spec of an `algebra!` input (for the WGSL snapshot test).
+#[cfg(test)]
+pub fn spec_of(input: RawAlgebra) -> syn::Result<Spec> {
+    validate(input.attrs, input.vis, input.name, input.entries)
+}
+
 /// `#[derive(Algebra)]`: the same items, in a sibling module named after the marker type
 /// in snake case (`struct SpaceTime;` gives `mod space_time`).
 pub fn derive(input: syn::DeriveInput) -> syn::Result<TokenStream> {

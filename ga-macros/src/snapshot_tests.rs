@@ -54,3 +54,31 @@ fn g4_expansion_matches_snapshot() {
 fn g3_f32_expansion_matches_snapshot() {
     check("g3_f32", "pub mod g3 { metric: [1, 1, 1], scalar: f32 }");
 }
+
+/// G3's WGSL (`shaders: [wgsl]`), committed as `snapshots/g3.wgsl` like the Rust.
+#[test]
+fn g3_wgsl_matches_snapshot() {
+    let input = "pub mod g3 { metric: [1, 1, 1], scalar: f32, shaders: [wgsl] }";
+    let raw: crate::spec::RawAlgebra = syn::parse_str(input).expect("snapshot input parses");
+    let spec = crate::expand::spec_of(raw).expect("snapshot input is valid");
+    let actual = crate::emit::wgsl_source(&crate::plan::Plan::new(&spec));
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("snapshots/g3.wgsl");
+    if std::env::var("GA_SNAPSHOTS").as_deref() == Ok("overwrite") {
+        std::fs::write(&path, &actual).expect("write snapshot");
+        return;
+    }
+    let expected = std::fs::read_to_string(&path).unwrap_or_default();
+    assert!(
+        expected == actual,
+        "G3's WGSL changed: run `GA_SNAPSHOTS=overwrite cargo test -p ga-macros` and read the diff of {}",
+        path.display()
+    );
+}
+
+#[test]
+fn only_an_algebra_with_the_shaders_key_gets_a_wgsl_constant() {
+    let without = expansion("pub mod g2 { metric: [1, 1], scalar: f32 }");
+    assert!(!without.contains("WGSL"));
+    let with = expansion("pub mod g2 { metric: [1, 1], scalar: f32, shaders: [wgsl] }");
+    assert!(with.contains("pub const WGSL: &str"));
+}

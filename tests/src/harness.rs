@@ -81,7 +81,7 @@ pub fn check_products(algebra: &Algebra, product: Product, cases: &[PairCase], t
         for case in cases {
             let [a, b, got] = (case.eval)(&x, &y);
             let expected = algebra.product(product, &a, &b);
-            let scale = algebra.product_magnitude(&a, &b);
+            let scale = algebra.magnitude_of(product, &a, &b);
             prop_assert_close!(
                 got,
                 expected,
@@ -462,7 +462,7 @@ pub fn check_lane_products(
         for case in cases {
             for (lane, [a, b, got]) in (case.eval)(&xs, &ys).into_iter().enumerate() {
                 let expected = algebra.product(product, &a, &b);
-                let scale = algebra.product_magnitude(&a, &b);
+                let scale = algebra.magnitude_of(product, &a, &b);
                 prop_assert_close!(
                     got,
                     expected,

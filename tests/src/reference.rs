@@ -26,11 +26,14 @@ pub enum Product {
     ScalarProduct,
     /// `(AB - BA) / 2`.
     Commutator,
+    /// The regressive product (join) `undual(dual(A) ^ dual(B))`, through the right
+    /// complement.
+    Regressive,
 }
 
 impl Product {
     /// Every product, in the order the contract lists them.
-    pub const ALL: [Product; 7] = [
+    pub const ALL: [Product; 8] = [
         Product::Geometric,
         Product::Outer,
         Product::Inner,
@@ -38,6 +41,7 @@ impl Product {
         Product::RightContraction,
         Product::ScalarProduct,
         Product::Commutator,
+        Product::Regressive,
     ];
 
     /// The product's name in `TERM_COUNTS`.
@@ -51,6 +55,7 @@ impl Product {
             Product::RightContraction => "right_contraction",
             Product::ScalarProduct => "scalar_product",
             Product::Commutator => "commutator",
+            Product::Regressive => "regressive",
         }
     }
 
@@ -62,7 +67,8 @@ impl Product {
 
     /// For a grade-filter product, the grade it keeps of `<A_r B_s>`, or `None`
     /// when it keeps nothing of that pair. `Geometric` and `Commutator` are not
-    /// grade filters and return `None`.
+    /// grade filters and return `None`; neither is the regressive product, which is an
+    /// outer product of complements.
     #[must_use]
     pub fn kept_grade(self, r: usize, s: usize) -> Option<usize> {
         match self {
@@ -71,7 +77,7 @@ impl Product {
             Product::LeftContraction => s.checked_sub(r),
             Product::RightContraction => r.checked_sub(s),
             Product::ScalarProduct => Some(0),
-            Product::Geometric | Product::Commutator => None,
+            Product::Geometric | Product::Commutator | Product::Regressive => None,
         }
     }
 }
@@ -143,6 +149,10 @@ impl Algebra {
     /// the commutator: `e_A e_B = -e_B e_A`).
     #[must_use]
     pub fn contributes(&self, product: Product, a: usize, b: usize) -> bool {
+        if product == Product::Regressive {
+            let full = self.pseudoscalar_blade();
+            return (full ^ a) & (full ^ b) == 0;
+        }
         let (sign, blade) = self.blade_product(a, b);
         if sign == 0.0 {
             return false;
@@ -261,6 +271,22 @@ impl Algebra {
         out
     }
 
+    /// [`Algebra::product_magnitude`] for `product`: the regressive product's blade
+    /// pairs land on the shared generators `A & B` rather than on `A xor B`.
+    #[must_use]
+    pub fn magnitude_of(&self, product: Product, a: &[f64], b: &[f64]) -> Vec<f64> {
+        if product != Product::Regressive {
+            return self.product_magnitude(a, b);
+        }
+        let mut out = self.zero();
+        for (i, x) in a.iter().enumerate() {
+            for (j, y) in b.iter().enumerate() {
+                out[i & j] += (x * y).abs();
+            }
+        }
+        out
+    }
+
     /// The grade-`r` part `<a>_r` (zero for `r > n`).
     #[must_use]
     pub fn grade(&self, a: &[f64], r: usize) -> Vec<f64> {
@@ -330,6 +356,15 @@ impl Algebra {
         self.scale(&difference, 0.5)
     }
 
+    /// The regressive product `a v b = undual(dual(a) ^ dual(b))`: the outer product of
+    /// the right complements, taken back. Neither step reads the metric (the outer
+    /// product of blades with no shared generator is their geometric product), so it is
+    /// the same in degenerate metrics such as PGA's.
+    #[must_use]
+    pub fn regressive(&self, a: &[f64], b: &[f64]) -> Vec<f64> {
+        self.undual(&self.outer(&self.dual(a), &self.dual(b)))
+    }
+
     /// Any of the bilinear products.
     #[must_use]
     pub fn product(&self, product: Product, a: &[f64], b: &[f64]) -> Vec<f64> {
@@ -341,6 +376,7 @@ impl Algebra {
             Product::RightContraction => self.right_contraction(a, b),
             Product::ScalarProduct => self.scalar(self.scalar_product(a, b)),
             Product::Commutator => self.commutator(a, b),
+            Product::Regressive => self.regressive(a, b),
         }
     }
 
@@ -793,7 +829,9 @@ mod tests {
         /// with the blade-pair filter that term counts use.
         #[test]
         fn graded_products_agree_with_the_blade_pair_filter((algebra, a, b) in algebra_and_two()) {
-            for product in Product::ALL {
+            // The regressive product is no filter of the geometric product's pairs (its
+            // pairs land on `A & B`); its definition is its own, through complements.
+            for product in Product::ALL.into_iter().filter(|p| *p != Product::Regressive) {
                 let mut expected = algebra.zero();
                 for (i, x) in a.iter().enumerate() {
                     for (j, y) in b.iter().enumerate() {

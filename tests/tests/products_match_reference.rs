@@ -1,5 +1,5 @@
 //! Every generated product (`*`, `^`, `|`, `left_contraction`,
-//! `right_contraction`, `scalar_product`, `commutator`) of every ordered pair of
+//! `right_contraction`, `scalar_product`, `commutator`, `regressive`) of every ordered pair of
 //! types, the scalar on either side included, agrees with the reference algebra
 //! in all six algebras, component by component, to `1e-12` relative to the sum of
 //! the magnitudes of the terms that land on the component (and in the `f32` G2, G3
@@ -31,6 +31,9 @@ macro_rules! apply_product {
     };
     (commutator, $a:ident, $b:ident) => {
         $a.commutator($b)
+    };
+    (regressive, $a:ident, $b:ident) => {
+        $a.regressive($b)
     };
 }
 
@@ -113,6 +116,10 @@ macro_rules! product_tests {
             product_test!(
                 commutator_of_every_type_pair_matches_the_reference,
                 commutator, Commutator, $metric, $types, TOLERANCE
+            );
+            product_test!(
+                regressive_product_of_every_type_pair_matches_the_reference,
+                regressive, Regressive, $metric, $types, TOLERANCE
             );
         }
     };
@@ -249,6 +256,10 @@ macro_rules! lane_product_tests {
             lane_product_test!(
                 commutator_of_every_type_pair_matches_the_reference_in_every_lane,
                 commutator, Commutator, $lanes, $metric, [$($ty),*]
+            );
+            lane_product_test!(
+                regressive_product_of_every_type_pair_matches_the_reference_in_every_lane,
+                regressive, Regressive, $lanes, $metric, [$($ty),*]
             );
         }
     };

@@ -24,11 +24,14 @@ pub enum ProductKind {
     Scalar,
     /// (ab - ba) / 2: keeps the terms whose blades anticommute.
     Commutator,
+    /// The regressive product (join), `undual(dual(a) ^ dual(b))` through the right
+    /// complement: metric-free, so it works for degenerate metrics.
+    Regressive,
 }
 
 impl ProductKind {
     /// Every product, in the order they are emitted.
-    pub const ALL: [ProductKind; 7] = [
+    pub const ALL: [ProductKind; 8] = [
         ProductKind::Geometric,
         ProductKind::Outer,
         ProductKind::Inner,
@@ -36,6 +39,7 @@ impl ProductKind {
         ProductKind::RightContraction,
         ProductKind::Scalar,
         ProductKind::Commutator,
+        ProductKind::Regressive,
     ];
 
     /// The name used in ops lists and in `TERM_COUNTS`.
@@ -48,6 +52,7 @@ impl ProductKind {
             ProductKind::RightContraction => "right_contraction",
             ProductKind::Scalar => "scalar_product",
             ProductKind::Commutator => "commutator",
+            ProductKind::Regressive => "regressive",
         }
     }
 }
@@ -103,6 +108,17 @@ impl Metric {
         Metric { squares }
     }
 
+    /// The null generator of a projective (plane-based) algebra: the one generator that
+    /// squares to 0 when all the others square to 1, as in 3D PGA's `[0, 1, 1, 1]`.
+    pub fn projective_origin(&self) -> Option<usize> {
+        let nulls: Vec<usize> = (0..self.squares.len())
+            .filter(|&i| self.squares[i] == 0)
+            .collect();
+        let euclidean = self.squares.iter().filter(|&&q| q == 1).count();
+        (nulls.len() == 1 && euclidean + 1 == self.squares.len() && euclidean >= 2)
+            .then(|| nulls[0])
+    }
+
     /// The number of generators.
     pub fn dimension(&self) -> usize {
         self.squares.len()
@@ -135,6 +151,9 @@ impl Metric {
     /// The coefficient (-1, 0 or 1) with which `a` times `b` contributes to blade `a ^ b`
     /// under the given product.
     pub fn product(&self, kind: ProductKind, a: Blade, b: Blade) -> (i8, Blade) {
+        if kind == ProductKind::Regressive {
+            return self.regressive(a, b);
+        }
         let (sign, out) = self.geometric(a, b);
         let (r, s, t) = (grade(a) as i32, grade(b) as i32, grade(out) as i32);
         let keep = match kind {
@@ -145,6 +164,7 @@ impl Metric {
             ProductKind::RightContraction => r >= s && t == r - s,
             ProductKind::Scalar => t == 0,
             ProductKind::Commutator => self.geometric(b, a).0 == -sign,
+            ProductKind::Regressive => unreachable!("answered above"),
         };
         (if keep { sign } else { 0 }, out)
     }
@@ -153,6 +173,19 @@ impl Metric {
     pub fn dual(&self, a: Blade) -> (i8, Blade) {
         let complement = self.pseudoscalar() ^ a;
         (reorder_sign(a, complement), complement)
+    }
+
+    /// The regressive product of two blades, `undual(dual(a) ^ dual(b))`: zero unless
+    /// the complements share no generator (together `a` and `b` span the whole space).
+    /// The dual and the outer product never read the squares, so neither does this.
+    pub fn regressive(&self, a: Blade, b: Blade) -> (i8, Blade) {
+        let (sa, ca) = self.dual(a);
+        let (sb, cb) = self.dual(b);
+        if ca & cb != 0 {
+            return (0, 0);
+        }
+        let (su, out) = self.undual(ca | cb);
+        (sa * sb * reorder_sign(ca, cb) * su, out)
     }
 
     /// The inverse of [`Metric::dual`].
@@ -244,5 +277,24 @@ mod tests {
             (-1, 0b110)
         );
         assert_eq!(m.product(ProductKind::Commutator, 0b011, 0b100).0, 0);
+    }
+
+    #[test]
+    fn regressive_meets_planes_in_lines_and_ignores_the_metric() {
+        // In G3 the join of two blades is the meet of the subspaces they span: e12 v e23
+        // is their common line e2, up to the complement's sign; e1 v e2 (lines through
+        // the origin of a 3D space of vectors) is zero, and I v A = A.
+        for squares in [vec![1, 1, 1], vec![0, 1, 1], vec![1, -1, 0]] {
+            let m = Metric::new(squares);
+            assert_eq!(m.product(ProductKind::Regressive, 0b011, 0b110), (1, 0b010));
+            assert_eq!(
+                m.product(ProductKind::Regressive, 0b110, 0b011),
+                (-1, 0b010)
+            );
+            assert_eq!(m.product(ProductKind::Regressive, 0b001, 0b010).0, 0);
+            for a in canonical_blades(3) {
+                assert_eq!(m.product(ProductKind::Regressive, 0b111, a), (1, a));
+            }
+        }
     }
 }

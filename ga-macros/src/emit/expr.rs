@@ -233,9 +233,29 @@ fn operand(terms: &[(bool, TokenStream)]) -> (TokenStream, bool) {
     }
 }
 
+/// How a value of a type is written: the Rust struct literal `Even { s: .., e12: .. }`,
+/// or WGSL's constructor call `Even(.., ..)` with the components in canonical order. The
+/// expressions inside are the same tokens either way (WGSL's arithmetic, field access and
+/// `let` read like Rust's), which is what lets the WGSL emitter reuse the Rust bodies.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Syntax {
+    Rust,
+    Wgsl,
+}
+
 /// A value of type `output` whose component on each blade is given by `component`
 /// (blades it returns `None` for are zero).
 pub fn construct(
+    plan: &Plan,
+    output: Output,
+    component: impl FnMut(Blade) -> Option<TokenStream>,
+) -> TokenStream {
+    construct_in(Syntax::Rust, plan, output, component)
+}
+
+/// [`construct`] in the given syntax.
+pub fn construct_in(
+    syntax: Syntax,
     plan: &Plan,
     output: Output,
     mut component: impl FnMut(Blade) -> Option<TokenStream>,
@@ -243,6 +263,16 @@ pub fn construct(
     match output {
         Output::Zero => quote!(Zero),
         Output::Type(id) if id == TypeId::SCALAR => component(0).unwrap_or_else(|| zero(plan)),
+        Output::Type(id) if syntax == Syntax::Wgsl => {
+            let name = type_tokens(plan, id);
+            let values = plan
+                .types
+                .get(id)
+                .blades
+                .iter()
+                .map(|&blade| component(blade).unwrap_or_else(|| zero(plan)));
+            quote!(#name(#(#values),*))
+        }
         Output::Type(id) => {
             let name = type_tokens(plan, id);
             let fields = plan.types.get(id).blades.iter().map(|&blade| {

@@ -9,11 +9,16 @@ mod integrations;
 mod math;
 mod operators;
 mod products;
+mod projective;
 mod simd;
 mod sin_cos;
 mod types;
 mod unary;
 mod versor;
+mod wgsl;
+
+#[cfg(test)]
+pub use wgsl::wgsl_source;
 
 use proc_macro2::TokenStream;
 use quote::quote;
@@ -59,6 +64,7 @@ pub fn module_items(spec: &Spec, plan: &Plan) -> TokenStream {
         items.extend(versor::emit_sandwiches(plan));
     }
     items.extend(conveniences::emit_conveniences(plan));
+    items.extend(projective::emit_projective_constructors(plan));
     if plan.lanes.is_none() && plan.emitted.contains(&TypeId::multivector(n)) {
         items.extend(unary::emit_multivector_inverse(plan));
         items.extend(versor::emit_multivector_helpers(plan));
@@ -77,6 +83,7 @@ pub fn module_items(spec: &Spec, plan: &Plan) -> TokenStream {
         items.extend(exp_log::emit_scalar_functions(plan));
     }
     items.extend(integrations::emit_integrations(spec, plan));
+    items.extend(wgsl::emit_wgsl(spec, plan));
     if plan.lanes.is_none() {
         for &lanes in &spec.lanes {
             items.extend(batch::emit_batch_module(spec, plan, lanes));

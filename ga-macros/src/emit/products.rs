@@ -3,12 +3,25 @@
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 
-use super::expr::{construct, mirrored_sum, output_type, signed_sum, type_tokens, Operand};
+use super::expr::{
+    construct_in, mirrored_sum, output_type, signed_sum, type_tokens, Operand, Syntax,
+};
 use crate::algebra::ProductKind;
 use crate::plan::{bilinear, LaneProduct, Output, Plan, Side, TypeId};
 
 /// The straight-line value of `lhs (kind) rhs`, and its type.
 pub fn product_value(
+    plan: &Plan,
+    kind: ProductKind,
+    lhs: &Operand,
+    rhs: &Operand,
+) -> (TokenStream, Output) {
+    product_value_in(Syntax::Rust, plan, kind, lhs, rhs)
+}
+
+/// [`product_value`] in the given syntax: the same sums, in the same order.
+pub fn product_value_in(
+    syntax: Syntax,
     plan: &Plan,
     kind: ProductKind,
     lhs: &Operand,
@@ -24,9 +37,12 @@ pub fn product_value(
         .types
         .smallest_holding_preferring(terms.keys().copied(), &[lhs.ty, rhs.ty]);
     if let Some(form) = plan.lane_form(kind, lhs.ty, rhs.ty) {
-        return (mirror_of_lanes(plan, &form, lhs, rhs, output), output);
+        return (
+            mirror_of_lanes(syntax, plan, &form, lhs, rhs, output),
+            output,
+        );
     }
-    let value = construct(plan, output, |blade| {
+    let value = construct_in(syntax, plan, output, |blade| {
         let list = terms.get(&blade)?;
         let summands: Vec<(i32, TokenStream)> = list
             .iter()
@@ -45,6 +61,7 @@ pub fn product_value(
 /// in the lane form's column order and tree, so that the scalar body, the SIMD body and the
 /// batch modules round alike.
 fn mirror_of_lanes(
+    syntax: Syntax,
     plan: &Plan,
     form: &LaneProduct,
     lhs: &Operand,
@@ -56,7 +73,7 @@ fn mirror_of_lanes(
     };
     let blades = plan.types.get(id).blades.clone();
     let order = form.sum_order();
-    construct(plan, output, |blade| {
+    construct_in(syntax, plan, output, |blade| {
         let lane = blades.iter().position(|&b| b == blade)?;
         let leaves: Vec<_> = order
             .iter()
@@ -155,6 +172,7 @@ fn product_impl(plan: &Plan, kind: ProductKind, a: TypeId, b: TypeId) -> TokenSt
         }
         ProductKind::Scalar => (quote!(ScalarProduct), format_ident!("scalar_product")),
         ProductKind::Commutator => (quote!(Commutator), format_ident!("commutator")),
+        ProductKind::Regressive => (quote!(Regressive), format_ident!("regressive")),
     };
     // The commutator keeps the terms of `ab` whose blades anticommute, where (ab - ba)/2
     // counts them at full weight, so its body needs no halving.
@@ -202,6 +220,11 @@ pub fn emit_product_traits(plan: &Plan) -> TokenStream {
                 quote!(Commutator),
                 quote!(commutator),
                 "The commutator product (AB - BA) / 2 (not the cross product).",
+            ),
+            ProductKind::Regressive => (
+                quote!(Regressive),
+                quote!(regressive),
+                "The regressive product (join) undual(dual(A) ^ dual(B)), through the right complement: metric-free.",
             ),
             _ => continue,
         };

@@ -50,26 +50,34 @@ pub fn emit_struct(plan: &Plan, id: TypeId) -> TokenStream {
     });
     let indices: Vec<usize> = (0..len).collect();
     let zeros = vec![zero.clone(); len];
-    let into_multivector = if plan
-        .emitted
-        .contains(&TypeId::multivector(plan.metric.dimension()))
-        && def.kind != TypeKind::Multivector
-    {
-        let values = def.blades.iter().map(|&b| {
-            let f = field_ident(b);
-            quote!(#f: value.#f)
-        });
-        quote! {
-            impl ::core::convert::From<#name> for Multivector {
-                #[inline]
-                fn from(value: #name) -> Multivector {
-                    Multivector { #(#values,)* ..Multivector::ZERO }
+    // Widening conversions into the types that hold every blade of this one:
+    // `Bivector -> Even`, `Vector -> Odd`, anything -> `Multivector` (the rest of the
+    // target's components zero). Only into these three: between user types a subset
+    // relation would be an accident of the blades chosen, not a promise.
+    let n = plan.metric.dimension();
+    let into_multivector: TokenStream = [TypeId::even(n), TypeId::odd(n), TypeId::multivector(n)]
+        .into_iter()
+        .filter(|&target| target != id && plan.emitted.contains(&target))
+        .filter(|&target| {
+            let held = &plan.types.get(target).blades;
+            def.blades.iter().all(|b| held.contains(b))
+        })
+        .map(|target| {
+            let target_name = type_tokens(plan, target);
+            let values = def.blades.iter().map(|&b| {
+                let f = field_ident(b);
+                quote!(#f: value.#f)
+            });
+            quote! {
+                impl ::core::convert::From<#name> for #target_name {
+                    #[inline]
+                    fn from(value: #name) -> #target_name {
+                        #target_name { #(#values,)* ..#target_name::ZERO }
+                    }
                 }
             }
-        }
-    } else {
-        quote!()
-    };
+        })
+        .collect();
     quote! {
         #[doc = #doc]
         #[derive(Clone, Copy, Debug, PartialEq, Default)]
@@ -172,15 +180,18 @@ pub fn emit_support_items(plan: &Plan) -> TokenStream {
             pub type Rotor = Even;
         });
     }
-    if plan.emitted.contains(&TypeId::multivector(n)) {
-        out.extend(quote! {
-            impl ::core::convert::From<#s> for Multivector {
-                #[inline]
-                fn from(value: #s) -> Multivector {
-                    Multivector { s: value, ..Multivector::ZERO }
+    for target in [TypeId::even(n), TypeId::multivector(n)] {
+        if plan.emitted.contains(&target) {
+            let name = type_tokens(plan, target);
+            out.extend(quote! {
+                impl ::core::convert::From<#s> for #name {
+                    #[inline]
+                    fn from(value: #s) -> #name {
+                        #name { s: value, ..#name::ZERO }
+                    }
                 }
-            }
-        });
+            });
+        }
     }
     out
 }

@@ -6,8 +6,8 @@ use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 
 use super::expr::{
-    construct, field_ident, float, mirrored_sum, scalar_type, signed_sum, signed_sum_linear,
-    type_tokens, Operand,
+    construct, construct_in, field_ident, float, mirrored_sum, scalar_type, signed_sum,
+    signed_sum_linear, type_tokens, Operand, Syntax,
 };
 use super::products::product_value;
 use crate::algebra::{blade_name, Involution, ProductKind};
@@ -68,7 +68,7 @@ pub fn emit_sandwiches(plan: &Plan) -> TokenStream {
     out
 }
 
-fn is_odd(plan: &Plan, v: TypeId) -> bool {
+pub fn is_odd(plan: &Plan, v: TypeId) -> bool {
     matches!(plan.types.get(v).kind, TypeKind::Grade(1) | TypeKind::Odd)
 }
 
@@ -372,9 +372,24 @@ fn fused_parts(plan: &Plan, v: TypeId, sums: &CollectedSums) -> FusedParts {
 /// a vector, that first term written `(-p - q) * x` made LLVM pair the outputs so that a
 /// chain of rotations took 1.7x as long.
 fn fused_body(plan: &Plan, v: TypeId, x: TypeId, sums: &CollectedSums) -> TokenStream {
+    let (lets, value) = fused_body_in(Syntax::Rust, plan, v, x, sums);
+    quote! {
+        #lets
+        #value
+    }
+}
+
+/// The collected sandwich as its `let`s (reading the versor as `self`) and its value.
+pub fn fused_body_in(
+    syntax: Syntax,
+    plan: &Plan,
+    v: TypeId,
+    x: TypeId,
+    sums: &CollectedSums,
+) -> (TokenStream, TokenStream) {
     let parts = fused_parts(plan, v, sums);
     let arg = Operand::new(quote!(x), x);
-    let value = construct(plan, Output::Type(x), |blade| {
+    let value = construct_in(syntax, plan, Output::Type(x), |blade| {
         let mut sum = TokenStream::new();
         for (&(_, k), coefficient) in parts.coefficients.range((blade, 0)..=(blade, usize::MAX)) {
             let xk = arg.component(plan, k);
@@ -405,11 +420,7 @@ fn fused_body(plan: &Plan, v: TypeId, x: TypeId, sums: &CollectedSums) -> TokenS
         }
         (!sum.is_empty()).then_some(sum)
     });
-    let lets = parts.lets;
-    quote! {
-        #lets
-        #value
-    }
+    (parts.lets, value)
 }
 
 /// `sandwich_matrix` and `sandwich_vectors`: the linear map `x -> v x ~v` on vectors,
@@ -478,6 +489,22 @@ pub fn emit_sandwich_matrix(plan: &Plan, v: TypeId) -> TokenStream {
 
 /// Two products through local variables, for versors too large to expand.
 fn chained_body(plan: &Plan, v: TypeId, x: TypeId, odd: bool) -> TokenStream {
+    let (lets, value) = chained_body_in(Syntax::Rust, plan, v, x, odd);
+    quote! {
+        #lets
+        #value
+    }
+}
+
+/// The sandwich as two chained products: the `let`s of `v x` (reading the versor as
+/// `self`) and the value of `(v x) ~v` on `x`'s blades.
+pub fn chained_body_in(
+    syntax: Syntax,
+    plan: &Plan,
+    v: TypeId,
+    x: TypeId,
+    odd: bool,
+) -> (TokenStream, TokenStream) {
     let versor = &plan.types.get(v).blades;
     let operand = &plan.types.get(x).blades;
     let this = Operand::new(quote!(self), v);
@@ -502,7 +529,7 @@ fn chained_body(plan: &Plan, v: TypeId, x: TypeId, odd: bool) -> TokenStream {
         quote!(let #name = #sum;)
     });
     let second = bilinear(&plan.metric, ProductKind::Geometric, &middle, versor);
-    let value = construct(plan, Output::Type(x), |blade| {
+    let value = construct_in(syntax, plan, Output::Type(x), |blade| {
         let terms = second.get(&blade)?;
         let summands: Vec<(i32, TokenStream)> = terms
             .iter()
@@ -515,10 +542,7 @@ fn chained_body(plan: &Plan, v: TypeId, x: TypeId, odd: bool) -> TokenStream {
             .collect();
         Some(signed_sum(&summands))
     });
-    quote! {
-        #(#locals)*
-        #value
-    }
+    (quote!(#(#locals)*), value)
 }
 
 /// `reflect(n)` on every type, when vectors are emitted.

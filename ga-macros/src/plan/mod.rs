@@ -80,7 +80,7 @@ impl Plan {
     /// scalars, and only the operations that are straight-line code (products, sums,
     /// involutions, duals, projections, sandwiches); nothing that branches per item.
     pub fn batch(&self, lanes: usize) -> Plan {
-        const STRAIGHT_LINE: [Op; 14] = [
+        const STRAIGHT_LINE: [Op; 15] = [
             Op::Geometric,
             Op::Outer,
             Op::Inner,
@@ -88,6 +88,7 @@ impl Plan {
             Op::RightContraction,
             Op::ScalarProduct,
             Op::Commutator,
+            Op::Regressive,
             Op::Add,
             Op::Reverse,
             Op::GradeInvolution,
@@ -321,6 +322,7 @@ pub fn product_op(kind: ProductKind) -> Op {
         ProductKind::RightContraction => Op::RightContraction,
         ProductKind::Scalar => Op::ScalarProduct,
         ProductKind::Commutator => Op::Commutator,
+        ProductKind::Regressive => Op::Regressive,
     }
 }
 

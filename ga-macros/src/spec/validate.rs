@@ -33,6 +33,9 @@ pub struct Spec {
     pub op_idents: Vec<Ident>,
     /// Trait impls for other crates' traits (`derive: [serde, bytemuck, approx, mint]`).
     pub integrations: Vec<Integration>,
+    /// Shader modules to emit beside the Rust (`shaders: [wgsl]`): the `#[cfg(..)]`
+    /// attributes of each `wgsl` entry (one entry at most).
+    pub wgsl: Option<Vec<Attribute>>,
 }
 
 /// The floating-point backend of the emitted `math` module (`math: ...`).
@@ -116,6 +119,7 @@ pub enum Op {
     RightContraction,
     ScalarProduct,
     Commutator,
+    Regressive,
     Add,
     Reverse,
     GradeInvolution,
@@ -132,7 +136,7 @@ pub enum Op {
 }
 
 impl Op {
-    const NAMES: [(&'static str, Op); 20] = [
+    const NAMES: [(&'static str, Op); 21] = [
         ("geometric", Op::Geometric),
         ("outer", Op::Outer),
         ("inner", Op::Inner),
@@ -140,6 +144,7 @@ impl Op {
         ("right_contraction", Op::RightContraction),
         ("scalar_product", Op::ScalarProduct),
         ("commutator", Op::Commutator),
+        ("regressive", Op::Regressive),
         ("add", Op::Add),
         ("reverse", Op::Reverse),
         ("grade_involution", Op::GradeInvolution),
@@ -156,10 +161,10 @@ impl Op {
     ];
 
     /// Every operation, in the order of `NAMES`.
-    pub const ALL: [Op; 20] = {
-        let mut all = [Op::Geometric; 20];
+    pub const ALL: [Op; 21] = {
+        let mut all = [Op::Geometric; 21];
         let mut i = 0;
-        while i < 20 {
+        while i < 21 {
             all[i] = Op::NAMES[i].1;
             i += 1;
         }
@@ -192,7 +197,7 @@ impl Op {
     }
 }
 
-const KEYS: &str = "metric, signature, scalar, types, ops, lanes, simd, math, derive";
+const KEYS: &str = "metric, signature, scalar, types, ops, lanes, simd, math, derive, shaders";
 
 const GRADE_NAMES: [&str; MAX_DIMENSION] = [
     "Vector",
@@ -223,6 +228,7 @@ pub fn validate(
     let mut simd = true;
     let mut math = Math::Std;
     let mut integrations: Option<RawIntegrations> = None;
+    let mut shaders: Option<RawIntegrations> = None;
     for entry in entries {
         let key = entry.key.to_string();
         if seen.contains(&entry.key) {
@@ -284,6 +290,11 @@ pub fn validate(
                 Ok(raw) => integrations = Some(raw),
                 Err(e) => cx.syn_error(e),
             },
+            // The same list syntax as `derive`: names, each with optional `#[cfg(..)]`s.
+            "shaders" => match syn::parse2::<RawIntegrations>(value) {
+                Ok(raw) => shaders = Some(raw),
+                Err(e) => cx.syn_error(e),
+            },
             _ => cx.error_spanned_by(
                 &entry.key,
                 format!("unknown key `{key}`: expected one of {KEYS}"),
@@ -318,6 +329,7 @@ pub fn validate(
     let integrations = integrations
         .map(|raw| check_integrations(&mut cx, squares.as_deref(), raw))
         .unwrap_or_default();
+    let wgsl = shaders.and_then(|raw| check_shaders(&mut cx, raw));
     cx.check()?;
     let Some(squares) = squares else {
         return Err(syn::Error::new(
@@ -338,7 +350,38 @@ pub fn validate(
         math,
         op_idents,
         integrations,
+        wgsl,
     })
+}
+
+/// `shaders: [wgsl]` (optionally `#[cfg(..)] wgsl`): the `cfg`s of the one `wgsl` entry.
+fn check_shaders(cx: &mut Ctxt, raw: RawIntegrations) -> Option<Vec<Attribute>> {
+    let mut wgsl = None;
+    for entry in raw.0 {
+        if entry.name != "wgsl" || entry.path.is_some() {
+            cx.error_spanned_by(
+                &entry.name,
+                format!("unknown shader language `{}`: expected `wgsl`", entry.name),
+            );
+            continue;
+        }
+        if wgsl.is_some() {
+            cx.error_spanned_by(
+                &entry.name,
+                "`wgsl` is listed twice in `shaders`: list it once",
+            );
+            continue;
+        }
+        if let Some(attr) = entry.attrs.iter().find(|a| !a.path().is_ident("cfg")) {
+            cx.error_spanned_by(
+                attr,
+                "only `#[cfg(..)]` may gate a shader entry, e.g. `#[cfg(feature = \"wgsl\")] wgsl`",
+            );
+            continue;
+        }
+        wgsl = Some(entry.attrs);
+    }
+    wgsl
 }
 
 /// Operations listed in `ops` whose methods the planned module cannot carry: `exp` is a
