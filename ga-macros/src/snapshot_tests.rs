@@ -54,3 +54,12 @@ fn g4_expansion_matches_snapshot() {
 fn g3_f32_expansion_matches_snapshot() {
     check("g3_f32", "pub mod g3 { metric: [1, 1, 1], scalar: f32 }");
 }
+
+/// G3 over a generic scalar (`num_dual::Dual64`): the f64 code rewritten for the type.
+#[test]
+fn g3_dual_expansion_matches_snapshot() {
+    check(
+        "g3_dual",
+        "pub mod g3 { metric: [1, 1, 1], scalar: ::num_dual::Dual64 }",
+    );
+}
