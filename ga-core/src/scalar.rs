@@ -96,6 +96,10 @@ pub trait Scalar:
             self
         }
     }
+    /// `f64::signum` of the real part, as a constant (its derivative is zero).
+    fn signum(self) -> Self {
+        Self::from_f64(self.re().signum())
+    }
     /// Whether the real part is finite.
     fn is_finite(self) -> bool {
         self.re().is_finite()

@@ -10,6 +10,8 @@
 //!   blades read from their field names;
 //! - [`algebras`]: the six algebras under test (STA, PGA and CGA generated here)
 //!   and the macros that enumerate them and their type pairs;
+//! - [`dual_algebras`]: the test metrics over num-dual's `Dual64` (and G3 over
+//!   `HyperDual64`), written with a user's `scalar:` path;
 //! - [`harness`]: the fixed-seed proptest drivers that check tables of generated
 //!   operations against the reference.
 //!
@@ -19,6 +21,7 @@
 pub mod algebras;
 pub mod blade;
 pub mod close;
+pub mod dual_algebras;
 pub mod embed;
 pub mod harness;
 pub mod reference;

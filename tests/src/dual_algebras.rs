@@ -1,0 +1,34 @@
+//! The test metrics over dual numbers, generated here once with a user's `scalar:` path
+//! (`num_dual::Dual64`, as a crate depending on num-dual writes it), and G3 over
+//! `num_dual::HyperDual64` for second derivatives. G3 over `Dual64` is ga-core's own
+//! (`ga_core::dual64::g3`, feature `dual`).
+
+ga_macros::algebra! {
+    /// The Euclidean plane over `Dual64`.
+    pub mod g2 { metric: [1, 1], scalar: num_dual::Dual64 }
+}
+
+ga_macros::algebra! {
+    /// Euclidean four-space over `Dual64`.
+    pub mod g4 { metric: [1, 1, 1, 1], scalar: num_dual::Dual64 }
+}
+
+ga_macros::algebra! {
+    /// The space-time algebra over `Dual64` (`e1` the time axis).
+    pub mod sta { metric: [1, -1, -1, -1], scalar: num_dual::Dual64 }
+}
+
+ga_macros::algebra! {
+    /// 3D projective geometric algebra over `Dual64` (`e4` null).
+    pub mod pga { metric: [1, 1, 1, 0], scalar: num_dual::Dual64 }
+}
+
+ga_macros::algebra! {
+    /// 3D conformal geometric algebra over `Dual64` (`e5` squares to -1).
+    pub mod cga { metric: [1, 1, 1, 1, -1], scalar: num_dual::Dual64 }
+}
+
+ga_macros::algebra! {
+    /// Euclidean space over `HyperDual64`: two first derivatives and the mixed second.
+    pub mod g3_hyper { metric: [1, 1, 1], scalar: num_dual::HyperDual64 }
+}
