@@ -47,6 +47,9 @@ pub trait Scalar:
     /// `f64::NAN`.
     const NAN: Self;
 
+    /// Whether every part (the real one and the derivatives) is zero: the generated code
+    /// skips a multiplication by an exact zero only then.
+    fn is_exact_zero(self) -> bool;
     /// A constant: `x` with zero derivative parts.
     fn from_f64(x: f64) -> Self;
     /// The real part.
@@ -145,6 +148,10 @@ macro_rules! float_scalar {
             const NAN: Self = $t::NAN;
 
             #[inline]
+            fn is_exact_zero(self) -> bool {
+                self == 0.0
+            }
+            #[inline]
             fn from_f64(x: f64) -> Self {
                 x as $t
             }
@@ -236,7 +243,7 @@ mod num_dual_impls {
     use num_dual::{Dual64, DualNum, HyperDual64};
 
     macro_rules! dual_scalar {
-        ($t:ty, $lift:expr) => {
+        ($t:ty, $lift:expr, [$($part:ident),*]) => {
             impl Scalar for $t {
                 const ZERO: Self = $lift(0.0);
                 const ONE: Self = $lift(1.0);
@@ -246,6 +253,10 @@ mod num_dual_impls {
                 const INFINITY: Self = $lift(f64::INFINITY);
                 const NAN: Self = $lift(f64::NAN);
 
+                #[inline]
+                fn is_exact_zero(self) -> bool {
+                    self.re == 0.0 $(&& self.$part == 0.0)*
+                }
                 #[inline]
                 fn from_f64(x: f64) -> Self {
                     $lift(x)
@@ -306,6 +317,6 @@ mod num_dual_impls {
         }
     }
 
-    dual_scalar!(Dual64, dual);
-    dual_scalar!(HyperDual64, hyper);
+    dual_scalar!(Dual64, dual, [eps]);
+    dual_scalar!(HyperDual64, hyper, [eps1, eps2, eps1eps2]);
 }

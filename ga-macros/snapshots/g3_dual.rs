@@ -12085,7 +12085,7 @@ pub mod g3 {
             rhs.swap(col, pivot);
             for row in col + 1..8usize {
                 let factor = m[row][col] / m[col][col];
-                if factor != <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO {
+                if !<::num_dual::Dual64 as ::ga_core::Scalar>::is_exact_zero(factor) {
                     for c in col..8usize {
                         m[row][c] -= factor * m[col][c];
                     }

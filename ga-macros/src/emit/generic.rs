@@ -14,7 +14,10 @@
 //! - `Default` leaves the derive lists (a dual number need not have one) and each type
 //!   gets a `Default` that is its `ZERO`.
 //!
-//! Comparisons stay as written: the trait asks `PartialOrd` to compare real parts, so a
+//! `x != 0.0` becomes `!Scalar::is_exact_zero(x)` (every part zero): such a guard skips
+//! work for a zero multiplier, which must not drop a non-zero derivative.
+//!
+//! Other comparisons stay as written: the trait asks `PartialOrd` to compare real parts, so a
 //! branch on a value (exp's series range, the scaled-norm test, the inverse's pivot)
 //! takes the f64 code's path and the derivative parts follow it.
 
@@ -209,6 +212,19 @@ impl Rewrite<'_> {
                     let constant: TokenStream = tokens[i..i + 12].iter().cloned().collect();
                     out.extend(lift(s, tr, constant));
                     i += 12;
+                }
+                // `x != 0.0` guards skip work for a zero multiplier (the inverse's elimination):
+                // with derivative parts the work is skipped only when every part is zero.
+                TokenTree::Punct(p)
+                    if p.as_char() == '!'
+                        && is_punct(next, '=')
+                        && matches!(out.last(), Some(TokenTree::Ident(_)))
+                        && matches!(tokens.get(i + 2), Some(TokenTree::Literal(l))
+                        if is_float(l) && l.to_string().parse::<f64>() == Ok(0.0)) =>
+                {
+                    let operand: TokenStream = out.pop().into_iter().collect();
+                    out.extend(quote!(!<#s as #tr>::is_exact_zero(#operand)));
+                    i += 3;
                 }
                 // `const NAME: f64 = ...;` stays as written, in f64.
                 TokenTree::Ident(ident)
