@@ -5,6 +5,7 @@ pub mod csv;
 pub mod dynamics;
 pub mod error;
 pub mod exact_flow;
+pub mod gradients;
 pub mod inertia;
 mod input;
 pub mod integrators;

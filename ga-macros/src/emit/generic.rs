@@ -277,8 +277,8 @@ impl Rewrite<'_> {
                         .parse()
                         .ok();
                     match value {
-                        Some(v) if v == 0.0 => out.extend(quote!(<#s as #tr>::ZERO)),
-                        Some(v) if v == 1.0 => out.extend(quote!(<#s as #tr>::ONE)),
+                        Some(0.0) => out.extend(quote!(<#s as #tr>::ZERO)),
+                        Some(1.0) => out.extend(quote!(<#s as #tr>::ONE)),
                         _ => {
                             let plain = Literal::f64_unsuffixed(value.unwrap_or(f64::NAN));
                             out.extend(lift(s, tr, quote!(#plain)));

@@ -1,0 +1,144 @@
+//! Trajectory derivatives through `lie-rk4` and the splitting on the Hairer-Lubich-Wanner
+//! body (moments (2, 1, 2/3), m(0) = (cos 1.1, 0, sin 1.1)): the `f64` instantiation of
+//! `gradients` against the registry's methods, and the `Dual64` derivatives of the state at
+//! T = 10 with respect to each moment and each initial angular velocity component against
+//! Richardson-extrapolated central differences of the registry's own `f64` runs.
+
+use ga_rigid::dynamics::{omega_from_vector, RigidBody, State};
+use ga_rigid::gradients::{dual64, f64 as g64};
+use ga_rigid::integrators::{Integrator, LieRk4, Splitting};
+
+use ga_core::f64::g3::Rotor;
+use ga_core::num_dual::Dual64;
+
+const MOMENTS: [f64; 3] = [2.0, 1.0, 2.0 / 3.0];
+const T: f64 = 10.0;
+const STEP: f64 = 0.01;
+const ORDER: [usize; 3] = [0, 1, 2];
+
+/// The initial body angular velocity `w = I^-1 m(0)`.
+fn w0(moments: [f64; 3]) -> [f64; 3] {
+    let m = [1.1_f64.cos(), 0.0, 1.1_f64.sin()];
+    std::array::from_fn(|k| m[k] / moments[k])
+}
+
+/// The seven numbers of a state: the rotor's four, then the bivector's three.
+fn flat(state: &State) -> [f64; 7] {
+    let (r, o) = (state.rotor, state.omega);
+    [r.s, r.e12, r.e13, r.e23, o.e12, o.e13, o.e23]
+}
+
+/// The registry's run of `method` from the identity with moments `moments` and `w(0) = w`.
+fn registry(method: &str, moments: [f64; 3], w: [f64; 3]) -> [f64; 7] {
+    let body = RigidBody::new_unphysical(moments).unwrap();
+    let state = State {
+        rotor: Rotor::ONE,
+        omega: omega_from_vector(w),
+    };
+    let end = match method {
+        "lie-rk4" => LieRk4::new(STEP).unwrap().advance(&body, 0.0, state, T),
+        _ => Splitting::new(STEP)
+            .unwrap()
+            .with_axis_order(ORDER)
+            .unwrap()
+            .advance(&body, 0.0, state, T),
+    };
+    flat(&end.unwrap())
+}
+
+fn dual_flat(state: &dual64::State) -> [Dual64; 7] {
+    let (r, o) = (state.rotor, state.omega);
+    [r.s, r.e12, r.e13, r.e23, o.e12, o.e13, o.e23]
+}
+
+/// The dual run of `method` with moments and `w(0)` given as dual numbers.
+fn dual_run(method: &str, moments: [Dual64; 3], w: [Dual64; 3]) -> [Dual64; 7] {
+    let body = dual64::FreeBody::new(moments).unwrap();
+    let state = dual64::State::from_w(w);
+    let end = match method {
+        "lie-rk4" => body.lie_rk4(state, STEP, T),
+        _ => body.splitting(state, STEP, T, ORDER),
+    };
+    dual_flat(&end.unwrap())
+}
+
+#[test]
+fn the_f64_instantiation_is_the_registrys_arithmetic() {
+    let w = w0(MOMENTS);
+    for method in ["lie-rk4", "splitting"] {
+        let body = g64::FreeBody::new(MOMENTS).unwrap();
+        let state = g64::State::from_w(w);
+        let ours = match method {
+            "lie-rk4" => body.lie_rk4(state, STEP, T),
+            _ => body.splitting(state, STEP, T, ORDER),
+        }
+        .unwrap();
+        let ours = flat(&State {
+            rotor: ours.rotor,
+            omega: ours.omega,
+        });
+        assert_eq!(ours, registry(method, MOMENTS, w), "{method}");
+    }
+}
+
+/// The derivative of the registry's run along parameter `p` (0..3 the moments, 3..6 the
+/// components of w(0), moved with the moments fixed): Richardson's extrapolation of central
+/// differences with relative steps `delta` and `2 delta`.
+fn difference(method: &str, p: usize, delta: f64) -> [f64; 7] {
+    let at = |t: f64| {
+        let mut moments = MOMENTS;
+        let mut w = w0(MOMENTS);
+        if p < 3 {
+            moments[p] += t * MOMENTS[p];
+        } else {
+            w[p - 3] += t;
+        }
+        registry(method, moments, w)
+    };
+    let (p1, m1, p2, m2) = (at(delta), at(-delta), at(2.0 * delta), at(-2.0 * delta));
+    let scale = if p < 3 { MOMENTS[p] } else { 1.0 };
+    std::array::from_fn(|k| (8.0 * (p1[k] - m1[k]) - (p2[k] - m2[k])) / (12.0 * delta * scale))
+}
+
+fn norm(x: &[f64]) -> f64 {
+    x.iter().map(|v| v * v).sum::<f64>().sqrt()
+}
+
+#[test]
+fn trajectory_derivatives_match_differences_of_the_f64_runs() {
+    for method in ["lie-rk4", "splitting"] {
+        for p in 0..6 {
+            let mut moments = MOMENTS.map(|i| Dual64::new(i, 0.0));
+            let mut w = w0(MOMENTS).map(|x| Dual64::new(x, 0.0));
+            if p < 3 {
+                moments[p].eps = 1.0;
+            } else {
+                w[p - 3].eps = 1.0;
+            }
+            let dual = dual_run(method, moments, w);
+            // The values are the registry's run to rounding (num-dual divides by multiplying
+            // with the reciprocal, so a quotient can differ in its last bit).
+            let values = dual.map(|d| d.re);
+            let reference = registry(method, MOMENTS, w0(MOMENTS));
+            for (v, r) in values.iter().zip(&reference) {
+                assert!((v - r).abs() <= 1e-12, "{method}: value {v} against {r}");
+            }
+            let derivative = dual.map(|d| d.eps);
+            let fd = difference(method, p, 1e-4);
+            let finer = difference(method, p, 5e-5);
+            let diff: Vec<f64> = derivative.iter().zip(&fd).map(|(a, b)| a - b).collect();
+            let relative = norm(&diff) / norm(&fd);
+            let fd_change: Vec<f64> = fd.iter().zip(&finer).map(|(a, b)| a - b).collect();
+            println!(
+                "{method} d/dp{p}: |dR/dp| {:.3e}, relative to the difference {relative:.2e} \
+                 (the difference's own change with its step {:.2e})",
+                norm(&fd),
+                norm(&fd_change) / norm(&fd)
+            );
+            assert!(
+                relative <= 1e-8,
+                "{method}, parameter {p}: dual {derivative:?} against {fd:?}: {relative:e}"
+            );
+        }
+    }
+}
