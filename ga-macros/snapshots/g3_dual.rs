@@ -5,6 +5,10 @@
 pub mod g3 {
     #[allow(unused_imports)]
     use ::ga_core::Scalar as _;
+    const _: fn() = || {
+        fn implements_ga_core_scalar<T: ::ga_core::Scalar>() {}
+        implements_ga_core_scalar::<::num_dual::Dual64>();
+    };
     /// The result of a product that is zero for every input (for example the outer
     /// product of two parallel grades that cannot fit); converts into every type.
     #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -106,9 +106,18 @@ pub fn rewrite(items: TokenStream, path: &syn::Path) -> TokenStream {
         constants: &constants,
     };
     let body = cx.stream(items);
+    // One error at the user's path when the type does not implement the trait, before the
+    // many the generated code would give.
+    let check = quote::quote_spanned! {syn::spanned::Spanned::span(path)=>
+        const _: fn() = || {
+            fn implements_ga_core_scalar<T: #tr>() {}
+            implements_ga_core_scalar::<#s>();
+        };
+    };
     quote! {
         #[allow(unused_imports)]
         use #tr as _;
+        #check
         #body
     }
 }

@@ -212,6 +212,16 @@ pub fn grade_type_name(k: usize) -> &'static str {
     GRADE_NAMES[k - 1]
 }
 
+/// Whether `path` names a primitive type other than f32/f64 (`i32`, `f16`, `bool`, ...).
+fn is_primitive(path: &syn::Path) -> bool {
+    const PRIMITIVES: [&str; 17] = [
+        "i8", "i16", "i32", "i64", "i128", "isize", "u8", "u16", "u32", "u64", "u128", "usize",
+        "f16", "f128", "bool", "char", "str",
+    ];
+    path.get_ident()
+        .is_some_and(|ident| PRIMITIVES.iter().any(|p| ident == p))
+}
+
 /// Checks the raw entries and builds the [`Spec`], reporting every problem at once.
 pub fn validate(
     attrs: Vec<Attribute>,
@@ -258,12 +268,14 @@ pub fn validate(
                 Ok(ident) if ident == "f64" => scalar = Some(Scalar::F64),
                 Ok(ident) if ident == "f32" => scalar = Some(Scalar::F32),
                 _ => match syn::parse2::<syn::Path>(value.clone()) {
-                    // Any other type path: a generic scalar, written as f64 and rewritten.
-                    Ok(path) => {
+                    // Any other type path: a generic scalar, written as f64 and rewritten
+                    // (not another primitive: those have no derivative parts to carry and
+                    // no `ga_core::Scalar`).
+                    Ok(path) if !is_primitive(&path) => {
                         scalar = Some(Scalar::F64);
                         generic_scalar = Some(path);
                     }
-                    Err(_) => cx.error_spanned_by(
+                    _ => cx.error_spanned_by(
                         value.clone(),
                         format!(
                             "unsupported scalar type `{value}`: expected f32, f64 or a type \
