@@ -32,3 +32,14 @@ ga_macros::algebra! {
     /// Euclidean space over `HyperDual64`: two first derivatives and the mixed second.
     pub mod g3_hyper { metric: [1, 1, 1], scalar: num_dual::HyperDual64 }
 }
+
+ga_macros::algebra! {
+    /// A restricted G3 over `Dual64` (rotors, vectors and bivectors; the operations a
+    /// rotation estimator needs), as a user would write one.
+    pub mod g3_rotors {
+        metric: [1, 1, 1],
+        scalar: num_dual::Dual64,
+        types: [Rotor, Vector, Bivector],
+        ops: [geometric, sandwich, reverse, norm, exp, log, add],
+    }
+}

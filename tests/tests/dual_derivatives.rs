@@ -400,3 +400,26 @@ mod second_derivatives {
         });
     }
 }
+
+/// A restricted module over `Dual64` carries the same derivatives as the full one.
+#[test]
+fn a_restricted_dual_module_agrees_with_the_full_one() {
+    use full::Sandwich as _;
+    use ga_core::dual64::g3 as full;
+    use ga_tests::dual_algebras::g3_rotors as restricted;
+    use restricted::Sandwich as _;
+    let s = (dense(3), dense(3), dense(3), dense(3));
+    run(32, &s, |(b, db, x, dx)| {
+        let b: Vec<f64> = b.iter().map(|v| v * 0.3).collect();
+        let (bd, xd) = (duals(&b, &db), duals(&x, &dx));
+        let rf = full::Bivector::from_array(bd.clone().try_into().unwrap()).exp();
+        let rr = restricted::Bivector::from_array(bd.try_into().unwrap()).exp();
+        let yf = rf.sandwich(full::Vector::from_array(xd.clone().try_into().unwrap()));
+        let yr = rr.sandwich(restricted::Vector::from_array(xd.try_into().unwrap()));
+        for (f, r) in yf.to_array().iter().zip(yr.to_array()) {
+            prop_assert!((f.re - r.re).abs() <= 1e-12 * (1.0 + f.re.abs()));
+            prop_assert!((f.eps - r.eps).abs() <= 1e-12 * (1.0 + f.eps.abs()));
+        }
+        Ok(())
+    });
+}
