@@ -1,4 +1,5 @@
-//! Trajectory derivatives: the torque-free body's `lie-rk4` and `splitting` steps written
+//! Trajectory derivatives: `lie-rk4` (free or heavy body) and the free body's `splitting`
+//! written
 //! once over any scalar type of `algebra!` and instantiated for `f64` (`gradients::f64`,
 //! the same arithmetic as the registry's methods, which it is tested against) and, with the
 //! feature `dual`, for `num_dual::Dual64` (`gradients::dual64`): one run with dual moments
@@ -14,7 +15,7 @@ macro_rules! free_body_steppers {
     ($(#[$doc:meta])* $name:ident, $alg:path, $s:ty) => {
         $(#[$doc])*
         pub mod $name {
-            use $alg::{Bivector, Commutator as _, Rotor};
+            use $alg::{Bivector, Commutator as _, Rotor, Sandwich as _, Vector};
             use ga_core::Scalar;
 
             use crate::error::Error;
@@ -28,11 +29,13 @@ macro_rules! free_body_steppers {
                 <$s as Scalar>::from_f64(x)
             }
 
-            /// A torque-free body: principal moments and their reciprocals.
+            /// A body: principal moments and their reciprocals, and optionally gravity
+            /// (`mass`, the field `g` in space, the centre of mass in the body frame).
             #[derive(Clone, Copy, Debug)]
             pub struct FreeBody {
                 moments: [$s; 3],
                 inverse_moments: [$s; 3],
+                gravity: Option<($s, Vector, Vector)>,
             }
 
             /// Attitude rotor and body angular velocity bivector, as `dynamics::State`.
@@ -45,6 +48,15 @@ macro_rules! free_body_steppers {
             }
 
             impl State {
+                /// The attitude `rotor` and the angular velocity vector `w`.
+                #[must_use]
+                pub fn new(rotor: Rotor, w: [$s; 3]) -> Self {
+                    State {
+                        rotor,
+                        omega: Bivector::new(w[2], -w[1], w[0]),
+                    }
+                }
+
                 /// The identity attitude and the angular velocity vector `w`.
                 #[must_use]
                 pub fn from_w(w: [$s; 3]) -> Self {
@@ -65,7 +77,29 @@ macro_rules! free_body_steppers {
                     Ok(FreeBody {
                         moments,
                         inverse_moments: moments.map(|i| <$s as Scalar>::ONE / i),
+                        gravity: None,
                     })
+                }
+
+                /// The same body in a uniform field: `dynamics::Gravity`'s torque
+                /// `c ^ (~R (m g) R)` (a heavy top pivoted at the origin). Only `lie-rk4`
+                /// takes a torque; `splitting` asks for a free body.
+                #[must_use]
+                pub fn with_gravity(mut self, mass: $s, g: Vector, com_offset: Vector) -> Self {
+                    self.gravity = Some((mass, g, com_offset));
+                    self
+                }
+
+                /// The gravity torque at attitude `rotor` (zero for a free body).
+                #[inline]
+                fn torque(&self, rotor: Rotor) -> Bivector {
+                    match self.gravity {
+                        Some((mass, g, com_offset)) => {
+                            let force_body = rotor.reverse().sandwich(g * mass);
+                            com_offset ^ force_body
+                        }
+                        None => Bivector::ZERO,
+                    }
                 }
 
                 /// `I(B)` on the body bivector basis (as `RigidBody::inertia`).
@@ -82,25 +116,27 @@ macro_rules! free_body_steppers {
                     Bivector::new(j3 * b.e12, j2 * b.e13, j1 * b.e23)
                 }
 
-                /// Euler's equations, `dOmega/dt = I^-1(Omega x I(Omega))`.
+                /// Euler's equations, `dOmega/dt = I^-1(Omega x I(Omega) + torque)`, as
+                /// `RigidBody::omega_rate`.
                 #[inline]
                 #[must_use]
-                pub fn omega_rate(&self, omega: Bivector) -> Bivector {
+                pub fn omega_rate(&self, rotor: Rotor, omega: Bivector) -> Bivector {
                     let momentum = self.inertia(omega);
-                    // `+ ZERO` stands for the absent torque, as in `RigidBody::omega_rate`.
-                    self.inertia_inverse(omega.commutator(momentum) + Bivector::ZERO)
+                    self.inertia_inverse(omega.commutator(momentum) + self.torque(rotor))
                 }
 
                 /// One RKMK4 step of length `h` (as `LieRk4::step_once`).
                 #[must_use]
                 pub fn lie_rk4_step(&self, state: State, h: $s) -> State {
                     let (r0, w0) = (state.rotor, state.omega);
-                    let stage = |omega: Bivector| (omega * (k(-0.5) * h), self.omega_rate(omega) * h);
-                    let (k1, l1) = stage(w0);
-                    let (k2, l2) = stage(w0 + l1 * k(0.5));
-                    // The stage rotors `r0 exp(..)` only feed a torque: a free body skips them.
-                    let (k3, l3) = stage(w0 + l2 * k(0.5));
-                    let (k4, l4) = stage(w0 + l3);
+                    let stage = |rotor: Rotor, omega: Bivector| {
+                        (omega * (k(-0.5) * h), self.omega_rate(rotor, omega) * h)
+                    };
+                    let (k1, l1) = stage(r0, w0);
+                    let (k2, l2) = stage(r0 * (k1 * k(0.5)).exp(), w0 + l1 * k(0.5));
+                    let theta3 = k2 * k(0.5) + k1.commutator(k2) * k(0.25);
+                    let (k3, l3) = stage(r0 * theta3.exp(), w0 + l2 * k(0.5));
+                    let (k4, l4) = stage(r0 * k3.exp(), w0 + l3);
                     let theta = (k1 + (k2 + k3) * k(2.0) + k4) * (k(1.0) / k(6.0))
                         + k1.commutator(k4) * (k(1.0) / k(6.0));
                     State {
@@ -150,6 +186,12 @@ macro_rules! free_body_steppers {
                 ) -> Result<State, Error> {
                     let (n, h) = substeps(step, duration)?;
                     crate::integrators::Splitting::new(step)?.with_axis_order(order)?;
+                    if self.gravity.is_some() {
+                        return Err(Error::invalid(
+                            "gravity",
+                            "the differentiable splitting is the free body's: use lie_rk4",
+                        ));
+                    }
                     if n == 0 {
                         return Ok(state);
                     }

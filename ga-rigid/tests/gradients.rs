@@ -4,11 +4,11 @@
 //! T = 10 with respect to each moment and each initial angular velocity component against
 //! Richardson-extrapolated central differences of the registry's own `f64` runs.
 
-use ga_rigid::dynamics::{omega_from_vector, RigidBody, State};
+use ga_rigid::dynamics::{omega_from_vector, Gravity, RigidBody, State};
 use ga_rigid::gradients::{dual64, f64 as g64};
 use ga_rigid::integrators::{Integrator, LieRk4, Splitting};
 
-use ga_core::f64::g3::Rotor;
+use ga_core::f64::g3::{Bivector, Rotor, Vector};
 use ga_core::num_dual::Dual64;
 
 const MOMENTS: [f64; 3] = [2.0, 1.0, 2.0 / 3.0];
@@ -140,5 +140,117 @@ fn trajectory_derivatives_match_differences_of_the_f64_runs() {
                 "{method}, parameter {p}: dual {derivative:?} against {fd:?}: {relative:e}"
             );
         }
+    }
+}
+
+/// A heavy top (moments (1, 1.2, 0.4), mass 1 under g = 9.81 down, centre of mass 0.1 up
+/// the third axis, w(0) = (1, 0.5, 8)) over T = 5.
+mod heavy_top {
+    use super::*;
+
+    pub const MOMENTS: [f64; 3] = [1.0, 1.2, 0.4];
+    pub const W0: [f64; 3] = [1.0, 0.5, 8.0];
+    pub const T: f64 = 5.0;
+
+    /// The registry's run from `R(0) = exp(b)`, `w(0) = w`.
+    pub fn registry(b: [f64; 3], w: [f64; 3]) -> [f64; 7] {
+        let body = RigidBody::new(MOMENTS).unwrap().with_torque(Gravity {
+            mass: 1.0,
+            g: Vector::new(0.0, 0.0, -9.81),
+            com_offset: Vector::new(0.0, 0.0, 0.1),
+        });
+        let state = State {
+            rotor: Bivector::new(b[0], b[1], b[2]).exp(),
+            omega: omega_from_vector(w),
+        };
+        flat(
+            &LieRk4::new(STEP)
+                .unwrap()
+                .advance(&body, 0.0, state, T)
+                .unwrap(),
+        )
+    }
+
+    /// The dual run, with parameter `p` seeded (0..3 the bivector of R(0), 3..6 w(0)).
+    pub fn dual(p: usize) -> [Dual64; 7] {
+        use ga_core::dual64::g3 as d;
+        let seed = |k: usize, x: f64| Dual64::new(x, if k == p { 1.0 } else { 0.0 });
+        let body = dual64::FreeBody::new(MOMENTS.map(|i| Dual64::new(i, 0.0)))
+            .unwrap()
+            .with_gravity(
+                Dual64::new(1.0, 0.0),
+                d::Vector::new(
+                    Dual64::new(0.0, 0.0),
+                    Dual64::new(0.0, 0.0),
+                    Dual64::new(-9.81, 0.0),
+                ),
+                d::Vector::new(
+                    Dual64::new(0.0, 0.0),
+                    Dual64::new(0.0, 0.0),
+                    Dual64::new(0.1, 0.0),
+                ),
+            );
+        let rotor = d::Bivector::new(seed(0, 0.0), seed(1, 0.0), seed(2, 0.0)).exp();
+        let w = [0, 1, 2].map(|k| seed(k + 3, W0[k]));
+        let end = body.lie_rk4(dual64::State::new(rotor, w), STEP, T).unwrap();
+        dual_flat(&end)
+    }
+}
+
+#[test]
+fn the_f64_instantiation_with_gravity_is_the_registrys_arithmetic() {
+    let body = g64::FreeBody::new(heavy_top::MOMENTS)
+        .unwrap()
+        .with_gravity(
+            1.0,
+            Vector::new(0.0, 0.0, -9.81),
+            Vector::new(0.0, 0.0, 0.1),
+        );
+    let b = [0.2, -0.1, 0.3];
+    let rotor = Bivector::new(b[0], b[1], b[2]).exp();
+    let end = body
+        .lie_rk4(g64::State::new(rotor, heavy_top::W0), STEP, heavy_top::T)
+        .unwrap();
+    let ours = flat(&State {
+        rotor: end.rotor,
+        omega: end.omega,
+    });
+    assert_eq!(ours, heavy_top::registry(b, heavy_top::W0));
+}
+
+#[test]
+fn the_heavy_tops_state_transition_matrix_matches_differences() {
+    for p in 0..6 {
+        let dual = heavy_top::dual(p);
+        let at = |t: f64| {
+            let mut b = [0.0; 3];
+            let mut w = heavy_top::W0;
+            if p < 3 {
+                b[p] += t;
+            } else {
+                w[p - 3] += t;
+            }
+            heavy_top::registry(b, w)
+        };
+        let values = dual.map(|d| d.re);
+        let reference = at(0.0);
+        for (v, r) in values.iter().zip(&reference) {
+            assert!((v - r).abs() <= 1e-12, "value {v} against {r}");
+        }
+        let delta = 1e-5;
+        let (p1, m1, p2, m2) = (at(delta), at(-delta), at(2.0 * delta), at(-2.0 * delta));
+        let fd: [f64; 7] =
+            std::array::from_fn(|k| (8.0 * (p1[k] - m1[k]) - (p2[k] - m2[k])) / (12.0 * delta));
+        let derivative = dual.map(|d| d.eps);
+        let diff: Vec<f64> = derivative.iter().zip(&fd).map(|(a, b)| a - b).collect();
+        let relative = norm(&diff) / norm(&fd);
+        println!(
+            "heavy top column {p}: |column| {:.3e}, relative {relative:.2e}",
+            norm(&fd)
+        );
+        assert!(
+            relative <= 1e-8,
+            "column {p}: {derivative:?} against {fd:?}: {relative:e}"
+        );
     }
 }
