@@ -265,8 +265,15 @@ mod num_dual_impls {
                 fn re(self) -> f64 {
                     self.re
                 }
+                /// num-dual's square root, except at an exact zero (every part zero), whose
+                /// root is zero: num-dual's `0 * (1 / sqrt 0)` would make the derivative NaN
+                /// where a constant zero is passed (Carlson's `R_J(0, y, z, p)`, the norm of
+                /// zero).
                 #[inline]
                 fn sqrt(self) -> Self {
+                    if self.is_exact_zero() {
+                        return Self::ZERO;
+                    }
                     DualNum::sqrt(&self)
                 }
                 #[inline]

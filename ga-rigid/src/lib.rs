@@ -5,6 +5,7 @@ pub mod csv;
 pub mod dynamics;
 pub mod error;
 pub mod exact_flow;
+pub mod exact_flow_generic;
 pub mod gradients;
 pub mod inertia;
 mod input;

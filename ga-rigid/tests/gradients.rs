@@ -254,3 +254,83 @@ fn the_heavy_tops_state_transition_matrix_matches_differences() {
         );
     }
 }
+
+mod exact {
+    use super::*;
+    use ga_rigid::exact_flow::exact_free_body;
+    use ga_rigid::exact_flow_generic::{dual64 as ed, f64 as ef};
+
+    pub const M0: [f64; 3] = [0.4535961214255773, 0.0, 0.8912073600614354];
+
+    pub fn flat(out: ([f64; 4], [f64; 3])) -> [f64; 7] {
+        let (r, m) = out;
+        [r[0], r[1], r[2], r[3], m[0], m[1], m[2]]
+    }
+
+    /// The copy's `f64` instantiation against `exact_flow` itself, on a general body (the
+    /// HLW one, forwards and backwards), a symmetric one and a sphere.
+    #[test]
+    fn the_f64_copy_is_exact_flows_algorithm() {
+        let r0 = [0.9, 0.1, -0.3, 0.2];
+        let cases = [
+            (MOMENTS, M0, 10.0),
+            (MOMENTS, [0.3, -0.7, 0.2], -7.5),
+            ([1.0, 1.0, 0.5], [0.3, 0.4, 1.2], 4.0),
+            ([1.0, 1.0, 1.0], [0.3, 0.4, 1.2], 4.0),
+        ];
+        for (moments, m0, t) in cases {
+            let ours = flat(ef::exact_free_body(moments, m0, r0, t));
+            let theirs = flat(exact_free_body(moments, m0, r0, t));
+            for (a, b) in ours.iter().zip(&theirs) {
+                assert!(
+                    (a - b).abs() <= 1e-12,
+                    "{moments:?} {m0:?} {t}: {ours:?} against {theirs:?}"
+                );
+            }
+        }
+    }
+
+    /// Derivatives of `(R(10), m(10))` on the HLW body along each moment, each component
+    /// of m(0) and the time, against Richardson-extrapolated differences of `exact_flow`.
+    #[test]
+    fn exact_flow_derivatives_match_differences() {
+        let r0 = [1.0, 0.0, 0.0, 0.0];
+        for p in 0..7 {
+            let seed = |j: usize, x: f64| Dual64::new(x, if j == p { 1.0 } else { 0.0 });
+            let moments = [0, 1, 2].map(|j| seed(j, MOMENTS[j]));
+            let m0 = [0, 1, 2].map(|j| seed(j + 3, M0[j]));
+            let out = ed::exact_free_body(moments, m0, r0.map(|x| Dual64::new(x, 0.0)), seed(6, T));
+            let (r, m) = out;
+            let dual = [r[0], r[1], r[2], r[3], m[0], m[1], m[2]];
+            let at = |d: f64| {
+                let (mut moments, mut m0, mut t) = (MOMENTS, M0, T);
+                match p {
+                    0..=2 => moments[p] += d,
+                    3..=5 => m0[p - 3] += d,
+                    _ => t += d,
+                }
+                flat(exact_free_body(moments, m0, r0, t))
+            };
+            let values = dual.map(|d| d.re);
+            let reference = at(0.0);
+            for (v, r) in values.iter().zip(&reference) {
+                assert!((v - r).abs() <= 1e-12, "value {v} against {r}");
+            }
+            let delta = 1e-4;
+            let (p1, m1, p2, m2) = (at(delta), at(-delta), at(2.0 * delta), at(-2.0 * delta));
+            let fd: [f64; 7] =
+                std::array::from_fn(|j| (8.0 * (p1[j] - m1[j]) - (p2[j] - m2[j])) / (12.0 * delta));
+            let derivative = dual.map(|d| d.eps);
+            let diff: Vec<f64> = derivative.iter().zip(&fd).map(|(a, b)| a - b).collect();
+            let relative = norm(&diff) / norm(&fd);
+            println!(
+                "exact flow d/dp{p}: |column| {:.3e}, relative {relative:.2e}",
+                norm(&fd)
+            );
+            assert!(
+                relative <= 1e-8,
+                "parameter {p}: {derivative:?} against {fd:?}: {relative:e}"
+            );
+        }
+    }
+}
