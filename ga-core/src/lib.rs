@@ -28,6 +28,36 @@
 /// its own algebras with `math: libm(::ga_core::libm)`.
 pub use libm;
 
+// The generated modules name `::ga_core::Scalar`; this lets ga-core's own do so too.
+extern crate self as ga_core;
+
+mod scalar;
+pub use scalar::Scalar;
+
+/// num-dual, whose `Dual64` and `HyperDual64` implement [`Scalar`] (feature `dual`).
+#[cfg(feature = "dual")]
+pub use num_dual;
+
+/// Algebras over `num_dual::Dual64`: every product, norm, inverse, exp and log carries
+/// first derivatives (feature `dual`).
+///
+/// ```
+/// use ga_core::dual64::g3::*;
+/// use ga_core::num_dual::Dual64;
+/// // d/dt of the rotation of e1 by t in the e12 plane, at t = 0: e2.
+/// let t = Dual64::new(0.0, 1.0);
+/// let r = (Bivector::E12 * (t * -0.5)).exp();
+/// let y = r.sandwich(Vector::E1);
+/// assert!((y.e2.eps - 1.0).abs() < 1e-15);
+/// ```
+#[cfg(feature = "dual")]
+pub mod dual64 {
+    ga_macros::algebra! {
+        /// Euclidean space, G(3, 0, 0), over `num_dual::Dual64`.
+        pub mod g3 { metric: [1, 1, 1], scalar: ::num_dual::Dual64 }
+    }
+}
+
 #[cfg(feature = "g3")]
 mod euler;
 #[cfg(feature = "g3")]

@@ -26225,8 +26225,7 @@ pub mod g4 {
     ///`Some(x)` is within 2^-26 (about 1.5e-8) of the exact inverse `X` relative to it, summing absolute values: `sum |x_i - X_i| <= 2^-26 sum |X_i|`, certified by the residual `A x - 1` of the value returned; `None` when `A` is singular, or too ill-conditioned for that (a condition number beyond about 1e6).
     #[allow(dead_code)]
     fn multivector_inverse(a: Multivector) -> Option<Multivector> {
-        let x = inverse_f64(a.to_array().map(f64::from))?;
-        let x = x.map(|v| v as f64);
+        let x = inverse_f64(a.to_array())?;
         if x.iter().all(|v| v.is_finite()) {
             Some(Multivector::from_array(x))
         } else {

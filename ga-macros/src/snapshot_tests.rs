@@ -82,3 +82,12 @@ fn only_an_algebra_with_the_shaders_key_gets_a_wgsl_constant() {
     let with = expansion("pub mod g2 { metric: [1, 1], scalar: f32, shaders: [wgsl] }");
     assert!(with.contains("pub const WGSL: &str"));
 }
+
+/// G3 over a generic scalar (`num_dual::Dual64`): the f64 code rewritten for the type.
+#[test]
+fn g3_dual_expansion_matches_snapshot() {
+    check(
+        "g3_dual",
+        "pub mod g3 { metric: [1, 1, 1], scalar: ::num_dual::Dual64 }",
+    );
+}

@@ -21,6 +21,10 @@ pub mod error;
 #[cfg(feature = "std")]
 pub mod exact_flow;
 #[cfg(feature = "std")]
+pub mod exact_flow_generic;
+#[cfg(feature = "std")]
+pub mod gradients;
+#[cfg(feature = "std")]
 pub mod inertia;
 #[cfg(feature = "std")]
 mod input;

@@ -12,6 +12,8 @@
 //!   and the macros that enumerate them and their type pairs;
 //! - [`double_double`]: double-double arithmetic and an inverse in it, the
 //!   high-precision reference for inverses near singular input;
+//! - [`dual_algebras`]: the test metrics over num-dual's `Dual64` (and G3 over
+//!   `HyperDual64`), written with a user's `scalar:` path;
 //! - [`harness`]: the fixed-seed proptest drivers that check tables of generated
 //!   operations against the reference.
 //!
@@ -22,6 +24,7 @@ pub mod algebras;
 pub mod blade;
 pub mod close;
 pub mod double_double;
+pub mod dual_algebras;
 pub mod embed;
 pub mod harness;
 pub mod reference;

@@ -5,6 +5,7 @@ mod batch;
 mod conveniences;
 mod exp_log;
 mod expr;
+mod generic;
 mod integrations;
 mod math;
 mod operators;
@@ -30,7 +31,10 @@ use crate::spec::{Op, Spec};
 pub fn module_items(spec: &Spec, plan: &Plan) -> TokenStream {
     let n = plan.metric.dimension();
     let mut items = types::emit_support_items(plan);
-    if plan.lanes.is_none() {
+    if spec.generic_scalar.is_some() {
+        items.extend(generic::emit_math());
+        items.extend(generic::emit_defaults(plan));
+    } else if plan.lanes.is_none() {
         items.extend(math::emit_math(plan, &spec.math));
     }
     for &t in &plan.emitted {
@@ -94,7 +98,10 @@ pub fn module_items(spec: &Spec, plan: &Plan) -> TokenStream {
 
 /// The whole module: the user's attributes and visibility around the items.
 pub fn module(spec: &Spec, plan: &Plan) -> TokenStream {
-    let items = module_items(spec, plan);
+    let mut items = module_items(spec, plan);
+    if let Some(path) = &spec.generic_scalar {
+        items = generic::rewrite(items, path);
+    }
     let (attrs, vis, name) = (&spec.attrs, &spec.vis, &spec.name);
     // Generated code follows the sign table term by term (`a.s * b.s - a.e12 * b.e12`,
     // constructors with one argument per component), which clippy's style lints would

@@ -83,7 +83,9 @@ pub fn emit_projective_constructors(plan: &Plan) -> TokenStream {
             #[doc = #plane_doc]
             #[inline]
             #[must_use]
-            pub const fn #plane_name(#(#normal: #s,)* d: #s) -> Self {
+            // Not `const`: a point's signs are negations, which a generic scalar's types
+            // (num-dual's) do not allow in a `const fn`.
+            pub fn #plane_name(#(#normal: #s,)* d: #s) -> Self {
                 #plane_value
             }
         }
@@ -92,7 +94,7 @@ pub fn emit_projective_constructors(plan: &Plan) -> TokenStream {
             #[doc = #point_doc]
             #[inline]
             #[must_use]
-            pub const fn point(#(#coords: #s),*) -> Self {
+            pub fn point(#(#coords: #s),*) -> Self {
                 #point_value
             }
         }

@@ -352,11 +352,21 @@ fn inverse_bound_doc(plan: &Plan) -> &'static str {
 /// that the certificate is not spent on the final rounding). See
 /// docs/derivations/inverse.md for the bound.
 pub fn emit_multivector_inverse(plan: &Plan) -> TokenStream {
+    // f64 needs no conversion: writing none keeps the f64 code free of `f64::from` and
+    // `as f64`, which a generic scalar's rewrite of it (emit/generic.rs) would lift.
+    let to_f64_and_back = if plan.scalar == crate::spec::Scalar::F64 {
+        quote! { let x = inverse_f64(a.to_array())?; }
+    } else {
+        let s = scalar_type(plan);
+        quote! {
+            let x = inverse_f64(a.to_array().map(f64::from))?;
+            let x = x.map(|v| v as #s);
+        }
+    };
     let n = plan.metric.dimension();
     let mv = TypeId::multivector(n);
     let blades = &plan.types.get(mv).blades;
     let len = blades.len();
-    let s = scalar_type(plan);
     // LEFT[i][j] = (k, sign): e_i e_j = sign e_k, as component indices.
     let rows = blades.iter().map(|&a| {
         let entries = blades.iter().map(|&b| {
@@ -500,8 +510,7 @@ pub fn emit_multivector_inverse(plan: &Plan) -> TokenStream {
         #[doc = #bound_doc]
         #[allow(dead_code)]
         fn multivector_inverse(a: Multivector) -> Option<Multivector> {
-            let x = inverse_f64(a.to_array().map(f64::from))?;
-            let x = x.map(|v| v as #s);
+            #to_f64_and_back
             if x.iter().all(|v| v.is_finite()) {
                 Some(Multivector::from_array(x))
             } else {

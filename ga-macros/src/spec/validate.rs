@@ -20,6 +20,10 @@ pub struct Spec {
     pub name: Ident,
     pub metric: Metric,
     pub scalar: Scalar,
+    /// A scalar type other than `f32`/`f64` (`scalar: num_dual::Dual64`): the module is
+    /// planned and written for `f64`, then rewritten for this type (see `emit::generic`),
+    /// which must implement `ga_core::Scalar`. `scalar` is then `F64`.
+    pub generic_scalar: Option<syn::Path>,
     pub types: Option<Vec<TypeRequest>>,
     pub ops: Option<BTreeSet<Op>>,
     /// Lane counts of the structure-of-arrays batch modules (`x4`, `x8`).
@@ -213,6 +217,16 @@ pub fn grade_type_name(k: usize) -> &'static str {
     GRADE_NAMES[k - 1]
 }
 
+/// Whether `path` names a primitive type other than f32/f64 (`i32`, `f16`, `bool`, ...).
+fn is_primitive(path: &syn::Path) -> bool {
+    const PRIMITIVES: [&str; 17] = [
+        "i8", "i16", "i32", "i64", "i128", "isize", "u8", "u16", "u32", "u64", "u128", "usize",
+        "f16", "f128", "bool", "char", "str",
+    ];
+    path.get_ident()
+        .is_some_and(|ident| PRIMITIVES.iter().any(|p| ident == p))
+}
+
 /// Checks the raw entries and builds the [`Spec`], reporting every problem at once.
 pub fn validate(
     attrs: Vec<Attribute>,
@@ -229,6 +243,7 @@ pub fn validate(
     let mut math = Math::Std;
     let mut integrations: Option<RawIntegrations> = None;
     let mut shaders: Option<RawIntegrations> = None;
+    let mut generic_scalar: Option<syn::Path> = None;
     for entry in entries {
         let key = entry.key.to_string();
         if seen.contains(&entry.key) {
@@ -258,10 +273,22 @@ pub fn validate(
             "scalar" => match syn::parse2::<Ident>(value.clone()) {
                 Ok(ident) if ident == "f64" => scalar = Some(Scalar::F64),
                 Ok(ident) if ident == "f32" => scalar = Some(Scalar::F32),
-                _ => cx.error_spanned_by(
-                    value.clone(),
-                    format!("unsupported scalar type `{value}`: expected f32 or f64"),
-                ),
+                _ => match syn::parse2::<syn::Path>(value.clone()) {
+                    // Any other type path: a generic scalar, written as f64 and rewritten
+                    // (not another primitive: those have no derivative parts to carry and
+                    // no `ga_core::Scalar`).
+                    Ok(path) if !is_primitive(&path) => {
+                        scalar = Some(Scalar::F64);
+                        generic_scalar = Some(path);
+                    }
+                    _ => cx.error_spanned_by(
+                        value.clone(),
+                        format!(
+                            "unsupported scalar type `{value}`: expected f32, f64 or a type \
+                             path implementing `ga_core::Scalar`"
+                        ),
+                    ),
+                },
             },
             "types" => match syn::parse2::<RawTypes>(value) {
                 Ok(raw) => types = Some(raw),
@@ -330,6 +357,18 @@ pub fn validate(
         .map(|raw| check_integrations(&mut cx, squares.as_deref(), raw))
         .unwrap_or_default();
     let wgsl = shaders.and_then(|raw| check_shaders(&mut cx, raw));
+    if let Some(path) = &generic_scalar {
+        // The generic path is the scalar code: no batch lanes, no SIMD, no other crates'
+        // traits (their impls assume a float).
+        if !lanes.is_empty() || !integrations.is_empty() {
+            cx.error_spanned_by(
+                path,
+                "a scalar type other than f32/f64 takes no `lanes` and no `derive`: \
+                 remove them",
+            );
+        }
+        simd = false;
+    }
     cx.check()?;
     let Some(squares) = squares else {
         return Err(syn::Error::new(
@@ -343,6 +382,7 @@ pub fn validate(
         name,
         metric: Metric::new(squares),
         scalar,
+        generic_scalar,
         types,
         ops,
         lanes,

@@ -23,6 +23,8 @@ pub use exact::ExactFreeBody;
 pub use exact_splitting::ExactSplitting;
 #[cfg(feature = "peers")]
 pub(crate) use integrator::check_finite;
+/// The sub-step rule of the fixed-step methods, for `gradients`' second instantiation.
+pub(crate) use integrator::substeps;
 pub use integrator::Integrator;
 pub(crate) use integrator::{check_step, fixed_steps};
 pub use lie_dop853::{DenseStep, LieDop853, LieDop853Stats};
