@@ -200,14 +200,8 @@ impl Kernel {
 }
 
 /// Runs `kernel` twice (the first dispatch on lavapipe also compiles it), printing both
-/// times, and returns the second result and its time in seconds.
-fn timed(
-    gpu: &Gpu,
-    kernel: &Kernel,
-    input: &[u8],
-    data: &[u8],
-    groups: (u32, u32),
-) -> (Vec<u8>, f64) {
+/// times, and returns the second result.
+fn timed(gpu: &Gpu, kernel: &Kernel, input: &[u8], data: &[u8], groups: (u32, u32)) -> Vec<u8> {
     let t0 = Instant::now();
     let _ = kernel.run(gpu, input, data, groups);
     let first = t0.elapsed().as_secs_f64();
@@ -215,7 +209,7 @@ fn timed(
     let out = kernel.run(gpu, input, data, groups);
     let second = t1.elapsed().as_secs_f64();
     println!("  GPU: {first:.3} s first dispatch (with the driver's compile), {second:.3} s second (upload, dispatch, read-back)");
-    (out, second)
+    out
 }
 
 /// Distance in units in the last place between two floats of the same sign (and through
@@ -250,7 +244,7 @@ fn rotate(gpu: &Gpu) {
     let groups = points.len().div_ceil(64) as u32;
     let grid = (groups.min(65535), groups.div_ceil(65535));
     let kernel = Kernel::new(gpu, ROTATE);
-    let (bytes, _) = timed(
+    let bytes = timed(
         gpu,
         &kernel,
         bytemuck::bytes_of(&rotor),
@@ -321,7 +315,7 @@ fn step(gpu: &Gpu) {
     let constants = format!("const STEPS: u32 = {STEPS}u;\nconst H: f32 = {H:?};\n");
     let kernel = Kernel::new(gpu, &format!("{constants}{STEP}"));
     let groups = (BODIES.div_ceil(64) as u32, 1);
-    let (bytes, _) = timed(
+    let bytes = timed(
         gpu,
         &kernel,
         bytemuck::cast_slice(&moments),
