@@ -131,6 +131,18 @@ impl Gpu {
         })
     }
 
+    /// The device, for callers that build their own pipelines (the example).
+    #[must_use]
+    pub fn device(&self) -> &wgpu::Device {
+        &self.device
+    }
+
+    /// The device's queue.
+    #[must_use]
+    pub fn queue(&self) -> &wgpu::Queue {
+        &self.queue
+    }
+
     /// Runs `functions` of `source` on every item of `inputs` (two dense multivectors of
     /// `2^n` components per item) and returns, per function, the flat results (item by
     /// item, the result's components in order).
