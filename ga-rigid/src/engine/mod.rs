@@ -32,7 +32,7 @@
 //! # The same bits everywhere: what is promised
 //! The steps use only IEEE-754 `+ - * /` and `sqrt` (each correctly rounded), in a fixed
 //! order: no fused multiply-add (Rust never contracts `a * b + c`, with or without
-//! `-C target-cpu=native`), no library `sin`/`cos` (polynomials, `trig.rs`), no
+//! `-C target-cpu=native`), no `sin`/`cos` at all (rational turns, `splitting.rs`), no
 //! reassociation, no run-time CPU dispatch in the arithmetic. So on every target where
 //! `f32`/`f64` are IEEE binary32/binary64 with round-to-nearest and no flush of
 //! subnormals (x86-64 with SSE2, AVX2 or AVX-512; AArch64; wasm32), the same inputs give
@@ -61,7 +61,6 @@ mod real;
 mod rotation;
 mod slice;
 mod splitting;
-mod trig;
 
 pub use error::BodyError;
 

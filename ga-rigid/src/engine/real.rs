@@ -29,54 +29,10 @@ pub(crate) trait Real:
     fn select(mask: Self::Mask, yes: Self, no: Self) -> Self;
     /// Whether `mask` holds in some lane.
     fn any(mask: Self::Mask) -> bool;
-    /// Round to the nearest integer, ties to even, for |x| below 2^(p-2) (p the
-    /// significand's bits): adding and removing 1.5 * 2^(p-1) leaves no fraction bits.
-    fn round_small(self) -> Self;
-    /// pi split as `PI_HI + PI_LO` (Cody and Waite), `PI_HI` short enough that `n * PI_HI`
-    /// is exact for every `n` the reduction meets in practice.
-    const PI_HI: f64;
-    /// The rest of pi.
-    const PI_LO: f64;
-    /// Taylor coefficients of `sin x / x` in powers of `x^2`, enough for a correctly
-    /// rounded-ish result (under an ulp) for |x| <= pi/2 in this precision.
-    const SIN: &'static [f64];
-    /// Taylor coefficients of `cos x` in powers of `x^2`, likewise.
-    const COS: &'static [f64];
 }
 
-/// Taylor coefficients of sin x / x: (-1)^k / (2k+1)!, k = 0..10.
-const SIN_TAYLOR: [f64; 11] = [
-    1.0,
-    -1.0 / 6.0,
-    1.0 / 120.0,
-    -1.0 / 5040.0,
-    1.0 / 362_880.0,
-    -1.0 / 39_916_800.0,
-    1.0 / 6_227_020_800.0,
-    -1.0 / 1_307_674_368_000.0,
-    1.0 / 355_687_428_096_000.0,
-    -1.0 / 121_645_100_408_832_000.0,
-    1.0 / 51_090_942_171_709_440_000.0,
-];
-
-/// Taylor coefficients of cos x: (-1)^k / (2k)!, k = 0..11.
-const COS_TAYLOR: [f64; 12] = [
-    1.0,
-    -1.0 / 2.0,
-    1.0 / 24.0,
-    -1.0 / 720.0,
-    1.0 / 40_320.0,
-    -1.0 / 3_628_800.0,
-    1.0 / 479_001_600.0,
-    -1.0 / 87_178_291_200.0,
-    1.0 / 20_922_789_888_000.0,
-    -1.0 / 6_402_373_705_728_000.0,
-    1.0 / 2_432_902_008_176_640_000.0,
-    -1.0 / 1_124_000_727_777_607_680_000.0,
-];
-
 macro_rules! scalar_real {
-    ($t:ty, $sqrt:path, $magic:expr, $pi_hi:expr, $pi_lo:expr, $sin_terms:expr, $cos_terms:expr) => {
+    ($t:ty, $sqrt:path) => {
         impl Real for $t {
             type Mask = bool;
             #[inline(always)]
@@ -103,15 +59,6 @@ macro_rules! scalar_real {
             fn any(mask: bool) -> bool {
                 mask
             }
-            #[inline(always)]
-            fn round_small(self) -> Self {
-                // The compiler may not fold (x + m) - m to x: in IEEE arithmetic it is not.
-                (self + $magic) - $magic
-            }
-            const PI_HI: f64 = $pi_hi;
-            const PI_LO: f64 = $pi_lo;
-            const SIN: &'static [f64] = SIN_TAYLOR.split_at($sin_terms).0;
-            const COS: &'static [f64] = COS_TAYLOR.split_at($cos_terms).0;
         }
     };
 }
@@ -142,28 +89,8 @@ fn sqrt64(x: f64) -> f64 {
     }
 }
 
-// Terms: the first Taylor term left out is, at pi/2, far below half an ulp of 1
-// (f32: x^15/15! = 6.7e-10 and x^16/16! = 6.5e-11 against 6e-8; f64: x^23/23! = 1.2e-18
-// and x^24/24! = 8e-20 against 1.1e-16). The magic numbers are 1.5 * 2^23 and 1.5 * 2^52;
-// pi's high parts have 8 and 30 significant bits (n * PI_HI exact for |n| < 2^16, 2^23).
-scalar_real!(
-    f32,
-    sqrt32,
-    12_582_912.0_f32,
-    3.140_625,
-    0.000_967_653_589_793_238_5,
-    7,
-    8
-);
-scalar_real!(
-    f64,
-    sqrt64,
-    6_755_399_441_055_744.0_f64,
-    3.141_592_651_605_606,
-    1.984_187_159_361_081e-9,
-    11,
-    12
-);
+scalar_real!(f32, sqrt32);
+scalar_real!(f64, sqrt64);
 
 /// `N` floats stepped side by side, each exactly as the scalar would be.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -228,12 +155,4 @@ impl<T: Real<Mask = bool>, const N: usize> Real for Lanes<T, N> {
     fn any(mask: [bool; N]) -> bool {
         mask.iter().any(|&m| m)
     }
-    #[inline(always)]
-    fn round_small(self) -> Self {
-        Lanes(self.0.map(T::round_small))
-    }
-    const PI_HI: f64 = T::PI_HI;
-    const PI_LO: f64 = T::PI_LO;
-    const SIN: &'static [f64] = T::SIN;
-    const COS: &'static [f64] = T::COS;
 }

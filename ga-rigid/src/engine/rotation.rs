@@ -130,7 +130,8 @@ impl<R: Real> Q<R> {
         self.conj().rotate(v)
     }
 
-    /// `self q_k`, where `q_k = c + s e_k` turns about the body axis `k`.
+    /// `self q_k`, where `q_k = c + s e_k` turns about the body axis `k` (by `2 atan2(s,
+    /// c)`, and scaled by `|q_k|` when that is not 1).
     #[inline(always)]
     pub(crate) fn turn_about(self, k: usize, c: R, s: R) -> Q<R> {
         let Q { x, y, z, w } = self;
@@ -194,26 +195,24 @@ impl<R: Real> Q<R> {
     }
 }
 
-/// `L_b` seen from a body turned by `2 alpha` about its axis `k` (`cos 2a = c^2 - s^2`,
-/// `sin 2a = 2 s c`): the body momentum after the sub-rotation `q -> q (c + s e_k)`.
+/// `L_b` seen from a body turned about its axis `k` by the angle whose cosine and sine
+/// are `c` and `s`: the body momentum after the turn.
 #[inline(always)]
-pub(crate) fn unturn_about<R: Real>(k: usize, c: R, s: R, l: V<R>) -> V<R> {
-    let cc = c * c - s * s;
-    let ss = (s + s) * c;
+pub(crate) fn turn_body_about<R: Real>(k: usize, c: R, s: R, l: V<R>) -> V<R> {
     match k {
         0 => V {
             x: l.x,
-            y: cc * l.y + ss * l.z,
-            z: cc * l.z - ss * l.y,
+            y: c * l.y + s * l.z,
+            z: c * l.z - s * l.y,
         },
         1 => V {
-            x: cc * l.x - ss * l.z,
+            x: c * l.x - s * l.z,
             y: l.y,
-            z: cc * l.z + ss * l.x,
+            z: c * l.z + s * l.x,
         },
         _ => V {
-            x: cc * l.x + ss * l.y,
-            y: cc * l.y - ss * l.x,
+            x: c * l.x + s * l.y,
+            y: c * l.y - s * l.x,
             z: l.z,
         },
     }
