@@ -369,8 +369,8 @@ mod tests {
         );
         let rows = to_rows(&m);
         assert_eq!(rows, [[1.0, 4.0, 7.0], [2.0, 5.0, 8.0], [3.0, 6.0, 9.0]]);
-        for r in 0..3 {
-            assert_eq!(rows[r], m.row(r).to_array());
+        for (r, row) in rows.iter().enumerate() {
+            assert_eq!(*row, m.row(r).to_array());
         }
         assert_eq!(from_rows(&rows), m);
     }
