@@ -3,6 +3,13 @@
 //! Without the default `std` feature the crate is `#![no_std]` and holds only [`engine`]
 //! (with a glam feature on); everything else uses the standard library.
 #![cfg_attr(not(feature = "std"), no_std)]
+/// The glam of ga-rigid's API outside `engine` (glam 0.32, ga-core's `ga_core::glam`, the
+/// version ga-core's conversions are built for): name `DMat3` and `DVec3` through it so that
+/// they are the types `inertia` takes and returns. `engine` also serves older glam versions
+/// through its `glam-0-29` ... features.
+#[cfg(any(feature = "std", feature = "glam"))]
+pub use ga_core::glam;
+
 #[cfg(feature = "cli")]
 pub mod cli;
 #[cfg(feature = "std")]

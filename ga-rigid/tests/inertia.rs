@@ -8,11 +8,12 @@ use std::path::Path;
 
 use ga_core::f64::g3::*;
 use ga_rigid::error::Error;
+use ga_rigid::glam::{DMat3, DQuat, DVec3};
 use ga_rigid::inertia::{matrix_from_rotor, rotor_from_matrix, symmetric_eigen, Inertia, Mesh};
-use glam::{DMat3, DVec3};
 
-/// A row-major 3x3 matrix, as the library returns them; the products below go through
-/// glam, a matrix library that shares no code with ga-rigid.
+/// A row-major 3x3 matrix, the form the formulas below are written in; the library takes
+/// and returns glam's column-major `DMat3`, and the products go through glam, a matrix
+/// library that shares no code with ga-rigid.
 type Matrix3 = [[f64; 3]; 3];
 
 fn to_glam(a: &Matrix3) -> DMat3 {
@@ -164,7 +165,7 @@ fn point_cloud_inertia_matches_the_classic_matrix_formula() {
             assert_close(*a, b, 1e-12 * (1.0 + b.abs()), "centre of mass");
         }
         let scale = max_abs(&j);
-        let stored = inertia.matrix();
+        let stored = from_glam(inertia.matrix());
         for a in 0..3 {
             for b in 0..3 {
                 assert_close(stored[a][b], j[a][b], 1e-12 * scale, "matrix entry");
@@ -260,7 +261,7 @@ fn from_principal_frame_rotates_the_axes() {
     let mut rng = Rng::new(4);
     let r = rng.rotor();
     let inertia = Inertia::from_principal_frame([1.0, 2.0, 2.5], r).unwrap();
-    let v = matrix_from_rotor(r);
+    let v = from_glam(matrix_from_rotor(r));
     let d = [[1.0, 0.0, 0.0], [0.0, 2.0, 0.0], [0.0, 0.0, 2.5]];
     let j = multiply(&multiply(&v, &d), &transpose(&v));
     let b = from_axial([0.3, -0.7, 1.1]);
@@ -434,7 +435,7 @@ fn box_mesh(size: [f64; 3]) -> Mesh {
 }
 
 fn transformed(mesh: &Mesh, r: Rotor, t: [f64; 3]) -> Mesh {
-    let m = matrix_from_rotor(r);
+    let m = from_glam(matrix_from_rotor(r));
     Mesh {
         vertices: mesh
             .vertices
@@ -471,8 +472,8 @@ fn box_mesh_has_exact_box_mass_properties_in_any_pose() {
             assert_rel(inertia.moments()[k], expected[k], 1e-11, "moment");
         }
         // The principal axes are the box's axes turned by r, up to sign.
-        let axes = matrix_from_rotor(inertia.rotor());
-        let turned = matrix_from_rotor(r);
+        let axes = from_glam(matrix_from_rotor(inertia.rotor()));
+        let turned = from_glam(matrix_from_rotor(r));
         for (k, box_axis) in [2, 1, 0].into_iter().enumerate() {
             let dot: f64 = (0..3).map(|i| axes[i][k] * turned[i][box_axis]).sum();
             assert_close(dot.abs(), 1.0, 1e-10, "principal axis");
@@ -765,10 +766,11 @@ fn eigen_reconstructs_random_symmetric_matrices() {
                 a[j][i] = x;
             }
         }
-        let e = symmetric_eigen(&a);
+        let e = symmetric_eigen(&to_glam(&a));
         assert!(e.values[0] <= e.values[1] && e.values[1] <= e.values[2]);
-        assert_orthonormal_proper(&e.vectors);
-        let back = reconstruct(e.values, &e.vectors);
+        let vectors = from_glam(e.vectors);
+        assert_orthonormal_proper(&vectors);
+        let back = reconstruct(e.values, &vectors);
         let scale = max_abs(&a);
         for i in 0..3 {
             for j in 0..3 {
@@ -790,14 +792,15 @@ fn eigen_handles_repeated_eigenvalues() {
     let mut rng = Rng::new(7);
     for values in [[1.0, 1.0, 3.0], [1.0, 3.0, 3.0], [2.0, 2.0, 2.0 + 1e-12]] {
         for _ in 0..100 {
-            let q = matrix_from_rotor(rng.rotor());
+            let q = from_glam(matrix_from_rotor(rng.rotor()));
             let a = reconstruct(values, &q);
-            let e = symmetric_eigen(&a);
-            assert_orthonormal_proper(&e.vectors);
+            let e = symmetric_eigen(&to_glam(&a));
+            let vectors = from_glam(e.vectors);
+            assert_orthonormal_proper(&vectors);
             for k in 0..3 {
                 assert_close(e.values[k], values[k], 1e-14 * 3.0, "repeated eigenvalue");
             }
-            let back = reconstruct(e.values, &e.vectors);
+            let back = reconstruct(e.values, &vectors);
             for i in 0..3 {
                 for j in 0..3 {
                     assert_close(back[i][j], a[i][j], 1e-14 * 3.0, "reconstruction");
@@ -809,8 +812,7 @@ fn eigen_handles_repeated_eigenvalues() {
 
 #[test]
 fn eigen_of_a_sphere_is_the_identity_frame() {
-    let a = [[2.0, 0.0, 0.0], [0.0, 2.0, 0.0], [0.0, 0.0, 2.0]];
-    let e = symmetric_eigen(&a);
+    let e = symmetric_eigen(&DMat3::from_diagonal(DVec3::splat(2.0)));
     assert_eq!(e.values, [2.0, 2.0, 2.0]);
     assert_eq!(rotor_from_matrix(&e.vectors), Rotor::ONE);
     let sphere = Inertia::from_point_masses(&[
@@ -834,8 +836,8 @@ fn rotor_minus_e12_turns_e1_toward_e2_in_sandwich_and_matrix() {
         assert_close(y.e2, t.sin(), 1e-15, "sandwich e2");
         assert_close(y.e3, 0.0, 1e-15, "sandwich e3");
         let m = matrix_from_rotor(r);
-        assert_close(m[0][0], t.cos(), 1e-15, "matrix e1");
-        assert_close(m[1][0], t.sin(), 1e-15, "matrix e2");
+        assert_close(m.x_axis.x, t.cos(), 1e-15, "matrix e1");
+        assert_close(m.x_axis.y, t.sin(), 1e-15, "matrix e2");
     }
 }
 
@@ -844,7 +846,7 @@ fn matrix_columns_are_the_sandwiched_basis_and_shepperd_inverts_them() {
     let mut rng = Rng::new(8);
     for _ in 0..1000 {
         let r = rng.rotor();
-        let m = matrix_from_rotor(r);
+        let m = from_glam(matrix_from_rotor(r));
         let basis = [
             Vector::new(1.0, 0.0, 0.0),
             Vector::new(0.0, 1.0, 0.0),
@@ -856,7 +858,7 @@ fn matrix_columns_are_the_sandwiched_basis_and_shepperd_inverts_them() {
                 assert_close(m[i][k], *yi, 1e-15, "column k = R e_k ~R");
             }
         }
-        let back = rotor_from_matrix(&m);
+        let back = rotor_from_matrix(&to_glam(&m));
         let sign = if r.s < 0.0 { -1.0 } else { 1.0 };
         for (a, b) in [back.s, back.e12, back.e13, back.e23]
             .iter()
@@ -864,5 +866,177 @@ fn matrix_columns_are_the_sandwiched_basis_and_shepperd_inverts_them() {
         {
             assert_close(*a, sign * b, 1e-15, "Shepperd round trip");
         }
+    }
+}
+
+// The public API on glam's `DMat3` (issue 23): each function against glam's own formulas
+// or a matrix written by hand.
+
+/// glam's quaternion of a rotor, written out here (`w = s, x = -e23, y = e13, z = -e12`),
+/// so that glam's `DMat3::from_quat` is a reference that shares no code with ga-rigid or
+/// with ga-core's conversions.
+fn glam_quat(r: Rotor) -> DQuat {
+    DQuat::from_xyzw(-r.e23, r.e13, -r.e12, r.s)
+}
+
+fn assert_mat_close(a: DMat3, b: DMat3, tol: f64, what: &str) {
+    let d = (a - b)
+        .to_cols_array()
+        .iter()
+        .fold(0.0_f64, |m, x| m.max(x.abs()));
+    assert!(d <= tol, "{what}: {a} vs {b} differ by {d} > {tol}");
+}
+
+fn assert_rotor_close_up_to_sign(a: Rotor, b: Rotor, tol: f64, what: &str) {
+    let d = (a - b).norm().min((a + b).norm());
+    assert!(d <= tol, "{what}: {a:?} vs {b:?} differ by {d} > {tol}");
+}
+
+#[test]
+fn matrix_from_rotor_is_glams_from_quat() {
+    // By hand: a quarter turn in the e12 plane (R = cos(pi/4) - e12 sin(pi/4)) sends e1
+    // to e2 and e2 to -e1; the columns of glam's matrix are the images.
+    let h = std::f64::consts::FRAC_1_SQRT_2;
+    let by_hand = DMat3::from_cols(DVec3::Y, DVec3::NEG_X, DVec3::Z);
+    assert_mat_close(
+        matrix_from_rotor(Rotor::new(h, -h, 0.0, 0.0)),
+        by_hand,
+        1e-15,
+        "quarter turn",
+    );
+    let mut rng = Rng::new(20);
+    for _ in 0..1000 {
+        let r = rng.rotor();
+        let m = matrix_from_rotor(r);
+        assert_mat_close(m, DMat3::from_quat(glam_quat(r)), 1e-15, "glam's from_quat");
+        // And ga-core's conversion, which the docs say it agrees with to rounding.
+        assert_mat_close(m, DMat3::from(r), 1e-15, "ga-core's DMat3::from");
+    }
+}
+
+#[test]
+fn rotor_from_matrix_inverts_glams_from_quat() {
+    let mut rng = Rng::new(21);
+    for _ in 0..1000 {
+        let r = rng.rotor();
+        let m = DMat3::from_quat(glam_quat(r));
+        let back = rotor_from_matrix(&m);
+        assert!(back.s >= 0.0, "canonical sign: {back:?}");
+        assert_rotor_close_up_to_sign(back, r, 1e-15, "glam's from_quat inverted");
+        assert_rotor_close_up_to_sign(back, Rotor::from_mat3(m), 1e-15, "ga-core's from_mat3");
+    }
+    // Half turns by hand, where a trace-only formula divides by zero: diag(1, -1, -1) is a
+    // half turn about e1, the rotor -e23 (= cos(pi/2) - sin(pi/2) I e1), and likewise.
+    let half_turns = [
+        (DVec3::new(1.0, -1.0, -1.0), Rotor::new(0.0, 0.0, 0.0, 1.0)),
+        (DVec3::new(-1.0, 1.0, -1.0), Rotor::new(0.0, 0.0, 1.0, 0.0)),
+        (DVec3::new(-1.0, -1.0, 1.0), Rotor::new(0.0, 1.0, 0.0, 0.0)),
+    ];
+    for (diagonal, expected) in half_turns {
+        let back = rotor_from_matrix(&DMat3::from_diagonal(diagonal));
+        assert_rotor_close_up_to_sign(back, expected, 0.0, "half turn");
+    }
+}
+
+#[test]
+fn symmetric_eigen_of_a_glam_matrix_returns_eigenvectors_as_columns() {
+    let mut rng = Rng::new(22);
+    for _ in 0..200 {
+        let q = DMat3::from_quat(glam_quat(rng.rotor()));
+        let d = [
+            rng.uniform(0.5, 1.0),
+            rng.uniform(1.5, 2.0),
+            rng.uniform(2.5, 3.0),
+        ];
+        let a = q * DMat3::from_diagonal(DVec3::from_array(d)) * q.transpose();
+        let e = symmetric_eigen(&a);
+        assert_close(e.vectors.determinant(), 1.0, 1e-14, "proper rotation");
+        for k in 0..3 {
+            assert_close(e.values[k], d[k], 1e-14, "eigenvalue");
+            // Column k belongs to values[k]: A v = lambda v, v = +-q's column k.
+            let v = e.vectors.col(k);
+            let residual = (a * v - v * e.values[k]).abs().max_element();
+            assert!(residual <= 1e-14, "A v - lambda v = {residual}");
+            assert_close(v.dot(q.col(k)).abs(), 1.0, 1e-13, "glam's column k");
+        }
+    }
+}
+
+#[test]
+fn inertia_matrix_is_glams_r_d_r_transpose() {
+    let moments = [1.0, 2.0, 2.5];
+    let d = DMat3::from_diagonal(DVec3::from_array(moments));
+    let mut rng = Rng::new(23);
+    for _ in 0..200 {
+        let r = rng.rotor();
+        let inertia = Inertia::from_principal_frame(moments, r).unwrap();
+        let q = DMat3::from_quat(glam_quat(r));
+        let j = inertia.matrix();
+        assert_mat_close(j, q * d * q.transpose(), 1e-14, "J = Q D Q^T");
+        // It acts on axial vectors as the bivector map does: I(I b) = I (J b).
+        let b = rng.vec3(1.0);
+        let expected = (j * DVec3::from_array(b)).to_array();
+        let got = axial(inertia.apply(from_axial(b)));
+        for k in 0..3 {
+            assert_close(got[k], expected[k], 1e-14, "J b against I(I b)");
+        }
+    }
+    // Principal moments alone: the diagonal matrix, exactly.
+    let inertia = Inertia::from_principal(moments).unwrap();
+    assert_eq!(inertia.matrix(), d);
+}
+
+#[test]
+fn from_matrix_takes_a_glam_matrix_and_names_rows_and_columns() {
+    let mut rng = Rng::new(24);
+    for _ in 0..100 {
+        let r = rng.rotor();
+        let q = DMat3::from_quat(glam_quat(r));
+        let j = q * DMat3::from_diagonal(DVec3::new(1.0, 1.5, 2.0)) * q.transpose();
+        let inertia = Inertia::from_matrix(&j, Some(3.0), Vector::ZERO).unwrap();
+        assert_eq!(inertia.mass(), Some(3.0));
+        for (got, expected) in inertia.moments().iter().zip([1.0, 1.5, 2.0]) {
+            assert_close(*got, expected, 1e-14, "moment");
+        }
+        // The principal axes are q's columns up to sign: the rotor's matrix, by glam.
+        let axes = DMat3::from_quat(glam_quat(inertia.rotor()));
+        for k in 0..3 {
+            assert_close(axes.col(k).dot(q.col(k)).abs(), 1.0, 1e-13, "axis");
+        }
+    }
+    // glam is column-major: `col(1).x` is row 0, column 1. The message counts (row, column).
+    let asymmetric = DMat3::from_cols(
+        DVec3::new(2.0, 0.5, 0.0),
+        DVec3::new(0.25, 2.0, 0.0),
+        DVec3::new(0.0, 0.0, 2.0),
+    );
+    let e = Inertia::from_matrix(&asymmetric, None, Vector::ZERO).unwrap_err();
+    assert!(matches!(e, Error::Invalid { .. }), "{e}");
+    assert!(
+        e.to_string()
+            .ends_with("entry (0,1) is 0.25 and (1,0) is 0.5"),
+        "{e}"
+    );
+}
+
+#[test]
+fn mesh_covariance_is_glams_rotated_box_second_moment() {
+    // A box of sides a, b, c has `integral of d d^T dV = V diag(a^2, b^2, c^2) / 12` in its
+    // own axes; turned by Q it is `Q (that) Q^T`.
+    let size = [1.0, 2.0, 3.0];
+    let volume = 6.0;
+    let own = DMat3::from_diagonal(DVec3::from_array(size.map(|s| volume * s * s / 12.0)));
+    let mut rng = Rng::new(25);
+    for _ in 0..20 {
+        let r = rng.rotor();
+        let moments = transformed(&box_mesh(size), r, [0.5, -0.3, 0.2]).moments();
+        let q = DMat3::from_quat(glam_quat(r));
+        assert_close(moments.volume, volume, 1e-13, "volume");
+        assert_mat_close(
+            moments.covariance,
+            q * own * q.transpose(),
+            1e-13,
+            "covariance",
+        );
     }
 }

@@ -220,3 +220,29 @@ fn scene_parts_survive_a_serde_round_trip_and_build_the_same_scene() {
     .unwrap();
     assert_eq!(toml::from_str::<Parts>(&text).unwrap().body, points);
 }
+
+/// `RigidBody: Clone` (issue 23): a clone keeps the moments and the shared torque, so a
+/// cloned heavy top steps exactly as the original does.
+#[test]
+fn a_cloned_heavy_top_steps_exactly_as_the_original() {
+    use ga_core::f64::g3::Vector;
+    use ga_rigid::dynamics::Gravity;
+    let body = RigidBody::new([2.0, 2.0, 1.0])
+        .unwrap()
+        .with_torque(Gravity {
+            mass: 1.5,
+            g: Vector::new(0.0, 0.0, -9.81),
+            com_offset: Vector::new(0.0, 0.0, 0.3),
+        });
+    let clone = body.clone();
+    assert_eq!(clone.moments(), body.moments());
+    assert!(clone.has_torque());
+    let state = top_state();
+    assert_ne!(body.torque(0.0, &state), Bivector::ZERO);
+    assert_eq!(clone.torque(0.0, &state), body.torque(0.0, &state));
+    let mut a = Rk4::new(1e-3).unwrap();
+    let mut b = Rk4::new(1e-3).unwrap();
+    let from_original = a.advance(&body, 0.0, state, 0.5).unwrap();
+    let from_clone = b.advance(&clone, 0.0, state, 0.5).unwrap();
+    assert_eq!(from_clone, from_original);
+}

@@ -171,6 +171,7 @@ fn an_off_axis_pivot_gets_the_parallel_axis_matrix() {
     // A box's moments about its centre: m/12 (b^2 + c^2), ...
     let centre = [b * b + c * c, a * a + c * c, a * a + b * b].map(|x| mass * x / 12.0);
     let squared: f64 = offset.iter().map(|x| x * x).sum();
+    // glam's DMat3, column-major: `row(r)[k]` is J_rk.
     let j = solid.inertia.matrix();
     for r in 0..3 {
         for k in 0..3 {
@@ -179,9 +180,9 @@ fn an_off_axis_pivot_gets_the_parallel_axis_matrix() {
                 expected += centre[r];
             }
             assert!(
-                (j[r][k] - expected).abs() < 1e-13,
+                (j.row(r)[k] - expected).abs() < 1e-13,
                 "J[{r}][{k}] = {}, expected {expected}",
-                j[r][k]
+                j.row(r)[k]
             );
         }
     }

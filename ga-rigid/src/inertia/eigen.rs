@@ -1,11 +1,16 @@
 //! Symmetric 3x3 eigen-decomposition and the rotation-matrix/rotor conversions.
 //!
-//! Matrices are `[[f64; 3]; 3]` indexed `m[row][column]`. The eigen-solver is the cyclic
-//! Jacobi method (Golub & Van Loan, *Matrix Computations*, 4th ed., section 8.5.2; the
-//! rotation formulas of Numerical Recipes section 11.1): slow for big matrices but, for
-//! 3x3, accurate to a few ulps in every eigenvalue, including repeated ones, and never
-//! fails to converge. The matrix-to-rotor conversion is Shepperd's method (Shepperd,
-//! "Quaternion from rotation matrix", J. Guidance and Control 1(3), 1978).
+//! The public functions take and return glam's `DMat3` (column-major, the glam that
+//! ga-core converts to, re-exported as `ga_rigid::glam`); inside, the solver works on
+//! row-major arrays `m[row][column]`. The eigen-solver is the cyclic Jacobi method (Golub
+//! & Van Loan, *Matrix Computations*, 4th ed., section 8.5.2; the rotation formulas of
+//! Numerical Recipes section 11.1): slow for big matrices but, for 3x3, accurate to a few
+//! ulps in every eigenvalue, including repeated ones, and never fails to converge. The
+//! matrix-to-rotor conversion is Shepperd's method (Shepperd, "Quaternion from rotation
+//! matrix", J. Guidance and Control 1(3), 1978). ga-core has the same conversions
+//! (`DMat3::from(r)`, `Rotor::from_mat3`), equal to rounding; these stay because the
+//! command prints the inertia's rotor and every row of a simulation to the last digit, and
+//! ga-core's versions round differently in that digit.
 //!
 //! Rotor convention: `R = s + e12 b12 + e13 b13 + e23 b23` acts by `x -> R x ~R`, and
 //! `R = cos(t/2) - e12 sin(t/2)` turns e1 into `cos t e1 + sin t e2`. As a unit
@@ -14,6 +19,7 @@
 //! `cos(t/2) - sin(t/2) I n`, and `I n = n1 e23 - n2 e13 + n3 e12`.
 
 use ga_core::f64::g3::Rotor;
+use ga_core::glam::DMat3;
 
 /// A 3x3 matrix, `m[row][column]`.
 pub(crate) type Matrix3 = [[f64; 3]; 3];
@@ -23,9 +29,9 @@ pub(crate) type Matrix3 = [[f64; 3]; 3];
 pub struct SymmetricEigen {
     /// Eigenvalues in ascending order.
     pub values: [f64; 3],
-    /// Orthonormal eigenvectors as columns (`vectors[row][k]` belongs to `values[k]`),
+    /// Orthonormal eigenvectors as columns (`vectors.col(k)` belongs to `values[k]`),
     /// forming a proper rotation: the determinant is +1.
-    pub vectors: Matrix3,
+    pub vectors: DMat3,
 }
 
 /// The most sweeps the solver makes; 3x3 matrices converge in fewer than ten, so this is
@@ -40,7 +46,18 @@ const MAX_SWEEPS: usize = 64;
 /// are handled: the solver stops as soon as the off-diagonal part vanishes, and any
 /// orthonormal basis of a repeated eigenspace is a valid answer. `a` must be finite.
 #[must_use]
-pub fn symmetric_eigen(a: &Matrix3) -> SymmetricEigen {
+pub fn symmetric_eigen(a: &DMat3) -> SymmetricEigen {
+    let (values, vectors) = eigen_rows(&to_rows(a));
+    SymmetricEigen {
+        values,
+        vectors: from_rows(&vectors),
+    }
+}
+
+/// [`symmetric_eigen`] on a row-major array: the ascending eigenvalues and the
+/// eigenvector matrix (`vectors[row][k]` belongs to `values[k]`, determinant +1).
+#[must_use]
+pub(crate) fn eigen_rows(a: &Matrix3) -> ([f64; 3], Matrix3) {
     // Work on the symmetric part so that a slightly asymmetric input (rounding in the
     // caller) cannot make the rotations chase a non-symmetric target.
     let mut m = [[0.0; 3]; 3];
@@ -103,7 +120,7 @@ pub fn symmetric_eigen(a: &Matrix3) -> SymmetricEigen {
             row[2] = -row[2];
         }
     }
-    SymmetricEigen { values, vectors }
+    (values, vectors)
 }
 
 /// Apply the Jacobi rotation P (identity but P_pp = P_qq = c, P_pq = s, P_qp = -s):
@@ -165,11 +182,30 @@ pub(crate) fn determinant(a: &Matrix3) -> f64 {
         + a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0])
 }
 
-/// The rotation matrix of a unit rotor: column k is `R e_k ~R`.
+/// The rotation matrix of a unit rotor: column k is `R e_k ~R`. It agrees with
+/// ga-core's `DMat3::from(r)` to rounding (the quaternion formula here, the sandwich
+/// there); this is the one the inertia constructors use.
 ///
 /// `r` must be normalised; a rotor of norm n gives n^2 times a rotation.
 #[must_use]
-pub fn matrix_from_rotor(r: Rotor) -> Matrix3 {
+pub fn matrix_from_rotor(r: Rotor) -> DMat3 {
+    from_rows(&rows_from_rotor(r))
+}
+
+/// The unit rotor R with `R e_k ~R` = column k of the proper rotation matrix `m`, by
+/// Shepperd's method, returned with a non-negative scalar part. It agrees with ga-core's
+/// [`Rotor::from_mat3`] to rounding (the two pick Shepperd's branch by different tests);
+/// this is the one the inertia constructors use. `m` must be a rotation (orthonormal,
+/// determinant +1) to rounding; [`Rotor::from_matrix`] is the checked form, `None` for a
+/// matrix that is not one.
+#[must_use]
+pub fn rotor_from_matrix(m: &DMat3) -> Rotor {
+    rotor_from_rows(&to_rows(m))
+}
+
+/// [`matrix_from_rotor`] as a row-major array, by the quaternion formula.
+#[must_use]
+pub(crate) fn rows_from_rotor(r: Rotor) -> Matrix3 {
     let (w, x, y, z) = (r.s, -r.e23, r.e13, -r.e12);
     [
         [
@@ -190,15 +226,14 @@ pub fn matrix_from_rotor(r: Rotor) -> Matrix3 {
     ]
 }
 
-/// The unit rotor R with `R e_k ~R` = column k of the proper rotation matrix `m`, by
-/// Shepperd's method, returned with a non-negative scalar part.
+/// [`rotor_from_matrix`] on a row-major array, by Shepperd's method.
 ///
 /// Shepperd's method takes the square root of the largest of the four quantities
 /// 4w^2, 4x^2, 4y^2, 4z^2 (each a signed sum of the trace and diagonal), so it never
 /// divides by a small number, unlike the trace-only formula near half turns. `m` must
 /// be a rotation (orthonormal, determinant +1) to rounding.
 #[must_use]
-pub fn rotor_from_matrix(m: &Matrix3) -> Rotor {
+pub(crate) fn rotor_from_rows(m: &Matrix3) -> Rotor {
     let trace = m[0][0] + m[1][1] + m[2][2];
     let candidates = [trace, m[0][0], m[1][1], m[2][2]];
     let mut largest = 0;
@@ -255,9 +290,23 @@ pub fn rotor_from_matrix(m: &Matrix3) -> Rotor {
     Rotor::new(w * n, -z * n, y * n, -x * n)
 }
 
+/// glam's column-major `DMat3` as a row-major array (`m[row][column]`), the form the
+/// solver and the inertia constructors compute in.
+#[must_use]
+pub(crate) fn to_rows(m: &DMat3) -> Matrix3 {
+    m.transpose().to_cols_array_2d()
+}
+
+/// A row-major array (`m[row][column]`) as glam's `DMat3`.
+#[must_use]
+pub(crate) fn from_rows(m: &Matrix3) -> DMat3 {
+    DMat3::from_cols_array_2d(m).transpose()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+    use ga_core::glam::DVec3;
 
     fn close(a: f64, b: f64, tol: f64) -> bool {
         (a - b).abs() <= tol
@@ -268,9 +317,9 @@ mod tests {
         let t: f64 = 0.7;
         let r = Rotor::new((t / 2.0).cos(), -(t / 2.0).sin(), 0.0, 0.0);
         let m = matrix_from_rotor(r);
-        assert!(close(m[0][0], t.cos(), 1e-15));
-        assert!(close(m[1][0], t.sin(), 1e-15));
-        assert!(close(m[2][0], 0.0, 1e-15));
+        assert!(close(m.x_axis.x, t.cos(), 1e-15));
+        assert!(close(m.x_axis.y, t.sin(), 1e-15));
+        assert!(close(m.x_axis.z, 0.0, 1e-15));
         let back = rotor_from_matrix(&m);
         for (a, b) in back.to_array().iter().zip(r.to_array()) {
             assert!(close(*a, b, 1e-15));
@@ -305,8 +354,24 @@ mod tests {
 
     #[test]
     fn eigen_of_diagonal_is_sorted_and_exact() {
-        let e = symmetric_eigen(&[[3.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 2.0]]);
+        let e = symmetric_eigen(&DMat3::from_diagonal(DVec3::new(3.0, 1.0, 2.0)));
         assert_eq!(e.values, [1.0, 2.0, 3.0]);
-        assert!(close(determinant(&e.vectors), 1.0, 1e-15));
+        assert!(close(e.vectors.determinant(), 1.0, 1e-15));
+        assert!(close(determinant(&to_rows(&e.vectors)), 1.0, 1e-15));
+    }
+
+    #[test]
+    fn rows_are_glam_rows_and_round_trip() {
+        let m = DMat3::from_cols(
+            DVec3::new(1.0, 2.0, 3.0),
+            DVec3::new(4.0, 5.0, 6.0),
+            DVec3::new(7.0, 8.0, 9.0),
+        );
+        let rows = to_rows(&m);
+        assert_eq!(rows, [[1.0, 4.0, 7.0], [2.0, 5.0, 8.0], [3.0, 6.0, 9.0]]);
+        for (r, row) in rows.iter().enumerate() {
+            assert_eq!(*row, m.row(r).to_array());
+        }
+        assert_eq!(from_rows(&rows), m);
     }
 }

@@ -11,7 +11,11 @@
 // The glob also brings the generated operation traits (`sandwich`, ...) into scope.
 use ga_core::f64::g3::*;
 
-use super::eigen::{matrix_from_rotor, multiply, symmetric_eigen, transpose, Matrix3};
+use ga_core::glam::DMat3;
+
+use super::eigen::{
+    eigen_rows, from_rows, multiply, rotor_from_rows, rows_from_rotor, to_rows, transpose, Matrix3,
+};
 use crate::error::{finite, finite3, num, positive, Error};
 
 /// Relative slack in the triangle inequality: moments computed from a flat body satisfy
@@ -78,6 +82,16 @@ impl Inertia {
     /// matrix (the mass lies on a line or a point), moments that are not positive or
     /// break the triangle inequality (a matrix that is no body's inertia).
     pub fn from_matrix(
+        j: &DMat3,
+        mass: Option<f64>,
+        centre_of_mass: Vector,
+    ) -> Result<Self, Error> {
+        Self::from_rows(&to_rows(j), mass, centre_of_mass)
+    }
+
+    /// [`Inertia::from_matrix`] on a row-major array `j[row][column]`, the form the
+    /// constructors from masses and meshes compute in.
+    pub(crate) fn from_rows(
         j: &Matrix3,
         mass: Option<f64>,
         centre_of_mass: Vector,
@@ -111,8 +125,8 @@ impl Inertia {
             "coordinates",
             [centre_of_mass.e1, centre_of_mass.e2, centre_of_mass.e3],
         )?;
-        let eigen = symmetric_eigen(j);
-        let [i1, i2, i3] = eigen.values;
+        let (values, vectors) = eigen_rows(j);
+        let [i1, i2, i3] = values;
         if i3 <= 0.0 || i1.abs() <= DEGENERATE_RATIO * i3 {
             return Err(Error::degenerate(
                 field,
@@ -125,14 +139,9 @@ impl Inertia {
                 ),
             ));
         }
-        check_moments(field, eigen.values)?;
-        let rotor = super::eigen::rotor_from_matrix(&eigen.vectors);
-        Ok(Self::new_unchecked(
-            eigen.values,
-            rotor,
-            mass,
-            centre_of_mass,
-        ))
+        check_moments(field, values)?;
+        let rotor = rotor_from_rows(&vectors);
+        Ok(Self::new_unchecked(values, rotor, mass, centre_of_mass))
     }
 
     /// Assemble from checked parts; `rotor` must be a unit rotor.
@@ -187,8 +196,13 @@ impl Inertia {
     /// The inertia matrix J in the reference frame, acting on axial vectors:
     /// `I(I b) = I (J b)`.
     #[must_use]
-    pub fn matrix(&self) -> Matrix3 {
-        let v = matrix_from_rotor(self.rotor);
+    pub fn matrix(&self) -> DMat3 {
+        from_rows(&self.matrix_rows())
+    }
+
+    /// [`Inertia::matrix`] as a row-major array `j[row][column]`.
+    fn matrix_rows(&self) -> Matrix3 {
+        let v = rows_from_rotor(self.rotor);
         let mut vd = v;
         for row in &mut vd {
             for (k, x) in row.iter_mut().enumerate() {
@@ -219,7 +233,7 @@ impl Inertia {
         };
         let c = finite3("offset", "offset", offset.to_array())?;
         let squared = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
-        let mut j = self.matrix();
+        let mut j = self.matrix_rows();
         for (a, row) in j.iter_mut().enumerate() {
             for (b, x) in row.iter_mut().enumerate() {
                 let diagonal = if a == b { squared } else { 0.0 };
@@ -232,7 +246,7 @@ impl Inertia {
             j[a][b] = mean;
             j[b][a] = mean;
         }
-        Inertia::from_matrix(&j, Some(mass), self.centre_of_mass)
+        Inertia::from_rows(&j, Some(mass), self.centre_of_mass)
     }
 
     /// The inverse map `I^-1(B)`: the angular velocity bivector of angular momentum `B`.

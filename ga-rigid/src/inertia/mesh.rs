@@ -16,7 +16,9 @@ use std::path::Path;
 
 use ga_core::f64::g3::*;
 
-use super::eigen::Matrix3;
+use ga_core::glam::DMat3;
+
+use super::eigen::{from_rows, to_rows};
 use super::inertia::Inertia;
 use crate::error::{positive, Error};
 
@@ -54,7 +56,7 @@ pub struct MeshMoments {
     /// The centroid of the enclosed solid.
     pub centroid: [f64; 3],
     /// `integral of d d^T dV` with `d = x - centroid`.
-    pub covariance: Matrix3,
+    pub covariance: DMat3,
 }
 
 impl Mesh {
@@ -297,7 +299,7 @@ impl Mesh {
                 origin[1] + centre_rel[1],
                 origin[2] + centre_rel[2],
             ],
-            covariance,
+            covariance: from_rows(&covariance),
         }
     }
 }
@@ -544,7 +546,7 @@ impl Inertia {
                 ),
             ));
         }
-        let c = moments.covariance;
+        let c = to_rows(&moments.covariance);
         let trace = c[0][0] + c[1][1] + c[2][2];
         let mut j = [[0.0; 3]; 3];
         for (a, row) in j.iter_mut().enumerate() {
@@ -554,7 +556,7 @@ impl Inertia {
             }
         }
         let [x, y, z] = moments.centroid;
-        Inertia::from_matrix(&j, Some(rho * moments.volume), Vector::new(x, y, z))
+        Inertia::from_rows(&j, Some(rho * moments.volume), Vector::new(x, y, z))
             .map_err(|e| e.at("mesh"))
     }
 }

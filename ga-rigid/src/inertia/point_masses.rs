@@ -53,7 +53,7 @@ impl Inertia {
             ));
         }
         let centre = Vector::new(com[0], com[1], com[2]);
-        Inertia::from_matrix(&j, Some(mass), centre).map_err(|e| match e {
+        Inertia::from_rows(&j, Some(mass), centre).map_err(|e| match e {
             Error::Degenerate { .. } => Error::degenerate(
                 "points",
                 "the point masses lie on a line or at one point, so a principal moment is zero",

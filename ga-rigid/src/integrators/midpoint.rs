@@ -20,7 +20,7 @@
 //! step then fails with an error rather than returning a wrong state.
 
 use ga_core::f64::g3::{Bivector, Rotor};
-use glam::{DMat3, DVec3};
+use ga_core::glam::{DMat3, DVec3};
 
 use crate::dynamics::{omega_from_vector, omega_to_vector, RigidBody, State};
 use crate::error::Error;
