@@ -119,7 +119,10 @@ fn the_midpoint_quaternion_and_moser_veselov_steps_are_of_order_two() {
             )
         };
         let (coarse, fine) = (errors(0.02), errors(0.01));
-        for (what, c, f) in [("attitude", coarse.0, fine.0), ("momentum", coarse.1, fine.1)] {
+        for (what, c, f) in [
+            ("attitude", coarse.0, fine.0),
+            ("momentum", coarse.1, fine.1),
+        ] {
             let observed = (c / f).log2();
             assert!(
                 (observed - 2.0).abs() < 0.1,
@@ -150,6 +153,11 @@ fn moser_veselov_keeps_the_space_momentum_and_midpoint_the_quadratic_invariants(
         }
         // 2,000 steps of a few roundings each: a random walk of some 1e-15.
         assert!(worst < 2e-13, "moser-veselov h = {h}: |L| drift {worst:e}");
+        let energy = (body.energy(s.omega) - e0).abs() / e0;
+        assert!(
+            energy < 2e-13,
+            "moser-veselov h = {h}: energy drift {energy:e}"
+        );
 
         let mut integrator = Method::MidpointQuaternion
             .integrator(Step::Fixed(h))
@@ -161,8 +169,14 @@ fn moser_veselov_keeps_the_space_momentum_and_midpoint_the_quadratic_invariants(
             worst_m = worst_m.max((body.body_momentum(s.omega).norm() - m0).abs() / m0);
             worst_e = worst_e.max((body.energy(s.omega) - e0).abs() / e0);
         }
-        assert!(worst_m < 2e-13, "midpoint-quaternion h = {h}: |m| drift {worst_m:e}");
-        assert!(worst_e < 2e-13, "midpoint-quaternion h = {h}: energy drift {worst_e:e}");
+        assert!(
+            worst_m < 2e-13,
+            "midpoint-quaternion h = {h}: |m| drift {worst_m:e}"
+        );
+        assert!(
+            worst_e < 2e-13,
+            "midpoint-quaternion h = {h}: energy drift {worst_e:e}"
+        );
     }
     // The midpoint rule's space momentum moves with its (second-order) attitude error.
     let end = run(
@@ -208,4 +222,30 @@ fn the_new_peers_stay_of_order_two_under_a_torque() {
             "{method}: order {observed} ({coarse:e}, {fine:e})"
         );
     }
+}
+
+/// The seven-unknown Newton solve and our `midpoint` (Cayley's closed form for the
+/// attitude, three unknowns) are the same rule written apart: they agree to rounding,
+/// step for step, where each alone is some 1e-3 off the exact flow.
+#[test]
+fn midpoint_quaternion_is_our_midpoint_rule_solved_another_way() {
+    let (body, state) = (HAIRER_VILMART.body(), HAIRER_VILMART.state());
+    let ours = run(Method::Midpoint, Step::Fixed(0.05), &body, state, 10.0);
+    let peer = run(
+        Method::MidpointQuaternion,
+        Step::Fixed(0.05),
+        &body,
+        state,
+        10.0,
+    );
+    let apart = attitude_error(peer.rotor, ours.rotor);
+    assert!(apart < 1e-12, "{apart:e}");
+    let off = attitude_error(
+        peer.rotor,
+        ExactFreeBody::new()
+            .advance(&body, 0.0, state, 10.0)
+            .unwrap()
+            .rotor,
+    );
+    assert!(off > 1e-4, "{off:e}");
 }

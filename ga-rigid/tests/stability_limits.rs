@@ -141,7 +141,10 @@ fn the_implicit_midpoint_limits_are_not_loose() {
             .into_iter()
             .filter(|(_, body, start)| !bounded(method, body, *start, 1.5 * limit))
             .count();
-        assert!(unstable > 0, "{method} is stable everywhere at 1.5 x {limit}");
+        assert!(
+            unstable > 0,
+            "{method} is stable everywhere at 1.5 x {limit}"
+        );
     }
 }
 
