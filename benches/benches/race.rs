@@ -1,7 +1,8 @@
 //! The race to an attitude error of 1e-10 against what people use today (issue 18):
 //! `race/reach_1e-10/<scene>`, one function per method of the registry (ours and the
 //! peers: ode_solvers' Dop853 and Dopri5 on the quaternion form, the engines' gyroscopic
-//! Euler steps, Buss's method), each at the cheapest setting that reaches the error at the
+//! Euler steps, Buss's method, implicit midpoint on the quaternion form, the discrete
+//! Moser-Veselov step), each at the cheapest setting that reaches the error at the
 //! scene's end time, searched before anything is timed and printed once. Every method is
 //! built by `Method::integrator`, as the command and the report build it, and every
 //! iteration integrates the whole run from t = 0.

@@ -125,3 +125,40 @@ fn exact_splitting_is_unlimited_without_a_torque() {
         assert!(bounded(Method::ExactSplitting, &body, start, 1e4), "{name}");
     }
 }
+
+/// The implicit midpoint rule on the quaternion form has the limit of our `midpoint` (the
+/// same rule: both first lose the Dzhanibekov body between `h |w| = 3.6` and 3.7), and
+/// neither limit is loose: at 1.5 times it some body is not bounded.
+#[test]
+fn the_implicit_midpoint_limits_are_not_loose() {
+    assert_eq!(
+        Method::MidpointQuaternion.stable_step_rate(false),
+        Method::Midpoint.stable_step_rate(false)
+    );
+    for method in [Method::Midpoint, Method::MidpointQuaternion] {
+        let limit = method.stable_step_rate(false).unwrap();
+        let unstable = bodies()
+            .into_iter()
+            .filter(|(_, body, start)| !bounded(method, body, *start, 1.5 * limit))
+            .count();
+        assert!(
+            unstable > 0,
+            "{method} is stable everywhere at 1.5 x {limit}"
+        );
+    }
+}
+
+/// About a principal axis the Moser-Veselov equation reads `sin(theta) J3 = h m3`: the step
+/// turns by `asin(h w3)`, and beyond `h |w| = 1` there is no step to take. Its limit is
+/// therefore below 1, and at 1.1 the symmetric top's step fails.
+#[test]
+fn moser_veselov_has_no_step_beyond_h_w_of_one() {
+    let limit = Method::MoserVeselov.stable_step_rate(false).unwrap();
+    assert!(limit < 1.0);
+    let (_, body, start) = bodies()
+        .into_iter()
+        .find(|(name, _, _)| *name == "symmetric top")
+        .unwrap();
+    assert!(bounded(Method::MoserVeselov, &body, start, 0.99));
+    assert!(!bounded(Method::MoserVeselov, &body, start, 1.1));
+}

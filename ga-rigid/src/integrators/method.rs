@@ -14,7 +14,9 @@ use super::{
     ClosedForm, ComposedSplitting, DormandPrince, ExactFreeBody, ExactSplitting, ImplicitMidpoint,
     Integrator, LieDop853, LieRk4, Rk4, Splitting,
 };
-use crate::peers::{Buss, ExplicitGyroscopicEuler, ImplicitGyroscopicEuler};
+use crate::peers::{
+    Buss, ExplicitGyroscopicEuler, ImplicitGyroscopicEuler, MoserVeselov, QuaternionMidpoint,
+};
 
 /// The absolute tolerance paired with a relative tolerance `tol` for Dormand-Prince, as a
 /// fraction of `tol`.
@@ -66,6 +68,10 @@ pub enum Method {
     EulerGyroImplicit,
     /// Peer: Buss's augmented second-order rotation update.
     Buss2,
+    /// Peer: the implicit midpoint rule on the seven-unknown quaternion form (Newton).
+    MidpointQuaternion,
+    /// Peer: the discrete Moser-Veselov step (RATTLE), Strang-split with torque kicks.
+    MoserVeselov,
 }
 
 /// The kind of step control a method takes.
@@ -136,10 +142,17 @@ const STEP_LIMIT_EULER_EXPLICIT: f64 = 0.1;
 const STEP_LIMIT_EULER_IMPLICIT: f64 = 0.2;
 /// Buss's method's stability limit `h |w|max`.
 const STEP_LIMIT_BUSS: f64 = 0.5;
+/// The implicit midpoint rule's on the quaternion form: `midpoint`'s (the same rule; both
+/// first lose the Dzhanibekov body between 3.6 and 3.7).
+const STEP_LIMIT_MIDPOINT_QUATERNION: f64 = 2.5;
+/// The discrete Moser-Veselov step's: about a principal axis it turns by `asin(h w)`, so
+/// beyond `h |w| = 1` it has no step (measured: every free body bounded at 1.0, the heavy
+/// top at 0.9, whose torque raises `|w|`).
+const STEP_LIMIT_MOSER_VESELOV: f64 = 0.8;
 
 /// The registry: one row per method, in the order tables list them; ours first, then the
 /// peers (`peer` set).
-pub const METHODS: [MethodInfo; 21] = [
+pub const METHODS: [MethodInfo; 23] = [
     MethodInfo {
         method: Method::ClosedForm,
         name: "closed-form",
@@ -329,6 +342,24 @@ pub const METHODS: [MethodInfo; 21] = [
         step_limit: StepLimit::Rate(STEP_LIMIT_BUSS),
         peer: Some("Buss, J. Comput. Phys. 164 (2000), augmented second-order method"),
     },
+    MethodInfo {
+        method: Method::MidpointQuaternion,
+        name: "midpoint-quaternion",
+        kind: StepKind::Fixed,
+        ns_per_step: 500.0,
+        summary: "peer: implicit midpoint on body momentum and a quaternion, Newton-solved",
+        step_limit: StepLimit::Rate(STEP_LIMIT_MIDPOINT_QUATERNION),
+        peer: Some("implicit midpoint, 7-unknown quaternion form (Hairer-Lubich-Wanner IV.2)"),
+    },
+    MethodInfo {
+        method: Method::MoserVeselov,
+        name: "moser-veselov",
+        kind: StepKind::Fixed,
+        ns_per_step: 350.0,
+        summary: "peer: discrete Moser-Veselov step (RATTLE), torque kicks around it",
+        step_limit: StepLimit::Rate(STEP_LIMIT_MOSER_VESELOV),
+        peer: Some("Moser-Veselov, Comm. Math. Phys. 139 (1991); McLachlan-Zanna 2005"),
+    },
 ];
 
 impl Method {
@@ -497,6 +528,10 @@ impl Method {
                 Box::new(ImplicitGyroscopicEuler::new(fixed()?).map_err(|e| e.at("dt"))?)
             }
             Method::Buss2 => Box::new(Buss::new(fixed()?).map_err(|e| e.at("dt"))?),
+            Method::MidpointQuaternion => {
+                Box::new(QuaternionMidpoint::new(fixed()?).map_err(|e| e.at("dt"))?)
+            }
+            Method::MoserVeselov => Box::new(MoserVeselov::new(fixed()?).map_err(|e| e.at("dt"))?),
         })
     }
 }
@@ -553,7 +588,7 @@ mod tests {
 
     /// Every variant, listed by hand: the match below has no wildcard, so a new variant
     /// fails to compile here until it is listed, and then needs its row in `METHODS`.
-    const EVERY_VARIANT: [Method; 21] = [
+    const EVERY_VARIANT: [Method; 23] = [
         Method::ClosedForm,
         Method::Rk4,
         Method::LieRk4,
@@ -575,6 +610,8 @@ mod tests {
         Method::EulerGyroExplicit,
         Method::EulerGyroImplicit,
         Method::Buss2,
+        Method::MidpointQuaternion,
+        Method::MoserVeselov,
     ];
 
     #[test]
@@ -601,7 +638,9 @@ mod tests {
                 | Method::Dopri5Quaternion
                 | Method::EulerGyroExplicit
                 | Method::EulerGyroImplicit
-                | Method::Buss2 => {}
+                | Method::Buss2
+                | Method::MidpointQuaternion
+                | Method::MoserVeselov => {}
             }
         }
         let count = |m: Method| METHODS.iter().filter(|r| r.method == m).count();

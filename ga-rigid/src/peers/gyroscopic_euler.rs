@@ -68,7 +68,7 @@ fn explicit_step(body: &RigidBody, t: f64, state: State, h: f64) -> State {
 }
 
 /// Solve the 3x3 system `a x = b` by Cramer's rule; `None` when `a` is singular.
-fn solve3(a: [[f64; 3]; 3], b: [f64; 3]) -> Option<[f64; 3]> {
+pub(super) fn solve3(a: [[f64; 3]; 3], b: [f64; 3]) -> Option<[f64; 3]> {
     let det = |m: [[f64; 3]; 3]| {
         m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
             - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])

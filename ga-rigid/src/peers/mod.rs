@@ -10,18 +10,22 @@
 //! - `euler-gyro-implicit`: the implicit gyroscopic step with one Newton iteration of
 //!   Bullet and Jolt.
 //! - `buss-2`: Buss's augmented second-order rotation update.
-//!
-//! Two peers are not separate rows: implicit midpoint on the quaternion (the choice of
-//! Genesis and Roblox) is our `midpoint` (the rotor is the quaternion, and the midpoint
-//! rule on `dR/dt = -1/2 R Omega` is its Cayley form), and the discrete Moser-Veselov step
-//! is not written yet.
+//! - `midpoint-quaternion`: the implicit midpoint rule on the seven-unknown quaternion
+//!   form, solved by Newton's method (named in issue 18 as Genesis's and Roblox's step);
+//!   our `midpoint` is the same rule with its attitude part in closed form.
+//! - `moser-veselov`: the discrete Moser-Veselov step (RATTLE on the rotation matrix),
+//!   with torque kicks in a Strang splitting under a torque.
 
 mod buss;
 mod gyroscopic_euler;
+mod midpoint_quaternion;
+mod moser_veselov;
 #[cfg(feature = "peers")]
 mod quaternion_ode;
 
 pub use buss::Buss;
 pub use gyroscopic_euler::{ExplicitGyroscopicEuler, ImplicitGyroscopicEuler};
+pub use midpoint_quaternion::QuaternionMidpoint;
+pub use moser_veselov::MoserVeselov;
 #[cfg(feature = "peers")]
 pub use quaternion_ode::{QuaternionOde, QuaternionSolver};
