@@ -11,8 +11,8 @@ use std::str::FromStr;
 use crate::error::{self, Error};
 
 use super::{
-    ClosedForm, ComposedSplitting, DormandPrince, ExactFreeBody, ExactSplitting, ImplicitMidpoint,
-    Integrator, LieDop853, LieRk4, Rk4, Splitting,
+    CasimirSplitting, ClosedForm, ComposedSplitting, DormandPrince, ExactFreeBody, ExactSplitting,
+    ImplicitMidpoint, Integrator, LieDop853, LieRk4, Rk4, Splitting,
 };
 use crate::peers::{
     Buss, ExplicitGyroscopicEuler, ImplicitGyroscopicEuler, MoserVeselov, QuaternionMidpoint,
@@ -35,6 +35,10 @@ pub enum Method {
     Midpoint,
     /// Splitting into exact rotations (Dullweber-Leimkuhler-McLachlan).
     Splitting,
+    /// The same splitting with rational (Cayley) axis turns, as `engine`'s step.
+    SplittingCayley,
+    /// The free body split around its Casimir `|m|^2`, rational turns.
+    SplittingCasimir,
     /// Adaptive Dormand-Prince 5(4).
     Dopri,
     /// The exact flow of the free body through Jacobi elliptic functions.
@@ -152,7 +156,7 @@ const STEP_LIMIT_MOSER_VESELOV: f64 = 0.8;
 
 /// The registry: one row per method, in the order tables list them; ours first, then the
 /// peers (`peer` set).
-pub const METHODS: [MethodInfo; 23] = [
+pub const METHODS: [MethodInfo; 25] = [
     MethodInfo {
         method: Method::ClosedForm,
         name: "closed-form",
@@ -204,6 +208,24 @@ pub const METHODS: [MethodInfo; 23] = [
         kind: StepKind::Fixed,
         ns_per_step: 500.0,
         summary: "splitting into exact axis rotations (Dullweber-Leimkuhler-McLachlan)",
+        step_limit: StepLimit::Rate(3.0),
+        peer: None,
+    },
+    MethodInfo {
+        method: Method::SplittingCayley,
+        name: "splitting-cayley",
+        kind: StepKind::Fixed,
+        ns_per_step: 150.0,
+        summary: "the same splitting with rational (Cayley) axis turns, no sine: engine's step",
+        step_limit: StepLimit::Rate(3.0),
+        peer: None,
+    },
+    MethodInfo {
+        method: Method::SplittingCasimir,
+        name: "splitting-casimir",
+        kind: StepKind::Fixed,
+        ns_per_step: 120.0,
+        summary: "the free body split around its Casimir |m|^2, rational turns, order two",
         step_limit: StepLimit::Rate(3.0),
         peer: None,
     },
@@ -485,6 +507,12 @@ impl Method {
             Method::LieRk4 => Box::new(LieRk4::new(fixed()?).map_err(|e| e.at("dt"))?),
             Method::Midpoint => Box::new(ImplicitMidpoint::new(fixed()?).map_err(|e| e.at("dt"))?),
             Method::Splitting => Box::new(Splitting::new(fixed()?).map_err(|e| e.at("dt"))?),
+            Method::SplittingCayley => {
+                Box::new(Splitting::cayley(fixed()?).map_err(|e| e.at("dt"))?)
+            }
+            Method::SplittingCasimir => {
+                Box::new(CasimirSplitting::new(fixed()?).map_err(|e| e.at("dt"))?)
+            }
             Method::Dopri => Box::new(
                 DormandPrince::new(tolerance()?, tolerance()? * DOPRI_ABSOLUTE_TOLERANCE_RATIO)
                     .map_err(|e| e.at("tol"))?,
@@ -588,12 +616,14 @@ mod tests {
 
     /// Every variant, listed by hand: the match below has no wildcard, so a new variant
     /// fails to compile here until it is listed, and then needs its row in `METHODS`.
-    const EVERY_VARIANT: [Method; 23] = [
+    const EVERY_VARIANT: [Method; 25] = [
         Method::ClosedForm,
         Method::Rk4,
         Method::LieRk4,
         Method::Midpoint,
         Method::Splitting,
+        Method::SplittingCayley,
+        Method::SplittingCasimir,
         Method::Dopri,
         Method::Exact,
         Method::ExactSplitting,
@@ -623,6 +653,8 @@ mod tests {
                 | Method::LieRk4
                 | Method::Midpoint
                 | Method::Splitting
+                | Method::SplittingCayley
+                | Method::SplittingCasimir
                 | Method::Dopri
                 | Method::Exact
                 | Method::ExactSplitting

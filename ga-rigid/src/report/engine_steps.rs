@@ -22,13 +22,15 @@ pub const ENGINE_RATES: [f64; 4] = [0.05, 0.1, 0.2, 0.5];
 /// Steps of each run in a full report (a quick one takes a twentieth).
 pub const ENGINE_STEPS: u64 = 100_000;
 /// The methods compared: the engines' steps (peers) and ours.
-pub const ENGINE_METHODS: [Method; 10] = [
+pub const ENGINE_METHODS: [Method; 12] = [
     Method::EulerGyroExplicit,
     Method::EulerGyroImplicit,
     Method::Buss2,
     Method::MidpointQuaternion,
     Method::MoserVeselov,
     Method::Splitting,
+    Method::SplittingCayley,
+    Method::SplittingCasimir,
     Method::Splitting4,
     Method::Midpoint,
     Method::LieRk4,

@@ -145,6 +145,8 @@ pub fn long_runs(scale: Scale, progress: &mut dyn FnMut(&str)) -> Result<Vec<Lon
     }
     for method in [
         Method::Splitting,
+        Method::SplittingCayley,
+        Method::SplittingCasimir,
         Method::Splitting4,
         Method::Splitting6,
         Method::Splitting8,
@@ -167,7 +169,7 @@ pub fn long_runs(scale: Scale, progress: &mut dyn FnMut(&str)) -> Result<Vec<Lon
 /// The number of runs [`long_runs`] makes, for a progress bar.
 #[must_use]
 pub fn long_run_count() -> u64 {
-    METHODS.len() as u64 + 8
+    METHODS.len() as u64 + 10
 }
 
 /// The report's heavy top (a Lagrange top) and its state at t = 0.
