@@ -69,8 +69,8 @@ fn axes(moments: [f64; 3]) -> [usize; 3] {
 fn casimir_turn(inverse_middle: f64, tau: f64, rotor: &mut Rotor, m: &[f64; 3]) {
     let mut k = 0.5 * tau * inverse_middle;
     let mut a2 = (k * k) * (m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
-    // Beyond a = 64 the angle is saturated and a^2 could overflow.
-    if !(a2 <= 4096.0) {
+    // Beyond a = 64 the angle is saturated and a^2 could overflow (or be NaN).
+    if a2.is_nan() || a2 > 4096.0 {
         let scale = 64.0 / a2.sqrt();
         k = if scale < 1.0 { k * scale } else { 0.0 };
         a2 = 4096.0;
