@@ -263,7 +263,7 @@ macro_rules! rotor_inputs {
                 } else if item == 1 {
                     rotor = -m::Even::ONE;
                 } else if item % 10 == 9 {
-                    rotor = rotor * 1.25;
+                    rotor *= 1.25;
                 }
                 x.fill(0.0);
                 for (&at, c) in fields["Even"].iter().zip(rotor.to_array()) {
