@@ -18,6 +18,16 @@ ga_macros::algebra! {
 }
 
 ga_macros::algebra! {
+    /// The Minkowski plane: no bivector squares to -1, so `log(-1)` has no plane to
+    /// turn in and `log_even` takes the Rust's `None` branch for it.
+    pub mod minkowski_plane {
+        metric: [1, -1],
+        scalar: f32,
+        shaders: [wgsl],
+    }
+}
+
+ga_macros::algebra! {
     /// 3D PGA, the null generator first (`e0` of the literature is `e1` here).
     pub mod pga {
         metric: [0, 1, 1, 1],
@@ -162,6 +172,7 @@ fn exp_and_log_are_emitted_wherever_the_rust_module_has_them() {
         ("g2", ga_core::f32::g2::WGSL, true),
         ("g3", ga_core::f32::g3::WGSL, true),
         ("g4", ga_core::f32::g4::WGSL, true),
+        ("minkowski plane", minkowski_plane::WGSL, true),
         ("sta", sta::WGSL, true),
         ("pga [0,1,1,1]", pga::WGSL, true),
         ("pga [1,1,1,0] f64", pga_last::WGSL, true),
