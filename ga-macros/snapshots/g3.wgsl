@@ -2243,19 +2243,67 @@ fn sandwich_odd_multivector(v: Odd, x: Multivector) -> Multivector {
     return Multivector(shared_4 * x.s, -(shared_1) * x.e1 - e1_e2_minus_e3_e123 * x.e2 - e1_e3_plus_e2_e123 * x.e3, -(e1_e2_plus_e3_e123) * x.e1 + shared_2 * x.e2 + e1_e123_minus_e2_e3 * x.e3, -(e1_e3_minus_e2_e123) * x.e1 - e1_e123_plus_e2_e3 * x.e2 + shared_3 * x.e3, -(shared_3) * x.e12 - e1_e123_plus_e2_e3 * x.e13 + e1_e3_minus_e2_e123 * x.e23, e1_e123_minus_e2_e3 * x.e12 - shared_2 * x.e13 - e1_e2_plus_e3_e123 * x.e23, e1_e3_plus_e2_e123 * x.e12 - e1_e2_minus_e3_e123 * x.e13 + shared_1 * x.e23, -(shared_4) * x.e123);
 }
 
-fn exp_bivector(a: Bivector) -> Even {
-    let q = -((a.e12 * a.e12 + a.e13 * a.e13) + a.e23 * a.e23);
-    var c = 1.0;
-    var k = 1.0;
-    if (q < 0.0) {
-        let t = sqrt(-q);
-        c = cos(t);
-        k = sin(t) / t;
-    } else if (q > 0.0) {
-        let t = sqrt(q);
-        c = cosh(t);
-        k = sinh(t) / t;
+// Helpers of exp_bivector and log_even (not API: their names may change).
+
+fn ga_cosh_sinhc(x: f32, r: f32) -> vec2<f32> {
+    if (x < 0.0) {
+        if (r < 1e-4) {
+            return vec2<f32>(cos(r), 1.0 - r * r / 6.0);
+        }
+        return vec2<f32>(cos(r), sin(r) / r);
+    } else if (x > 0.0) {
+        if (r < 1e-4) {
+            return vec2<f32>(cosh(r), 1.0 + r * r / 6.0);
+        }
+        return vec2<f32>(cosh(r), sinh(r) / r);
     }
-    return Even(c, k * a.e12, k * a.e13, k * a.e23);
+    return vec2<f32>(1.0, 1.0);
+}
+
+fn ga_log_weight(c: f32, x: f32, m: f32, p_is_zero: bool) -> vec3<f32> {
+    if (p_is_zero && c < 0.0) {
+        return vec3<f32>(0.0, 3.141592653589793, 1.0);
+    } else if (x < 0.0) {
+        return vec3<f32>(atan2(m, c) / m, 0.0, 1.0);
+    } else if (c < 0.0) {
+        return vec3<f32>(0.0, 0.0, 0.0);
+    } else if (x > 0.0) {
+        if (m < 1e-4) {
+            return vec3<f32>(1.0 - m * m / 6.0, 0.0, 1.0);
+        }
+        return vec3<f32>(asinh(m) / m, 0.0, 1.0);
+    }
+    return vec3<f32>(1.0 / c, 0.0, 1.0);
+}
+
+fn exp_bivector(a: Bivector) -> Even {
+    let x = -((a.e12 * a.e12 + a.e13 * a.e13) + a.e23 * a.e23);
+    let w = ga_cosh_sinhc(x, sqrt(abs(x)));
+    return Even(w.x, w.y * a.e12, w.y * a.e13, w.y * a.e23);
+}
+
+// log_even's result: `value` is the logarithm when `ok`, the zero bivector when
+// the Rust `Even::log` returns None.
+struct Logarithm {
+    value: Bivector,
+    ok: bool,
+}
+
+fn log_even(a: Even) -> Logarithm {
+    let norm_squared = (a.s * a.s + a.e12 * a.e12) + (a.e13 * a.e13 + a.e23 * a.e23);
+    if (!(abs(norm_squared - 1.0) <= 3.452669770922512e-4)) {
+        return Logarithm(Bivector(0.0, 0.0, 0.0), false);
+    }
+    let p = Bivector(a.e12, a.e13, a.e23);
+    let x = -((p.e12 * p.e12 + p.e13 * p.e13) + p.e23 * p.e23);
+    let w = ga_log_weight(a.s, x, sqrt(abs(x)), p.e12 == 0.0 && p.e13 == 0.0 && p.e23 == 0.0);
+    if (w.z == 0.0) {
+        return Logarithm(Bivector(0.0, 0.0, 0.0), false);
+    }
+    let log = Bivector(w.x * p.e12 + w.y, w.x * p.e13, w.x * p.e23);
+    if (!(abs(log.e12) <= 3.4e38 && abs(log.e13) <= 3.4e38 && abs(log.e23) <= 3.4e38)) {
+        return Logarithm(Bivector(0.0, 0.0, 0.0), false);
+    }
+    return Logarithm(log, true);
 }
 

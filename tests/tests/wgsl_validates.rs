@@ -18,6 +18,16 @@ ga_macros::algebra! {
 }
 
 ga_macros::algebra! {
+    /// The Minkowski plane: no bivector squares to -1, so `log(-1)` has no plane to
+    /// turn in and `log_even` takes the Rust's `None` branch for it.
+    pub mod minkowski_plane {
+        metric: [1, -1],
+        scalar: f32,
+        shaders: [wgsl],
+    }
+}
+
+ga_macros::algebra! {
     /// 3D PGA, the null generator first (`e0` of the literature is `e1` here).
     pub mod pga {
         metric: [0, 1, 1, 1],
@@ -126,11 +136,8 @@ fn ga_core_g2_g3_g4_wgsl_validates_and_translates_to_spirv_and_glsl() {
             "dual_vector",
             "normalized_even",
             "exp_bivector",
+            "log_even",
         ] {
-            // G4's exp has no closed form of the GPU kind yet (see docs/generated-api.md).
-            if name == "g4" && expected == "exp_bivector" {
-                continue;
-            }
             // In G2 two bivectors do not span the space: their join vanishes.
             if name == "g2" && expected == "regressive_bivector_bivector" {
                 continue;
@@ -153,6 +160,34 @@ fn user_algebras_in_every_metric_kind_validate_and_translate() {
         ("restricted", restricted::WGSL),
     ] {
         check(name, source);
+    }
+}
+
+#[test]
+fn exp_and_log_are_emitted_wherever_the_rust_module_has_them() {
+    // Rust: `Bivector::exp` in closed form up to five dimensions, `Even::log` for two to
+    // four; G4 and the space-time algebra take the four-dimensional forms (`I I` = +1
+    // by channels, -1 complex), PGA the dual-number one, CGA the five-dimensional exp.
+    for (name, source, log) in [
+        ("g2", ga_core::f32::g2::WGSL, true),
+        ("g3", ga_core::f32::g3::WGSL, true),
+        ("g4", ga_core::f32::g4::WGSL, true),
+        ("minkowski plane", minkowski_plane::WGSL, true),
+        ("sta", sta::WGSL, true),
+        ("pga [0,1,1,1]", pga::WGSL, true),
+        ("pga [1,1,1,0] f64", pga_last::WGSL, true),
+        ("cga", cga::WGSL, false),
+    ] {
+        let names = functions(&check(name, source));
+        assert!(
+            names.iter().any(|n| n == "exp_bivector"),
+            "{name} lacks exp"
+        );
+        assert_eq!(
+            names.iter().any(|n| n == "log_even"),
+            log,
+            "{name}: log_even present where the Rust has Even::log"
+        );
     }
 }
 

@@ -17,6 +17,7 @@ mod types;
 mod unary;
 mod versor;
 mod wgsl;
+mod wgsl_exp_log;
 
 #[cfg(test)]
 pub use wgsl::wgsl_source;

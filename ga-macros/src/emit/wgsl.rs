@@ -11,7 +11,7 @@
 use proc_macro2::{Delimiter, TokenStream, TokenTree};
 use quote::quote;
 
-use super::expr::{construct_in, quadratic_component, Operand, Syntax};
+use super::expr::{construct_in, Operand, Syntax};
 use super::products::{operand_pairs, product_value_in};
 use super::unary::norm_squared_expr;
 use super::versor::{chained_body_in, fused_body_in, is_odd};
@@ -113,10 +113,7 @@ pub fn wgsl_source(plan: &Plan) -> String {
             }
         }
     }
-    let bivector = TypeId::grade(2);
-    if plan.has(Op::Exp) && (2..=3).contains(&n) && plan.emitted.contains(&bivector) {
-        exp(&mut out, plan);
-    }
+    super::wgsl_exp_log::emit(&mut out, plan);
     out
 }
 
@@ -344,44 +341,9 @@ fn sandwich(out: &mut String, plan: &Plan, v: TypeId, x: TypeId) {
     );
 }
 
-/// `exp_bivector(a) -> Even` in two and three dimensions, where `B B` is a scalar `q`:
-/// `cos t + B sin t / t` with `t = sqrt(-q)` (a rotation), `cosh`/`sinh` for `q > 0` (a
-/// boost), `1 + B` for `q = 0` (a null bivector, as PGA's translations).
-fn exp(out: &mut String, plan: &Plan) {
-    let n = plan.metric.dimension();
-    let bivector = TypeId::grade(2);
-    let this = Operand::new(quote!(a), bivector);
-    let q = quadratic_component(plan, &this, Involution::Identity, 0);
-    let value = construct_in(Syntax::Wgsl, plan, Output::Type(TypeId::even(n)), |blade| {
-        if blade == 0 {
-            Some(quote!(c))
-        } else {
-            this.blade(plan, blade).map(|x| quote!(k * #x))
-        }
-    });
-    out.push_str(&format!(
-        "fn exp_bivector(a: Bivector) -> Even {{\n\
-         \x20   let q = {};\n\
-         \x20   var c = 1.0;\n\
-         \x20   var k = 1.0;\n\
-         \x20   if (q < 0.0) {{\n\
-         \x20       let t = sqrt(-q);\n\
-         \x20       c = cos(t);\n\
-         \x20       k = sin(t) / t;\n\
-         \x20   }} else if (q > 0.0) {{\n\
-         \x20       let t = sqrt(q);\n\
-         \x20       c = cosh(t);\n\
-         \x20       k = sinh(t) / t;\n\
-         \x20   }}\n\
-         \x20   return {};\n}}\n\n",
-        text(&q),
-        text(&value)
-    ));
-}
-
 /// WGSL text of expression tokens: spaces around operators, none around `.` or inside
 /// parentheses, and `self` (reserved in WGSL) read as `v`, the versor's parameter.
-fn text(tokens: &TokenStream) -> String {
+pub(super) fn text(tokens: &TokenStream) -> String {
     let mut out = String::new();
     write_tokens(tokens.clone(), &mut out);
     out.trim().to_owned()

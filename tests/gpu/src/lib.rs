@@ -27,10 +27,13 @@ pub struct Signature {
 
 /// The functions and struct fields of a WGSL module.
 pub struct Manifest {
-    /// Every function, in the module's order.
+    /// Every function of the API, in the module's order: the `ga_*` helpers of `exp` and
+    /// `log`, which are not API (docs/generated-api.md), are left out.
     pub functions: Vec<Signature>,
     /// For each struct, its fields in order (the Rust type's canonical order).
     pub fields: HashMap<String, Vec<String>>,
+    /// For each struct, its fields' types (`f32`, `bool` or a struct's name), in order.
+    pub field_types: HashMap<String, Vec<String>>,
 }
 
 impl Manifest {
@@ -49,19 +52,28 @@ impl Manifest {
                 {
                     "f32".to_owned()
                 }
+                (None, naga::TypeInner::Scalar(scalar))
+                    if scalar.kind == naga::ScalarKind::Bool =>
+                {
+                    "bool".to_owned()
+                }
                 (None, other) => format!("{other:?}"),
             }
         };
         let mut fields = HashMap::new();
+        let mut field_types = HashMap::new();
         for (_, ty) in module.types.iter() {
             if let (Some(name), naga::TypeInner::Struct { members, .. }) = (&ty.name, &ty.inner) {
                 let names = members.iter().filter_map(|m| m.name.clone()).collect();
                 fields.insert(name.clone(), names);
+                let types = members.iter().map(|m| type_name(m.ty)).collect();
+                field_types.insert(name.clone(), types);
             }
         }
         let functions = module
             .functions
             .iter()
+            .filter(|(_, f)| f.name.as_deref().is_some_and(|n| !n.starts_with("ga_")))
             .filter_map(|(_, f)| {
                 Some(Signature {
                     name: f.name.clone()?,
@@ -70,13 +82,42 @@ impl Manifest {
                 })
             })
             .collect();
-        Ok(Manifest { functions, fields })
+        Ok(Manifest {
+            functions,
+            fields,
+            field_types,
+        })
     }
 
-    /// The number of components of a type (1 for `f32`).
+    /// The number of floats a value of a type is written as: 1 for `f32` and for `bool`
+    /// (0 or 1), the sum over the fields for a struct (`Logarithm`: the bivector's
+    /// components, then `ok`).
     #[must_use]
     pub fn len_of(&self, ty: &str) -> usize {
-        self.fields.get(ty).map_or(1, Vec::len)
+        self.field_types
+            .get(ty)
+            .map_or(1, |types| types.iter().map(|t| self.len_of(t)).sum())
+    }
+
+    /// Statements that store the value `expr` of type `ty` as floats at `out[o + offset]`
+    /// onwards, nested structs flattened in field order, a `bool` as 0 or 1.
+    fn store(&self, expr: &str, ty: &str, offset: &mut usize, body: &mut String) {
+        match (self.fields.get(ty), self.field_types.get(ty)) {
+            (Some(names), Some(types)) => {
+                for (name, t) in names.iter().zip(types) {
+                    self.store(&format!("{expr}.{name}"), t, offset, body);
+                }
+            }
+            _ => {
+                let value = if ty == "bool" {
+                    format!("select(0.0, 1.0, {expr})")
+                } else {
+                    expr.to_owned()
+                };
+                body.push_str(&format!("        out[o + {offset}u] = {value};\n"));
+                *offset += 1;
+            }
+        }
     }
 }
 
@@ -314,18 +355,7 @@ fn kernel(source: &str, manifest: &Manifest, functions: &[Signature], n: usize) 
             f.name,
             args.join(", ")
         ));
-        match manifest.fields.get(&f.result) {
-            None => {
-                body.push_str(&format!("        out[o + {offset}u] = r;\n"));
-                offset += 1;
-            }
-            Some(fields) => {
-                for field in fields {
-                    body.push_str(&format!("        out[o + {offset}u] = r.{field};\n"));
-                    offset += 1;
-                }
-            }
-        }
+        manifest.store("r", &f.result, &mut offset, &mut body);
         body.push_str("    }\n");
     }
     let width = offset;

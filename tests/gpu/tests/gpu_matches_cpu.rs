@@ -13,6 +13,12 @@
 //! `normalized`); `exp` calls `sin`/`cos`, which Vulkan bounds only absolutely (2^-11 on
 //! [-pi, pi]) and the CPU's f32 `exp` replaces by its own series for angles to a half
 //! turn, so `exp_bivector` is held to `2^-11` and its observed error reported.
+//! `log_even` is held to the same 2^-11: it calls `atan2`, 4096 ulps in Vulkan. It runs on
+//! rotors, `exp` of random bivectors with angles inside the logarithm's principal range,
+//! the identity and -1, and on non-rotors (every tenth input scaled by 1.25), where its
+//! `ok` must be false as the Rust's `None`.
+//! G4's `exp_bivector` and `log_even` (the four-dimensional channel forms, which G3 and
+//! PGA do not take) are compared the same way.
 //! The test prints the largest error seen per family of functions.
 //!
 //! Without a Vulkan device the test says so and what it skipped, and passes, unless
@@ -37,9 +43,16 @@ const ITEMS: usize = 10_000;
 /// Arithmetic tolerance, in units of `eps max(1, |cpu|)`.
 const ARITHMETIC_ULPS: f64 = 8.0;
 
+/// `exp` and `log` tolerance, 2^-11 in units of `eps max(1, |cpu|)`: Vulkan bounds `sin`
+/// and `cos` by 2^-11 absolute on [-pi, pi] and `atan2` by 4096 ulps (2^-11 relative).
+const TRANSCENDENTAL_ULPS: f64 = 4096.0;
+
 /// The CPU side of one WGSL function: from the two dense inputs (and each type's field
 /// positions in them) to the result's components.
 type Cpu = fn(&Fields, &[f32], &[f32]) -> Vec<f32>;
+
+/// Makes `log_even`'s inputs from the random ones (see `rotor_inputs!`).
+type Rotors = fn(&Fields, &[f32], usize) -> Vec<f32>;
 
 /// Each type's components as dense indices, in canonical order.
 type Fields = HashMap<String, Vec<usize>>;
@@ -82,6 +95,7 @@ macro_rules! flat_impls {
 
 flat_impls!(ga_core::f32::g3; Vector, Bivector, Trivector, Even, Odd, Multivector);
 flat_impls!(pga; Vector, Bivector, Trivector, Quadvector, Even, Odd, Multivector);
+flat_impls!(ga_core::f32::g4; Vector, Bivector, Trivector, Quadvector, Even, Odd, Multivector);
 
 /// A value of a module type (or `f32`) from a dense input.
 macro_rules! read {
@@ -169,13 +183,25 @@ fn snake(name: &str) -> String {
     out
 }
 
+/// `log_even`'s `Logarithm { value, ok }` as the GPU writes it: the bivector's components
+/// then 1 for `Some`; the zero bivector then 0 for `None`.
+fn logarithm<B: Flat + Default>(log: Option<B>) -> Vec<f32> {
+    let ok = log.is_some();
+    let mut out = log.unwrap_or_default().flat();
+    out.push(if ok { 1.0 } else { 0.0 });
+    out
+}
+
 fn g3_table() -> HashMap<String, Cpu> {
     use ga_core::f32::g3::*;
     cpu_table!(
         types: [Vector, Bivector, Trivector, Even, Odd, Multivector],
         grades: [grade0, grade1, grade2, grade3],
         versors: [Vector, Even, Odd],
-        extra: ["exp_bivector" => |f, x, _| read!(Bivector, f, x).exp().flat()]
+        extra: [
+            "exp_bivector" => |f, x, _| read!(Bivector, f, x).exp().flat(),
+            "log_even" => |f, x, _| logarithm(read!(Even, f, x).log()),
+        ]
     )
 }
 
@@ -185,8 +211,68 @@ fn pga_table() -> HashMap<String, Cpu> {
         types: [Vector, Bivector, Trivector, Quadvector, Even, Odd, Multivector],
         grades: [grade0, grade1, grade2, grade3, grade4],
         versors: [Vector, Even, Odd],
-        extra: []
+        extra: [
+            "exp_bivector" => |f, x, _| read!(Bivector, f, x).exp().flat(),
+            "log_even" => |f, x, _| logarithm(read!(Even, f, x).log()),
+        ]
     )
+}
+
+/// G4's exp and log only: the rest of G4 takes no form that G3 and PGA do not.
+fn g4_table() -> HashMap<String, Cpu> {
+    use ga_core::f32::g4::*;
+    let mut table: HashMap<String, Cpu> = HashMap::new();
+    table_insert(&mut table, "exp_bivector".to_owned(), |f, x, _| {
+        read!(Bivector, f, x).exp().flat()
+    });
+    table_insert(&mut table, "log_even".to_owned(), |f, x, _| {
+        logarithm(read!(Even, f, x).log())
+    });
+    table
+}
+
+/// The bivector of the random inputs is scaled by this before `exp` to make the rotors
+/// `log_even` is run on in G3 and PGA: its components are in [-1, 1], so a Euclidean
+/// rotation part has `|B| <= 1.8 sqrt 3 = 3.12`, inside the logarithm's principal range
+/// `|B| < pi`.
+const ROTOR_SCALE: f32 = 1.8;
+
+/// The same for G4, whose principal range is the sum of the two plane angles below pi:
+/// that sum is at most `sqrt 2 |B| <= sqrt 2 0.8 sqrt 6 = 2.77`.
+const G4_ROTOR_SCALE: f32 = 0.8;
+
+/// Rewrites the first multivector of every item into a rotor, `exp(scale B)` of the
+/// item's bivector part by the CPU, for `log_even`: item 0 is the identity, item 1 is -1
+/// (the chosen full turn), and every tenth item is scaled by 1.25, which is no rotor.
+macro_rules! rotor_inputs {
+    ($module:path) => {
+        rotor_inputs!($module, ROTOR_SCALE)
+    };
+    ($module:path, $scale:expr) => {
+        |fields: &Fields, inputs: &[f32], n: usize| -> Vec<f32> {
+            use m::Bivector;
+            use $module as m;
+            let size = 1 << n;
+            let mut out = inputs.to_vec();
+            for (item, pair) in out.chunks_mut(2 * size).enumerate() {
+                let x = &mut pair[..size];
+                let b = read!(Bivector, fields, x);
+                let mut rotor: m::Even = (b * $scale).exp();
+                if item == 0 {
+                    rotor = m::Even::ONE;
+                } else if item == 1 {
+                    rotor = -m::Even::ONE;
+                } else if item % 10 == 9 {
+                    rotor *= 1.25;
+                }
+                x.fill(0.0);
+                for (&at, c) in fields["Even"].iter().zip(rotor.to_array()) {
+                    x[at] = c;
+                }
+            }
+            out
+        }
+    };
 }
 
 /// The family a function's error is reported under, and its tolerance in units of
@@ -194,7 +280,8 @@ fn pga_table() -> HashMap<String, Cpu> {
 fn family(name: &str) -> (&'static str, f64) {
     let first = name.split('_').next().unwrap_or(name);
     match first {
-        "exp" => ("exp", 2f64.powi(-11) / f64::from(f32::EPSILON)),
+        "exp" => ("exp", TRANSCENDENTAL_ULPS),
+        "log" => ("log", TRANSCENDENTAL_ULPS),
         "norm" | "normalized" => ("norm", ARITHMETIC_ULPS),
         "geometric" => ("geometric", ARITHMETIC_ULPS),
         "outer" | "inner" | "left" | "right" | "scalar" | "commutator" | "regressive" => {
@@ -207,7 +294,15 @@ fn family(name: &str) -> (&'static str, f64) {
 
 /// Runs one module and returns the report lines; panics on a disagreement or an
 /// uncompared function.
-fn compare(gpu: &Gpu, label: &str, source: &str, n: usize, table: &HashMap<String, Cpu>) -> String {
+fn compare(
+    gpu: &Gpu,
+    label: &str,
+    source: &str,
+    n: usize,
+    table: &HashMap<String, Cpu>,
+    rotors: Rotors,
+    every: bool,
+) -> String {
     let manifest = Manifest::of(source).expect("the emitted WGSL parses");
     let fields: Fields = manifest
         .fields
@@ -221,47 +316,67 @@ fn compare(gpu: &Gpu, label: &str, source: &str, n: usize, table: &HashMap<Strin
         .map(|f| f.name.as_str())
         .collect();
     assert!(
-        uncompared.is_empty(),
+        uncompared.is_empty() || !every,
         "{label}: WGSL functions without a CPU counterpart in this test: {uncompared:?}"
     );
-    let functions: Vec<Signature> = manifest.functions.clone();
-    let inputs = random_inputs(n, ITEMS, 0x5eed_0000 + n as u64);
-    let started = std::time::Instant::now();
-    let results = gpu
-        .run(source, &manifest, &functions, n, &inputs)
-        .unwrap_or_else(|e| panic!("{label}: the GPU run failed: {e}"));
-    let gpu_seconds = started.elapsed().as_secs_f64();
+    let mut manifest = manifest;
+    manifest.functions.retain(|f| table.contains_key(&f.name));
+    // `log_even` runs on rotors (and some non-rotors), everything else on the random
+    // multivectors themselves.
+    let random = random_inputs(n, ITEMS, 0x5eed_0000 + n as u64);
+    let rotors = rotors(&fields, &random, n);
+    let (logs, others): (Vec<Signature>, Vec<Signature>) = manifest
+        .functions
+        .iter()
+        .cloned()
+        .partition(|f| f.name.starts_with("log_"));
     let size = 1 << n;
     let mut worst: HashMap<&str, (f64, String)> = HashMap::new();
     let mut failures = Vec::new();
-    for (f, gpu_values) in functions.iter().zip(&results) {
-        let cpu = table[&f.name];
-        let (family, tolerance) = family(&f.name);
-        let len = manifest.len_of(&f.result);
-        for item in 0..ITEMS {
-            let x = &inputs[item * 2 * size..item * 2 * size + size];
-            let y = &inputs[item * 2 * size + size..(item + 1) * 2 * size];
-            let expected = cpu(&fields, x, y);
-            let got = &gpu_values[item * len..(item + 1) * len];
-            for (k, (&c, &g)) in expected.iter().zip(got).enumerate() {
-                if !c.is_finite() || !g.is_finite() {
-                    // A null element's `normalized`: both sides must be non-finite.
-                    if c.is_finite() != g.is_finite() {
-                        failures.push(format!("{}[{k}] item {item}: cpu {c}, gpu {g}", f.name));
+    let mut gpu_seconds = 0.0;
+    let mut refused = 0;
+    for (functions, inputs) in [(&others, &random), (&logs, &rotors)] {
+        if functions.is_empty() {
+            continue;
+        }
+        let started = std::time::Instant::now();
+        let results = gpu
+            .run(source, &manifest, functions, n, inputs)
+            .unwrap_or_else(|e| panic!("{label}: the GPU run failed: {e}"));
+        gpu_seconds += started.elapsed().as_secs_f64();
+        for (f, gpu_values) in functions.iter().zip(&results) {
+            let cpu = table[&f.name];
+            let (family, tolerance) = family(&f.name);
+            let len = manifest.len_of(&f.result);
+            for item in 0..ITEMS {
+                let x = &inputs[item * 2 * size..item * 2 * size + size];
+                let y = &inputs[item * 2 * size + size..(item + 1) * 2 * size];
+                let expected = cpu(&fields, x, y);
+                assert_eq!(expected.len(), len, "{label}: {} has {len} floats", f.name);
+                let got = &gpu_values[item * len..(item + 1) * len];
+                if family == "log" && expected[len - 1] == 0.0 {
+                    refused += 1;
+                }
+                for (k, (&c, &g)) in expected.iter().zip(got).enumerate() {
+                    if !c.is_finite() || !g.is_finite() {
+                        // A null element's `normalized`: both sides must be non-finite.
+                        if c.is_finite() != g.is_finite() {
+                            failures.push(format!("{}[{k}] item {item}: cpu {c}, gpu {g}", f.name));
+                        }
+                        continue;
                     }
-                    continue;
-                }
-                let scale = f64::from(c.abs()).max(1.0) * f64::from(f32::EPSILON);
-                let error = f64::from(g - c).abs() / scale;
-                let entry = worst.entry(family).or_insert((0.0, String::new()));
-                if error > entry.0 {
-                    *entry = (error, format!("{}[{k}]", f.name));
-                }
-                if error > tolerance && failures.len() < 20 {
-                    failures.push(format!(
-                        "{}[{k}] item {item}: cpu {c}, gpu {g} ({error:.1} eps)",
-                        f.name
-                    ));
+                    let scale = f64::from(c.abs()).max(1.0) * f64::from(f32::EPSILON);
+                    let error = f64::from(g - c).abs() / scale;
+                    let entry = worst.entry(family).or_insert((0.0, String::new()));
+                    if error > entry.0 {
+                        *entry = (error, format!("{}[{k}]", f.name));
+                    }
+                    if error > tolerance && failures.len() < 20 {
+                        failures.push(format!(
+                            "{}[{k}] item {item}: cpu {c}, gpu {g} ({error:.1} eps)",
+                            f.name
+                        ));
+                    }
                 }
             }
         }
@@ -272,8 +387,9 @@ fn compare(gpu: &Gpu, label: &str, source: &str, n: usize, table: &HashMap<Strin
         failures.join("\n")
     );
     let mut lines = vec![format!(
-        "{label}: {} functions x {ITEMS} inputs agree (GPU {gpu_seconds:.1} s)",
-        functions.len()
+        "{label}: {} functions x {ITEMS} inputs agree (GPU {gpu_seconds:.1} s); log_even \
+         refused {refused} non-rotors on both sides",
+        manifest.functions.len()
     )];
     let mut families: Vec<_> = worst.into_iter().collect();
     families.sort_by(|a, b| a.0.cmp(b.0));
@@ -296,7 +412,8 @@ fn every_g3_and_pga_wgsl_function_on_a_vulkan_device_matches_the_cpu() {
         Err(why) => {
             let message = format!(
                 "NO VULKAN DEVICE ({why}): SKIPPED the GPU comparison of {g3_functions} G3 \
-                 and {pga_functions} PGA WGSL functions on {ITEMS} inputs each. Install \
+                 and {pga_functions} PGA WGSL functions and of G4's exp and log on {ITEMS} \
+                 inputs each. Install \
                  Mesa's lavapipe (Debian: apt-get install mesa-vulkan-drivers) to run it."
             );
             assert!(
@@ -308,8 +425,34 @@ fn every_g3_and_pga_wgsl_function_on_a_vulkan_device_matches_the_cpu() {
         }
     };
     eprintln!("Vulkan device: {}", gpu.description);
-    let g3 = compare(&gpu, "G3", ga_core::f32::g3::WGSL, 3, &g3_table());
+    let g3 = compare(
+        &gpu,
+        "G3",
+        ga_core::f32::g3::WGSL,
+        3,
+        &g3_table(),
+        rotor_inputs!(ga_core::f32::g3),
+        true,
+    );
     eprintln!("{g3}");
-    let pga = compare(&gpu, "PGA [0, 1, 1, 1]", pga::WGSL, 4, &pga_table());
+    let pga = compare(
+        &gpu,
+        "PGA [0, 1, 1, 1]",
+        pga::WGSL,
+        4,
+        &pga_table(),
+        rotor_inputs!(pga),
+        true,
+    );
     eprintln!("{pga}");
+    let g4 = compare(
+        &gpu,
+        "G4, exp and log only",
+        ga_core::f32::g4::WGSL,
+        4,
+        &g4_table(),
+        rotor_inputs!(ga_core::f32::g4, G4_ROTOR_SCALE),
+        false,
+    );
+    eprintln!("{g4}");
 }
