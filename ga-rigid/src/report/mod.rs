@@ -20,8 +20,8 @@ pub use analysis::{
     verdict, Order, Pick, SceneKind, ERROR_LEVELS, MIN_ORDER_POINTS,
 };
 pub use engine_steps::{
-    engine_run, engine_runs, engine_runs_csv, exact_flip_period, EngineRun, ENGINE_METHODS,
-    ENGINE_RATES, ENGINE_RUNS_CSV_HEADER, ENGINE_STEPS,
+    engine_run, engine_runs, engine_runs_csv, engine_verdicts, exact_flip_period, EngineRun,
+    ENGINE_BOUNDS, ENGINE_METHODS, ENGINE_RATES, ENGINE_RUNS_CSV_HEADER, ENGINE_STEPS,
 };
 pub use estimate::scene_seconds;
 pub use invariants::{

@@ -410,7 +410,9 @@ fn engine_runs_section(out: &mut String, rows: &[super::EngineRun]) {
          at <code>h |w(0)|</code> from {} to {}, as an engine steps at a fixed frame rate. \
          The exact flow flips the handle every {exact:.3} s. Largest relative errors of the \
          energy and of the space angular momentum over the run; the mean time between flips \
-         against the exact one. Peers are the engines' steps and Buss's. Details in \
+         against the exact one. Peers (marked) are the engines' gyroscopic Euler steps, \
+         Buss's method, the implicit midpoint rule on the quaternion and the discrete \
+         Moser-Veselov step. Details in \
          <a href=\"engine_runs.csv\">engine_runs.csv</a>.</p>",
         super::ENGINE_RATES[0],
         super::ENGINE_RATES[super::ENGINE_RATES.len() - 1],
@@ -446,5 +448,16 @@ fn engine_runs_section(out: &mut String, rows: &[super::EngineRun]) {
             esc(&status),
         );
     }
-    out.push_str("</table></section>\n");
+    let (momentum, energy, flip) = super::ENGINE_BOUNDS;
+    let _ = writeln!(
+        out,
+        "</table>\n<p>The fastest runs that keep <code>|L|</code> to {momentum:e}, the energy \
+         to {energy:e} and the flip period within {}% (times of the runs above, each 10^5 \
+         steps or the quick size):</p>\n<ul>",
+        100.0 * flip
+    );
+    for line in super::engine_verdicts(rows) {
+        let _ = writeln!(out, "<li>{}</li>", esc(&line));
+    }
+    out.push_str("</ul></section>\n");
 }
