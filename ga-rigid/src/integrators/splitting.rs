@@ -25,7 +25,7 @@
 //! turn written without sine and cosine, as `ga_rigid::engine`'s step is: the turn by
 //! `2 atan2(a, 1 - a^2/3)` for the half-angle `a`, whose rotor is `(1 - a^2/3) - a I e_k`
 //! up to scale and whose matrix is the Cayley transform (`engine/splitting.rs` derives
-//! it). The half-angle is off by `2 a^5/45`, O(h^5) per turn, below the splitting's
+//! it). The half-angle is off by `a^5/45`, O(h^5) per turn, below the splitting's
 //! O(h^3), and each turn is still the exact flow of a Hamiltonian of `m_k`, so the method
 //! keeps order two, symplecticity, `|m|` to rounding and a bounded energy error, at one
 //! division per turn instead of two sine-cosine pairs.
@@ -195,7 +195,7 @@ impl Splitting {
 
 /// The flow of `coefficient m_k^2 / 2` for time `tau` with the rational angle: `m` turned
 /// about `e_k` by `2 atan2(a, 1 - a^2/3)`, `a = tau coefficient m_k / 2` the half-angle
-/// (off by `2 a^5/45`), and the rotor turned with it (not normalised).
+/// (the half-angle off by `a^5/45`), and the rotor turned with it (not normalised).
 #[inline(always)]
 pub(super) fn cayley_turn(
     coefficient: f64,
