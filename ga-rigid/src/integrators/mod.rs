@@ -23,7 +23,6 @@ pub use composition::{Composition, Nystrom};
 pub use dopri::{DormandPrince, DormandPrinceStats};
 pub use exact::ExactFreeBody;
 pub use exact_splitting::ExactSplitting;
-#[cfg(feature = "peers")]
 pub(crate) use integrator::check_finite;
 /// The sub-step rule of the fixed-step methods, for `gradients`' second instantiation.
 pub(crate) use integrator::substeps;
