@@ -116,20 +116,6 @@ impl Splitting {
         *rotor *= Rotor::new(half_c, plane.e12, plane.e13, plane.e23);
     }
 
-    /// The turn of [`Splitting::axis_flow`] by the rational angle `2 atan2(a, 1 - a^2/3)`,
-    /// `a` the half-angle: no sine or cosine, and the rotor factor not normalised (the
-    /// step normalises the rotor once).
-    #[inline]
-    fn axis_turn_cayley(
-        moments: [f64; 3],
-        k: usize,
-        tau: f64,
-        rotor: &mut Rotor,
-        m: &mut [f64; 3],
-    ) {
-        cayley_turn(1.0 / moments[k], k, tau, rotor, m);
-    }
-
     /// `n` steps of `h` from time `t` with the axis flow `flow`; `unit_before_kick` when
     /// `flow`'s rotor factors are not unit, so that the closing kick sees a unit rotor.
     #[allow(clippy::too_many_arguments)]
@@ -273,17 +259,14 @@ impl Integrator for Splitting {
         let mut m: [f64; 3] = std::array::from_fn(|k| moments[k] * w[k]);
         let mut rotor = state.rotor;
         if self.cayley {
-            // The rotor factors are not unit: the torque must see a unit rotor.
-            self.steps(
-                body,
-                t,
-                n,
-                h,
-                &mut rotor,
-                &mut m,
-                Self::axis_turn_cayley,
-                true,
-            );
+            // The turn of `axis_flow` by the rational angle (`cayley_turn`), the inverse
+            // moments taken once rather than a division a turn. Its rotor factors are not
+            // unit: the torque must see a unit rotor.
+            let inverse = moments.map(|i| 1.0 / i);
+            let turn = |_: [f64; 3], k: usize, tau: f64, rotor: &mut Rotor, m: &mut [f64; 3]| {
+                cayley_turn(inverse[k], k, tau, rotor, m);
+            };
+            self.steps(body, t, n, h, &mut rotor, &mut m, turn, true);
         } else {
             self.steps(body, t, n, h, &mut rotor, &mut m, Self::axis_flow, false);
         }
