@@ -9580,18 +9580,16 @@ pub mod g3 {
         }
     }
     /// The rotation by a **unit** even versor (a rotor, `v ~v = 1`), in the cheaper
-    /// form that precondition allows: `x + 2 (s C(x) + C(C(x)))` with
+    /// form that precondition allows: `((x + 2s C(x)) + C(C(x))) + C(C(x))` with
     /// `C(x) = (Bx - xB) / 2` for `v = s + B`, as glam's `Quat * Vec3` assumes a unit
     /// quaternion. For a rotor of norm `1 + e` the result is off by about `2e |x|`;
     /// [`Sandwich::sandwich`] is exact for any versor.
     ///
-    /// Its range is narrower than `sandwich`'s: `2 (s C(x) + C(C(x)))` is `y - x`,
-    /// up to `2 |x|`, and every intermediate is at most
-    /// `(1 + 2 n |s| + 2 n^2) max |x_k|` with `n` the sum of `|v_i|` over the
-    /// bivector components. The result is finite when that is below `MAX`: for a
-    /// unit rotor of G2 or G3 (`n <= sqrt 3`), whenever every `|x_k| <= MAX / 16`
-    /// (about 1.1e307 in `f64`, 2.1e37 in `f32`). Above that it may overflow to
-    /// infinity where `sandwich` stays finite; use `sandwich` for such values.
+    /// For a unit rotor of G2 or G3, every intermediate of each grade part of `x` is
+    /// at most `sqrt 2` times that part's Euclidean norm (up to rounding), so the
+    /// result is finite whenever each part's norm is at most `MAX / sqrt 2` (about
+    /// 1.27e308 in `f64`, 2.4e38 in `f32`); `C(C(x))` is added twice rather than
+    /// doubled because `2 C(C(x))` reaches `2 |x|` for a half turn.
     pub trait SandwichUnit<X> {
         /// `v x ~v` for a unit `v`.
         #[must_use]
@@ -9604,13 +9602,13 @@ pub mod g3 {
             let c_e2 = self.e23 * x.e3 - self.e12 * x.e1;
             let c_e3 = -(self.e13 * x.e1 + self.e23 * x.e2);
             let two_s = self.s + self.s;
-            let two_e12 = self.e12 + self.e12;
-            let two_e13 = self.e13 + self.e13;
-            let two_e23 = self.e23 + self.e23;
+            let cc_e1 = self.e12 * c_e2 + self.e13 * c_e3;
+            let cc_e2 = self.e23 * c_e3 - self.e12 * c_e1;
+            let cc_e3 = -(self.e13 * c_e1 + self.e23 * c_e2);
             Vector {
-                e1: (x.e1 + two_s * c_e1) + (two_e12 * c_e2 + two_e13 * c_e3),
-                e2: (x.e2 + two_s * c_e2) + (two_e23 * c_e3 - two_e12 * c_e1),
-                e3: (x.e3 + two_s * c_e3) + (-(two_e13 * c_e1 + two_e23 * c_e2)),
+                e1: ((x.e1 + two_s * c_e1) + cc_e1) + cc_e1,
+                e2: ((x.e2 + two_s * c_e2) + cc_e2) + cc_e2,
+                e3: ((x.e3 + two_s * c_e3) + cc_e3) + cc_e3,
             }
         }
     }
@@ -9621,13 +9619,13 @@ pub mod g3 {
             let c_e13 = self.e12 * x.e23 - self.e23 * x.e12;
             let c_e23 = self.e13 * x.e12 - self.e12 * x.e13;
             let two_s = self.s + self.s;
-            let two_e12 = self.e12 + self.e12;
-            let two_e13 = self.e13 + self.e13;
-            let two_e23 = self.e23 + self.e23;
+            let cc_e12 = self.e23 * c_e13 - self.e13 * c_e23;
+            let cc_e13 = self.e12 * c_e23 - self.e23 * c_e12;
+            let cc_e23 = self.e13 * c_e12 - self.e12 * c_e13;
             Bivector {
-                e12: (x.e12 + two_s * c_e12) + (two_e23 * c_e13 - two_e13 * c_e23),
-                e13: (x.e13 + two_s * c_e13) + (two_e12 * c_e23 - two_e23 * c_e12),
-                e23: (x.e23 + two_s * c_e23) + (two_e13 * c_e12 - two_e12 * c_e13),
+                e12: ((x.e12 + two_s * c_e12) + cc_e12) + cc_e12,
+                e13: ((x.e13 + two_s * c_e13) + cc_e13) + cc_e13,
+                e23: ((x.e23 + two_s * c_e23) + cc_e23) + cc_e23,
             }
         }
     }
@@ -9644,14 +9642,14 @@ pub mod g3 {
             let c_e13 = self.e12 * x.e23 - self.e23 * x.e12;
             let c_e23 = self.e13 * x.e12 - self.e12 * x.e13;
             let two_s = self.s + self.s;
-            let two_e12 = self.e12 + self.e12;
-            let two_e13 = self.e13 + self.e13;
-            let two_e23 = self.e23 + self.e23;
+            let cc_e12 = self.e23 * c_e13 - self.e13 * c_e23;
+            let cc_e13 = self.e12 * c_e23 - self.e23 * c_e12;
+            let cc_e23 = self.e13 * c_e12 - self.e12 * c_e13;
             Even {
                 s: x.s,
-                e12: (x.e12 + two_s * c_e12) + (two_e23 * c_e13 - two_e13 * c_e23),
-                e13: (x.e13 + two_s * c_e13) + (two_e12 * c_e23 - two_e23 * c_e12),
-                e23: (x.e23 + two_s * c_e23) + (two_e13 * c_e12 - two_e12 * c_e13),
+                e12: ((x.e12 + two_s * c_e12) + cc_e12) + cc_e12,
+                e13: ((x.e13 + two_s * c_e13) + cc_e13) + cc_e13,
+                e23: ((x.e23 + two_s * c_e23) + cc_e23) + cc_e23,
             }
         }
     }
@@ -9662,13 +9660,13 @@ pub mod g3 {
             let c_e2 = self.e23 * x.e3 - self.e12 * x.e1;
             let c_e3 = -(self.e13 * x.e1 + self.e23 * x.e2);
             let two_s = self.s + self.s;
-            let two_e12 = self.e12 + self.e12;
-            let two_e13 = self.e13 + self.e13;
-            let two_e23 = self.e23 + self.e23;
+            let cc_e1 = self.e12 * c_e2 + self.e13 * c_e3;
+            let cc_e2 = self.e23 * c_e3 - self.e12 * c_e1;
+            let cc_e3 = -(self.e13 * c_e1 + self.e23 * c_e2);
             Odd {
-                e1: (x.e1 + two_s * c_e1) + (two_e12 * c_e2 + two_e13 * c_e3),
-                e2: (x.e2 + two_s * c_e2) + (two_e23 * c_e3 - two_e12 * c_e1),
-                e3: (x.e3 + two_s * c_e3) + (-(two_e13 * c_e1 + two_e23 * c_e2)),
+                e1: ((x.e1 + two_s * c_e1) + cc_e1) + cc_e1,
+                e2: ((x.e2 + two_s * c_e2) + cc_e2) + cc_e2,
+                e3: ((x.e3 + two_s * c_e3) + cc_e3) + cc_e3,
                 e123: x.e123,
             }
         }
@@ -9683,17 +9681,20 @@ pub mod g3 {
             let c_e13 = self.e12 * x.e23 - self.e23 * x.e12;
             let c_e23 = self.e13 * x.e12 - self.e12 * x.e13;
             let two_s = self.s + self.s;
-            let two_e12 = self.e12 + self.e12;
-            let two_e13 = self.e13 + self.e13;
-            let two_e23 = self.e23 + self.e23;
+            let cc_e1 = self.e12 * c_e2 + self.e13 * c_e3;
+            let cc_e2 = self.e23 * c_e3 - self.e12 * c_e1;
+            let cc_e12 = self.e23 * c_e13 - self.e13 * c_e23;
+            let cc_e3 = -(self.e13 * c_e1 + self.e23 * c_e2);
+            let cc_e13 = self.e12 * c_e23 - self.e23 * c_e12;
+            let cc_e23 = self.e13 * c_e12 - self.e12 * c_e13;
             Multivector {
                 s: x.s,
-                e1: (x.e1 + two_s * c_e1) + (two_e12 * c_e2 + two_e13 * c_e3),
-                e2: (x.e2 + two_s * c_e2) + (two_e23 * c_e3 - two_e12 * c_e1),
-                e3: (x.e3 + two_s * c_e3) + (-(two_e13 * c_e1 + two_e23 * c_e2)),
-                e12: (x.e12 + two_s * c_e12) + (two_e23 * c_e13 - two_e13 * c_e23),
-                e13: (x.e13 + two_s * c_e13) + (two_e12 * c_e23 - two_e23 * c_e12),
-                e23: (x.e23 + two_s * c_e23) + (two_e13 * c_e12 - two_e12 * c_e13),
+                e1: ((x.e1 + two_s * c_e1) + cc_e1) + cc_e1,
+                e2: ((x.e2 + two_s * c_e2) + cc_e2) + cc_e2,
+                e3: ((x.e3 + two_s * c_e3) + cc_e3) + cc_e3,
+                e12: ((x.e12 + two_s * c_e12) + cc_e12) + cc_e12,
+                e13: ((x.e13 + two_s * c_e13) + cc_e13) + cc_e13,
+                e23: ((x.e23 + two_s * c_e23) + cc_e23) + cc_e23,
                 e123: x.e123,
             }
         }

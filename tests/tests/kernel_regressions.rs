@@ -219,10 +219,13 @@ fn inverse_of_a_nearly_singular_g3_multivector_is_none_or_right() {
     }
 }
 
-/// `sandwich_unit`'s documented range: for a unit rotor of G2 or G3 its intermediates
-/// are at most `(1 + 2 n |s| + 2 n^2) max |x_k| < 9 max |x_k|`, so it is finite (and
-/// agrees with `sandwich`) whenever every `|x_k| <= MAX / 16`. Near 1e308 it may overflow
-/// where `sandwich` does not; the docs say so and send such values to `sandwich`.
+/// `sandwich_unit`'s documented range: for a unit rotor of G2 or G3 every intermediate of
+/// a grade part of `x` is at most `sqrt 2` times that part's Euclidean norm, so it is
+/// finite (and agrees with `sandwich`) whenever each part's norm is at most
+/// `MAX / sqrt 2`. The values here give every part a norm of up to `0.95 MAX / sqrt 2`
+/// (components up to `0.95 MAX / sqrt 6`), a third of them with nearly a half turn.
+/// Random values rarely line up for the worst case; the half-turn tests below do, and
+/// fail on the form that doubled `C(C(x))` (whose documented range ended at `MAX / 16`).
 macro_rules! sandwich_unit_range {
     ($test:ident, $path:path, $s:ident, [$($x:ident),*]) => {
         #[test]
@@ -236,17 +239,23 @@ macro_rules! sandwich_unit_range {
                 state ^= state << 17;
                 (state >> 11) as f64 / (1u64 << 53) as f64
             };
+            // No grade part has more than three components in G2 or G3.
+            let largest = $s::MAX * 0.95 / 6.0_f64.sqrt() as $s;
             for _ in 0..2000 {
                 let mut rotor = alg::Even::ZERO.to_array();
                 for c in rotor.iter_mut() {
                     *c = (2.0 * next() - 1.0) as $s;
                 }
+                // A third of the rotors are within a few degrees of a half turn, where
+                // `C(C(x))` is largest.
+                if next() < 0.33 {
+                    rotor[0] *= 0.03;
+                }
                 let r = alg::Even::from_array(rotor).normalized();
                 $({
                     let mut array = alg::$x::ZERO.to_array();
                     for c in array.iter_mut() {
-                        // Magnitudes MAX/64..MAX/16, either sign.
-                        let size = $s::MAX / 16.0 * (0.25 + 0.75 * next() as $s);
+                        let size = largest * (0.25 + 0.75 * next() as $s);
                         *c = if next() < 0.5 { -size } else { size };
                     }
                     let x = alg::$x::from_array(array);
@@ -258,7 +267,7 @@ macro_rules! sandwich_unit_range {
                     );
                     for (u, e) in unit.iter().zip(exact) {
                         assert!(
-                            (u - e).abs() <= 64.0 * $s::EPSILON * ($s::MAX / 16.0),
+                            (u - e).abs() <= 64.0 * $s::EPSILON * largest,
                             "{r:?}.sandwich_unit({x:?}) = {unit:?}, sandwich {exact:?}"
                         );
                     }
@@ -268,26 +277,76 @@ macro_rules! sandwich_unit_range {
     };
 }
 
+/// The case of issue 22: a vector of norm near `MAX / sqrt 2` (1e308 in `f64`) turned by
+/// nearly half a turn in its own plane, where `2 C(C(x))` is nearly `-2x`. Checked
+/// against the rotation written with cosine and sine, not against another sandwich.
+macro_rules! sandwich_unit_half_turn {
+    ($test:ident, $path:path, $s:ident, $size:expr) => {
+        #[test]
+        fn $test() {
+            use alg::SandwichUnit as _;
+            use $path as alg;
+            let size: $s = $size;
+            for step in 0..=64 {
+                // Angles from 170 to 180 degrees, and the plane e12 so that x = e1 turns
+                // toward e2.
+                let angle = core::f64::consts::PI * (1.0 - step as f64 / 1152.0);
+                let (sin, cos) = (0.5 * angle).sin_cos();
+                let mut rotor = alg::Even::ZERO.to_array();
+                rotor[0] = cos as $s;
+                rotor[1] = -sin as $s;
+                let r = alg::Even::from_array(rotor);
+                for direction in [1.0_f64, -1.0] {
+                    let mut x = alg::Vector::ZERO.to_array();
+                    x[0] = direction as $s * size;
+                    let y = r.sandwich_unit(alg::Vector::from_array(x)).to_array();
+                    let expected = [
+                        direction * size as f64 * angle.cos(),
+                        direction * size as f64 * angle.sin(),
+                    ];
+                    for k in 0..2 {
+                        assert!(
+                            y[k].is_finite()
+                                && (y[k] as f64 - expected[k]).abs()
+                                    <= 16.0 * $s::EPSILON as f64 * size as f64,
+                            "a turn by {angle} of {x:?} gave {y:?}, expected {expected:?}"
+                        );
+                    }
+                }
+            }
+        }
+    };
+}
+
+sandwich_unit_half_turn!(g2_half_turn_of_1e308, ga_core::f64::g2, f64, 1e308);
+sandwich_unit_half_turn!(g3_half_turn_of_1e308, ga_core::f64::g3, f64, 1e308);
+sandwich_unit_half_turn!(
+    f32_g3_half_turn_near_max_over_sqrt_2,
+    ga_core::f32::g3,
+    f32,
+    2.3e38
+);
+
 sandwich_unit_range!(
-    g2_sandwich_unit_is_finite_up_to_max_over_16,
+    g2_sandwich_unit_is_finite_up_to_max_over_sqrt_2,
     ga_core::f64::g2,
     f64,
     [Vector, Bivector, Even, Odd, Multivector]
 );
 sandwich_unit_range!(
-    g3_sandwich_unit_is_finite_up_to_max_over_16,
+    g3_sandwich_unit_is_finite_up_to_max_over_sqrt_2,
     ga_core::f64::g3,
     f64,
     [Vector, Bivector, Trivector, Even, Odd, Multivector]
 );
 sandwich_unit_range!(
-    f32_g2_sandwich_unit_is_finite_up_to_max_over_16,
+    f32_g2_sandwich_unit_is_finite_up_to_max_over_sqrt_2,
     ga_core::f32::g2,
     f32,
     [Vector, Bivector, Even, Odd, Multivector]
 );
 sandwich_unit_range!(
-    f32_g3_sandwich_unit_is_finite_up_to_max_over_16,
+    f32_g3_sandwich_unit_is_finite_up_to_max_over_sqrt_2,
     ga_core::f32::g3,
     f32,
     [Vector, Bivector, Trivector, Even, Odd, Multivector]

@@ -237,9 +237,10 @@ pub fn lane_body(
 }
 
 /// The sandwich of an even versor `v = s + B` (four components) on an `x` of fewer than
-/// four components in lanes: `c = C(x)`, then `(<v ~v> x + 2s c) + 2C(c)` (`x + ...` for a
-/// unit versor), the factor 2 folded into the versor's lanes. The versor's swizzles are
-/// shared by both commutators.
+/// four components in lanes: `c = C(x)`, then `(<v ~v> x + 2s c) + 2C(c)`, the factor 2
+/// folded into the versor's lanes, or `((x + 2s c) + C(c)) + C(c)` for a unit versor
+/// (whose partial sums stay within `sqrt 2 |x|`). The versor's swizzles are shared by
+/// both commutators.
 pub fn commutator_sandwich_lanes(
     plan: &Plan,
     v: TypeId,
@@ -269,9 +270,9 @@ pub fn commutator_sandwich_lanes(
         let v = #packed_v;
         let xs = #packed_x;
     };
-    // Each column's versor lanes carry the column's signs, and the second commutator's
-    // carry the factor 2 of `2 C(c)` too: both are fixed before `x` is read, so the path
-    // through `x` is swizzles, multiplies and additions only.
+    // Each column's versor lanes carry the column's signs, and the exact form's second
+    // commutator's carry the factor 2 of `2 C(c)` too: both are fixed before `x` is read,
+    // so the path through `x` is swizzles, multiplies and additions only.
     let mut names = Vec::new();
     for (k, column) in lanes.columns.iter().enumerate() {
         let (a, b) = (format_ident!("a{}", k + 1), format_ident!("b{}", k + 1));
@@ -284,10 +285,10 @@ pub fn commutator_sandwich_lanes(
         if signs.iter().any(|&n| n) {
             value = quote!(#value.negate([#(#signs),*]));
         }
-        lets.extend(quote! {
-            let #a = #value;
-            let #b = #a * simd::F32x4::splat(2.0);
-        });
+        lets.extend(quote!(let #a = #value;));
+        if !unit {
+            lets.extend(quote!(let #b = #a * simd::F32x4::splat(2.0);));
+        }
         names.push((a, b));
     }
     let apply = |second: bool, input: TokenStream| {
@@ -309,14 +310,16 @@ pub fn commutator_sandwich_lanes(
         signed_sum(&summands)
     };
     let c = apply(false, quote!(xs));
-    let cc = apply(true, quote!(c));
+    let cc = apply(!unit, quote!(c));
     lets.extend(quote! {
         let c = #c;
         let s = v.swizzle::<{ simd::order(0, 0, 0, 0) }>();
         let two_s = s + s;
     });
     let y = if unit {
-        quote!((xs + two_s * c) + (#cc))
+        // `C(c)` added twice, as in the scalar form: `2 C(c)` could overflow near `MAX`.
+        lets.extend(quote!(let cc = #cc;));
+        quote!(((xs + two_s * c) + cc) + cc)
     } else {
         // <v ~v>: each component squared with the sign of its blade times its reverse.
         let signs: Vec<i32> = versor

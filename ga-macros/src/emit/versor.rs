@@ -45,18 +45,16 @@ pub fn emit_sandwiches(plan: &Plan) -> TokenStream {
     if !unit.is_empty() {
         out.extend(quote! {
             /// The rotation by a **unit** even versor (a rotor, `v ~v = 1`), in the cheaper
-            /// form that precondition allows: `x + 2 (s C(x) + C(C(x)))` with
+            /// form that precondition allows: `((x + 2s C(x)) + C(C(x))) + C(C(x))` with
             /// `C(x) = (Bx - xB) / 2` for `v = s + B`, as glam's `Quat * Vec3` assumes a unit
             /// quaternion. For a rotor of norm `1 + e` the result is off by about `2e |x|`;
             /// [`Sandwich::sandwich`] is exact for any versor.
             ///
-            /// Its range is narrower than `sandwich`'s: `2 (s C(x) + C(C(x)))` is `y - x`,
-            /// up to `2 |x|`, and every intermediate is at most
-            /// `(1 + 2 n |s| + 2 n^2) max |x_k|` with `n` the sum of `|v_i|` over the
-            /// bivector components. The result is finite when that is below `MAX`: for a
-            /// unit rotor of G2 or G3 (`n <= sqrt 3`), whenever every `|x_k| <= MAX / 16`
-            /// (about 1.1e307 in `f64`, 2.1e37 in `f32`). Above that it may overflow to
-            /// infinity where `sandwich` stays finite; use `sandwich` for such values.
+            /// For a unit rotor of G2 or G3, every intermediate of each grade part of `x` is
+            /// at most `sqrt 2` times that part's Euclidean norm (up to rounding), so the
+            /// result is finite whenever each part's norm is at most `MAX / sqrt 2` (about
+            /// 1.27e308 in `f64`, 2.4e38 in `f32`); `C(C(x))` is added twice rather than
+            /// doubled because `2 C(C(x))` reaches `2 |x|` for a half turn.
             pub trait SandwichUnit<X> {
                 /// `v x ~v` for a unit `v`.
                 #[must_use]
@@ -178,8 +176,9 @@ fn commutator_scalar_body(
             quote!(0.0)
         }
     };
-    // The second commutator takes the doubled versor: the factor 2 of `2 C(c)` is folded
-    // into components that do not depend on `x`, one addition fewer on the path through it.
+    // The exact form's second commutator takes the doubled versor: the factor 2 of
+    // `2 C(c)` is folded into components that do not depend on `x`, one addition fewer on
+    // the path through it.
     let doubled = |i: usize| {
         let name = local("two", versor[i]);
         quote!(#name)
@@ -225,8 +224,12 @@ fn commutator_scalar_body(
         quote!(let #name = #value;)
     });
     let used: BTreeSet<usize> = terms.values().flatten().map(|t| t.lhs).collect();
+    // A unit versor's second commutator keeps the plain versor (see below): only `2s` is
+    // doubled there.
     let doubling: Vec<usize> = if used.is_empty() {
         Vec::new()
+    } else if unit {
+        vec![0]
     } else {
         std::iter::once(0).chain(used).collect()
     };
@@ -234,6 +237,19 @@ fn commutator_scalar_body(
         let (name, a) = (doubled(i), this.component(plan, i));
         quote!(let #name = #a + #a;)
     });
+    // `2 C(c)` reaches `2 |x|` for a half turn, past `MAX` for `|x|` near `MAX` though the
+    // result is `|x|`: a unit versor adds `C(c)` twice, `((x + 2s c) + C(c)) + C(c)`, whose
+    // partial sums stay within `sqrt 2 |x|` (one addition more on the path through `x`).
+    let cc_lets = if unit {
+        let lets = terms.keys().map(|&blade| {
+            let name = local("cc", blade);
+            let value = apply(&plain, &from_c, blade);
+            quote!(let #name = #value;)
+        });
+        quote!(#(#lets)*)
+    } else {
+        quote!()
+    };
     let norm = if unit {
         quote!()
     } else if lanes.is_some() {
@@ -260,8 +276,13 @@ fn commutator_scalar_body(
         let scaled = if unit { quote!(#xk) } else { quote!(n * #xk) };
         Some(if terms.contains_key(&blade) {
             let c = local("c", blade);
-            let second = apply(&doubled, &from_c, blade);
-            quote!((#scaled + #two_s * #c) + (#second))
+            if unit {
+                let cc = local("cc", blade);
+                quote!(((#scaled + #two_s * #c) + #cc) + #cc)
+            } else {
+                let second = apply(&doubled, &from_c, blade);
+                quote!((#scaled + #two_s * #c) + (#second))
+            }
         } else {
             scaled
         })
@@ -269,6 +290,7 @@ fn commutator_scalar_body(
     quote! {
         #(#c_lets)*
         #(#two_lets)*
+        #cc_lets
         #norm
         #value
     }

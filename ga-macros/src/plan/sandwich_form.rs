@@ -306,19 +306,21 @@ impl Plan {
         let mut counts = OpCounts {
             // C(x), C(c) and 2s c; the exact form adds <v ~v> and <v ~v> x.
             mul: 2 * once.mul + used,
-            // C(x), C(c), the doubled versor components, and the final sums.
-            add: 2 * once.add + versor + 2 * used,
+            // C(x), C(c), `2s` and the final sums `((x + 2s c) + C(c)) + C(c)`.
+            add: 2 * once.add + 1 + 3 * used,
             ..OpCounts::default()
         };
         if !unit {
+            // The doubled bivector components and `<v ~v>`; one final sum fewer.
             counts.mul += versor + outputs;
-            counts.add += versor - 1;
+            counts.add += (versor - 1) + (versor - 1) - used;
         }
         let width = terms.values().map(Vec::len).max().unwrap_or(1);
+        // c = C(x), then C(c), then the final sums (two for a unit versor).
+        let final_sums = if unit { 2 } else { 1 };
         FormCost {
             counts,
-            // c = C(x), then C(c), then the final sum of four terms.
-            latency: arithmetic_latency(2, 2 * sum_depth(width) + 1),
+            latency: arithmetic_latency(2, 2 * sum_depth(width) + final_sums),
         }
     }
 
@@ -405,28 +407,31 @@ pub fn collected_cost(sums: &CollectedSums, operand: &[Blade]) -> FormCost {
     }
 }
 
-/// The lane form: pack `x`; the versor's swizzled, signed and doubled lanes; two
-/// applications of `C` (each with its own swizzles of the operand); `2s`; the final sum;
-/// for the exact form also `<v ~v>` (a multiply and a two-step horizontal sum) and its
-/// product with `x`; unpacking the result. Along `x`: pack, then two rounds of swizzle,
-/// multiply and add, then the final sum, then unpack.
+/// The lane form: pack `x`; the versor's swizzled and signed lanes; two applications of
+/// `C` (each with its own swizzles of the operand); `2s`; the final sums (three for a unit
+/// versor, `((x + 2s c) + C(c)) + C(c)`); for the exact form also the doubled lanes,
+/// `<v ~v>` (a multiply and a two-step horizontal sum) and its product with `x`; unpacking
+/// the result. Along `x`: pack, then two rounds of swizzle, multiply and add, then the
+/// final sums, then unpack.
 pub fn lane_sandwich_cost(lanes: &PairColumns, unit: bool) -> FormCost {
     let (a, b) = lanes.swizzles();
     let columns = lanes.columns.len();
     let mut counts = OpCounts {
-        mul: 3 * columns + 1,
-        add: 2 * (columns - 1) + 3,
+        mul: 2 * columns + 1,
+        add: 2 * (columns - 1) + 4,
         shuffle: 1 + a.len() + 2 * b.len() + 1 + 1,
         logic: lanes.flip_count(),
     };
     if !unit {
-        counts.mul += 2;
-        counts.add += 2;
+        // The doubled lanes, `<v ~v>` and its product; one final sum fewer.
+        counts.mul += columns + 2;
+        counts.add += 1;
         counts.shuffle += 2;
     }
     let depth = sum_depth(columns);
+    let final_sums = if unit { 2 } else { 1 };
     FormCost {
         counts,
-        latency: arithmetic_latency(4, 2 * depth + 1),
+        latency: arithmetic_latency(4, 2 * depth + final_sums),
     }
 }
