@@ -29,6 +29,16 @@ pub(crate) trait Real:
     fn select(mask: Self::Mask, yes: Self, no: Self) -> Self;
     /// Whether `mask` holds in some lane.
     fn any(mask: Self::Mask) -> bool;
+    /// `self` where `self < other`, else `other` (so `other` where `self` is NaN).
+    #[inline(always)]
+    fn min_or(self, other: Self) -> Self {
+        Self::select(self.lt(other), self, other)
+    }
+    /// `self` where `other < self`, else `other` (so `other` where `self` is NaN).
+    #[inline(always)]
+    fn max_or(self, other: Self) -> Self {
+        Self::select(other.lt(self), self, other)
+    }
 }
 
 macro_rules! scalar_real {

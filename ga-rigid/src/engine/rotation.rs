@@ -183,6 +183,15 @@ impl<R: Real> Q<R> {
         self.scaled(k)
     }
 
+    /// `self` divided by `sqrt(norm2)`, its squared norm known beforehand, then negated if
+    /// that puts it in the other hemisphere from `reference`.
+    #[inline(always)]
+    pub(crate) fn normalized_by(self, norm2: R, reference: Q<R>) -> Q<R> {
+        let inv = R::splat(1.0) / norm2.sqrt();
+        let k = R::select(self.dot(reference).lt(R::splat(0.0)), -inv, inv);
+        self.scaled(k)
+    }
+
     /// `yes` where `mask` holds, `no` elsewhere.
     #[inline(always)]
     pub(crate) fn select(mask: R::Mask, yes: Q<R>, no: Q<R>) -> Q<R> {
