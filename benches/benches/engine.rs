@@ -4,8 +4,8 @@
 //!   (`step`, `step_order4`, the module's own baselines) against the explicit gyroscopic
 //!   Euler step written here directly on glam, the way an engine writes it
 //!   (`glam_explicit_euler`). Targets: `step` at most 1.5x `glam_explicit_euler`.
-//! - `engine/f32/slice`: the same 1024 bodies by `step_slice` (lanes of 4). Target: at
-//!   most 0.5x `glam_explicit_euler` per body.
+//! - `engine/f32/slice`: the same 1024 bodies by `step_slice` (eight lanes with AVX, else
+//!   four). Target: at most 0.5x `glam_explicit_euler` per body.
 //! - `engine/f32/rayon`: 2^20 bodies by `par_step_slice` on 1 and on all threads.
 //!
 //! Times are per body (criterion's throughput is bodies per second).

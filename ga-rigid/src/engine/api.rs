@@ -2,9 +2,9 @@
 //! enabled glam version and both precisions.
 
 /// The items of one precision on one glam: `$glam` is ga-core's re-export of that glam,
-/// `$t` the float, `$lanes` the group width of the slice form.
+/// `$t` the float, `$slice_all` the slice form's stepper for it.
 macro_rules! precision_api {
-    ($glam:ident, $t:ident, $quat:ident, $vec3:ident, $mat3:ident, $lanes:literal) => {
+    ($glam:ident, $t:ident, $quat:ident, $vec3:ident, $mat3:ident, $slice_all:path) => {
         use crate::engine::error::BodyError;
         use crate::engine::inertia::Inertia;
         use crate::engine::rotation::{Q, V};
@@ -293,12 +293,12 @@ macro_rules! precision_api {
         /// Every body by [`step`], several at a time in lanes: the same bits as
         /// stepping each alone.
         pub fn step_slice(states: &mut [BodyState], dt: $t) {
-            slice::step_all::<$t, BodyState, $lanes>(states, dt, Order::Two);
+            $slice_all(states, dt, Order::Two);
         }
 
         /// Every body by [`step_order4`], likewise.
         pub fn step_slice_order4(states: &mut [BodyState], dt: $t) {
-            slice::step_all::<$t, BodyState, $lanes>(states, dt, Order::Four);
+            $slice_all(states, dt, Order::Four);
         }
 
         /// [`step_slice`] on rayon's current pool, in fixed chunks: the results do not
@@ -320,14 +320,15 @@ macro_rules! precision_api {
 macro_rules! engine_api {
     ($glam:ident) => {
         /// The engine in `f32` (`Quat`, `Vec3`, `Mat3`).
-        // Groups of 4: one SSE register a component; 8 spilled to the stack in the default
-        // (SSE2) build and measured 1.4x slower per body.
+        // Slices in groups of 8, one AVX register a component, where the CPU has AVX;
+        // else 4, one SSE register (8 in two SSE registers spilled to the stack and were
+        // slower per body).
         pub mod f32 {
-            precision_api!($glam, f32, Quat, Vec3, Mat3, 4);
+            precision_api!($glam, f32, Quat, Vec3, Mat3, slice::step_all_f32);
         }
         /// The engine in `f64` (`DQuat`, `DVec3`, `DMat3`).
         pub mod f64 {
-            precision_api!($glam, f64, DQuat, DVec3, DMat3, 4);
+            precision_api!($glam, f64, DQuat, DVec3, DMat3, slice::step_all_f64);
         }
     };
 }

@@ -33,7 +33,10 @@
 //! The steps use only IEEE-754 `+ - * /` and `sqrt` (each correctly rounded), in a fixed
 //! order: no fused multiply-add (Rust never contracts `a * b + c`, with or without
 //! `-C target-cpu=native`), no `sin`/`cos` at all (rational turns, `splitting.rs`), no
-//! reassociation, no run-time CPU dispatch in the arithmetic. So on every target where
+//! reassociation. The one run-time CPU check is the f32 slice form's: with AVX it steps
+//! eight bodies in one register instead of four (`avx.rs`), each lane doing the scalar's
+//! operations in the scalar's order, so the bits are the same either way (a unit test in
+//! `slice.rs` compares both widths with one body at a time). So on every target where
 //! `f32`/`f64` are IEEE binary32/binary64 with round-to-nearest and no flush of
 //! subnormals (x86-64 with SSE2, AVX2 or AVX-512; AArch64; wasm32), the same inputs give
 //! the same bits, in the one-body, slice and parallel forms alike
@@ -51,6 +54,8 @@
 
 #[macro_use]
 mod api;
+#[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
+mod avx;
 mod eigen;
 mod error;
 mod euler;

@@ -166,3 +166,29 @@ impl<T: Real<Mask = bool>, const N: usize> Real for Lanes<T, N> {
         mask.iter().any(|&m| m)
     }
 }
+
+/// `N` values of `T` stepped side by side as one [`Real`]: how the slice form packs a
+/// group's components and unpacks the results.
+pub(crate) trait Group<T, const N: usize>: Real {
+    /// The lanes of an array, lane 0 first.
+    fn pack(x: [T; N]) -> Self;
+    /// A mask of `N` truth values.
+    fn pack_mask(m: [bool; N]) -> Self::Mask;
+    /// The lanes as an array, lane 0 first.
+    fn unpack(self) -> [T; N];
+}
+
+impl<T: Real<Mask = bool>, const N: usize> Group<T, N> for Lanes<T, N> {
+    #[inline(always)]
+    fn pack(x: [T; N]) -> Self {
+        Lanes(x)
+    }
+    #[inline(always)]
+    fn pack_mask(m: [bool; N]) -> [bool; N] {
+        m
+    }
+    #[inline(always)]
+    fn unpack(self) -> [T; N] {
+        self.0
+    }
+}

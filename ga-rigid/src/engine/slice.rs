@@ -1,12 +1,13 @@
 //! Many bodies with one `dt`: groups of `N` bodies stepped side by side in lanes.
 //!
-//! The bodies of a group are gathered into [`Lanes`] (one lane per body), stepped by the
+//! The bodies of a group are gathered into a [`Group`] (one lane per body: [`Lanes`] of
+//! four, or eight in one AVX register for f32 where the CPU has AVX), stepped by the
 //! same generic code as one body, and scattered back; the bodies left over at the end
 //! are stepped one by one. Each lane rounds as the scalar does, so a body's bits do not
-//! depend on its neighbours, its position in the slice or the group width.
+//! depend on its neighbours, its position in the slice, the group width or the CPU.
 
 use super::inertia::{Inertia, Precision};
-use super::real::{Lanes, Real};
+use super::real::{Group, Lanes, Real};
 use super::rotation::{Q, V};
 
 /// Which of the splitting steps.
@@ -18,10 +19,13 @@ pub(crate) enum Order {
     Four,
 }
 
+/// Inertia, orientation, world momentum and world torque of a body.
+pub(crate) type BodyParts<'a, T> = (&'a Inertia<T>, Q<T>, V<T>, V<T>);
+
 /// A body of a slice, as the generic steps see it.
 pub(crate) trait Parts<T: Real> {
     /// Inertia, orientation, world momentum, world torque.
-    fn parts(&self) -> (&Inertia<T>, Q<T>, V<T>, V<T>);
+    fn parts(&self) -> BodyParts<'_, T>;
     /// Store the stepped orientation and momentum.
     fn store(&mut self, q: Q<T>, l: V<T>);
 }
@@ -37,16 +41,16 @@ pub(crate) fn step_one<T: Real, S: Parts<T>>(state: &mut S, h: T, order: Order) 
     state.store(q, l);
 }
 
-/// Every body of `states`, `N` at a time.
+/// Every body of `states`, `N` at a time in the lanes of `G`.
 #[inline(always)]
-pub(crate) fn step_all<T: Precision, S: Parts<T>, const N: usize>(
+pub(crate) fn step_all<T: Precision, S: Parts<T>, G: Group<T, N>, const N: usize>(
     states: &mut [S],
     h: T,
     order: Order,
 ) {
     let mut groups = states.chunks_exact_mut(N);
     for group in &mut groups {
-        step_group::<T, S, N>(group, h, order);
+        step_group::<T, S, G, N>(group, h, order);
     }
     for state in groups.into_remainder() {
         step_one(state, h, order);
@@ -55,98 +59,209 @@ pub(crate) fn step_all<T: Precision, S: Parts<T>, const N: usize>(
 
 /// `N` bodies in lanes.
 #[inline(always)]
-fn step_group<T: Precision, S: Parts<T>, const N: usize>(group: &mut [S], h: T, order: Order) {
-    let zero = T::splat(0.0);
-    let mut lanes = Gathered::<T, N> {
-        moments: [[zero; N]; 3],
-        inverse: [[zero; N]; 3],
-        frame: [[zero; N]; 4],
-        turned: [false; N],
-        q: [[zero; N]; 4],
-        l: [[zero; N]; 3],
-        t: [[zero; N]; 3],
+fn step_group<T: Precision, S: Parts<T>, G: Group<T, N>, const N: usize>(
+    group: &mut [S],
+    h: T,
+    order: Order,
+) {
+    // Each lane's component read straight from its body (an array built from `N`
+    // values, not a loop filling arrays in memory: read back as one vector, such arrays
+    // stall on store forwarding).
+    let parts: [BodyParts<'_, T>; N] = core::array::from_fn(|i| group[i].parts());
+    let inertia = Inertia::<G> {
+        moments: vector(|i| parts[i].0.moments),
+        inverse: vector(|i| parts[i].0.inverse),
+        frame: quaternion(|i| parts[i].0.frame),
+        turned: G::pack_mask(core::array::from_fn(|i| parts[i].0.turned)),
     };
-    for (i, state) in group.iter().enumerate() {
-        let (inertia, q, l, t) = state.parts();
-        put3(&mut lanes.moments, i, inertia.moments);
-        put3(&mut lanes.inverse, i, inertia.inverse);
-        put4(&mut lanes.frame, i, inertia.frame);
-        lanes.turned[i] = inertia.turned;
-        put4(&mut lanes.q, i, q);
-        put3(&mut lanes.l, i, l);
-        put3(&mut lanes.t, i, t);
-    }
-    let inertia = Inertia::<Lanes<T, N>> {
-        moments: v(lanes.moments),
-        inverse: v(lanes.inverse),
-        frame: q(lanes.frame),
-        turned: lanes.turned,
-    };
-    let h = Lanes([h; N]);
+    let (q0, l0, t0) = (
+        quaternion(|i| parts[i].1),
+        vector(|i| parts[i].2),
+        vector(|i| parts[i].3),
+    );
+    let h = G::pack([h; N]);
     let (qn, ln) = match order {
-        Order::Two => super::splitting::step2(&inertia, q(lanes.q), v(lanes.l), v(lanes.t), h),
-        Order::Four => super::splitting::step4(&inertia, q(lanes.q), v(lanes.l), v(lanes.t), h),
+        Order::Two => super::splitting::step2(&inertia, q0, l0, t0, h),
+        Order::Four => super::splitting::step4(&inertia, q0, l0, t0, h),
     };
+    let (qn, ln) = (
+        [qn.x, qn.y, qn.z, qn.w].map(G::unpack),
+        [ln.x, ln.y, ln.z].map(G::unpack),
+    );
     for (i, state) in group.iter_mut().enumerate() {
         state.store(
             Q {
-                x: qn.x.0[i],
-                y: qn.y.0[i],
-                z: qn.z.0[i],
-                w: qn.w.0[i],
+                x: qn[0][i],
+                y: qn[1][i],
+                z: qn[2][i],
+                w: qn[3][i],
             },
             V {
-                x: ln.x.0[i],
-                y: ln.y.0[i],
-                z: ln.z.0[i],
+                x: ln[0][i],
+                y: ln[1][i],
+                z: ln[2][i],
             },
         );
     }
 }
 
-/// A group's inputs, component by component.
-struct Gathered<T, const N: usize> {
-    moments: [[T; N]; 3],
-    inverse: [[T; N]; 3],
-    frame: [[T; N]; 4],
-    turned: [bool; N],
-    q: [[T; N]; 4],
-    l: [[T; N]; 3],
-    t: [[T; N]; 3],
+/// The lanes of component `f` of each body.
+#[inline(always)]
+fn lane<T, G: Group<T, N>, const N: usize>(f: impl Fn(usize) -> T) -> G {
+    G::pack(core::array::from_fn(f))
 }
 
+/// A vector of lanes, `f(i)` the vector of lane `i`.
 #[inline(always)]
-fn put3<T: Copy, const N: usize>(dst: &mut [[T; N]; 3], i: usize, x: V<T>) {
-    dst[0][i] = x.x;
-    dst[1][i] = x.y;
-    dst[2][i] = x.z;
-}
-
-#[inline(always)]
-fn put4<T: Copy, const N: usize>(dst: &mut [[T; N]; 4], i: usize, x: Q<T>) {
-    dst[0][i] = x.x;
-    dst[1][i] = x.y;
-    dst[2][i] = x.z;
-    dst[3][i] = x.w;
-}
-
-#[inline(always)]
-fn v<T, const N: usize>(c: [[T; N]; 3]) -> V<Lanes<T, N>> {
-    let [x, y, z] = c;
+fn vector<T: Copy, G: Group<T, N>, const N: usize>(f: impl Fn(usize) -> V<T>) -> V<G> {
     V {
-        x: Lanes(x),
-        y: Lanes(y),
-        z: Lanes(z),
+        x: lane(|i| f(i).x),
+        y: lane(|i| f(i).y),
+        z: lane(|i| f(i).z),
     }
 }
 
+/// A quaternion of lanes, `f(i)` the quaternion of lane `i`.
 #[inline(always)]
-fn q<T, const N: usize>(c: [[T; N]; 4]) -> Q<Lanes<T, N>> {
-    let [x, y, z, w] = c;
+fn quaternion<T: Copy, G: Group<T, N>, const N: usize>(f: impl Fn(usize) -> Q<T>) -> Q<G> {
     Q {
-        x: Lanes(x),
-        y: Lanes(y),
-        z: Lanes(z),
-        w: Lanes(w),
+        x: lane(|i| f(i).x),
+        y: lane(|i| f(i).y),
+        z: lane(|i| f(i).z),
+        w: lane(|i| f(i).w),
+    }
+}
+
+/// Every f32 body of `states`: eight at a time in one AVX register where the CPU has AVX
+/// (checked at run time with `std`, or enabled at compile time), else four at a time.
+/// Both give each body the bits it gets alone.
+#[inline(always)]
+pub(crate) fn step_all_f32<S: Parts<f32>>(states: &mut [S], h: f32, order: Order) {
+    #[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
+    {
+        if super::avx::available() {
+            // SAFETY: the CPU has AVX (checked just above).
+            unsafe { super::avx::step_all(states, h, order) };
+            return;
+        }
+    }
+    step_all::<f32, S, Lanes<f32, 4>, 4>(states, h, order);
+}
+
+/// Every f64 body of `states`, four at a time.
+#[inline(always)]
+pub(crate) fn step_all_f64<S: Parts<f64>>(states: &mut [S], h: f64, order: Order) {
+    step_all::<f64, S, Lanes<f64, 4>, 4>(states, h, order);
+}
+
+#[cfg(all(test, feature = "std"))]
+mod tests {
+    use super::*;
+
+    /// A body of the tests' slices.
+    #[derive(Clone, Copy, Debug)]
+    struct Body<T: Precision> {
+        inertia: Inertia<T>,
+        q: Q<T>,
+        l: V<T>,
+        t: V<T>,
+    }
+
+    impl<T: Precision> Parts<T> for Body<T> {
+        fn parts(&self) -> BodyParts<'_, T> {
+            (&self.inertia, self.q, self.l, self.t)
+        }
+        fn store(&mut self, q: Q<T>, l: V<T>) {
+            self.q = q;
+            self.l = l;
+        }
+    }
+
+    /// Varied bodies (some with a turned principal frame, so that groups mix both).
+    fn crowd<T: Precision>(n: usize) -> Vec<Body<T>> {
+        (0..n)
+            .map(|i| {
+                let f = i as f64;
+                let frame = if i % 3 == 0 {
+                    Q {
+                        x: T::splat(0.3),
+                        y: T::splat(-0.2),
+                        z: T::splat(0.1),
+                        w: T::splat(0.9),
+                    }
+                } else {
+                    Q {
+                        x: T::splat(0.0),
+                        y: T::splat(0.0),
+                        z: T::splat(0.0),
+                        w: T::splat(1.0),
+                    }
+                };
+                let moments = [1.0 + 0.1 * f, 2.0 + 0.07 * f, 3.0 - 0.05 * f].map(T::splat);
+                let (x, y, z, w) = ((f * 0.7).sin(), (f * 1.3).cos(), (f * 0.4).sin(), 2.0);
+                let n = (x * x + y * y + z * z + w * w).sqrt();
+                Body {
+                    inertia: Inertia::from_principal(moments, frame).expect("valid"),
+                    q: Q {
+                        x: T::splat(x / n),
+                        y: T::splat(y / n),
+                        z: T::splat(z / n),
+                        w: T::splat(w / n),
+                    },
+                    l: V {
+                        x: T::splat(0.3 * f - 2.0),
+                        y: T::splat(12.0 - f),
+                        z: T::splat(0.5),
+                    },
+                    t: V {
+                        x: T::splat(0.01 * f),
+                        y: T::splat(-0.02),
+                        z: T::splat(0.03),
+                    },
+                }
+            })
+            .collect()
+    }
+
+    fn bits<T: Precision + Into<f64>>(bodies: &[Body<T>]) -> Vec<u64> {
+        bodies
+            .iter()
+            .flat_map(|b| [b.q.x, b.q.y, b.q.z, b.q.w, b.l.x, b.l.y, b.l.z])
+            .map(|x| x.into().to_bits())
+            .collect()
+    }
+
+    /// 200 steps of 21 bodies (groups and a remainder) by each group width this build
+    /// has, against each body stepped alone: the same bits.
+    #[test]
+    fn every_group_width_gives_the_bits_of_one_body_at_a_time() {
+        let h32 = 1.0_f32 / 60.0;
+        let mut alone = crowd::<f32>(21);
+        let mut four = alone.clone();
+        for _ in 0..200 {
+            for body in &mut alone {
+                step_one(body, h32, Order::Two);
+            }
+            step_all::<f32, _, Lanes<f32, 4>, 4>(&mut four, h32, Order::Two);
+        }
+        assert_eq!(bits(&alone), bits(&four));
+        #[cfg(target_arch = "x86_64")]
+        if super::super::avx::available() {
+            let mut eight = crowd::<f32>(21);
+            for _ in 0..200 {
+                // SAFETY: the CPU has AVX (checked above).
+                unsafe { super::super::avx::step_all(&mut eight, h32, Order::Two) };
+            }
+            assert_eq!(bits(&alone), bits(&eight));
+        }
+        let mut alone = crowd::<f64>(21);
+        let mut four = alone.clone();
+        for _ in 0..50 {
+            for body in &mut alone {
+                step_one(body, 0.01, Order::Four);
+            }
+            step_all::<f64, _, Lanes<f64, 4>, 4>(&mut four, 0.01, Order::Four);
+        }
+        assert_eq!(bits(&alone), bits(&four));
     }
 }

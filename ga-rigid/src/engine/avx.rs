@@ -1,0 +1,146 @@
+//! Eight `f32` lanes in one AVX register, for the slice form on x86-64 CPUs with AVX.
+//!
+//! The slice form is bound by the chain of its five dependent turns, not by its
+//! instruction count: a group of four in SSE takes about as long as one body's chain
+//! (BENCHMARKS.md, issue 19). A group of eight in one 256-bit register runs the same
+//! chain for twice the bodies. Every lane operation is one AVX instruction and the IEEE
+//! operation the scalar does (`vaddps` rounds each lane as `addss` does; no FMA), so
+//! each body gets the bits it gets alone, with or without AVX.
+//!
+//! The code is generic (`splitting.rs` over [`Real`]) and inlined into [`step_all`],
+//! the one function compiled for AVX; the CPU is checked before it is called.
+
+use core::arch::x86_64::{
+    __m256, _mm256_add_ps, _mm256_and_ps, _mm256_andnot_ps, _mm256_cmp_ps, _mm256_div_ps,
+    _mm256_max_ps, _mm256_min_ps, _mm256_movemask_ps, _mm256_mul_ps, _mm256_or_ps, _mm256_set1_ps,
+    _mm256_sqrt_ps, _mm256_sub_ps, _mm256_xor_ps, _CMP_LT_OQ,
+};
+use core::ops::{Add, Div, Mul, Neg, Sub};
+
+use super::real::{Group, Real};
+use super::slice::{Order, Parts};
+
+/// Whether this CPU has AVX.
+#[inline(always)]
+pub(crate) fn available() -> bool {
+    #[cfg(target_feature = "avx")]
+    {
+        true
+    }
+    #[cfg(all(not(target_feature = "avx"), feature = "std"))]
+    {
+        std::is_x86_feature_detected!("avx")
+    }
+    #[cfg(all(not(target_feature = "avx"), not(feature = "std")))]
+    {
+        false
+    }
+}
+
+/// Every body of `states`, eight at a time.
+///
+/// # Safety
+/// The CPU must have AVX ([`available`]).
+#[target_feature(enable = "avx")]
+pub(crate) unsafe fn step_all<S: Parts<f32>>(states: &mut [S], h: f32, order: Order) {
+    super::slice::step_all::<f32, S, F32x8, 8>(states, h, order);
+}
+
+/// Eight `f32` stepped side by side.
+#[derive(Clone, Copy, Debug)]
+#[repr(transparent)]
+pub(crate) struct F32x8(__m256);
+
+/// A lane mask: all ones where true.
+#[derive(Clone, Copy, Debug)]
+#[repr(transparent)]
+pub(crate) struct Mask8(__m256);
+
+macro_rules! avx_op {
+    ($trait:ident, $method:ident, $intrinsic:ident) => {
+        impl $trait for F32x8 {
+            type Output = Self;
+            #[inline(always)]
+            fn $method(self, other: Self) -> Self {
+                // SAFETY: only reached from `step_all`, compiled for AVX and called on a
+                // CPU that has it.
+                F32x8(unsafe { $intrinsic(self.0, other.0) })
+            }
+        }
+    };
+}
+avx_op!(Add, add, _mm256_add_ps);
+avx_op!(Sub, sub, _mm256_sub_ps);
+avx_op!(Mul, mul, _mm256_mul_ps);
+avx_op!(Div, div, _mm256_div_ps);
+
+impl Neg for F32x8 {
+    type Output = Self;
+    #[inline(always)]
+    fn neg(self) -> Self {
+        // SAFETY: as for the arithmetic above. Flips the sign bit, as the scalar's `-`.
+        F32x8(unsafe { _mm256_xor_ps(self.0, _mm256_set1_ps(-0.0)) })
+    }
+}
+
+impl Real for F32x8 {
+    type Mask = Mask8;
+    #[inline(always)]
+    fn splat(x: f64) -> Self {
+        // SAFETY: as for the arithmetic above.
+        F32x8(unsafe { _mm256_set1_ps(x as f32) })
+    }
+    #[inline(always)]
+    fn sqrt(self) -> Self {
+        // SAFETY: as for the arithmetic above.
+        F32x8(unsafe { _mm256_sqrt_ps(self.0) })
+    }
+    #[inline(always)]
+    fn lt(self, other: Self) -> Mask8 {
+        // SAFETY: as for the arithmetic above. Ordered, quiet: false where either is
+        // NaN, as the scalar `<`.
+        Mask8(unsafe { _mm256_cmp_ps::<_CMP_LT_OQ>(self.0, other.0) })
+    }
+    #[inline(always)]
+    fn select(mask: Mask8, yes: Self, no: Self) -> Self {
+        // SAFETY: as for the arithmetic above.
+        F32x8(unsafe { _mm256_or_ps(_mm256_and_ps(mask.0, yes.0), _mm256_andnot_ps(mask.0, no.0)) })
+    }
+    #[inline(always)]
+    fn any(mask: Mask8) -> bool {
+        // SAFETY: as for the arithmetic above.
+        unsafe { _mm256_movemask_ps(mask.0) != 0 }
+    }
+    #[inline(always)]
+    fn min_or(self, other: Self) -> Self {
+        // SAFETY: as for the arithmetic above. `vminps a, b` is `a < b ? a : b` in each
+        // lane, NaN included: the default's select in one instruction, which LLVM does
+        // not fold the and/andnot/or form back into.
+        F32x8(unsafe { _mm256_min_ps(self.0, other.0) })
+    }
+    #[inline(always)]
+    fn max_or(self, other: Self) -> Self {
+        // SAFETY: as in `min_or`; `vmaxps a, b` is `a > b ? a : b`.
+        F32x8(unsafe { _mm256_max_ps(self.0, other.0) })
+    }
+}
+
+impl Group<f32, 8> for F32x8 {
+    #[inline(always)]
+    fn pack(x: [f32; 8]) -> Self {
+        // SAFETY: `[f32; 8]` and `__m256` are both 32 bytes, and every bit pattern is a
+        // valid value of either.
+        F32x8(unsafe { core::mem::transmute::<[f32; 8], __m256>(x) })
+    }
+    #[inline(always)]
+    fn pack_mask(m: [bool; 8]) -> Mask8 {
+        let bits = m.map(|b| if b { u32::MAX } else { 0 });
+        // SAFETY: as in `pack`, for `[u32; 8]`.
+        Mask8(unsafe { core::mem::transmute::<[u32; 8], __m256>(bits) })
+    }
+    #[inline(always)]
+    fn unpack(self) -> [f32; 8] {
+        // SAFETY: as in `pack`.
+        unsafe { core::mem::transmute::<__m256, [f32; 8]>(self.0) }
+    }
+}
