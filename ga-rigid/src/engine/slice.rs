@@ -254,6 +254,40 @@ mod tests {
             }
             assert_eq!(bits(&alone), bits(&eight));
         }
+        // Saturated angles and an overflowing body momentum, where the clamps decide
+        // (`minps` and `maxps` must pick what the scalar's comparisons pick, NaN
+        // included).
+        let mut alone = crowd::<f32>(21);
+        for (i, body) in alone.iter_mut().enumerate() {
+            let size = [1e3, 1e20, 1e37][i % 3];
+            body.l = V {
+                x: size,
+                y: -size,
+                z: 0.5 * size,
+            };
+        }
+        let mut four = alone.clone();
+        #[cfg(target_arch = "x86_64")]
+        let mut eight = alone.clone();
+        for _ in 0..20 {
+            for body in &mut alone {
+                step_one(body, 10.0, Order::Two);
+            }
+            step_all::<f32, _, Lanes<f32, 4>, 4>(&mut four, 10.0, Order::Two);
+            #[cfg(target_arch = "x86_64")]
+            if super::super::avx::available() {
+                // SAFETY: the CPU has AVX (checked just above).
+                unsafe { super::super::avx::step_all(&mut eight, 10.0, Order::Two) };
+            }
+        }
+        assert!(alone
+            .iter()
+            .all(|b| [b.q.x, b.q.y, b.q.z, b.q.w].iter().all(|c| c.is_finite())));
+        assert_eq!(bits(&alone), bits(&four));
+        #[cfg(target_arch = "x86_64")]
+        if super::super::avx::available() {
+            assert_eq!(bits(&alone), bits(&eight));
+        }
         let mut alone = crowd::<f64>(21);
         let mut four = alone.clone();
         for _ in 0..50 {
