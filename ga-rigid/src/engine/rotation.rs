@@ -178,9 +178,7 @@ impl<R: Real> Q<R> {
     /// `reference`: the same rotation, continuous from step to step.
     #[inline(always)]
     pub(crate) fn normalized_near(self, reference: Q<R>) -> Q<R> {
-        let inv = R::splat(1.0) / self.dot(self).sqrt();
-        let k = R::select(self.dot(reference).lt(R::splat(0.0)), -inv, inv);
-        self.scaled(k)
+        self.normalized_by(self.dot(self), reference)
     }
 
     /// `self` divided by `sqrt(norm2)`, its squared norm known beforehand, then negated if
