@@ -2,9 +2,10 @@
 //! enabled glam version and both precisions.
 
 /// The items of one precision on one glam: `$glam` is ga-core's re-export of that glam,
-/// `$t` the float, `$slice_all` the slice form's stepper for it.
+/// `$t` the float, `$step2` the one-body second-order step for it, `$slice_all` the slice
+/// form's stepper.
 macro_rules! precision_api {
-    ($glam:ident, $t:ident, $quat:ident, $vec3:ident, $mat3:ident, $slice_all:path) => {
+    ($glam:ident, $t:ident, $quat:ident, $vec3:ident, $mat3:ident, $step2:path, $slice_all:path) => {
         use crate::engine::error::BodyError;
         use crate::engine::inertia::Inertia;
         use crate::engine::rotation::{Q, V};
@@ -123,7 +124,7 @@ macro_rules! precision_api {
             torque: $vec3,
             dt: $t,
         ) -> ($quat, $vec3) {
-            let (q, l) = crate::engine::splitting::step2(
+            let (q, l) = $step2(
                 &body.inertia,
                 q_in(orientation),
                 v_in(momentum),
@@ -324,11 +325,27 @@ macro_rules! engine_api {
         // else 4, one SSE register (8 in two SSE registers spilled to the stack and were
         // slower per body).
         pub mod f32 {
-            precision_api!($glam, f32, Quat, Vec3, Mat3, slice::step_all_f32);
+            precision_api!(
+                $glam,
+                f32,
+                Quat,
+                Vec3,
+                Mat3,
+                crate::engine::splitting::step2_f32,
+                slice::step_all_f32
+            );
         }
         /// The engine in `f64` (`DQuat`, `DVec3`, `DMat3`).
         pub mod f64 {
-            precision_api!($glam, f64, DQuat, DVec3, DMat3, slice::step_all_f64);
+            precision_api!(
+                $glam,
+                f64,
+                DQuat,
+                DVec3,
+                DMat3,
+                crate::engine::splitting::step2,
+                slice::step_all_f64
+            );
         }
     };
 }

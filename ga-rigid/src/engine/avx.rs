@@ -112,6 +112,11 @@ impl Real for F32x8 {
         unsafe { _mm256_movemask_ps(mask.0) != 0 }
     }
     #[inline(always)]
+    fn all(mask: Mask8) -> bool {
+        // SAFETY: as for the arithmetic above.
+        unsafe { _mm256_movemask_ps(mask.0) == 0xff }
+    }
+    #[inline(always)]
     fn min_or(self, other: Self) -> Self {
         // SAFETY: as for the arithmetic above. `vminps a, b` is `a < b ? a : b` in each
         // lane, NaN included: the default's select in one instruction, which LLVM does

@@ -66,6 +66,8 @@ mod real;
 mod rotation;
 mod slice;
 mod splitting;
+#[cfg(target_arch = "x86_64")]
+mod sse;
 
 pub use error::BodyError;
 

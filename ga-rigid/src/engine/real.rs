@@ -29,6 +29,14 @@ pub(crate) trait Real:
     fn select(mask: Self::Mask, yes: Self, no: Self) -> Self;
     /// Whether `mask` holds in some lane.
     fn any(mask: Self::Mask) -> bool;
+    /// Whether `mask` holds in every lane.
+    fn all(mask: Self::Mask) -> bool;
+    /// `self`, unchanged, where the optimiser cannot look into it (a scalar's chain
+    /// kept scalar, see `hidden`; lanes are already vectors).
+    #[inline(always)]
+    fn opaque(self) -> Self {
+        self
+    }
     /// `self` where `self < other`, else `other` (so `other` where `self` is NaN).
     #[inline(always)]
     fn min_or(self, other: Self) -> Self {
@@ -42,7 +50,7 @@ pub(crate) trait Real:
 }
 
 macro_rules! scalar_real {
-    ($t:ty, $sqrt:path) => {
+    ($t:ty, $sqrt:path, $hidden:path) => {
         impl Real for $t {
             type Mask = bool;
             #[inline(always)]
@@ -68,6 +76,14 @@ macro_rules! scalar_real {
             #[inline(always)]
             fn any(mask: bool) -> bool {
                 mask
+            }
+            #[inline(always)]
+            fn all(mask: bool) -> bool {
+                mask
+            }
+            #[inline(always)]
+            fn opaque(self) -> Self {
+                $hidden(self)
             }
         }
     };
@@ -99,8 +115,40 @@ fn sqrt64(x: f64) -> f64 {
     }
 }
 
-scalar_real!(f32, sqrt32);
-scalar_real!(f64, sqrt64);
+/// `x`, unchanged, hidden from the optimiser by an empty `asm!` on x86-64: no instruction
+/// is emitted, but LLVM's SLP vectoriser can no longer pack the one-body step's scalar
+/// chain (a turn's `t`, norm, numerators) into vectors with shuffles, which lengthened
+/// that chain (BENCHMARKS.md, issue 19). Elsewhere, `x` as it is.
+macro_rules! hidden {
+    ($name:ident, $t:ty) => {
+        #[inline(always)]
+        fn $name(x: $t) -> $t {
+            #[cfg(target_arch = "x86_64")]
+            {
+                let mut x = x;
+                // SAFETY: an empty template (a comment naming the register): it reads
+                // and writes nothing but `x`'s register, and leaves it as it was.
+                unsafe {
+                    core::arch::asm!(
+                        "/* {0} */",
+                        inout(xmm_reg) x,
+                        options(pure, nomem, nostack, preserves_flags)
+                    );
+                }
+                x
+            }
+            #[cfg(not(target_arch = "x86_64"))]
+            {
+                x
+            }
+        }
+    };
+}
+hidden!(hidden32, f32);
+hidden!(hidden64, f64);
+
+scalar_real!(f32, sqrt32, hidden32);
+scalar_real!(f64, sqrt64, hidden64);
 
 /// `N` floats stepped side by side, each exactly as the scalar would be.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -164,6 +212,10 @@ impl<T: Real<Mask = bool>, const N: usize> Real for Lanes<T, N> {
     #[inline(always)]
     fn any(mask: [bool; N]) -> bool {
         mask.iter().any(|&m| m)
+    }
+    #[inline(always)]
+    fn all(mask: [bool; N]) -> bool {
+        mask.iter().all(|&m| m)
     }
 }
 

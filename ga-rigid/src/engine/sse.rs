@@ -1,0 +1,240 @@
+//! One `f32` body's quaternion in one SSE register, for the one-body step on x86-64.
+//!
+//! The one-body step is bound by its chain of five dependent turns, and by how many
+//! bodies' instructions the core can hold at once to overlap one body's chain with the
+//! next one's. Written in components, each turn's quaternion product is twelve scalar
+//! operations, and LLVM's SLP vectoriser packs them, with the turns' scalar chain, into
+//! vectors with shuffles (BENCHMARKS.md, issue 19). Here the quaternion is one register
+//! from the start, and a turn `q (c + s e_K)` is `q c + perm_K(q) (±s)`: one shuffle for
+//! the permutation, two broadcasts, a sign flip, two products and a sum. The angles,
+//! norms and body momentum stay scalar, as in `splitting.rs`.
+//!
+//! Every lane does the IEEE operations the component form does, on the same operands:
+//! `w c - x s` is `w c + (-x) s`, exactly (negation is exact, and `+` and `*` commute
+//! bit for bit). So the bits are those of `splitting::step2` on components, which the
+//! slice form and other targets run; a unit test below compares them.
+
+use core::arch::x86_64::{
+    __m128, _mm_add_ps, _mm_add_ss, _mm_cvtss_f32, _mm_movehl_ps, _mm_mul_ps, _mm_set1_ps,
+    _mm_setr_ps, _mm_shuffle_ps, _mm_storeu_ps, _mm_sub_ps, _mm_xor_ps,
+};
+
+use super::inertia::Inertia;
+use super::real::Real;
+use super::rotation::{Q, V};
+use super::splitting::{free_flow_normalized, Turning};
+
+/// A quaternion `[x, y, z, w]`, lane 0 first (glam's `Quat` layout).
+#[derive(Clone, Copy, Debug)]
+#[repr(transparent)]
+pub(crate) struct Q4(__m128);
+
+impl Q4 {
+    /// From components.
+    #[inline(always)]
+    fn pack(q: Q<f32>) -> Self {
+        // SAFETY: SSE2 is part of x86-64.
+        Q4(unsafe { _mm_setr_ps(q.x, q.y, q.z, q.w) })
+    }
+
+    /// To components.
+    #[inline(always)]
+    fn unpack(self) -> Q<f32> {
+        let mut out = [0.0f32; 4];
+        // SAFETY: SSE2 is part of x86-64; `out` holds four floats.
+        unsafe { _mm_storeu_ps(out.as_mut_ptr(), self.0) };
+        Q {
+            x: out[0],
+            y: out[1],
+            z: out[2],
+            w: out[3],
+        }
+    }
+
+    /// `self` times `k` in every lane.
+    #[inline(always)]
+    fn scaled(self, k: f32) -> Self {
+        // SAFETY: SSE2 is part of x86-64.
+        Q4(unsafe { _mm_mul_ps(self.0, _mm_set1_ps(k)) })
+    }
+}
+
+/// The lanes `q (c + s e_K)` takes `s` times, and with which sign, as `Q::turn_about`
+/// writes them: `K = 0`: `x += w s, y += z s, z -= y s, w -= x s`.
+macro_rules! turn_lanes {
+    ($q:expr, $c:expr, $s:expr, $perm:expr, [$sx:expr, $sy:expr, $sz:expr, $sw:expr]) => {{
+        // SAFETY: SSE2 is part of x86-64.
+        unsafe {
+            let permuted = _mm_shuffle_ps::<$perm>($q, $q);
+            let signs = _mm_setr_ps($sx, $sy, $sz, $sw);
+            let s = _mm_xor_ps(_mm_set1_ps($s), signs);
+            _mm_add_ps(_mm_mul_ps($q, _mm_set1_ps($c)), _mm_mul_ps(permuted, s))
+        }
+    }};
+}
+
+impl Turning<f32> for Q4 {
+    #[inline(always)]
+    fn turned_about<const K: usize>(self, c: f32, s: f32) -> Self {
+        // Lane i of the permutation is the component lane i takes `s` times; `-0.0`
+        // flips the sign of `s` in that lane.
+        Q4(match K {
+            // x: w, y: z, z: -y, w: -x
+            0 => turn_lanes!(self.0, c, s, 0b00_01_10_11, [0.0, 0.0, -0.0, -0.0]),
+            // x: -z, y: w, z: x, w: -y
+            1 => turn_lanes!(self.0, c, s, 0b01_00_11_10, [-0.0, 0.0, 0.0, -0.0]),
+            // x: y, y: -x, z: w, w: -z
+            _ => turn_lanes!(self.0, c, s, 0b10_11_00_01, [0.0, -0.0, 0.0, -0.0]),
+        })
+    }
+
+    #[inline(always)]
+    fn normalized_by(self, norm2: f32, reference: Self) -> Self {
+        let inv = 1.0 / Real::sqrt(norm2);
+        let k = if self.dot(reference) < 0.0 { -inv } else { inv };
+        self.scaled(k)
+    }
+
+    #[inline(always)]
+    fn rotate_inv(self, v: V<f32>) -> V<f32> {
+        // `Q::rotate` for `q*`: u = -(x, y, z); t = 2 u x v; (v + w t) + u x t, lane by
+        // lane in the component form's order. Lane 3 carries nothing of use.
+        // SAFETY: SSE2 is part of x86-64.
+        unsafe {
+            let u = _mm_xor_ps(self.0, _mm_setr_ps(-0.0, -0.0, -0.0, 0.0));
+            let w = _mm_shuffle_ps::<0b11_11_11_11>(self.0, self.0);
+            let v4 = _mm_setr_ps(v.x, v.y, v.z, 0.0);
+            let t = cross(u, v4);
+            let t = _mm_add_ps(t, t);
+            let r = _mm_add_ps(_mm_add_ps(v4, _mm_mul_ps(w, t)), cross(u, t));
+            V {
+                x: _mm_cvtss_f32(r),
+                y: _mm_cvtss_f32(_mm_shuffle_ps::<0b01_01_01_01>(r, r)),
+                z: _mm_cvtss_f32(_mm_movehl_ps(r, r)),
+            }
+        }
+    }
+
+    #[inline(always)]
+    fn dot(self, b: Self) -> f32 {
+        // (x x' + y y') + (z z' + w w'), the component form's tree.
+        // SAFETY: SSE2 is part of x86-64.
+        unsafe {
+            let products = _mm_mul_ps(self.0, b.0);
+            let pairs = _mm_add_ps(
+                products,
+                _mm_shuffle_ps::<0b10_11_00_01>(products, products),
+            );
+            _mm_cvtss_f32(_mm_add_ss(pairs, _mm_movehl_ps(pairs, pairs)))
+        }
+    }
+}
+
+/// `a x b` in lanes 0 to 2: `a.yzx b.zxy - a.zxy b.yzx`, as `V::cross` writes each
+/// component.
+#[inline(always)]
+unsafe fn cross(a: __m128, b: __m128) -> __m128 {
+    let a_yzx = _mm_shuffle_ps::<0b11_00_10_01>(a, a);
+    let b_zxy = _mm_shuffle_ps::<0b11_01_00_10>(b, b);
+    let a_zxy = _mm_shuffle_ps::<0b11_01_00_10>(a, a);
+    let b_yzx = _mm_shuffle_ps::<0b11_00_10_01>(b, b);
+    _mm_sub_ps(_mm_mul_ps(a_yzx, b_zxy), _mm_mul_ps(a_zxy, b_yzx))
+}
+
+/// `splitting::step2` for one `f32` body, its quaternion in a register.
+#[inline(always)]
+pub(crate) fn step2(
+    inertia: &Inertia<f32>,
+    q: Q<f32>,
+    l: V<f32>,
+    t: V<f32>,
+    h: f32,
+) -> (Q<f32>, V<f32>) {
+    let half = h * 0.5;
+    let l = l.add_scaled(half, t);
+    let q_p = inertia.principal_orientation(q);
+    let q_p = free_flow_normalized(inertia, q_p, Q4::pack(q_p), l, h).unpack();
+    let l = l.add_scaled(half, t);
+    (inertia.body_orientation(q_p), l)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A seeded stream of floats in [-1, 1).
+    fn stream(mut seed: u64) -> impl FnMut() -> f32 {
+        move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 40) as f32 / (1u64 << 23) as f32 - 1.0
+        }
+    }
+
+    fn bits(q: Q<f32>, l: V<f32>) -> [u32; 7] {
+        [q.x, q.y, q.z, q.w, l.x, l.y, l.z].map(f32::to_bits)
+    }
+
+    #[test]
+    fn the_register_form_gives_the_component_forms_bits() {
+        let mut next = stream(0x2545_f491_4f6c_dd1d);
+        let mut compared = 0;
+        for case in 0..20_000 {
+            let moments = [1.0 + next().abs() * 3.0, 0.5 + next().abs(), 2.0 + next()];
+            let frame = Q {
+                x: next(),
+                y: next(),
+                z: next(),
+                w: next(),
+            };
+            let inertia = if case % 2 == 0 {
+                Inertia::from_principal(moments, frame)
+            } else {
+                Inertia::from_principal(
+                    moments,
+                    Q {
+                        x: 0.0,
+                        y: 0.0,
+                        z: 0.0,
+                        w: 1.0,
+                    },
+                )
+            };
+            let Ok(inertia) = inertia else { continue };
+            // Every few cases, momenta and steps far out, where the clamps decide.
+            let scale = match case % 5 {
+                0 => 1e3,
+                1 => 1e19,
+                _ => 10.0,
+            };
+            let q = Q {
+                x: next(),
+                y: next(),
+                z: next(),
+                w: next(),
+            };
+            let l = V {
+                x: next() * scale,
+                y: next() * scale,
+                z: next() * scale,
+            };
+            let t = V {
+                x: next(),
+                y: next(),
+                z: next(),
+            };
+            let h = if case % 7 == 0 { 2.0 } else { 1.0 / 60.0 };
+            let (q, _) = super::super::splitting::step2(&inertia, q, l, t, h);
+            let expected = super::super::splitting::step2(&inertia, q, l, t, h);
+            let got = step2(&inertia, q, l, t, h);
+            assert_eq!(
+                bits(got.0, got.1),
+                bits(expected.0, expected.1),
+                "case {case}"
+            );
+            compared += 1;
+        }
+        assert!(compared > 15_000);
+    }
+}
