@@ -140,6 +140,10 @@ fn body_turn<R: Real, T: Turning<R>, const K: usize, const N: usize, const CLAMP
 /// x86-64, in one SSE register (`sse.rs`), where a turn is seven instructions instead of
 /// twelve. Both do the same IEEE operations on each component, so they give the same bits.
 pub(crate) trait Turning<R: Real>: Copy {
+    /// From components.
+    fn pack(q: Q<R>) -> Self;
+    /// To components.
+    fn unpack(self) -> Q<R>;
     /// `self (c + s e_K)`, as [`Q::turn_about`].
     fn turned_about<const K: usize>(self, c: R, s: R) -> Self;
     /// As [`Q::normalized_by`].
@@ -151,6 +155,14 @@ pub(crate) trait Turning<R: Real>: Copy {
 }
 
 impl<R: Real> Turning<R> for Q<R> {
+    #[inline(always)]
+    fn pack(q: Q<R>) -> Self {
+        q
+    }
+    #[inline(always)]
+    fn unpack(self) -> Q<R> {
+        self
+    }
     #[inline(always)]
     fn turned_about<const K: usize>(self, c: R, s: R) -> Self {
         self.turn_about(K, c, s)
@@ -241,10 +253,22 @@ pub(crate) fn step2<R: Real>(
     t: V<R>,
     h: R,
 ) -> (Q<R>, V<R>) {
+    step2_in::<R, Q<R>>(inertia, q, l, t, h)
+}
+
+/// [`step2`], the turns building up the quaternion in the form `T`.
+#[inline(always)]
+pub(crate) fn step2_in<R: Real, T: Turning<R>>(
+    inertia: &Inertia<R>,
+    q: Q<R>,
+    l: V<R>,
+    t: V<R>,
+    h: R,
+) -> (Q<R>, V<R>) {
     let half = h * R::splat(0.5);
     let l = l.add_scaled(half, t);
     let q_p = inertia.principal_orientation(q);
-    let q_p = free_flow_normalized(inertia, q_p, q_p, l, h);
+    let q_p = free_flow_normalized(inertia, q_p, T::pack(q_p), l, h).unpack();
     let l = l.add_scaled(half, t);
     (inertia.body_orientation(q_p), l)
 }
@@ -261,7 +285,7 @@ pub(crate) fn step2_f32(
 ) -> (Q<f32>, V<f32>) {
     #[cfg(target_arch = "x86_64")]
     {
-        super::sse::step2(inertia, q, l, t, h)
+        step2_in::<f32, super::sse::Q4>(inertia, q, l, t, h)
     }
     #[cfg(not(target_arch = "x86_64"))]
     {

@@ -19,10 +19,9 @@ use core::arch::x86_64::{
     _mm_setr_ps, _mm_shuffle_ps, _mm_storeu_ps, _mm_sub_ps, _mm_xor_ps,
 };
 
-use super::inertia::Inertia;
 use super::real::Real;
 use super::rotation::{Q, V};
-use super::splitting::{free_flow_normalized, Turning};
+use super::splitting::Turning;
 
 /// A quaternion `[x, y, z, w]`, lane 0 first (glam's `Quat` layout).
 #[derive(Clone, Copy, Debug)]
@@ -30,27 +29,6 @@ use super::splitting::{free_flow_normalized, Turning};
 pub(crate) struct Q4(__m128);
 
 impl Q4 {
-    /// From components.
-    #[inline(always)]
-    fn pack(q: Q<f32>) -> Self {
-        // SAFETY: SSE2 is part of x86-64.
-        Q4(unsafe { _mm_setr_ps(q.x, q.y, q.z, q.w) })
-    }
-
-    /// To components.
-    #[inline(always)]
-    fn unpack(self) -> Q<f32> {
-        let mut out = [0.0f32; 4];
-        // SAFETY: SSE2 is part of x86-64; `out` holds four floats.
-        unsafe { _mm_storeu_ps(out.as_mut_ptr(), self.0) };
-        Q {
-            x: out[0],
-            y: out[1],
-            z: out[2],
-            w: out[3],
-        }
-    }
-
     /// `self` times `k` in every lane.
     #[inline(always)]
     fn scaled(self, k: f32) -> Self {
@@ -74,6 +52,25 @@ macro_rules! turn_lanes {
 }
 
 impl Turning<f32> for Q4 {
+    #[inline(always)]
+    fn pack(q: Q<f32>) -> Self {
+        // SAFETY: SSE2 is part of x86-64.
+        Q4(unsafe { _mm_setr_ps(q.x, q.y, q.z, q.w) })
+    }
+
+    #[inline(always)]
+    fn unpack(self) -> Q<f32> {
+        let mut out = [0.0f32; 4];
+        // SAFETY: SSE2 is part of x86-64; `out` holds four floats.
+        unsafe { _mm_storeu_ps(out.as_mut_ptr(), self.0) };
+        Q {
+            x: out[0],
+            y: out[1],
+            z: out[2],
+            w: out[3],
+        }
+    }
+
     #[inline(always)]
     fn turned_about<const K: usize>(self, c: f32, s: f32) -> Self {
         // Lane i of the permutation is the component lane i takes `s` times; `-0.0`
@@ -141,26 +138,10 @@ unsafe fn cross(a: __m128, b: __m128) -> __m128 {
     _mm_sub_ps(_mm_mul_ps(a_yzx, b_zxy), _mm_mul_ps(a_zxy, b_yzx))
 }
 
-/// `splitting::step2` for one `f32` body, its quaternion in a register.
-#[inline(always)]
-pub(crate) fn step2(
-    inertia: &Inertia<f32>,
-    q: Q<f32>,
-    l: V<f32>,
-    t: V<f32>,
-    h: f32,
-) -> (Q<f32>, V<f32>) {
-    let half = h * 0.5;
-    let l = l.add_scaled(half, t);
-    let q_p = inertia.principal_orientation(q);
-    let q_p = free_flow_normalized(inertia, q_p, Q4::pack(q_p), l, h).unpack();
-    let l = l.add_scaled(half, t);
-    (inertia.body_orientation(q_p), l)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::engine::inertia::Inertia;
 
     /// A seeded stream of floats in [-1, 1).
     fn stream(mut seed: u64) -> impl FnMut() -> f32 {
@@ -227,7 +208,7 @@ mod tests {
             let h = if case % 7 == 0 { 2.0 } else { 1.0 / 60.0 };
             let (q, _) = super::super::splitting::step2(&inertia, q, l, t, h);
             let expected = super::super::splitting::step2(&inertia, q, l, t, h);
-            let got = step2(&inertia, q, l, t, h);
+            let got = super::super::splitting::step2_in::<f32, Q4>(&inertia, q, l, t, h);
             assert_eq!(
                 bits(got.0, got.1),
                 bits(expected.0, expected.1),
