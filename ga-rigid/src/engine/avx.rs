@@ -112,6 +112,11 @@ impl Real for F32x8 {
         unsafe { _mm256_movemask_ps(mask.0) != 0 }
     }
     #[inline(always)]
+    fn and(a: Mask8, b: Mask8) -> Mask8 {
+        // SAFETY: as for the arithmetic above.
+        Mask8(unsafe { _mm256_and_ps(a.0, b.0) })
+    }
+    #[inline(always)]
     fn all(mask: Mask8) -> bool {
         // SAFETY: as for the arithmetic above.
         unsafe { _mm256_movemask_ps(mask.0) == 0xff }

@@ -62,6 +62,7 @@ mod euler;
 mod inertia;
 #[cfg(feature = "rayon")]
 mod parallel;
+mod projective;
 mod real;
 mod rotation;
 mod slice;

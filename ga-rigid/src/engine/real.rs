@@ -31,6 +31,8 @@ pub(crate) trait Real:
     fn any(mask: Self::Mask) -> bool;
     /// Whether `mask` holds in every lane.
     fn all(mask: Self::Mask) -> bool;
+    /// Both masks, per lane.
+    fn and(a: Self::Mask, b: Self::Mask) -> Self::Mask;
     /// `self`, unchanged, where the optimiser cannot look into it (a scalar's chain
     /// kept scalar, see `hidden`; lanes are already vectors).
     #[inline(always)]
@@ -80,6 +82,10 @@ macro_rules! scalar_real {
             #[inline(always)]
             fn all(mask: bool) -> bool {
                 mask
+            }
+            #[inline(always)]
+            fn and(a: bool, b: bool) -> bool {
+                a & b
             }
             #[inline(always)]
             fn opaque(self) -> Self {
@@ -216,6 +222,14 @@ impl<T: Real<Mask = bool>, const N: usize> Real for Lanes<T, N> {
     #[inline(always)]
     fn all(mask: [bool; N]) -> bool {
         mask.iter().all(|&m| m)
+    }
+    #[inline(always)]
+    fn and(a: [bool; N], b: [bool; N]) -> [bool; N] {
+        let mut out = a;
+        for (o, m) in out.iter_mut().zip(b) {
+            *o &= m;
+        }
+        out
     }
 }
 

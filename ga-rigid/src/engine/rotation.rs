@@ -107,6 +107,8 @@ impl<R: Real> Q<R> {
     }
 
     /// `q v q*` for a unit `q`: `v + w t + u x t` with `t = 2 u x v`, `u` the vector part.
+    /// `t` is `(2u) x v`: the doubling is done on `q`, before `v` is known, not after the
+    /// cross product on the way to the result.
     #[inline(always)]
     pub(crate) fn rotate(self, v: V<R>) -> V<R> {
         let u = V {
@@ -114,12 +116,12 @@ impl<R: Real> Q<R> {
             y: self.y,
             z: self.z,
         };
-        let t = u.cross(v);
-        let t = V {
-            x: t.x + t.x,
-            y: t.y + t.y,
-            z: t.z + t.z,
+        let u2 = V {
+            x: u.x + u.x,
+            y: u.y + u.y,
+            z: u.z + u.z,
         };
+        let t = u2.cross(v);
         v.add_scaled(self.w, t)
             .add_scaled(R::splat(1.0), u.cross(t))
     }
@@ -163,17 +165,6 @@ impl<R: Real> Q<R> {
         (self.x * b.x + self.y * b.y) + (self.z * b.z + self.w * b.w)
     }
 
-    /// `self` scaled by `k`.
-    #[inline(always)]
-    pub(crate) fn scaled(self, k: R) -> Q<R> {
-        Q {
-            x: self.x * k,
-            y: self.y * k,
-            z: self.z * k,
-            w: self.w * k,
-        }
-    }
-
     /// `self / |self|`, then negated if that puts it in the other hemisphere from
     /// `reference`: the same rotation, continuous from step to step.
     #[inline(always)]
@@ -182,12 +173,19 @@ impl<R: Real> Q<R> {
     }
 
     /// `self` divided by `sqrt(norm2)`, its squared norm known beforehand, then negated if
-    /// that puts it in the other hemisphere from `reference`.
+    /// that puts it in the other hemisphere from `reference`. Each component is divided
+    /// by the norm (one rounding, and one operation after the square root where a
+    /// reciprocal and a product would be two).
     #[inline(always)]
     pub(crate) fn normalized_by(self, norm2: R, reference: Q<R>) -> Q<R> {
-        let inv = R::splat(1.0) / norm2.sqrt();
-        let k = R::select(self.dot(reference).lt(R::splat(0.0)), -inv, inv);
-        self.scaled(k)
+        let norm = norm2.sqrt();
+        let k = R::select(self.dot(reference).lt(R::splat(0.0)), -norm, norm);
+        Q {
+            x: self.x / k,
+            y: self.y / k,
+            z: self.z / k,
+            w: self.w / k,
+        }
     }
 
     /// `yes` where `mask` holds, `no` elsewhere.

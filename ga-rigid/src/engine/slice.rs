@@ -299,6 +299,36 @@ mod tests {
         if super::super::avx::available() {
             assert_eq!(bits(&alone), bits(&eight));
         }
+        // The three forms of the turns in one group: projective (small momenta), divided
+        // without clamps, and clamped; each lane must get the form one body alone gets.
+        let mut alone = crowd::<f32>(21);
+        for (i, body) in alone.iter_mut().enumerate() {
+            let size = [1.0, 300.0, 1e5][i % 3];
+            body.l = V {
+                x: size,
+                y: -size,
+                z: 0.5 * size,
+            };
+        }
+        let mut four = alone.clone();
+        #[cfg(target_arch = "x86_64")]
+        let mut eight = alone.clone();
+        for _ in 0..50 {
+            for body in &mut alone {
+                step_one(body, h32, Order::Two);
+            }
+            step_all::<f32, _, Lanes<f32, 4>, 4>(&mut four, h32, Order::Two);
+            #[cfg(target_arch = "x86_64")]
+            if super::super::avx::available() {
+                // SAFETY: the CPU has AVX (checked just above).
+                unsafe { super::super::avx::step_all(&mut eight, h32, Order::Two) };
+            }
+        }
+        assert_eq!(bits(&alone), bits(&four));
+        #[cfg(target_arch = "x86_64")]
+        if super::super::avx::available() {
+            assert_eq!(bits(&alone), bits(&eight));
+        }
         let mut alone = crowd::<f64>(21);
         let mut four = alone.clone();
         for _ in 0..50 {

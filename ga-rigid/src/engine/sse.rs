@@ -15,8 +15,8 @@
 //! slice form and other targets run; a unit test below compares them.
 
 use core::arch::x86_64::{
-    __m128, _mm_add_ps, _mm_add_ss, _mm_cvtss_f32, _mm_movehl_ps, _mm_mul_ps, _mm_set1_ps,
-    _mm_setr_ps, _mm_shuffle_ps, _mm_storeu_ps, _mm_sub_ps, _mm_xor_ps,
+    __m128, _mm_add_ps, _mm_add_ss, _mm_cvtss_f32, _mm_div_ps, _mm_movehl_ps, _mm_mul_ps,
+    _mm_set1_ps, _mm_setr_ps, _mm_shuffle_ps, _mm_storeu_ps, _mm_sub_ps, _mm_xor_ps,
 };
 
 use super::real::Real;
@@ -27,15 +27,6 @@ use super::splitting::Turning;
 #[derive(Clone, Copy, Debug)]
 #[repr(transparent)]
 pub(crate) struct Q4(__m128);
-
-impl Q4 {
-    /// `self` times `k` in every lane.
-    #[inline(always)]
-    fn scaled(self, k: f32) -> Self {
-        // SAFETY: SSE2 is part of x86-64.
-        Q4(unsafe { _mm_mul_ps(self.0, _mm_set1_ps(k)) })
-    }
-}
 
 /// The lanes `q (c + s e_K)` takes `s` times, and with which sign, as `Q::turn_about`
 /// writes them: `K = 0`: `x += w s, y += z s, z -= y s, w -= x s`.
@@ -87,28 +78,41 @@ impl Turning<f32> for Q4 {
 
     #[inline(always)]
     fn normalized_by(self, norm2: f32, reference: Self) -> Self {
-        let inv = 1.0 / Real::sqrt(norm2);
-        let k = if self.dot(reference) < 0.0 { -inv } else { inv };
-        self.scaled(k)
+        let norm = Real::sqrt(norm2);
+        let k = if self.dot(reference) < 0.0 {
+            -norm
+        } else {
+            norm
+        };
+        // SAFETY: SSE2 is part of x86-64.
+        Q4(unsafe { _mm_div_ps(self.0, _mm_set1_ps(k)) })
     }
 
     #[inline(always)]
     fn rotate_inv(self, v: V<f32>) -> V<f32> {
-        // `Q::rotate` for `q*`: u = -(x, y, z); t = 2 u x v; (v + w t) + u x t, lane by
+        // `Q::rotate` for `q*`: u = -(x, y, z); t = (2u) x v; (v + w t) + u x t, lane by
         // lane in the component form's order. Lane 3 carries nothing of use.
         // SAFETY: SSE2 is part of x86-64.
         unsafe {
             let u = _mm_xor_ps(self.0, _mm_setr_ps(-0.0, -0.0, -0.0, 0.0));
             let w = _mm_shuffle_ps::<0b11_11_11_11>(self.0, self.0);
             let v4 = _mm_setr_ps(v.x, v.y, v.z, 0.0);
-            let t = cross(u, v4);
-            let t = _mm_add_ps(t, t);
+            let t = cross(_mm_add_ps(u, u), v4);
             let r = _mm_add_ps(_mm_add_ps(v4, _mm_mul_ps(w, t)), cross(u, t));
             V {
                 x: _mm_cvtss_f32(r),
                 y: _mm_cvtss_f32(_mm_shuffle_ps::<0b01_01_01_01>(r, r)),
                 z: _mm_cvtss_f32(_mm_movehl_ps(r, r)),
             }
+        }
+    }
+
+    #[inline(always)]
+    fn select(mask: bool, yes: Self, no: Self) -> Self {
+        if mask {
+            yes
+        } else {
+            no
         }
     }
 
