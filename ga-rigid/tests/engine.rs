@@ -440,3 +440,33 @@ fn step_with_a_constant_torque_is_step_and_keeps_a_heavy_tops_energy() {
     }
     assert!(worst < 1e-4, "{worst:e}");
 }
+
+/// Every form of the step on a 256 KiB thread (a quarter of the smallest default stack
+/// of a spawned thread on the platforms we know): unoptimised, as `cargo test` builds
+/// it, the slice forms once needed over 2 MiB of stack, which overflowed a user's test
+/// thread (see "Unoptimised builds" in the engine's `splitting.rs`).
+#[test]
+fn every_form_runs_on_a_small_thread_stack() {
+    std::thread::Builder::new()
+        .stack_size(256 << 10)
+        .spawn(|| {
+            let mut a = crowd32(19);
+            let mut b = crowd64(19);
+            e32::step_slice(&mut a, 0.02);
+            e32::step_slice_order4(&mut a, 0.02);
+            e64::step_slice(&mut b, 0.02);
+            e64::step_slice_order4(&mut b, 0.02);
+            for s in &mut a {
+                s.step(0.02);
+                s.step_order4(0.02);
+            }
+            for s in &mut b {
+                s.step(0.02);
+                s.step_order4(0.02);
+            }
+            (bits32(&a), bits64(&b))
+        })
+        .expect("a thread")
+        .join()
+        .expect("no stack overflow");
+}

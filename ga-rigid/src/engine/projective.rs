@@ -45,7 +45,9 @@ const SQRT_3: f64 = 1.732_050_807_568_877_2;
 /// One turn about the body axis `K` by `b = B / D`: the quaternion `q (P + A e_K)`, the
 /// momentum's numerators turned, the next turn's `B` for the axis `N` at `rate`, the new
 /// denominator, and `N = P^2 + A^2` (the factor `q`'s squared norm grew by).
-#[inline(always)]
+// Inlined only when optimised (see "Unoptimised builds" in `splitting.rs`).
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline)]
 fn turn<R: Real, T: Turning<R>, const K: usize, const N: usize>(
     q: T,
     x: V<R>,
@@ -108,7 +110,9 @@ fn turn<R: Real, T: Turning<R>, const K: usize, const N: usize>(
 /// positive number, and its squared norm, `q_p2` times the turns' `N` (the last turn's
 /// multiplied in last, as it is the last to be known). The caller checks the range
 /// (`FAST_T`, `FAST_MOMENTUM2`).
-#[inline(always)]
+// Inlined only when optimised (see "Unoptimised builds" in `splitting.rs`).
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline)]
 pub(crate) fn free_flow<R: Real, T: Turning<R>>(
     inertia: &Inertia<R>,
     q_p: T,

@@ -235,17 +235,6 @@ mod tests {
     /// has, against each body stepped alone: the same bits.
     #[test]
     fn every_group_width_gives_the_bits_of_one_body_at_a_time() {
-        // Unoptimised, the lane forms' frames (both free flows, with and without the
-        // clamps, inlined) outgrow a test thread's default stack; run on a larger one.
-        std::thread::Builder::new()
-            .stack_size(64 << 20)
-            .spawn(group_widths_against_one_body)
-            .expect("a test thread")
-            .join()
-            .expect("the comparison");
-    }
-
-    fn group_widths_against_one_body() {
         let h32 = 1.0_f32 / 60.0;
         let mut alone = crowd::<f32>(21);
         let mut four = alone.clone();

@@ -52,6 +52,12 @@
 //! along with the body. The energy error is the splitting's (bounded, O(h^2)) plus the
 //! orientation's rounding.
 //!
+//! Unoptimised builds: every function of a step is `#[inline(always)]` so that the
+//! optimiser sees one body's (or one lane group's) whole chain, but unoptimised, each
+//! inlined temporary keeps its own stack slot, and the slice form's AVX loop had a frame
+//! of over a megabyte (its fourth order two: a test thread's 2 MiB stack overflowed).
+//! With debug assertions on, the turns and free flows are ordinary functions instead.
+//!
 //! The fourth-order step is the symmetric triple jump `S(g1 h) S(g0 h) S(g1 h)` with
 //! `g1 = 1/(2 - 2^(1/3))`, `g0 = 1 - 2 g1` (Yoshida, Phys. Lett. A 150, 1990; Suzuki,
 //! Phys. Lett. A 146, 1990), the kicks between free flows merged.
@@ -108,7 +114,9 @@ fn cayley_turn<R: Real, const CLAMP: bool>(b: R) -> (R, R, R, R) {
 /// The momentum turns by `cos = (p^2 - a^2) / n = (1 - 5t + t^2) / n` and
 /// `sin = 2 p a / n`. The division by `n` is applied last, to the turned components and
 /// to the next `b`, so that it runs beside their products rather than before them.
-#[inline(always)]
+// Inlined only when optimised (see "Unoptimised builds" in `splitting.rs`).
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline)]
 fn body_turn<R: Real, T: Turning<R>, const K: usize, const N: usize, const CLAMP: bool>(
     q: T,
     body: V<R>,
@@ -203,7 +211,9 @@ impl<R: Real> Turning<R> for Q<R> {
 /// number (not normalised), and the product of the turns' squared norms (so `|q_p|^2`
 /// times that is the result's squared norm). `CLAMP` limits each turn's angle; the
 /// caller may leave it out where no angle can reach the limit (the same bits).
-#[inline(always)]
+// Inlined only when optimised (see "Unoptimised builds" in `splitting.rs`).
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline)]
 fn free_flow<R: Real, T: Turning<R>, const CLAMP: bool>(
     inertia: &Inertia<R>,
     q_p: T,
@@ -236,7 +246,9 @@ fn free_flow<R: Real, T: Turning<R>, const CLAMP: bool>(
 /// at an engine's step), the turns are `projective.rs`'s. Otherwise, where no turn's
 /// angle can reach the clamps' limit, the divided turns leave the clamps out (the same
 /// bits, a few cycles a turn shorter); lanes in the projective range take its result.
-#[inline(always)]
+// Inlined only when optimised (see "Unoptimised builds" in `splitting.rs`).
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline)]
 pub(crate) fn free_flow_normalized<R: Real, T: Turning<R>>(
     inertia: &Inertia<R>,
     q_p: Q<R>,
