@@ -29,7 +29,7 @@
 use super::inertia::Inertia;
 use super::real::Real;
 use super::rotation::{turn_body_about, V};
-use super::splitting::Turning;
+use super::splitting::{turn_rates, Turning, SQRT_3};
 
 /// The largest `t = b^2` the projective form takes: `g = 1 + t + t^2 = 1.0525`, and
 /// `g^781 < 3e17`, far from `f32::MAX`.
@@ -38,9 +38,6 @@ pub(crate) const FAST_T: f64 = 0.05;
 /// The largest squared body momentum the projective form takes (`|L| < 1e18`): with
 /// `D < g^156 < 3000`, no numerator reaches `1e22 |L|`.
 pub(crate) const FAST_MOMENTUM2: f64 = 1e36;
-
-/// `sqrt 3`.
-const SQRT_3: f64 = 1.732_050_807_568_877_2;
 
 /// One turn about the body axis `K` by `b = B / D`: the quaternion `q (P + A e_K)`, the
 /// momentum's numerators turned, the next turn's `B` for the axis `N` at `rate`, the new
@@ -120,10 +117,7 @@ pub(crate) fn free_flow<R: Real, T: Turning<R>>(
     body: V<R>,
     h: R,
 ) -> (T, R) {
-    let quarter = h * R::splat(0.25 / SQRT_3);
-    let half = h * R::splat(0.5 / SQRT_3);
-    let inv = inertia.inverse;
-    let (r1, r2, r3) = (quarter * inv.x, quarter * inv.y, half * inv.z);
+    let (r1, r2, r3) = turn_rates(inertia, h);
     let one = R::splat(1.0);
     let b1 = r1 * body.x;
     let (q, x, b2, d2, n1) = turn::<R, T, 0, 1>(q_p, body, b1, one, r2);

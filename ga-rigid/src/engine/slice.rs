@@ -231,93 +231,62 @@ mod tests {
             .collect()
     }
 
+    /// 21 bodies whose momenta take the sizes of `sizes` in turn.
+    fn crowd_of_size(sizes: &[f32]) -> Vec<Body<f32>> {
+        let mut bodies = crowd::<f32>(21);
+        for (i, body) in bodies.iter_mut().enumerate() {
+            let size = sizes[i % sizes.len()];
+            body.l = V {
+                x: size,
+                y: -size,
+                z: 0.5 * size,
+            };
+        }
+        bodies
+    }
+
+    /// `steps` order-2 steps of `h` of `bodies` one at a time, by four lanes and (with
+    /// AVX) by eight: the same bits. Returns the bodies stepped one at a time.
+    fn widths_against_one_body(mut alone: Vec<Body<f32>>, h: f32, steps: usize) -> Vec<Body<f32>> {
+        let mut four = alone.clone();
+        #[cfg(target_arch = "x86_64")]
+        let mut eight = alone.clone();
+        for _ in 0..steps {
+            for body in &mut alone {
+                step_one(body, h, Order::Two);
+            }
+            step_all::<f32, _, Lanes<f32, 4>, 4>(&mut four, h, Order::Two);
+            #[cfg(target_arch = "x86_64")]
+            if super::super::avx::available() {
+                // SAFETY: the CPU has AVX (checked just above).
+                unsafe { super::super::avx::step_all(&mut eight, h, Order::Two) };
+            }
+        }
+        assert_eq!(bits(&alone), bits(&four));
+        #[cfg(target_arch = "x86_64")]
+        if super::super::avx::available() {
+            assert_eq!(bits(&alone), bits(&eight));
+        }
+        alone
+    }
+
     /// 200 steps of 21 bodies (groups and a remainder) by each group width this build
     /// has, against each body stepped alone: the same bits.
     #[test]
     fn every_group_width_gives_the_bits_of_one_body_at_a_time() {
         let h32 = 1.0_f32 / 60.0;
-        let mut alone = crowd::<f32>(21);
-        let mut four = alone.clone();
-        for _ in 0..200 {
-            for body in &mut alone {
-                step_one(body, h32, Order::Two);
-            }
-            step_all::<f32, _, Lanes<f32, 4>, 4>(&mut four, h32, Order::Two);
-        }
-        assert_eq!(bits(&alone), bits(&four));
-        #[cfg(target_arch = "x86_64")]
-        if super::super::avx::available() {
-            let mut eight = crowd::<f32>(21);
-            for _ in 0..200 {
-                // SAFETY: the CPU has AVX (checked above).
-                unsafe { super::super::avx::step_all(&mut eight, h32, Order::Two) };
-            }
-            assert_eq!(bits(&alone), bits(&eight));
-        }
+        widths_against_one_body(crowd::<f32>(21), h32, 200);
         // Saturated angles and an overflowing body momentum, where the clamps decide
         // (`minps` and `maxps` must pick what the scalar's comparisons pick, NaN
         // included).
-        let mut alone = crowd::<f32>(21);
-        for (i, body) in alone.iter_mut().enumerate() {
-            let size = [1e3, 1e20, 1e37][i % 3];
-            body.l = V {
-                x: size,
-                y: -size,
-                z: 0.5 * size,
-            };
-        }
-        let mut four = alone.clone();
-        #[cfg(target_arch = "x86_64")]
-        let mut eight = alone.clone();
-        for _ in 0..20 {
-            for body in &mut alone {
-                step_one(body, 10.0, Order::Two);
-            }
-            step_all::<f32, _, Lanes<f32, 4>, 4>(&mut four, 10.0, Order::Two);
-            #[cfg(target_arch = "x86_64")]
-            if super::super::avx::available() {
-                // SAFETY: the CPU has AVX (checked just above).
-                unsafe { super::super::avx::step_all(&mut eight, 10.0, Order::Two) };
-            }
-        }
+        let alone = widths_against_one_body(crowd_of_size(&[1e3, 1e20, 1e37]), 10.0, 20);
         assert!(alone
             .iter()
             .all(|b| [b.q.x, b.q.y, b.q.z, b.q.w].iter().all(|c| c.is_finite())));
-        assert_eq!(bits(&alone), bits(&four));
-        #[cfg(target_arch = "x86_64")]
-        if super::super::avx::available() {
-            assert_eq!(bits(&alone), bits(&eight));
-        }
         // The three forms of the turns in one group: projective (small momenta), divided
         // without clamps, and clamped; each lane must get the form one body alone gets.
-        let mut alone = crowd::<f32>(21);
-        for (i, body) in alone.iter_mut().enumerate() {
-            let size = [1.0, 300.0, 1e5][i % 3];
-            body.l = V {
-                x: size,
-                y: -size,
-                z: 0.5 * size,
-            };
-        }
-        let mut four = alone.clone();
-        #[cfg(target_arch = "x86_64")]
-        let mut eight = alone.clone();
-        for _ in 0..50 {
-            for body in &mut alone {
-                step_one(body, h32, Order::Two);
-            }
-            step_all::<f32, _, Lanes<f32, 4>, 4>(&mut four, h32, Order::Two);
-            #[cfg(target_arch = "x86_64")]
-            if super::super::avx::available() {
-                // SAFETY: the CPU has AVX (checked just above).
-                unsafe { super::super::avx::step_all(&mut eight, h32, Order::Two) };
-            }
-        }
-        assert_eq!(bits(&alone), bits(&four));
-        #[cfg(target_arch = "x86_64")]
-        if super::super::avx::available() {
-            assert_eq!(bits(&alone), bits(&eight));
-        }
+        widths_against_one_body(crowd_of_size(&[1.0, 300.0, 1e5]), h32, 50);
+        // f64, order 4, four lanes.
         let mut alone = crowd::<f64>(21);
         let mut four = alone.clone();
         for _ in 0..50 {

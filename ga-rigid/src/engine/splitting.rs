@@ -78,7 +78,7 @@ const MAX_HALF_ANGLE: f64 = 64.0;
 const FAST_LIMIT: f64 = MAX_HALF_ANGLE * MAX_HALF_ANGLE / 3.0 / 4.0;
 
 /// `sqrt 3`: the turns work with `b = a / sqrt 3`, whose square is `a^2 / 3`.
-const SQRT_3: f64 = 1.732_050_807_568_877_2;
+pub(crate) const SQRT_3: f64 = 1.732_050_807_568_877_2;
 
 /// `b` limited to `[-MAX_HALF_ANGLE, MAX_HALF_ANGLE] / sqrt 3`, NaN to the upper end.
 #[inline(always)]
@@ -205,6 +205,18 @@ impl<R: Real> Turning<R> for Q<R> {
     }
 }
 
+/// The factors `r_k` that take a body momentum component `L_k` to the parameter
+/// `b = a / sqrt 3` of the turns about axis `k` in `1(h/2) 2(h/2) 3(h) 2(h/2) 1(h/2)`:
+/// the turn over `h f` is by `h f L_k / I_k`, its half-angle `a = (h f / 2 I_k) L_k`.
+/// Axes 1 and 2 turn over `h/2`, axis 3 over `h`. Both forms of the turns use them.
+#[inline(always)]
+pub(crate) fn turn_rates<R: Real>(inertia: &Inertia<R>, h: R) -> (R, R, R) {
+    let quarter = h * R::splat(0.25 / SQRT_3);
+    let half = h * R::splat(0.5 / SQRT_3);
+    let inv = inertia.inverse;
+    (quarter * inv.x, quarter * inv.y, half * inv.z)
+}
+
 /// The free flow over `h`: `q_p` (principal axes to world, unit) turned by the five
 /// body-axis turns `1(h/2) 2(h/2) 3(h) 2(h/2) 1(h/2)`, from the body momentum `body`
 /// (the world momentum seen from `q_p`). The result is the rotation scaled by a positive
@@ -220,12 +232,7 @@ fn free_flow<R: Real, T: Turning<R>, const CLAMP: bool>(
     body: V<R>,
     h: R,
 ) -> (T, R) {
-    // The turn about axis k over h f is by h f L_k / I_k: the half-angle
-    // a = (h f / 2 I_k) L_k, and b = a / sqrt 3.
-    let quarter = h * R::splat(0.25 / SQRT_3);
-    let half = h * R::splat(0.5 / SQRT_3);
-    let inv = inertia.inverse;
-    let (r1, r2, r3) = (quarter * inv.x, quarter * inv.y, half * inv.z);
+    let (r1, r2, r3) = turn_rates(inertia, h);
     let b1 = r1 * body.x;
     let (q, body, b2, n1) = body_turn::<R, T, 0, 1, CLAMP>(q_p, body, b1, r2);
     let (q, body, b3, n2) = body_turn::<R, T, 1, 2, CLAMP>(q, body, b2, r3);
@@ -264,9 +271,10 @@ pub(crate) fn free_flow_normalized<R: Real, T: Turning<R>>(
     let (r1, r2, r3) = (rate * inv.x, rate * inv.y, rate * inv.z);
     let widest = (r1 * r1).max_or(r2 * r2).max_or(r3 * r3);
     let body2 = body.dot(body);
-    let in_range = (widest * body2).lt(R::splat(FAST_LIMIT));
+    let reach = widest * body2;
+    let in_range = reach.lt(R::splat(FAST_LIMIT));
     let projective = R::and(
-        (widest * body2).lt(R::splat(projective::FAST_T)),
+        reach.lt(R::splat(projective::FAST_T)),
         body2.lt(R::splat(projective::FAST_MOMENTUM2)),
     );
     let q_p2 = q_p.dot(q_p);
