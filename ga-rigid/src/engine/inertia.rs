@@ -14,6 +14,10 @@ pub(crate) struct Inertia<R: Real> {
     pub(crate) moments: V<R>,
     /// `(1/I1, 1/I2, 1/I3)`.
     pub(crate) inverse: V<R>,
+    /// `max_k (1/I_k)^2 / 12`: times `h^2 |L|^2`, the bound on every turn's `b^2` that
+    /// picks the form of the turns (`splitting::free_flow_normalized`), kept here so
+    /// that a step does not take the largest of three squares.
+    pub(crate) reach: R,
     /// `p`.
     pub(crate) frame: Q<R>,
     /// Whether `p` is not the identity (then the steps turn the orientation into the
@@ -101,6 +105,8 @@ impl<R: Precision> Inertia<R> {
             }
         }
         let one = R::splat(1.0);
+        let inverse2 = moments.map(|m| (one / m) * (one / m));
+        let widest = inverse2[0].max_or(inverse2[1]).max_or(inverse2[2]);
         Ok(Inertia {
             moments: V {
                 x: moments[0],
@@ -112,6 +118,7 @@ impl<R: Precision> Inertia<R> {
                 y: one / moments[1],
                 z: one / moments[2],
             },
+            reach: widest * R::splat(1.0 / 12.0),
             frame,
             turned,
         })

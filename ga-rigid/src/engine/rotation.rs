@@ -188,6 +188,21 @@ impl<R: Real> Q<R> {
         }
     }
 
+    /// `self` divided by `sqrt(norm2)`, its squared norm known beforehand, with no choice
+    /// of sign: for a quaternion the caller knows to be in the hemisphere it wants, where
+    /// [`Q::normalized_by`] would negate nothing (the same bits, without the dot product
+    /// and the select on the step's critical path).
+    #[inline(always)]
+    pub(crate) fn divided_by_norm(self, norm2: R) -> Q<R> {
+        let norm = norm2.sqrt();
+        Q {
+            x: self.x / norm,
+            y: self.y / norm,
+            z: self.z / norm,
+            w: self.w / norm,
+        }
+    }
+
     /// `yes` where `mask` holds, `no` elsewhere.
     #[inline(always)]
     pub(crate) fn select(mask: R::Mask, yes: Q<R>, no: Q<R>) -> Q<R> {

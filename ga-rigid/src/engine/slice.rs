@@ -71,6 +71,7 @@ fn step_group<T: Precision, S: Parts<T>, G: Group<T, N>, const N: usize>(
     let inertia = Inertia::<G> {
         moments: vector(|i| parts[i].0.moments),
         inverse: vector(|i| parts[i].0.inverse),
+        reach: lane(|i| parts[i].0.reach),
         frame: quaternion(|i| parts[i].0.frame),
         turned: G::pack_mask(core::array::from_fn(|i| parts[i].0.turned)),
     };

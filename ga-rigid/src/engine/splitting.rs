@@ -166,6 +166,8 @@ pub(crate) trait Turning<R: Real>: Copy {
     fn turned_about<const K: usize>(self, c: R, s: R) -> Self;
     /// As [`Q::normalized_by`].
     fn normalized_by(self, norm2: R, reference: Self) -> Self;
+    /// As [`Q::divided_by_norm`].
+    fn divided_by_norm(self, norm2: R) -> Self;
     /// As [`Q::dot`].
     fn dot(self, b: Self) -> R;
     /// As [`Q::rotate_inv`].
@@ -190,6 +192,10 @@ impl<R: Real> Turning<R> for Q<R> {
     #[inline(always)]
     fn normalized_by(self, norm2: R, reference: Self) -> Self {
         Q::normalized_by(self, norm2, reference)
+    }
+    #[inline(always)]
+    fn divided_by_norm(self, norm2: R) -> Self {
+        Q::divided_by_norm(self, norm2)
     }
     #[inline(always)]
     fn dot(self, b: Self) -> R {
@@ -244,10 +250,10 @@ fn free_flow<R: Real, T: Turning<R>, const CLAMP: bool>(
     (q.turned_about::<0>(p, a), norm)
 }
 
-/// The free flow from the unit `q_p` (`start` is the same quaternion, in the form the
-/// turns build up), normalised: `q_p`'s own squared norm (1 up to rounding) times the
-/// turns' product gives the result's squared norm without waiting for the last turn's
-/// quaternion.
+/// The free flow from the unit `q_p` (`start`, in the form the turns build up) under
+/// the world momentum `l`, normalised: `q_p`'s own squared norm (1 up to rounding) times
+/// the turns' product gives the result's squared norm without waiting for the last
+/// turn's quaternion.
 ///
 /// Where every lane is in the projective form's range (every body of an engine's scene
 /// at an engine's step), the turns are `projective.rs`'s. Otherwise, where no turn's
@@ -258,29 +264,27 @@ fn free_flow<R: Real, T: Turning<R>, const CLAMP: bool>(
 #[cfg_attr(debug_assertions, inline)]
 pub(crate) fn free_flow_normalized<R: Real, T: Turning<R>>(
     inertia: &Inertia<R>,
-    q_p: Q<R>,
     start: T,
     l: V<R>,
     h: R,
 ) -> T {
     let body = start.rotate_inv(l);
     // No `b = (h f / 2 sqrt3 I_k) L_k` exceeds `(h / 2 sqrt3 I_k) |body|`, and the
-    // turns keep `|body|` to rounding.
-    let rate = h * R::splat(0.5 / SQRT_3);
-    let inv = inertia.inverse;
-    let (r1, r2, r3) = (rate * inv.x, rate * inv.y, rate * inv.z);
-    let widest = (r1 * r1).max_or(r2 * r2).max_or(r3 * r3);
+    // turns keep `|body|` to rounding: `b^2 <= h^2 |body|^2 max_k (1/I_k)^2 / 12`.
     let body2 = body.dot(body);
-    let reach = widest * body2;
+    let reach = (h * h) * (inertia.reach * body2);
     let in_range = reach.lt(R::splat(FAST_LIMIT));
     let projective = R::and(
         reach.lt(R::splat(projective::FAST_T)),
         body2.lt(R::splat(projective::FAST_MOMENTUM2)),
     );
-    let q_p2 = q_p.dot(q_p);
+    // `start` is `q_p`: its dot product gives the same bits in either form.
+    let q_p2 = start.dot(start);
+    // In the projective range the result needs no hemisphere test (`divided_by_norm`,
+    // the same bits as `normalized_by`): see `projective::FAST_T`.
     if R::all(projective) {
         let (q, norm2) = projective::free_flow::<R, T>(inertia, start, q_p2, body, h);
-        return q.normalized_by(norm2, start);
+        return q.divided_by_norm(norm2);
     }
     let (q, norm) = if R::all(in_range) {
         free_flow::<R, T, false>(inertia, start, body, h)
@@ -290,7 +294,7 @@ pub(crate) fn free_flow_normalized<R: Real, T: Turning<R>>(
     let divided = q.normalized_by(q_p2 * norm, start);
     if R::any(projective) {
         let (q, norm2) = projective::free_flow::<R, T>(inertia, start, q_p2, body, h);
-        T::select(projective, q.normalized_by(norm2, start), divided)
+        T::select(projective, q.divided_by_norm(norm2), divided)
     } else {
         divided
     }
@@ -321,7 +325,7 @@ pub(crate) fn step2_in<R: Real, T: Turning<R>>(
     let half = h * R::splat(0.5);
     let l = l.add_scaled(half, t);
     let q_p = inertia.principal_orientation(q);
-    let q_p = free_flow_normalized(inertia, q_p, T::pack(q_p), l, h).unpack();
+    let q_p = free_flow_normalized(inertia, T::pack(q_p), l, h).unpack();
     let l = l.add_scaled(half, t);
     (inertia.body_orientation(q_p), l)
 }
@@ -361,7 +365,7 @@ pub(crate) fn step2_with<R: Real>(
     let half = h * R::splat(0.5);
     let l = l.add_scaled(half, torque(q));
     let q_p = inertia.principal_orientation(q);
-    let q_p = free_flow_normalized(inertia, q_p, q_p, l, h);
+    let q_p = free_flow_normalized(inertia, q_p, l, h);
     let q = inertia.body_orientation(q_p);
     let l = l.add_scaled(half, torque(q));
     (q, l)
@@ -389,11 +393,11 @@ pub(crate) fn step4<R: Real>(
     let l = l.add_scaled(outer_kick, t);
     // Each free flow reads the body momentum through its starting quaternion, which must
     // be unit.
-    let q1 = free_flow_normalized(inertia, q_p, q_p, l, h1);
+    let q1 = free_flow_normalized(inertia, q_p, l, h1);
     let l = l.add_scaled(inner_kick, t);
-    let q2 = free_flow_normalized(inertia, q1, q1, l, h0);
+    let q2 = free_flow_normalized(inertia, q1, l, h0);
     let l = l.add_scaled(inner_kick, t);
-    let q3 = free_flow_normalized(inertia, q2, q2, l, h1);
+    let q3 = free_flow_normalized(inertia, q2, l, h1);
     let l = l.add_scaled(outer_kick, t);
     (inertia.body_orientation(q3), l)
 }
@@ -454,6 +458,67 @@ mod tests {
             seed ^= seed << 17;
             (seed >> 11) as f64 / (1u64 << 52) as f64 - 1.0
         }
+    }
+
+    /// At the edge of the projective range (`reach` just below `FAST_T`), the free flow
+    /// moves `q_p` by at most 1.16 rad on the unit sphere (`projective::FAST_T`'s
+    /// bound): the result's cosine with `q_p` stays above `cos 1.16 = 0.398`, so
+    /// `divided_by_norm` is `normalized_by` there. Long steps of fast bodies, one axis
+    /// at a time and all three together, in `f64` and the step's own `reach`.
+    #[test]
+    fn the_projective_range_stays_in_the_starting_hemisphere() {
+        let mut next = stream(0x2545_f491_4f6c_dd1d);
+        let mut least = f64::INFINITY;
+        for case in 0..20_000 {
+            let moments = [1.0 + next().abs() * 3.0, 0.5 + next().abs(), 2.0 + next()];
+            let inertia = Inertia::<f64>::from_principal(moments, identity()).unwrap();
+            let frame = Q {
+                x: next(),
+                y: next(),
+                z: next(),
+                w: next(),
+            };
+            let q = frame.normalized_near(frame);
+            let h = 0.05 * next().abs() + 1e-3;
+            let l = match case % 4 {
+                0 => V {
+                    x: 1.0,
+                    y: 0.0,
+                    z: 0.0,
+                },
+                1 => V {
+                    x: 0.0,
+                    y: 1.0,
+                    z: 0.0,
+                },
+                2 => V {
+                    x: 0.0,
+                    y: 0.0,
+                    z: 1.0,
+                },
+                _ => V {
+                    x: next(),
+                    y: next(),
+                    z: next(),
+                },
+            };
+            // World momentum along `q`'s axes, so one body axis takes all of it.
+            let l = q.rotate(l);
+            let body = q.rotate_inv(l);
+            let reach = h * h * inertia.reach * body.dot(body);
+            let k = (projective::FAST_T * 0.999 / reach).sqrt();
+            let l = l.scale(V { x: k, y: k, z: k });
+            let body = q.rotate_inv(l);
+            let reach = h * h * inertia.reach * body.dot(body);
+            assert!(reach < projective::FAST_T && reach > 0.99 * projective::FAST_T);
+            let (turned, norm2) =
+                projective::free_flow::<f64, Q<f64>>(&inertia, q, q.dot(q), body, h);
+            least = least.min(turned.dot(q) / (norm2.sqrt() * q.dot(q).sqrt()));
+        }
+        assert!(least > 1.16f64.cos(), "{least}");
+        // The cases reach the range's edge: along the third axis the middle turn alone
+        // takes its largest half-angle, 0.387 rad (cos 0.926).
+        assert!(least < 0.38f64.cos(), "{least}");
     }
 
     /// The free flow's turns in the projective form (`projective.rs`, no division) and in

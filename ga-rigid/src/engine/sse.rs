@@ -89,6 +89,12 @@ impl Turning<f32> for Q4 {
     }
 
     #[inline(always)]
+    fn divided_by_norm(self, norm2: f32) -> Self {
+        // SAFETY: SSE2 is part of x86-64.
+        Q4(unsafe { _mm_div_ps(self.0, _mm_set1_ps(Real::sqrt(norm2))) })
+    }
+
+    #[inline(always)]
     fn rotate_inv(self, v: V<f32>) -> V<f32> {
         // `Q::rotate` for `q*`: u = -(x, y, z); t = (2u) x v; (v + w t) + u x t, lane by
         // lane in the component form's order. Lane 3 carries nothing of use.
