@@ -460,6 +460,23 @@ mod tests {
         }
     }
 
+    /// Seeded principal moments, their inertia, and a unit orientation whose `w` was
+    /// drawn with `w_offset` added (to keep it away from a half turn).
+    fn seeded_body(
+        next: &mut impl FnMut() -> f64,
+        w_offset: f64,
+    ) -> ([f64; 3], Inertia<f64>, Q<f64>) {
+        let moments = [1.0 + next().abs() * 3.0, 0.5 + next().abs(), 2.0 + next()];
+        let inertia = Inertia::<f64>::from_principal(moments, identity()).unwrap();
+        let frame = Q {
+            x: next(),
+            y: next(),
+            z: next(),
+            w: next() + w_offset,
+        };
+        (moments, inertia, frame.normalized_near(frame))
+    }
+
     /// At the edge of the projective range (`reach` just below `FAST_T`), the free flow
     /// moves `q_p` by at most 1.16 rad on the unit sphere (`projective::FAST_T`'s
     /// bound): the result's cosine with `q_p` stays above `cos 1.16 = 0.398`, so
@@ -470,15 +487,7 @@ mod tests {
         let mut next = stream(0x2545_f491_4f6c_dd1d);
         let mut least = f64::INFINITY;
         for case in 0..20_000 {
-            let moments = [1.0 + next().abs() * 3.0, 0.5 + next().abs(), 2.0 + next()];
-            let inertia = Inertia::<f64>::from_principal(moments, identity()).unwrap();
-            let frame = Q {
-                x: next(),
-                y: next(),
-                z: next(),
-                w: next(),
-            };
-            let q = frame.normalized_near(frame);
+            let (_, inertia, q) = seeded_body(&mut next, 0.0);
             let h = 0.05 * next().abs() + 1e-3;
             let l = match case % 4 {
                 0 => V {
@@ -530,15 +539,7 @@ mod tests {
         let mut next = stream(0x9e37_79b9_7f4a_7c15);
         let (mut worst64, mut worst32) = (0.0f64, 0.0f64);
         for case in 0..5_000 {
-            let moments = [1.0 + next().abs() * 3.0, 0.5 + next().abs(), 2.0 + next()];
-            let inertia = Inertia::<f64>::from_principal(moments, identity()).unwrap();
-            let frame = Q {
-                x: next(),
-                y: next(),
-                z: next(),
-                w: next() + 1.5,
-            };
-            let q = frame.normalized_near(frame);
+            let (moments, inertia, q) = seeded_body(&mut next, 1.5);
             let h = 0.05 * next().abs() + 1e-4;
             // Up to the range limit: `widest (h/2 sqrt3 I)^2 |L|^2` up to `FAST_T`.
             let widest = moments.iter().fold(f64::INFINITY, |m, &i| m.min(i));
