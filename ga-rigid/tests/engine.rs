@@ -61,6 +61,68 @@ fn splitting_converges_to_the_exact_flow_at_order_two_and_four() {
     assert!(e2 < 1e-5);
 }
 
+/// Dullweber, Leimkuhler and McLachlan's five exact axis rotations, on the body
+/// momentum only (what the energy depends on): written here with `sin` and `cos`.
+fn dlm_body_momentum(inverse: [f64; 3], m: [f64; 3], h: f64) -> [f64; 3] {
+    let mut m = m;
+    for (k, fraction) in [(0, 0.5), (1, 0.5), (2, 1.0), (1, 0.5), (0, 0.5)] {
+        let angle = fraction * h * inverse[k] * m[k];
+        let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+        let (s, c) = angle.sin_cos();
+        (m[i], m[j]) = (c * m[i] + s * m[j], c * m[j] - s * m[i]);
+    }
+    m
+}
+
+/// The engine's split (Casimir reference the largest moment, turns corrected for their
+/// single-axis `h^2` error) against the five-turn split of Dullweber, Leimkuhler and
+/// McLachlan: over 40 seeded bodies at 60 Hz (moments in [0.2, 3], given to the engine
+/// in a shuffled order so that its axis frames are exercised, `h |w|` up to 0.2), its
+/// largest energy excursion over 3000 steps is below the five-turn split's on every
+/// body, and far below it on the whole.
+#[test]
+fn the_corrected_split_keeps_the_energy_better_than_the_five_turn_split() {
+    let mut seed = 0x0123_4567_89ab_cdef_u64;
+    let mut next = move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let h = 1.0 / 60.0;
+    let mut log_ratio = 0.0;
+    for case in 0..40 {
+        let mut moments = [0; 3].map(|_| 0.2 + 2.8 * next());
+        moments.sort_by(f64::total_cmp);
+        let inverse = moments.map(|i| 1.0 / i);
+        let d = DVec3::new(next() - 0.5, next() - 0.5, next() - 0.5).normalize();
+        let w = d * (1.0 + 11.0 * next());
+        let m0 = [moments[0] * w.x, moments[1] * w.y, moments[2] * w.z];
+        let energy = |m: [f64; 3]| 0.5 * (0..3).map(|k| inverse[k] * m[k] * m[k]).sum::<f64>();
+        let e0 = energy(m0);
+        // The five-turn split in the sorted order.
+        let (mut m, mut dlm) = (m0, 0.0f64);
+        for _ in 0..3000 {
+            m = dlm_body_momentum(inverse, m, h);
+            dlm = dlm.max((energy(m) / e0 - 1.0).abs());
+        }
+        // The engine, the axes given in a rotated order (x y z -> y z x or z x y).
+        let shift = 1 + case % 2;
+        let given = |v: [f64; 3]| DVec3::new(v[shift % 3], v[(shift + 1) % 3], v[(shift + 2) % 3]);
+        let body = e64::Body::from_principal(given(moments), DQuat::IDENTITY).unwrap();
+        let (mut q, l) = (DQuat::IDENTITY, given(m0));
+        let mut ours = 0.0f64;
+        for _ in 0..3000 {
+            (q, _) = e64::step(&body, q, l, DVec3::ZERO, h);
+            ours = ours.max((body.kinetic_energy(q, l) / e0 - 1.0).abs());
+        }
+        assert!(ours < dlm, "case {case}: {ours:e} against {dlm:e}");
+        log_ratio += (ours / dlm).log10() / 40.0;
+    }
+    println!("geometric mean of the ratio: 10^{log_ratio:.2}");
+    assert!(log_ratio < -1.0, "{log_ratio}");
+}
+
 #[test]
 fn free_momentum_is_kept_to_the_bit_and_a_world_torque_adds_exactly_h_t() {
     let body = e32::Body::from_tensor(Mat3::from_diagonal(Vec3::new(1.0, 2.0, 3.0))).unwrap();
@@ -412,7 +474,7 @@ fn golden_bits_of_ten_thousand_steps() {
 }
 
 /// Recorded by `golden_bits_of_ten_thousand_steps` (printed with `--nocapture`).
-const GOLDEN: (u64, u64) = (0xa760_6cc1_0761_6490, 0x18a4_0c74_23ab_fddc);
+const GOLDEN: (u64, u64) = (0x9dda_bfd0_1e54_4492, 0xc900_ca5d_38bb_229c);
 
 #[test]
 fn step_with_a_constant_torque_is_step_and_keeps_a_heavy_tops_energy() {

@@ -41,9 +41,9 @@ macro_rules! precision_api {
             $vec3::new(v.x, v.y, v.z)
         }
 
-        /// A body's inertia, diagonalised once: principal moments, their reciprocals and
-        /// the principal frame. Cheap to copy; build it when the shape changes, not per
-        /// step.
+        /// A body's inertia, diagonalised once: principal moments, the principal frame
+        /// and the free flow's constants (56 bytes in f32). Cheap to copy; build it when
+        /// the shape changes, not per step.
         #[derive(Clone, Copy, Debug)]
         pub struct Body {
             inertia: Inertia<$t>,
@@ -77,13 +77,13 @@ macro_rules! precision_api {
             /// The principal moments, in the order of [`Body::principal_frame`]'s axes.
             #[must_use]
             pub fn principal_moments(&self) -> $vec3 {
-                v_out(self.inertia.moments)
+                v_out(self.inertia.given().0)
             }
 
             /// The rotation from the principal axes to the body frame.
             #[must_use]
             pub fn principal_frame(&self) -> $quat {
-                q_out(self.inertia.frame)
+                q_out(self.inertia.given().1)
             }
 
             /// The world angular velocity of a body with `orientation` (body to world)

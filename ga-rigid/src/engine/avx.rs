@@ -1,6 +1,6 @@
 //! Eight `f32` lanes in one AVX register, for the slice form on x86-64 CPUs with AVX.
 //!
-//! The slice form is bound by the chain of its five dependent turns, not by its
+//! The slice form is bound by the chain of its three dependent turns, not by its
 //! instruction count: a group of four in SSE takes about as long as one body's chain
 //! (BENCHMARKS.md, issue 19). A group of eight in one 256-bit register runs the same
 //! chain for twice the bodies. Every lane operation is one AVX instruction and the IEEE

@@ -123,7 +123,7 @@ fn determinant(a: &M3) -> f64 {
 
 /// The unit quaternion `[x, y, z, w]` turning `e_k` into column `k` of the rotation `m`
 /// (Shepperd: the square root of the largest of 4w^2, 4x^2, 4y^2, 4z^2), `w >= 0`.
-fn quaternion_of(m: &M3) -> [f64; 4] {
+pub(crate) fn quaternion_of(m: &M3) -> [f64; 4] {
     let trace = m[0][0] + m[1][1] + m[2][2];
     let candidates = [trace, m[0][0], m[1][1], m[2][2]];
     let mut largest = 0;

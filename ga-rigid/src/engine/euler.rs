@@ -55,7 +55,7 @@ pub(crate) fn explicit<R: Real>(
     let wb = q_p.rotate_inv(w);
     let tb = q_p.rotate_inv(t);
     let gyro = wb.cross(wb.scale(inertia.moments));
-    let wb = wb.add_scaled(h, tb.sub(gyro).scale(inertia.inverse));
+    let wb = wb.add_scaled(h, tb.sub(gyro).divide(inertia.moments));
     let w = q_p.rotate(wb);
     (turn_by_velocity(q, w, h), w)
 }
@@ -108,7 +108,7 @@ pub(crate) fn implicit<R: Real>(
     let usable = zero.lt(det * det);
     let inv_det = R::select(usable, R::splat(1.0) / det, zero);
     let wb = wb.add_scaled(-inv_det, x);
-    let wb = wb.add_scaled(h, tb.scale(inertia.inverse));
+    let wb = wb.add_scaled(h, tb.divide(inertia.moments));
     let w = q_p.rotate(wb);
     (turn_by_velocity(q, w, h), w)
 }

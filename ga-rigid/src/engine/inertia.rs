@@ -1,29 +1,34 @@
-//! A body's inertia as the steps use it: principal moments, their reciprocals and the
-//! principal frame, checked and diagonalised once.
+//! A body's inertia as the steps use it: principal moments in the free flow's axis order,
+//! the principal frame for that order and the split's constants, checked and diagonalised
+//! once.
 
-use super::eigen::principal_axes;
+use super::eigen::{principal_axes, quaternion_of};
 use super::error::BodyError;
 use super::real::Real;
 use super::rotation::{Q, V};
+use super::split::{split_order, Split};
 
-/// Principal moments, their reciprocals and the frame `p` (principal axes to the user's
-/// body frame: a body-frame vector is `p v p*` of its principal components).
+/// Principal moments and the frame `p` (principal axes to the user's
+/// body frame: a body-frame vector is `p v p*` of its principal components), the axes in
+/// the free flow's split order (`split.rs`).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Inertia<R: Real> {
-    /// `(I1, I2, I3)`.
+    /// `(I1, I2, I3)`, in the split's order.
     pub(crate) moments: V<R>,
-    /// `(1/I1, 1/I2, 1/I3)`.
-    pub(crate) inverse: V<R>,
-    /// `max_k (1/I_k)^2 / 12`: times `h^2 |L|^2`, the bound on every turn's `b^2` that
-    /// picks the form of the turns (`splitting::free_flow_normalized`), kept here so
-    /// that a step does not take the largest of three squares.
-    pub(crate) reach: R,
-    /// `p`.
+    /// The split's constants.
+    pub(crate) split: Split<R>,
+    /// `p`, for the split's order of the axes.
     pub(crate) frame: Q<R>,
     /// Whether `p` is not the identity (then the steps turn the orientation into the
     /// principal frame and back; otherwise they skip both products).
     pub(crate) turned: R::Mask,
+    /// Which given principal axis each of the split's axes is (for the accessors; it
+    /// fills what would be padding).
+    pub(crate) order: Order,
 }
+
+/// Which given principal axis each of the split's axes is (`split::split_order`).
+pub(crate) type Order = [u8; 3];
 
 /// The precisions a body description is built in.
 pub(crate) trait Precision: Real<Mask = bool> + PartialOrd {
@@ -59,14 +64,8 @@ impl<R: Precision> Inertia<R> {
             return Err(BodyError::NotFinite);
         }
         let a = [0, 1, 2].map(|i| [0, 1, 2].map(|j| t[j][i].wide()));
-        let (d, p, diagonal) = principal_axes(&a);
-        let frame = Q {
-            x: R::splat(p[0]),
-            y: R::splat(p[1]),
-            z: R::splat(p[2]),
-            w: R::splat(p[3]),
-        };
-        Self::checked(d.map(R::splat), frame, !diagonal)
+        let (d, p, _) = principal_axes(&a);
+        Self::checked(d.map(R::splat), p)
     }
 
     /// From principal moments and the frame `p` (any non-zero quaternion; normalised).
@@ -82,18 +81,12 @@ impl<R: Precision> Inertia<R> {
         }
         let inv = 1.0 / libm::sqrt(n2);
         let unit = wide.map(|x| x * inv);
-        let identity = unit == [0.0, 0.0, 0.0, 1.0] || unit == [0.0, 0.0, 0.0, -1.0];
-        let frame = Q {
-            x: R::splat(unit[0]),
-            y: R::splat(unit[1]),
-            z: R::splat(unit[2]),
-            w: R::splat(unit[3]),
-        };
-        Self::checked(moments, frame, !identity)
+        Self::checked(moments, unit)
     }
 
-    /// Checks the moments (positive, reciprocals finite) and keeps them.
-    fn checked(moments: [R; 3], frame: Q<R>, turned: bool) -> Result<Self, BodyError> {
+    /// Checks the moments (positive, reciprocals finite), puts the axes in the split's
+    /// order and keeps both orders; `frame` is unit, `[x, y, z, w]`.
+    fn checked(moments: [R; 3], frame: [f64; 4]) -> Result<Self, BodyError> {
         for (axis, &m) in moments.iter().enumerate() {
             if !m.finite() {
                 return Err(BodyError::NotFinite);
@@ -104,25 +97,78 @@ impl<R: Precision> Inertia<R> {
                 return Err(BodyError::NotPositive { axis });
             }
         }
-        let one = R::splat(1.0);
-        let inverse2 = moments.map(|m| (one / m) * (one / m));
-        let widest = inverse2[0].max_or(inverse2[1]).max_or(inverse2[2]);
+        let order = split_order(moments.map(|m| 1.0 / m.wide()));
+        let ordered = order.map(|k| moments[k]);
+        let turn = hamilton(frame, permutation(order));
+        let identity = turn == [0.0, 0.0, 0.0, 1.0] || turn == [0.0, 0.0, 0.0, -1.0];
+        let quaternion = |p: [f64; 4]| Q {
+            x: R::splat(p[0]),
+            y: R::splat(p[1]),
+            z: R::splat(p[2]),
+            w: R::splat(p[3]),
+        };
         Ok(Inertia {
             moments: V {
-                x: moments[0],
-                y: moments[1],
-                z: moments[2],
+                x: ordered[0],
+                y: ordered[1],
+                z: ordered[2],
             },
-            inverse: V {
-                x: one / moments[0],
-                y: one / moments[1],
-                z: one / moments[2],
-            },
-            reach: widest * R::splat(1.0 / 12.0),
-            frame,
-            turned,
+            split: Split::new(ordered.map(|m| 1.0 / m.wide())),
+            frame: quaternion(turn),
+            turned: !identity,
+            // Axis indices below 3 fit a byte: the body description stays small.
+            order: order.map(|k| k as u8),
         })
     }
+
+    /// The principal moments and frame in the given order of the axes (as the body was
+    /// described): the moments put back, the frame `p s*` for the split's `s`.
+    pub(crate) fn given(&self) -> (V<R>, Q<R>) {
+        let order = self.order;
+        let ordered = [self.moments.x, self.moments.y, self.moments.z];
+        let mut moments = ordered;
+        for (split_axis, &given_axis) in order.iter().enumerate() {
+            moments[usize::from(given_axis)] = ordered[split_axis];
+        }
+        let frame = if order == [0, 1, 2] {
+            self.frame
+        } else {
+            let p = [self.frame.x, self.frame.y, self.frame.z, self.frame.w].map(R::wide);
+            let [x, y, z, w] = permutation(order.map(usize::from));
+            let [x, y, z, w] = hamilton(p, [-x, -y, -z, w]);
+            Q {
+                x: R::splat(x),
+                y: R::splat(y),
+                z: R::splat(z),
+                w: R::splat(w),
+            }
+        };
+        let [x, y, z] = moments;
+        (V { x, y, z }, frame)
+    }
+}
+
+/// The rotation `[x, y, z, w]` that takes `e_x, e_y, e_z` to the given axes
+/// `order[0], order[1]` and `+-order[2]` (the sign that keeps it a rotation).
+fn permutation(order: [usize; 3]) -> [f64; 4] {
+    let mut m = [[0.0; 3]; 3];
+    let even = matches!(order, [0, 1, 2] | [1, 2, 0] | [2, 0, 1]);
+    m[order[0]][0] = 1.0;
+    m[order[1]][1] = 1.0;
+    m[order[2]][2] = if even { 1.0 } else { -1.0 };
+    quaternion_of(&m)
+}
+
+/// The Hamilton product `a b` of `[x, y, z, w]` quaternions.
+fn hamilton(a: [f64; 4], b: [f64; 4]) -> [f64; 4] {
+    let [ax, ay, az, aw] = a;
+    let [bx, by, bz, bw] = b;
+    [
+        aw * bx + ax * bw + ay * bz - az * by,
+        aw * by - ax * bz + ay * bw + az * bx,
+        aw * bz + ax * by - ay * bx + az * bw,
+        aw * bw - ax * bx - ay * by - az * bz,
+    ]
 }
 
 impl<R: Real> Inertia<R> {
@@ -149,7 +195,7 @@ impl<R: Real> Inertia<R> {
     /// World angular velocity `R J^-1 R^T L` from world momentum, `q_p` principal.
     #[inline(always)]
     pub(crate) fn velocity(&self, q_p: Q<R>, l: V<R>) -> V<R> {
-        q_p.rotate(q_p.rotate_inv(l).scale(self.inverse))
+        q_p.rotate(q_p.rotate_inv(l).divide(self.moments))
     }
 
     /// World angular momentum `R J R^T w` from world angular velocity, `q_p` principal.
@@ -162,6 +208,6 @@ impl<R: Real> Inertia<R> {
     #[inline(always)]
     pub(crate) fn energy(&self, q_p: Q<R>, l: V<R>) -> R {
         let b = q_p.rotate_inv(l);
-        R::splat(0.5) * b.dot(b.scale(self.inverse))
+        R::splat(0.5) * b.dot(b.divide(self.moments))
     }
 }

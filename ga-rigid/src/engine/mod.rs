@@ -18,7 +18,8 @@
 //! - [`f32`](mod@f32) and [`f64`](mod@f64) (glam 0.32, feature `glam`; `glam_0_29` ... `glam_0_32` for
 //!   the glam a project pins, features `glam-0-29` ...): a [`f32::Body`] from an inertia
 //!   tensor in the body frame or from principal moments and their frame, diagonalised
-//!   once; [`f32::step`] (free flow plus kick, second order) and [`f32::step_order4`]
+//!   once; [`f32::step`] (free flow plus kick, second order; the free flow split around
+//!   the Casimir `|L|^2` into three corrected axis turns, `splitting.rs`) and [`f32::step_order4`]
 //!   (its fourth-order composition) on the orientation and the world angular momentum;
 //!   the engines' baselines [`f32::explicit_gyroscopic_euler`] and
 //!   [`f32::implicit_gyroscopic_euler`] on the world angular velocity; the slice forms
@@ -66,6 +67,7 @@ mod projective;
 mod real;
 mod rotation;
 mod slice;
+mod split;
 mod splitting;
 #[cfg(target_arch = "x86_64")]
 mod sse;

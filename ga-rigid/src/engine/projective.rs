@@ -1,83 +1,83 @@
-//! The free flow's five turns without a division: the body momentum and each angle carried
-//! as numerators over one common denominator, for the steps an engine takes.
+//! The free flow's three turns without a division: the body momentum and each angle
+//! carried as numerators over one common denominator, for the steps an engine takes.
 //!
-//! `splitting.rs` turns the body momentum by `cos = (p^2 - a^2)/n`, `sin = 2pa/n` and
-//! divides by `n = p^2 + a^2` every turn; each turn's angle needs the last turn's
-//! momentum, so those divisions sit one after another on the step's critical path. Here
-//! the momentum is `X / D` and the angle parameter `b = B / D` (`b = a / sqrt 3` as in
-//! `splitting.rs`), and a turn works on the numerators:
+//! `splitting.rs` turns the body momentum by `cos = (p^2 - b^2)/n`, `sin = 2pb/n` with
+//! `p = e - lambda b^2`, `n = p^2 + b^2`, and divides by `n` every turn; each turn's
+//! angle needs the last turn's momentum, so those divisions would sit one after another
+//! on the step's critical path. Here the momentum is `X / D` and the angle parameter
+//! `b = B / D`, and a turn works on the numerators:
 //!
-//! - `P = D^2 - B^2` and `A = sqrt3 B D` are `p` and `a` times `D^2`, so the turn's
-//!   quaternion `P + A e_K` is `p + a e_K` scaled by `D^2` (the scale goes with the
+//! - `P = e D^2 - lambda B^2` and `A = B D` are `p` and `b` times `D^2`, so the turn's
+//!   quaternion `P + A e_K` is `p + b e_K` scaled by `D^2` (the scale goes with the
 //!   normalisation at the end);
 //! - `C = P^2 - A^2` and `S = 2 P A` are `cos` and `sin` times `D^4 n`, and
 //!   `N = P^2 + A^2` is `D^4 n`;
 //! - the turned components are `C X_i + S X_j`, the untouched one `N X_K`, all over the
-//!   new denominator `D N`, and the next angle's numerator is `C (r X_i) + S (r X_j)`.
+//!   new denominator `D N`, and the next angle's numerators are `C (r X_i) + S (r X_j)`
+//!   and the same with `lambda r` (so that `lambda B^2` is one product, not two).
 //!
-//! That is the same map as `splitting.rs` (the same rational turns, so the step is as
-//! symplectic and as symmetric), rounded differently, with no division until the
-//! quaternion is normalised. The chain of a turn is `D^2`, `P`, `P^2`, `C`, a product and
-//! a sum: about 16 cycles where the divided form takes about 21.
+//! That is the same map as `splitting.rs`, rounded differently, with no division until
+//! the quaternion is normalised.
 //!
-//! The numerators grow: `D` is multiplied by `N ~ D^4 (1 + t + t^2)` each turn, with
-//! `t = b^2`. Over the five turns every value stays below `g^781` times `|L|`, for
-//! `g = 1 + t_max + t_max^2`, so the form is used only where `t <= FAST_T` (far above an
-//! engine's 60 Hz steps: a turn of up to about 46 rad/s) and `|L| < 1e18`, where nothing
-//! can overflow in `f32`; elsewhere `splitting.rs` turns with its clamps.
+//! The numerators grow or shrink by each turn's `g = n` (`D` is multiplied by
+//! `N ~ D^4 g`): over the three turns every value stays within `g^31` of `|L|`. In the
+//! range the form is used in ([`RANGE`]), `0.81 <= g <= 1.27`, so with `|L| < 1e18`
+//! nothing overflows in `f32` and nothing comes near its smallest normal number that
+//! `|L|` itself does not; elsewhere `splitting.rs` turns with its clamps.
 
-use super::inertia::Inertia;
 use super::real::Real;
 use super::rotation::{turn_body_about, V};
-use super::splitting::{turn_rates, Turning, SQRT_3};
+use super::splitting::{Rates, Turning};
 
-/// The largest `t = b^2` the projective form takes: `g = 1 + t + t^2 = 1.0525`, and
-/// `g^781 < 3e17`, far from `f32::MAX`.
+/// The projective form's range, as bounds on each turn's `b^2`, `|lambda| b^2` and
+/// `|1 - e|`, and on the turn about `L`'s `w^2`: then each turn's
+/// `g = (e - lambda b^2)^2 + b^2` lies in `[0.81, 1.27]` and `g^31 < 1.7e3`.
+/// `Split::reach` is the largest of the quotients by these (per `h^2 |L|^2`).
 ///
 /// In that range the result stays in the starting quaternion's hemisphere, so it is
-/// normalised without the hemisphere test (one dot product and a select fewer at the end
-/// of the step's chain; `free_flow_normalized` in `splitting.rs`). The turn `P + A e_K`
-/// has the half-angle `atan(sqrt3 b / (1 - b^2))`: at most 0.387 rad for the middle turn
-/// (`b^2 <= FAST_T`) and 0.194 rad for the four others (their rate is half, so
-/// `b^2 <= FAST_T / 4`). Half-angles are distances on the unit sphere of quaternions, so
-/// the five turns move `q_p` by at most 1.16 rad there, and the result's dot product
-/// with `q_p` is at least `cos 1.16 = 0.40` times their norms: the test would never
-/// negate (a unit test checks it at the range's edge).
-pub(crate) const FAST_T: f64 = 0.05;
+/// normalised without the hemisphere test (a dot product and a select fewer at the end
+/// of the step's chain; `free_flow_normalized` in `splitting.rs`). A turn `p + b e_K`
+/// (times `D^2 > 0`) has the half-angle `atan(|b| / p) <= atan(0.25 / 0.9) = 0.271` rad,
+/// the turn about `L`, `(1 - w^2/3) + w L/|L|`, at most `atan(0.25 / 0.979) = 0.251`.
+/// Half-angles are distances on the unit sphere of quaternions, so the four turns move
+/// `q_p` by at most 1.07 rad, and the result's dot product with `q_p` is at least
+/// `cos 1.07 = 0.48` times their norms: the test would never negate (a unit test checks
+/// it at the range's edge).
+pub(crate) const RANGE: [f64; 4] = [0.0625, 0.05, 0.05, 0.0625];
 
-/// The largest squared body momentum the projective form takes (`|L| < 1e18`): with
-/// `D < g^156 < 3000`, no numerator reaches `1e22 |L|`.
+/// The largest squared body momentum the projective form takes (`|L| < 1e18`).
 pub(crate) const FAST_MOMENTUM2: f64 = 1e36;
 
 /// One turn about the body axis `K` by `b = B / D`: the quaternion `q (P + A e_K)`, the
-/// momentum's numerators turned, the next turn's `B` for the axis `N` at `rate`, the new
-/// denominator, and `N = P^2 + A^2` (the factor `q`'s squared norm grew by).
+/// momentum's numerators turned, the next turn's `B` and `lambda B` for the axis `N`
+/// (rates `rate`, `cubic_rate`), the new denominator `D N`, the next turn's `e D^2`
+/// (its `e` is `e_next`), and `N = P^2 + A^2` (the factor `q`'s squared norm grew by).
 // Inlined only when optimised (see "Unoptimised builds" in `splitting.rs`).
 #[cfg_attr(not(debug_assertions), inline(always))]
 #[cfg_attr(debug_assertions, inline)]
+#[allow(clippy::too_many_arguments, clippy::type_complexity)]
 fn turn<R: Real, T: Turning<R>, const K: usize, const N: usize>(
     q: T,
     x: V<R>,
-    b: R,
-    d: R,
-    rate: R,
-) -> (T, V<R>, R, R, R) {
+    (b, cubic_b): (R, R),
+    (d, edd): (R, R),
+    (rate, cubic_rate): (R, R),
+    e_next: R,
+) -> (T, V<R>, (R, R), (R, R), R) {
     // `opaque`: one body's chain stays scalar (see `Real::opaque`).
-    let (bb, dd) = ((b * b).opaque(), (d * d).opaque());
-    let p = (dd - bb).opaque();
-    let bd = (b * d).opaque();
-    let a = (bd * R::splat(SQRT_3)).opaque();
+    let p = (edd - (b * cubic_b).opaque()).opaque();
+    let a = (b * d).opaque();
     let (pp, aa) = ((p * p).opaque(), (a * a).opaque());
     let c = (pp - aa).opaque();
-    let s = (p * (bd * R::splat(2.0 * SQRT_3))).opaque();
+    let s = (p * (a + a).opaque()).opaque();
     let norm = (pp + aa).opaque();
     let turned = turn_body_about(K, c, s, x);
-    // The next angle's numerator from the momentum scaled by its rate before the turn:
-    // the rate's product runs beside the turn's, not after it.
-    let scaled = V {
-        x: rate * x.x,
-        y: rate * x.y,
-        z: rate * x.z,
+    // The next angle's numerators from the momentum scaled by its rates before the
+    // turn: the rates' products run beside the turn's, not after it.
+    let scaled = |r: R| V {
+        x: r * x.x,
+        y: r * x.y,
+        z: r * x.z,
     };
     let x = match K {
         0 => V {
@@ -101,44 +101,55 @@ fn turn<R: Real, T: Turning<R>, const K: usize, const N: usize>(
         y: x.y.opaque(),
         z: x.z.opaque(),
     };
-    let next = turn_body_about(K, c, s, scaled).get(N).opaque();
+    let next = turn_body_about(K, c, s, scaled(rate)).get(N).opaque();
+    let cubic_next = turn_body_about(K, c, s, scaled(cubic_rate)).get(N).opaque();
+    let d_next = (d * norm).opaque();
+    let edd_next = (((e_next * d).opaque() * norm).opaque() * d_next).opaque();
     (
         q.turned_about::<K>(p, a),
         x,
-        next,
-        (d * norm).opaque(),
+        (next, cubic_next),
+        (d_next, edd_next),
         norm,
     )
 }
 
-/// The free flow over `h` from `q_p` (unit up to rounding; `q_p2` its squared norm) and
-/// the body momentum `body` (the world momentum seen from `q_p`), by the five turns
-/// `1(h/2) 2(h/2) 3(h) 2(h/2) 1(h/2)` of `splitting.rs`: the rotation scaled by a
+/// The three turns `x(h/2) y(h) x(h/2)` from `q_p` (unit up to rounding; `q_p2` its
+/// squared norm) and the body momentum `body`: the turned quaternion scaled by a
 /// positive number, and its squared norm, `q_p2` times the turns' `N` (the last turn's
 /// multiplied in last, as it is the last to be known). The caller checks the range
-/// (`FAST_T`, `FAST_MOMENTUM2`).
+/// ([`RANGE`], [`FAST_MOMENTUM2`]).
 // Inlined only when optimised (see "Unoptimised builds" in `splitting.rs`).
 #[cfg_attr(not(debug_assertions), inline(always))]
 #[cfg_attr(debug_assertions, inline)]
 pub(crate) fn free_flow<R: Real, T: Turning<R>>(
-    inertia: &Inertia<R>,
+    rates: &Rates<R>,
     q_p: T,
     q_p2: R,
     body: V<R>,
-    h: R,
 ) -> (T, R) {
-    let (r1, r2, r3) = turn_rates(inertia, h);
     let one = R::splat(1.0);
-    let b1 = r1 * body.x;
-    let (q, x, b2, d2, n1) = turn::<R, T, 0, 1>(q_p, body, b1, one, r2);
-    let (q, x, b3, d3, n2) = turn::<R, T, 1, 2>(q, x, b2, d2, r3);
-    let (q, x, b4, d4, n3) = turn::<R, T, 2, 1>(q, x, b3, d3, r2);
-    let (q, _, b5, d5, n4) = turn::<R, T, 1, 0>(q, x, b4, d4, r1);
+    let b1 = (rates.outer * body.x, rates.outer_cubic * body.x);
+    let (q, x, b2, d2, n1) = turn::<R, T, 0, 1>(
+        q_p,
+        body,
+        b1,
+        (one, rates.outer_e),
+        (rates.middle, rates.middle_cubic),
+        rates.middle_e,
+    );
+    let (q, _, (b3, cubic_b3), (d3, edd3), n2) = turn::<R, T, 1, 0>(
+        q,
+        x,
+        b2,
+        d2,
+        (rates.outer, rates.outer_cubic),
+        rates.outer_e,
+    );
     // The last turn needs only its quaternion and its `N`.
-    let (bb, dd) = ((b5 * b5).opaque(), (d5 * d5).opaque());
-    let p = (dd - bb).opaque();
-    let a = ((b5 * d5) * R::splat(SQRT_3)).opaque();
-    let n5 = (p * p + a * a).opaque();
-    let norm = (q_p2 * ((n1 * n2) * (n3 * n4))) * n5;
+    let p = (edd3 - (b3 * cubic_b3).opaque()).opaque();
+    let a = (b3 * d3).opaque();
+    let n3 = (p * p + a * a).opaque();
+    let norm = (q_p2 * (n1 * n2)) * n3;
     (q.turned_about::<0>(p, a), norm)
 }

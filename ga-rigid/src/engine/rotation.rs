@@ -45,7 +45,17 @@ impl<R: Real> V<R> {
         }
     }
 
-    /// Component-wise product.
+    /// Component by component, `self / k`.
+    #[inline(always)]
+    pub(crate) fn divide(self, k: V<R>) -> V<R> {
+        V {
+            x: self.x / k.x,
+            y: self.y / k.y,
+            z: self.z / k.z,
+        }
+    }
+
+    /// Component by component, `self * k`.
     #[inline(always)]
     pub(crate) fn scale(self, k: V<R>) -> V<R> {
         V {

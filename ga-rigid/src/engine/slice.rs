@@ -9,6 +9,7 @@
 use super::inertia::{Inertia, Precision};
 use super::real::{Group, Lanes, Real};
 use super::rotation::{Q, V};
+use super::split::Split;
 
 /// Which of the splitting steps.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -70,10 +71,17 @@ fn step_group<T: Precision, S: Parts<T>, G: Group<T, N>, const N: usize>(
     let parts: [BodyParts<'_, T>; N] = core::array::from_fn(|i| group[i].parts());
     let inertia = Inertia::<G> {
         moments: vector(|i| parts[i].0.moments),
-        inverse: vector(|i| parts[i].0.inverse),
-        reach: lane(|i| parts[i].0.reach),
+        split: Split {
+            outer_rate: lane(|i| parts[i].0.split.outer_rate),
+            middle_rate: lane(|i| parts[i].0.split.middle_rate),
+            outer_cubic: lane(|i| parts[i].0.split.outer_cubic),
+            middle_cubic: lane(|i| parts[i].0.split.middle_cubic),
+            shift: lane(|i| parts[i].0.split.shift),
+            reach: lane(|i| parts[i].0.split.reach),
+        },
         frame: quaternion(|i| parts[i].0.frame),
         turned: G::pack_mask(core::array::from_fn(|i| parts[i].0.turned)),
+        order: [0, 1, 2],
     };
     let (q0, l0, t0) = (
         quaternion(|i| parts[i].1),
@@ -284,8 +292,8 @@ mod tests {
         assert!(alone
             .iter()
             .all(|b| [b.q.x, b.q.y, b.q.z, b.q.w].iter().all(|c| c.is_finite())));
-        // The three forms of the turns in one group: projective (small momenta), divided
-        // without clamps, and clamped; each lane must get the form one body alone gets.
+        // Both forms of the turns in one group: projective (small momenta) and divided
+        // (with its clamps); each lane must get the form one body alone gets.
         widths_against_one_body(crowd_of_size(&[1.0, 300.0, 1e5]), h32, 50);
         // f64, order 4, four lanes.
         let mut alone = crowd::<f64>(21);

@@ -1,13 +1,15 @@
 //! One `f32` body's quaternion in one SSE register, for the one-body step on x86-64.
 //!
-//! The one-body step is bound by its chain of five dependent turns, and by how many
+//! The one-body step is bound by its chain of three dependent turns, and by how many
 //! bodies' instructions the core can hold at once to overlap one body's chain with the
 //! next one's. Written in components, each turn's quaternion product is twelve scalar
 //! operations, and LLVM's SLP vectoriser packs them, with the turns' scalar chain, into
 //! vectors with shuffles (BENCHMARKS.md, issue 19). Here the quaternion is one register
 //! from the start, and a turn `q (c + s e_K)` is `q c + perm_K(q) (±s)`: one shuffle for
 //! the permutation, two broadcasts, a sign flip, two products and a sum. The angles,
-//! norms and body momentum stay scalar, as in `splitting.rs`.
+//! norms and body momentum stay scalar, as in `splitting.rs`. The turn about `L` is a
+//! left product `w q`: four products of broadcast, pre-signed `w` lanes (known from the
+//! step's start) with three shuffles of `q`.
 //!
 //! Every lane does the IEEE operations the component form does, on the same operands:
 //! `w c - x s` is `w c + (-x) s`, exactly (negation is exact, and `+` and `*` commute
@@ -92,6 +94,30 @@ impl Turning<f32> for Q4 {
     fn divided_by_norm(self, norm2: f32) -> Self {
         // SAFETY: SSE2 is part of x86-64.
         Q4(unsafe { _mm_div_ps(self.0, _mm_set1_ps(Real::sqrt(norm2))) })
+    }
+
+    #[inline(always)]
+    fn turned_by(self, w: Q<f32>) -> Self {
+        // `Q::mul(w, self)` lane by lane: each lane is `(w_w b0 + w_x b1) + (w_y b2 +
+        // w_z b3)` with the component form's pairs (a difference there is a sum of a
+        // negated product here, the same IEEE result). The `w` lanes are known early;
+        // only the three shuffles of `self` wait for the turns.
+        // SAFETY: SSE2 is part of x86-64.
+        unsafe {
+            let b = self.0;
+            let signed = |a: f32, signs: __m128| _mm_xor_ps(_mm_set1_ps(a), signs);
+            let aw = _mm_set1_ps(w.w);
+            let ax = signed(w.x, _mm_setr_ps(0.0, -0.0, 0.0, -0.0));
+            let ay = signed(w.y, _mm_setr_ps(0.0, 0.0, -0.0, -0.0));
+            let az = signed(w.z, _mm_setr_ps(-0.0, 0.0, 0.0, -0.0));
+            let b1 = _mm_shuffle_ps::<0b00_01_10_11>(b, b);
+            let b2 = _mm_shuffle_ps::<0b01_00_11_10>(b, b);
+            let b3 = _mm_shuffle_ps::<0b10_11_00_01>(b, b);
+            Q4(_mm_add_ps(
+                _mm_add_ps(_mm_mul_ps(aw, b), _mm_mul_ps(ax, b1)),
+                _mm_add_ps(_mm_mul_ps(ay, b2), _mm_mul_ps(az, b3)),
+            ))
+        }
     }
 
     #[inline(always)]
