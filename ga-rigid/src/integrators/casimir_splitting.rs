@@ -66,7 +66,7 @@ fn axes(moments: [f64; 3]) -> [usize; 3] {
 /// `2 atan2(a, 1 - a^2/3)`, `a = tau |m| / 2 i_r` (the rational angle of
 /// `splitting::cayley_turn`), not normalised; `m` does not change.
 #[inline(always)]
-fn casimir_turn(inverse_middle: f64, tau: f64, rotor: &mut Rotor, m: &[f64; 3]) {
+pub(super) fn casimir_turn(inverse_middle: f64, tau: f64, rotor: &mut Rotor, m: &[f64; 3]) {
     let mut k = 0.5 * tau * inverse_middle;
     let mut a2 = (k * k) * (m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
     // Beyond a = 64 the angle is saturated and a^2 could overflow (or be NaN).

@@ -11,8 +11,8 @@ use std::str::FromStr;
 use crate::error::{self, Error};
 
 use super::{
-    CasimirSplitting, ClosedForm, ComposedSplitting, DormandPrince, ExactFreeBody, ExactSplitting,
-    ImplicitMidpoint, Integrator, LieDop853, LieRk4, Rk4, Splitting,
+    CasimirSplitting, ClosedForm, ComposedSplitting, CorrectedSplitting, DormandPrince,
+    ExactFreeBody, ExactSplitting, ImplicitMidpoint, Integrator, LieDop853, LieRk4, Rk4, Splitting,
 };
 use crate::peers::{
     Buss, ExplicitGyroscopicEuler, ImplicitGyroscopicEuler, MoserVeselov, QuaternionMidpoint,
@@ -35,10 +35,12 @@ pub enum Method {
     Midpoint,
     /// Splitting into exact rotations (Dullweber-Leimkuhler-McLachlan).
     Splitting,
-    /// The same splitting with rational (Cayley) axis turns, as `engine`'s step.
+    /// The same splitting with rational (Cayley) axis turns.
     SplittingCayley,
     /// The free body split around its Casimir `|m|^2`, rational turns.
     SplittingCasimir,
+    /// The Casimir split with corrected turns, as `engine`'s step.
+    SplittingCorrected,
     /// Adaptive Dormand-Prince 5(4).
     Dopri,
     /// The exact flow of the free body through Jacobi elliptic functions.
@@ -156,7 +158,7 @@ const STEP_LIMIT_MOSER_VESELOV: f64 = 0.8;
 
 /// The registry: one row per method, in the order tables list them; ours first, then the
 /// peers (`peer` set).
-pub const METHODS: [MethodInfo; 25] = [
+pub const METHODS: [MethodInfo; 26] = [
     MethodInfo {
         method: Method::ClosedForm,
         name: "closed-form",
@@ -216,7 +218,7 @@ pub const METHODS: [MethodInfo; 25] = [
         name: "splitting-cayley",
         kind: StepKind::Fixed,
         ns_per_step: 150.0,
-        summary: "the same splitting with rational (Cayley) axis turns, no sine: engine's step",
+        summary: "the same splitting with rational (Cayley) axis turns, no sine",
         step_limit: StepLimit::Rate(3.0),
         peer: None,
     },
@@ -226,6 +228,16 @@ pub const METHODS: [MethodInfo; 25] = [
         kind: StepKind::Fixed,
         ns_per_step: 120.0,
         summary: "the free body split around its Casimir |m|^2, rational turns, order two",
+        step_limit: StepLimit::Rate(3.0),
+        peer: None,
+    },
+    MethodInfo {
+        method: Method::SplittingCorrected,
+        name: "splitting-corrected",
+        kind: StepKind::Fixed,
+        ns_per_step: 120.0,
+        summary:
+            "the Casimir split with turns corrected to cancel its one-axis h^2 error: engine's step",
         step_limit: StepLimit::Rate(3.0),
         peer: None,
     },
@@ -513,6 +525,9 @@ impl Method {
             Method::SplittingCasimir => {
                 Box::new(CasimirSplitting::new(fixed()?).map_err(|e| e.at("dt"))?)
             }
+            Method::SplittingCorrected => {
+                Box::new(CorrectedSplitting::new(fixed()?).map_err(|e| e.at("dt"))?)
+            }
             Method::Dopri => Box::new(
                 DormandPrince::new(tolerance()?, tolerance()? * DOPRI_ABSOLUTE_TOLERANCE_RATIO)
                     .map_err(|e| e.at("tol"))?,
@@ -616,7 +631,7 @@ mod tests {
 
     /// Every variant, listed by hand: the match below has no wildcard, so a new variant
     /// fails to compile here until it is listed, and then needs its row in `METHODS`.
-    const EVERY_VARIANT: [Method; 25] = [
+    const EVERY_VARIANT: [Method; 26] = [
         Method::ClosedForm,
         Method::Rk4,
         Method::LieRk4,
@@ -624,6 +639,7 @@ mod tests {
         Method::Splitting,
         Method::SplittingCayley,
         Method::SplittingCasimir,
+        Method::SplittingCorrected,
         Method::Dopri,
         Method::Exact,
         Method::ExactSplitting,
@@ -655,6 +671,7 @@ mod tests {
                 | Method::Splitting
                 | Method::SplittingCayley
                 | Method::SplittingCasimir
+                | Method::SplittingCorrected
                 | Method::Dopri
                 | Method::Exact
                 | Method::ExactSplitting

@@ -22,10 +22,11 @@
 //! depend on `Omega`.
 //!
 //! [`Splitting::cayley`] ("splitting-cayley") is the same composition with each axis
-//! turn written without sine and cosine, as `ga_rigid::engine`'s step is: the turn by
+//! turn written without sine and cosine, as `ga_rigid::engine`'s turns are: the turn by
 //! `2 atan2(a, 1 - a^2/3)` for the half-angle `a`, whose rotor is `(1 - a^2/3) - a I e_k`
-//! up to scale and whose matrix is the Cayley transform (`engine/splitting.rs` derives
-//! it). The half-angle is off by `a^5/45`, O(h^5) per turn, below the splitting's
+//! up to scale and whose matrix is the Cayley transform (docs/references.md derives
+//! it; the engine's step is `splitting-corrected`, three such turns with corrected
+//! angles). The half-angle is off by `a^5/45`, O(h^5) per turn, below the splitting's
 //! O(h^3), and each turn is still the exact flow of a Hamiltonian of `m_k`, so the method
 //! keeps order two, symplecticity, `|m|` to rounding and a bounded energy error, at one
 //! division per turn instead of two sine-cosine pairs.
@@ -207,7 +208,7 @@ pub(super) fn cayley_turn(
 /// `rotor (p - a I e_k)`, the one-plane product written out: 8 products where the full
 /// rotor product takes 16 (`I e1 = e23`, `I e2 = -e13`, `I e3 = e12`).
 #[inline(always)]
-fn turned_about_axis(r: Rotor, k: usize, p: f64, a: f64) -> Rotor {
+pub(super) fn turned_about_axis(r: Rotor, k: usize, p: f64, a: f64) -> Rotor {
     let (s, x12, x13, x23) = (r.s, r.e12, r.e13, r.e23);
     match k {
         0 => {

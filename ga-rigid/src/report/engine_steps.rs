@@ -22,7 +22,7 @@ pub const ENGINE_RATES: [f64; 4] = [0.05, 0.1, 0.2, 0.5];
 /// Steps of each run in a full report (a quick one takes a twentieth).
 pub const ENGINE_STEPS: u64 = 100_000;
 /// The methods compared: the engines' steps (peers) and ours.
-pub const ENGINE_METHODS: [Method; 12] = [
+pub const ENGINE_METHODS: [Method; 13] = [
     Method::EulerGyroExplicit,
     Method::EulerGyroImplicit,
     Method::Buss2,
@@ -31,6 +31,7 @@ pub const ENGINE_METHODS: [Method; 12] = [
     Method::Splitting,
     Method::SplittingCayley,
     Method::SplittingCasimir,
+    Method::SplittingCorrected,
     Method::Splitting4,
     Method::Midpoint,
     Method::LieRk4,
