@@ -156,6 +156,8 @@ pub(crate) trait Turning<R: Real>: Copy {
     fn turned_about<const K: usize>(self, c: R, s: R) -> Self;
     /// `w self`, as [`Q::mul`].
     fn turned_by(self, w: Q<R>) -> Self;
+    /// `self b`, as [`Q::mul`].
+    fn times(self, b: Q<R>) -> Self;
     /// As [`Q::normalized_by`].
     fn normalized_by(self, norm2: R, reference: Self) -> Self;
     /// As [`Q::divided_by_norm`].
@@ -184,6 +186,10 @@ impl<R: Real> Turning<R> for Q<R> {
     #[inline(always)]
     fn turned_by(self, w: Q<R>) -> Self {
         w.mul(self)
+    }
+    #[inline(always)]
+    fn times(self, b: Q<R>) -> Self {
+        self.mul(b)
     }
     #[inline(always)]
     fn normalized_by(self, norm2: R, reference: Self) -> Self {
@@ -401,10 +407,23 @@ pub(crate) fn step2_in<R: Real, T: Turning<R>>(
 ) -> (Q<R>, V<R>) {
     let half = h * R::splat(0.5);
     let l = l.add_scaled(half, t);
-    let q_p = inertia.principal_orientation(q);
-    let q_p = free_flow_normalized(inertia, T::pack(q_p), l, h).unpack();
+    // The frame's products in the form the turns build up (one register for one f32
+    // body), as `Inertia::principal_orientation` and `body_orientation` do them.
+    let turned = inertia.turned;
+    let q = T::pack(q);
+    let q_p = if R::any(turned) {
+        T::select(turned, q.times(inertia.frame), q)
+    } else {
+        q
+    };
+    let q_p = free_flow_normalized(inertia, q_p, l, h);
+    let q = if R::any(turned) {
+        T::select(turned, q_p.times(inertia.frame.conj()), q_p)
+    } else {
+        q_p
+    };
     let l = l.add_scaled(half, t);
-    (inertia.body_orientation(q_p), l)
+    (q.unpack(), l)
 }
 
 /// [`step2`] for one `f32` body: its quaternion in one SSE register on x86-64 (`sse.rs`,

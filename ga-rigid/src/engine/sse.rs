@@ -91,6 +91,41 @@ impl Turning<f32> for Q4 {
     }
 
     #[inline(always)]
+    fn times(self, b: Q<f32>) -> Self {
+        // `Q::mul(self, b)` lane by lane: `(a_w B_w + a_x B_x) + (a_y B_y + a_z B_z)`
+        // with `a`'s components broadcast (the only operations on the chain are the four
+        // shuffles) and `B_k` the lanes of `b` each takes, signed, known beforehand.
+        // SAFETY: SSE2 is part of x86-64.
+        unsafe {
+            let a = self.0;
+            let b4 = _mm_setr_ps(b.x, b.y, b.z, b.w);
+            let signed = |lanes: __m128, signs: __m128| _mm_xor_ps(lanes, signs);
+            // B_x = (b_w, -b_z, b_y, -b_x), B_y = (b_z, b_w, -b_x, -b_y),
+            // B_z = (-b_y, b_x, b_w, -b_z).
+            let bx = signed(
+                _mm_shuffle_ps::<0b00_01_10_11>(b4, b4),
+                _mm_setr_ps(0.0, -0.0, 0.0, -0.0),
+            );
+            let by = signed(
+                _mm_shuffle_ps::<0b01_00_11_10>(b4, b4),
+                _mm_setr_ps(0.0, 0.0, -0.0, -0.0),
+            );
+            let bz = signed(
+                _mm_shuffle_ps::<0b10_11_00_01>(b4, b4),
+                _mm_setr_ps(-0.0, 0.0, 0.0, -0.0),
+            );
+            let aw = _mm_shuffle_ps::<0b11_11_11_11>(a, a);
+            let ax = _mm_shuffle_ps::<0b00_00_00_00>(a, a);
+            let ay = _mm_shuffle_ps::<0b01_01_01_01>(a, a);
+            let az = _mm_shuffle_ps::<0b10_10_10_10>(a, a);
+            Q4(_mm_add_ps(
+                _mm_add_ps(_mm_mul_ps(aw, b4), _mm_mul_ps(ax, bx)),
+                _mm_add_ps(_mm_mul_ps(ay, by), _mm_mul_ps(az, bz)),
+            ))
+        }
+    }
+
+    #[inline(always)]
     fn divided_by_norm(self, norm2: f32) -> Self {
         // SAFETY: SSE2 is part of x86-64.
         Q4(unsafe { _mm_div_ps(self.0, _mm_set1_ps(Real::sqrt(norm2))) })
