@@ -407,8 +407,27 @@ pub(crate) fn step2_in<R: Real, T: Turning<R>>(
 ) -> (Q<R>, V<R>) {
     let half = h * R::splat(0.5);
     let l = l.add_scaled(half, t);
-    // The frame's products in the form the turns build up (one register for one f32
-    // body), as `Inertia::principal_orientation` and `body_orientation` do them.
+    let q_p = inertia.principal_orientation(q);
+    let q_p = free_flow_normalized(inertia, T::pack(q_p), l, h).unpack();
+    let l = l.add_scaled(half, t);
+    (inertia.body_orientation(q_p), l)
+}
+
+/// [`step2_in`] with the frame's products also in the form `T` (one register for one f32
+/// body), as `Inertia::principal_orientation` and `body_orientation` do them: the same
+/// bits. Kept apart from [`step2_in`], which the lane forms run: written this way there,
+/// the slice form over 2^20 bodies measured 11% slower.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn step2_in_framed<R: Real, T: Turning<R>>(
+    inertia: &Inertia<R>,
+    q: Q<R>,
+    l: V<R>,
+    t: V<R>,
+    h: R,
+) -> (Q<R>, V<R>) {
+    let half = h * R::splat(0.5);
+    let l = l.add_scaled(half, t);
     let turned = inertia.turned;
     let q = T::pack(q);
     let q_p = if R::any(turned) {
@@ -438,7 +457,7 @@ pub(crate) fn step2_f32(
 ) -> (Q<f32>, V<f32>) {
     #[cfg(target_arch = "x86_64")]
     {
-        step2_in::<f32, super::sse::Q4>(inertia, q, l, t, h)
+        step2_in_framed::<f32, super::sse::Q4>(inertia, q, l, t, h)
     }
     #[cfg(not(target_arch = "x86_64"))]
     {

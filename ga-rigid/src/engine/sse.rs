@@ -285,6 +285,13 @@ mod tests {
                 bits(expected.0, expected.1),
                 "case {case}"
             );
+            // What `step2_f32` runs: the frame's products in the register too.
+            let got = super::super::splitting::step2_f32(&inertia, q, l, t, h);
+            assert_eq!(
+                bits(got.0, got.1),
+                bits(expected.0, expected.1),
+                "case {case}"
+            );
             compared += 1;
         }
         assert!(compared > 15_000);
