@@ -468,8 +468,8 @@ pub(crate) fn step2_f32(
 /// One second-order step of `h` under a torque that depends on the orientation:
 /// `kick(h/2, T(q_n)) free(h) kick(h/2, T(q_n+1))`, Strang's splitting with the torque
 /// read at both ends. For a torque from a potential (gravity on a top) the energy then
-/// does not drift (3.6e-6 at most over an hour of a heavy top at 60 Hz in f32); holding `T(q_n)`
-/// over the whole step lets it drift (30%).
+/// does not drift (3.6e-6 at most over an hour of a heavy top at 60 Hz in f32); holding
+/// `T(q_n)` over the whole step lets it drift (30%).
 #[inline(always)]
 pub(crate) fn step2_with<R: Real>(
     inertia: &Inertia<R>,
