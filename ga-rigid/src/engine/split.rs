@@ -20,7 +20,7 @@ pub(crate) const MAX_HALF_ANGLE: f64 = 64.0;
 
 /// The largest `|lambda| b^2` a turn takes in the divided form, so that each turn's
 /// squared norm stays below about `2e6` and the three turns' product far from overflow.
-pub(crate) const MAX_CUBIC_TERM: f64 = 1365.0;
+const MAX_CUBIC_TERM: f64 = 1365.0;
 
 /// The per-body constants of the free flow for the principal axes in the split's order:
 /// outer `x`, middle `y`, reference `z` (the turn about `L` takes its rate from the

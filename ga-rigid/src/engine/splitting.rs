@@ -295,13 +295,13 @@ fn free_flow<R: Real, T: Turning<R>, const CLAMP: bool>(
 /// The turn about the world momentum `l` by the Casimir's flow, `(1 - w^2/3) + k l` for
 /// `k = rates.casimir`, `w^2 = k^2 |L|^2`, and its squared norm. `w` is limited to 64
 /// (its angle is saturated there) where `w^2` is not below `64^2` (or is NaN), with `l`'s
-/// direction from `|L|`; inside, `limited` is false and the plain form is taken.
+/// direction from `|L|`, when `LIMIT`; without it (the projective range) the plain form.
 #[inline(always)]
-fn casimir_turn<R: Real>(rates: &Rates<R>, l: V<R>, l2: R, limited: bool) -> (Q<R>, R) {
+fn casimir_turn<R: Real, const LIMIT: bool>(rates: &Rates<R>, l: V<R>, l2: R) -> (Q<R>, R) {
     let k = rates.casimir;
     let w2 = (k * k) * l2;
     let third = R::splat(1.0 / 3.0);
-    if !limited {
+    if !LIMIT {
         let p = R::splat(1.0) - w2 * third;
         let w = Q {
             x: k * l.x,
@@ -363,16 +363,16 @@ pub(crate) fn free_flow_normalized<R: Real, T: Turning<R>>(
     let rates = Rates::new::<false>(inertia, h, hh_l2);
     if R::all(projective) {
         let (q, norm2) = projective::free_flow::<R, T>(&rates, start, q_p2, body);
-        let (w, w2) = casimir_turn(&rates, l, l2, false);
+        let (w, w2) = casimir_turn::<R, false>(&rates, l, l2);
         return q.turned_by(w).divided_by_norm(norm2 * w2);
     }
     let limited = Rates::new::<true>(inertia, h, hh_l2);
     let (q, norm) = free_flow::<R, T, true>(inertia, &limited, start, body);
-    let (w, w2) = casimir_turn(&limited, l, l2, true);
+    let (w, w2) = casimir_turn::<R, true>(&limited, l, l2);
     let divided = q.turned_by(w).normalized_by((q_p2 * norm) * w2, start);
     if R::any(projective) {
         let (q, norm2) = projective::free_flow::<R, T>(&rates, start, q_p2, body);
-        let (w, w2) = casimir_turn(&rates, l, l2, false);
+        let (w, w2) = casimir_turn::<R, false>(&rates, l, l2);
         T::select(
             projective,
             q.turned_by(w).divided_by_norm(norm2 * w2),
@@ -609,7 +609,7 @@ mod tests {
         let rates = Rates::new::<false>(inertia, h, h * h * l2);
         let (turned, norm2) =
             projective::free_flow::<f64, Q<f64>>(&rates, q, q.dot(q), q.rotate_inv(l));
-        let (w, w2) = casimir_turn(&rates, l, l2, false);
+        let (w, w2) = casimir_turn::<f64, false>(&rates, l, l2);
         turned.turned_by(w).normalized_by(norm2 * w2, q)
     }
 
@@ -669,7 +669,7 @@ mod tests {
             let l2 = l.dot(l);
             let rates = Rates::new::<true>(inertia, h, h * h * l2);
             let (turned, norm) = free_flow::<R, Q<R>, true>(inertia, &rates, q, q.rotate_inv(l));
-            let (w, w2) = casimir_turn(&rates, l, l2, true);
+            let (w, w2) = casimir_turn::<R, true>(&rates, l, l2);
             turned.turned_by(w).normalized_by((q.dot(q) * norm) * w2, q)
         }
         fn projective<R: Real>(inertia: &Inertia<R>, q: Q<R>, l: V<R>, h: R) -> Q<R> {
@@ -677,7 +677,7 @@ mod tests {
             let rates = Rates::new::<false>(inertia, h, h * h * l2);
             let (turned, norm2) =
                 projective::free_flow::<R, Q<R>>(&rates, q, q.dot(q), q.rotate_inv(l));
-            let (w, w2) = casimir_turn(&rates, l, l2, false);
+            let (w, w2) = casimir_turn::<R, false>(&rates, l, l2);
             turned.turned_by(w).normalized_by(norm2 * w2, q)
         }
         let gap = |a: [f64; 4], b: [f64; 4]| (0..4).fold(0.0f64, |m, k| m.max((a[k] - b[k]).abs()));
