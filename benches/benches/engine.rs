@@ -1,4 +1,4 @@
-//! `ga_rigid::engine` against the step engines use today (issue 19), f32, 60 Hz:
+//! `ga_engine` against the step engines use today (issue 19), f32, 60 Hz:
 //!
 //! - `engine/f32/one_body`: 1024 different bodies, each stepped once by a one-body call
 //!   (`step`, `step_order4`, the module's own baselines) against the explicit gyroscopic
@@ -16,8 +16,8 @@ mod common;
 
 use common::config;
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
-use ga_core::glam::{Quat, Vec3};
-use ga_rigid::engine::f32::{
+use ga_engine::glam::{Quat, Vec3};
+use ga_engine::f32::{
     explicit_gyroscopic_euler, implicit_gyroscopic_euler, par_step_slice, step, step_order4,
     step_slice, Body, BodyState,
 };

@@ -1,12 +1,12 @@
 //! A `#![no_std]` crate of the kind an engine is: its own glam (without `std`) and
-//! ga-rigid without default features, stepping rigid bodies in `f32` and `f64`. If
-//! anything in `ga_rigid::engine` reached for the standard library this crate would not
+//! ga-engine without default features, stepping rigid bodies in `f32` and `f64`. If
+//! anything in `ga_engine` reached for the standard library this crate would not
 //! build (`cargo build -p ga-engine-user`); its tests (`cargo test -p ga-engine-user`)
 //! check what it computes.
 #![no_std]
 #![deny(missing_docs)]
 
-use ga_rigid::engine::{f32 as e32, f64 as e64, BodyError};
+use ga_engine::{f32 as e32, f64 as e64, BodyError};
 use glam::{DMat3, DQuat, DVec3, Mat3, Quat, Vec3};
 
 /// A box-shaped body (moments of a 1 x 2 x 3 box of unit mass), tilted in its own frame so

@@ -1,6 +1,6 @@
 //! One hour of game time at 60 Hz in f32 (216,000 steps) of a T-handle (Dzhanibekov
 //! body, moments 1 : 2 : 3, spun about the intermediate axis) and of a heavy spinning
-//! top, by `ga_rigid::engine`'s steps against the engines' gyroscopic Euler steps.
+//! top, by `ga_engine`'s steps against the engines' gyroscopic Euler steps.
 //!
 //! Prints, per method: the relative drift of |L| and of the energy at the end and their
 //! largest excursion, and for the T-handle the flip period (mean time between successive
@@ -8,10 +8,10 @@
 //! intermediate axis) against the exact flow's (`free_body_orbit`, elliptic functions in
 //! f64). Run: `cargo run --release -p ga-rigid --example engine_t_handle`.
 
-use ga_core::glam::{Quat, Vec3};
-use ga_rigid::engine::f32::{
+use ga_engine::f32::{
     explicit_gyroscopic_euler, implicit_gyroscopic_euler, step, step_order4, step_with, Body,
 };
+use ga_engine::glam::{Quat, Vec3};
 use ga_rigid::exact_flow::free_body_orbit;
 
 /// 60 Hz.

@@ -1,16 +1,16 @@
 //! The public, glam-typed face of the engine, written once and stamped out for each
 //! enabled glam version and both precisions.
 
-/// The items of one precision on one glam: `$glam` is ga-core's re-export of that glam,
+/// The items of one precision on one glam: `$glam` is that glam (the dependency renamed `glam_0_NN`),
 /// `$t` the float, `$step2` the one-body second-order step for it, `$slice_all` the slice
 /// form's stepper.
 macro_rules! precision_api {
     ($glam:ident, $t:ident, $quat:ident, $vec3:ident, $mat3:ident, $step2:path, $slice_all:path) => {
-        use crate::engine::error::BodyError;
-        use crate::engine::inertia::Inertia;
-        use crate::engine::rotation::{Q, V};
-        use crate::engine::slice::{self, Order, Parts};
-        use ::ga_core::$glam::{$mat3, $quat, $vec3};
+        use crate::error::BodyError;
+        use crate::inertia::Inertia;
+        use crate::rotation::{Q, V};
+        use crate::slice::{self, Order, Parts};
+        use ::$glam::{$mat3, $quat, $vec3};
 
         #[inline(always)]
         fn q_in(q: $quat) -> Q<$t> {
@@ -148,7 +148,7 @@ macro_rules! precision_api {
             dt: $t,
             mut torque: impl FnMut($quat) -> $vec3,
         ) -> ($quat, $vec3) {
-            let (q, l) = crate::engine::splitting::step2_with(
+            let (q, l) = crate::splitting::step2_with(
                 &body.inertia,
                 q_in(orientation),
                 v_in(momentum),
@@ -169,7 +169,7 @@ macro_rules! precision_api {
             torque: $vec3,
             dt: $t,
         ) -> ($quat, $vec3) {
-            let (q, l) = crate::engine::splitting::step4(
+            let (q, l) = crate::splitting::step4(
                 &body.inertia,
                 q_in(orientation),
                 v_in(momentum),
@@ -190,7 +190,7 @@ macro_rules! precision_api {
             torque: $vec3,
             dt: $t,
         ) -> ($quat, $vec3) {
-            let (q, w) = crate::engine::euler::explicit(
+            let (q, w) = crate::euler::explicit(
                 &body.inertia,
                 q_in(orientation),
                 v_in(velocity),
@@ -211,7 +211,7 @@ macro_rules! precision_api {
             torque: $vec3,
             dt: $t,
         ) -> ($quat, $vec3) {
-            let (q, w) = crate::engine::euler::implicit(
+            let (q, w) = crate::euler::implicit(
                 &body.inertia,
                 q_in(orientation),
                 v_in(velocity),
@@ -306,13 +306,13 @@ macro_rules! precision_api {
         /// depend on the number of threads.
         #[cfg(feature = "rayon")]
         pub fn par_step_slice(states: &mut [BodyState], dt: $t) {
-            crate::engine::parallel::for_chunks(states, |chunk| step_slice(chunk, dt));
+            crate::parallel::for_chunks(states, |chunk| step_slice(chunk, dt));
         }
 
         /// [`step_slice_order4`] on rayon's current pool, likewise.
         #[cfg(feature = "rayon")]
         pub fn par_step_slice_order4(states: &mut [BodyState], dt: $t) {
-            crate::engine::parallel::for_chunks(states, |chunk| step_slice_order4(chunk, dt));
+            crate::parallel::for_chunks(states, |chunk| step_slice_order4(chunk, dt));
         }
     };
 }
@@ -331,7 +331,7 @@ macro_rules! engine_api {
                 Quat,
                 Vec3,
                 Mat3,
-                crate::engine::splitting::step2_f32,
+                crate::splitting::step2_f32,
                 slice::step_all_f32
             );
         }
@@ -343,7 +343,7 @@ macro_rules! engine_api {
                 DQuat,
                 DVec3,
                 DMat3,
-                crate::engine::splitting::step2,
+                crate::splitting::step2,
                 slice::step_all_f64
             );
         }

@@ -212,7 +212,7 @@ unsafe fn cross(a: __m128, b: __m128) -> __m128 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::engine::inertia::Inertia;
+    use crate::inertia::Inertia;
 
     /// A seeded stream of floats in [-1, 1).
     fn stream(mut seed: u64) -> impl FnMut() -> f32 {

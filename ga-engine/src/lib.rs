@@ -2,8 +2,8 @@
 //! `f32` or `f64`, no allocation, no `std`, the same bits on every machine.
 //!
 //! ```
-//! use ga_rigid::engine::f32::{step, Body};
-//! use ga_core::glam::{Mat3, Quat, Vec3};
+//! use ga_engine::f32::{step, Body};
+//! use ga_engine::glam::{Mat3, Quat, Vec3};
 //!
 //! // A T-handle's tensor in its own frame; any symmetric tensor will do.
 //! let body = Body::from_tensor(Mat3::from_diagonal(Vec3::new(1.0, 2.0, 3.0))).unwrap();
@@ -53,6 +53,8 @@
 //! finite input gives finite output unless the numbers overflow (a momentum near
 //! `f32::MAX`), and an orientation must be non-zero (it is normalised every step).
 
+#![cfg_attr(not(feature = "std"), no_std)]
+
 #[macro_use]
 mod api;
 #[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
@@ -99,4 +101,9 @@ pub mod glam_0_32 {
 }
 
 #[cfg(feature = "glam-0-32")]
-pub use glam_0_32::{f32, f64};
+pub use self::glam_0_32::{f32, f64};
+
+/// glam 0.32, the glam of [`f32`](mod@f32) and [`f64`](mod@f64): name its `Quat`, `Vec3` and
+/// `Mat3` through it to be sure they are the engine's.
+#[cfg(feature = "glam-0-32")]
+pub use ::glam_0_32 as glam;
