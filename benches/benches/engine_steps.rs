@@ -13,8 +13,8 @@ use std::time::{Duration, Instant};
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
 use ga_core::f64::g3::Rotor;
 use ga_rigid::dynamics::{omega_from_vector, RigidBody, State};
-use ga_rigid::integrators::{Method, Step};
-use ga_rigid::report::ENGINE_METHODS;
+use ga_rigid::registry::{Method, Step};
+use ga_rigid_cli::report::ENGINE_METHODS;
 
 /// Steps per timed run.
 const STEPS: usize = 1000;

@@ -17,8 +17,9 @@ use std::time::{Duration, Instant};
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use ga_rigid::dynamics::State;
-use ga_rigid::integrators::{Integrator, Method, Step, StepKind};
-use ga_rigid::report::{attitude_error, reference_scenes, references, TestScene};
+use ga_rigid::integrators::Integrator;
+use ga_rigid::registry::{Method, Step, StepKind};
+use ga_rigid_cli::report::{attitude_error, reference_scenes, references, TestScene};
 
 /// The attitude error every method must reach at the end time.
 const TARGET: f64 = 1e-10;

@@ -35,11 +35,8 @@ use ga_rigid::dynamics::{
     omega_to_vector, RigidBody, State, SymmetricTop, DEFAULT_SYMMETRY_TOLERANCE,
 };
 use ga_rigid::error::Error;
-use ga_rigid::integrators::{
-    ComposedSplitting, DormandPrince, ExactFreeBody, ExactSplitting, ImplicitMidpoint, Integrator,
-    LieDop853, LieRk4, Rk4, Splitting,
-};
-use ga_rigid::report::attitude_error;
+use ga_rigid::integrators::{ComposedSplitting, DormandPrince, ExactFreeBody, ExactSplitting, ImplicitMidpoint, Integrator, LieDop853, LieRk4, Rk4, Splitting};
+use ga_rigid_cli::report::attitude_error;
 use rayon::prelude::*;
 
 /// The step of the single-step benches: h |w| is about 0.03 on both bodies.

@@ -312,7 +312,7 @@ pub fn rotation_matrix(rotor: Rotor) -> [f64; 9] {
 
 /// The attitude error of a matrix `M` against the rotation of `reference`:
 /// `|M - M_ref|_F / sqrt 2`. For a rotation by `theta` away from the reference this is
-/// `2 sin(theta / 2)`, the rotor angle of [`ga_rigid::report::attitude_error`] to third
+/// `2 sin(theta / 2)`, the rotor angle of [`ga_rigid_cli::report::attitude_error`] to third
 /// order; unlike the angle it also counts how far `M` has drifted from orthogonal, which a
 /// general ODE solver does not preserve.
 #[must_use]
@@ -375,7 +375,7 @@ pub fn loosest_tolerance<E>(
 mod tests {
     use super::*;
     use ga_rigid::integrators::{ExactFreeBody, Integrator};
-    use ga_rigid::report::attitude_error;
+    use ga_rigid_cli::report::attitude_error;
 
     fn published_hlw_rotor() -> Rotor {
         let [s, e12, e13, e23] = HLW_ROTOR_AT_10;

@@ -8,7 +8,8 @@
 
 use std::path::PathBuf;
 
-/// Everything that can go wrong in `ga-rigid`, from a bad scene file to a failed write.
+/// Everything that can go wrong in `ga-rigid`, from a bad scene file to a run beyond its
+/// limits.
 #[derive(Debug, thiserror::Error)]
 pub enum Error {
     /// A number is NaN or infinite.
@@ -138,17 +139,6 @@ pub enum Error {
         source: std::io::Error,
     },
 
-    /// An output file or stream that could not be written.
-    #[error("{field}: cannot write {}: {source}", echo_path(path))]
-    Write {
-        /// The argument that named the output.
-        field: String,
-        /// The file (`-` for standard output).
-        path: PathBuf,
-        /// The operating system's reason.
-        source: std::io::Error,
-    },
-
     /// A feature whose implementation has not landed yet.
     #[error("{what}: not available yet")]
     NotAvailable {
@@ -200,6 +190,32 @@ impl Error {
         self
     }
 
+    /// The error in a front end's words: each whole word of the field and the message
+    /// that is a library parameter in `names` (`dt`, `max_steps`) becomes the front end's
+    /// name for it (`--dt`, `--max-steps`), so that a command renames once, at its edge.
+    /// Only the errors of numbers and rules are renamed; those that repeat user text (a
+    /// path, a file's line) are returned as they are.
+    #[must_use]
+    pub fn renamed(self, names: &[(&str, &str)]) -> Self {
+        match &self {
+            Error::NotFinite { field, .. }
+            | Error::NotPositive { field, .. }
+            | Error::OutOfRange { field, .. }
+            | Error::Invalid { field, .. } => {
+                let message = self.to_string();
+                let rule = message
+                    .strip_prefix(field.as_str())
+                    .and_then(|m| m.strip_prefix(": "))
+                    .unwrap_or(&message);
+                Error::Invalid {
+                    field: rename_words(field, names),
+                    rule: rename_words(rule, names),
+                }
+            }
+            _ => self,
+        }
+    }
+
     /// The field or parameter the error names, if it names one.
     pub fn field(&self) -> Option<&str> {
         match self {
@@ -212,8 +228,7 @@ impl Error {
             | Error::Invalid { field, .. }
             | Error::OpenMesh { field, .. }
             | Error::Obj { field, .. }
-            | Error::Read { field, .. }
-            | Error::Write { field, .. } => Some(field),
+            | Error::Read { field, .. } => Some(field),
             Error::Toml { .. } | Error::NotAvailable { .. } => None,
         }
     }
@@ -229,11 +244,32 @@ impl Error {
             | Error::Invalid { field, .. }
             | Error::OpenMesh { field, .. }
             | Error::Obj { field, .. }
-            | Error::Read { field, .. }
-            | Error::Write { field, .. } => Some(field),
+            | Error::Read { field, .. } => Some(field),
             Error::Toml { .. } | Error::NotAvailable { .. } => None,
         }
     }
+}
+
+/// `text` with each whole word (a run of letters, digits and `_`) found in the first
+/// column of `names` replaced by the second.
+fn rename_words(text: &str, names: &[(&str, &str)]) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut word = String::new();
+    let flush = |word: &mut String, out: &mut String| {
+        let renamed = names.iter().find(|(from, _)| *from == word.as_str());
+        out.push_str(renamed.map_or(word.as_str(), |(_, to)| to));
+        word.clear();
+    };
+    for c in text.chars() {
+        if c.is_ascii_alphanumeric() || c == '_' {
+            word.push(c);
+        } else {
+            flush(&mut word, &mut out);
+            out.push(c);
+        }
+    }
+    flush(&mut word, &mut out);
+    out
 }
 
 /// A number for a message: plain where that is short (`0.25`, `-3`, `1500`), scientific
@@ -285,7 +321,7 @@ pub fn echo_path(path: &std::path::Path) -> String {
 }
 
 /// Check that a number is finite.
-pub(crate) fn finite(field: &str, what: &'static str, value: f64) -> Result<f64, Error> {
+pub fn finite(field: &str, what: &'static str, value: f64) -> Result<f64, Error> {
     if value.is_finite() {
         Ok(value)
     } else {
@@ -300,7 +336,7 @@ pub(crate) fn finite(field: &str, what: &'static str, value: f64) -> Result<f64,
 /// Check that a number is finite and strictly positive, and not subnormal: a subnormal
 /// mass, moment, density or step has lost its precision already and turns into zero or
 /// infinity in the first product or quotient.
-pub(crate) fn positive(field: &str, what: &'static str, value: f64) -> Result<f64, Error> {
+pub fn positive(field: &str, what: &'static str, value: f64) -> Result<f64, Error> {
     finite(field, what, value)?;
     if value <= 0.0 {
         return Err(Error::NotPositive {
@@ -332,6 +368,25 @@ pub(crate) fn finite3(field: &str, what: &'static str, v: [f64; 3]) -> Result<[f
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn renamed_replaces_whole_words_in_field_and_message_only() {
+        let names = [("dt", "--dt"), ("max_steps", "--max-steps")];
+        let e = Error::invalid("dt", "a dt of 1 is too big for dtx; raise max_steps")
+            .renamed(&names);
+        assert_eq!(
+            e.to_string(),
+            "--dt: a --dt of 1 is too big for dtx; raise --max-steps"
+        );
+        let e = positive("dt", "the step", -1.0).unwrap_err().renamed(&names);
+        assert_eq!(e.to_string(), "--dt: the step must be positive, got -1");
+        let read = Error::Read {
+            field: "dt".into(),
+            path: "dt/max_steps".into(),
+            source: std::io::Error::other("x"),
+        };
+        assert!(read.renamed(&names).to_string().contains("dt/max_steps"));
+    }
 
     #[test]
     fn within_prefixes_plain_and_indexed_fields() {

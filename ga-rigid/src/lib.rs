@@ -5,8 +5,6 @@
 /// types `inertia` takes and returns.
 pub use ga_core::glam;
 
-#[cfg(feature = "cli")]
-pub mod cli;
 pub mod csv;
 pub mod dynamics;
 pub mod error;
@@ -16,9 +14,10 @@ pub mod gradients;
 pub mod inertia;
 mod input;
 pub mod integrators;
+pub mod limits;
 pub mod peers;
-#[cfg(feature = "cli")]
-pub mod report;
+pub mod registry;
+pub mod run;
 pub mod scene;
 pub mod simulation;
 pub mod special;

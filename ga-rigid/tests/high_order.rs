@@ -373,7 +373,8 @@ fn names_and_bad_orders() {
 /// scene: the rows agree with RK4 at a fine step.
 #[test]
 fn new_methods_run_through_simulate() {
-    use ga_rigid::cli::{run_simulation, Method, Step};
+    use ga_rigid::registry::{Method, Step};
+    use ga_rigid::run::run_simulation;
     use ga_rigid::scene::Scene;
     use std::path::Path;
     let text = "[body]\nmoments = [2.0, 1.5, 1.0]\n[initial]\nrotor = [0.9, 0.1, -0.3, 0.2]\n\

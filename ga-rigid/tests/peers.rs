@@ -8,7 +8,8 @@ mod support;
 
 use ga_core::f64::g3::*;
 use ga_rigid::dynamics::{RigidBody, State};
-use ga_rigid::integrators::{ExactFreeBody, Integrator, Method, Step};
+use ga_rigid::integrators::{ExactFreeBody, Integrator};
+use ga_rigid::registry::{Method, Step};
 use support::*;
 
 fn run(method: Method, step: Step, body: &RigidBody, state: State, t_end: f64) -> State {

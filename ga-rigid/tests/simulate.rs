@@ -3,7 +3,8 @@
 
 use std::path::Path;
 
-use ga_rigid::cli::{run_simulation, Method, Step};
+use ga_rigid::registry::{Method, Step};
+use ga_rigid::run::run_simulation;
 use ga_rigid::scene::Scene;
 
 fn scene(text: &str) -> Scene {

@@ -5,7 +5,7 @@
 
 use ga_core::f64::g3::*;
 use ga_rigid::dynamics::{omega_from_vector, omega_to_vector, Gravity, RigidBody, State};
-use ga_rigid::integrators::{Method, Step, StepKind};
+use ga_rigid::registry::{Method, Step, StepKind};
 
 /// The bodies the limits were measured on, each with its start.
 fn bodies() -> Vec<(&'static str, RigidBody, State)> {

@@ -12,7 +12,6 @@ mod exact_splitting;
 mod integrator;
 mod lie_dop853;
 mod lie_rk4;
-mod method;
 mod midpoint;
 mod rk4;
 mod splitting;
@@ -32,9 +31,6 @@ pub use integrator::Integrator;
 pub(crate) use integrator::{check_step, fixed_steps};
 pub use lie_dop853::{DenseStep, LieDop853, LieDop853Stats};
 pub use lie_rk4::LieRk4;
-pub use method::{
-    Method, MethodInfo, Step, StepKind, StepLimit, DOPRI_ABSOLUTE_TOLERANCE_RATIO, METHODS,
-};
 pub use midpoint::ImplicitMidpoint;
 pub use rk4::Rk4;
 pub use splitting::Splitting;

@@ -1,7 +1,7 @@
 //! The methods people use today, run through the same registry and harness as ours so that
 //! the report can answer "is this better than what I use now?". Each is written from its
 //! paper or its engine's documented update, cited in its file, and marked as a peer in
-//! the registry ([`crate::integrators::MethodInfo::peer`]).
+//! the registry ([`crate::registry::MethodInfo::peer`]).
 //!
 //! - `dop853-quaternion`, `dopri5-quaternion`: ode_solvers' Dormand-Prince 8(5,3) and 5(4)
 //!   on the seven-unknown form a physicist writes (body momentum and a unit quaternion),

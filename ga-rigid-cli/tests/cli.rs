@@ -1540,7 +1540,7 @@ fn simulate_plot_into_a_missing_directory_is_rejected() {
 
 #[test]
 fn every_registry_name_is_a_method_on_the_command_line() {
-    use ga_rigid::integrators::{Method, StepKind};
+    use ga_rigid::registry::{Method, StepKind};
     let dir = test_dir("registry_names");
     // A symmetric body, so that the closed form applies too.
     write(
@@ -2221,7 +2221,7 @@ fn steps_past_the_stability_limit_are_refused() {
         &top,
         &["--method", "lie-rk4", "--dt", "0.45"],
         "--dt: ",
-        "take dt <= 0.399 or pass --allow-unstable",
+        "take --dt <= 0.399 or pass --allow-unstable",
     );
     let dir = test_dir("allow_unstable");
     write(&dir, "scene.toml", &top);

@@ -4,8 +4,8 @@
 
 use std::path::{Path, PathBuf};
 
-use ga_rigid::integrators::{Method, StepKind};
-use ga_rigid::report::{self, reference_scenes, Size, TestScene, CSV_HEADER};
+use ga_rigid::registry::{Method, StepKind};
+use ga_rigid_cli::report::{self, reference_scenes, Size, TestScene, CSV_HEADER};
 use ga_rigid::scene::Scene;
 
 /// A fresh directory for one test, under cargo's per-target temporary directory.

@@ -10,10 +10,10 @@ use std::time::{Duration, Instant};
 
 use ga_core::f64::g3::Rotor;
 
-use crate::dynamics::{omega_from_vector, omega_to_vector, RigidBody, State};
-use crate::error::Error;
-use crate::exact_flow::free_body_orbit;
-use crate::integrators::{Method, Step};
+use ga_rigid::dynamics::{omega_from_vector, omega_to_vector, RigidBody, State};
+use ga_rigid::error::Error;
+use ga_rigid::exact_flow::free_body_orbit;
+use ga_rigid::registry::{Method, Step};
 
 use super::Size;
 

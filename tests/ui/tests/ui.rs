@@ -1,7 +1,7 @@
 //! The macro's error messages: each case under `tests/ui/` makes one mistake and its
 //! `.stderr` shows the single error it gets; the cases under `tests/ui-pass/` use the
 //! derive form and a restricted module end to end. Regenerate the `.stderr` files with
-//! `TRYBUILD=overwrite cargo test -p ga-tests --test ui` and read the diff.
+//! `TRYBUILD=overwrite cargo test -p ga-ui-tests --test ui` and read the diff.
 
 #[test]
 fn each_mistake_gets_one_error_at_its_token_and_valid_inputs_compile() {

@@ -5,7 +5,8 @@ use std::path::PathBuf;
 use clap::builder::PossibleValue;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
-use crate::integrators::Method;
+use ga_rigid::limits;
+use ga_rigid::registry::Method;
 
 /// Rigid-body dynamics in geometric algebra.
 #[derive(Debug, Parser)]
@@ -35,7 +36,7 @@ pub struct SimulateArgs {
     pub scene: PathBuf,
     /// The integration method.
     #[arg(long, value_enum)]
-    pub method: Method,
+    pub method: MethodArg,
     /// The fixed step size, for fixed-step methods; by default 1/200 of the period
     /// 2 pi / |w|max of the fastest rotation the scene's body can reach.
     // Negative numbers (`-1e-6`, `-inf`) must reach our own check (with its message), not
@@ -59,11 +60,11 @@ pub struct SimulateArgs {
     pub out: Option<PathBuf>,
     /// Refuse runs estimated to take more steps than this (t_end / dt plus one per
     /// sample for fixed steps; a rough estimate for dopri).
-    #[arg(long, value_name = "N", default_value_t = super::simulate::DEFAULT_MAX_STEPS)]
+    #[arg(long, value_name = "N", default_value_t = limits::DEFAULT_MAX_STEPS)]
     pub max_steps: u64,
     /// Refuse runs whose attitude at t_end rounding alone would put further off than this
     /// many radians (about |w|max t_end 2.2e-16, for every method, the exact ones too).
-    #[arg(long, value_name = "RAD", default_value_t = super::simulate::DEFAULT_MAX_PHASE_ERROR, allow_hyphen_values = true)]
+    #[arg(long, value_name = "RAD", default_value_t = limits::DEFAULT_MAX_PHASE_ERROR, allow_hyphen_values = true)]
     pub max_phase_error: f64,
     /// Run a fixed step beyond the method's stability limit h |w|max (see --help of
     /// --method for the limits) instead of refusing it.
@@ -71,10 +72,10 @@ pub struct SimulateArgs {
     pub allow_unstable: bool,
     /// Refuse runs estimated to take longer than this many seconds in a release build (the
     /// step estimate times the method's cost per step, from the registry).
-    #[arg(long, value_name = "S", default_value_t = super::budget::DEFAULT_MAX_SECONDS)]
+    #[arg(long, value_name = "S", default_value_t = limits::DEFAULT_MAX_SECONDS)]
     pub max_seconds: u64,
     /// Refuse runs whose CSV may be larger than this many megabytes (300 bytes a row).
-    #[arg(long, value_name = "MB", default_value_t = super::simulate::DEFAULT_MAX_OUTPUT_MB)]
+    #[arg(long, value_name = "MB", default_value_t = limits::DEFAULT_MAX_OUTPUT_MB)]
     pub max_output_mb: u64,
     /// Also draw the body angular velocity and the relative energy drift against time
     /// into this SVG file.
@@ -105,17 +106,32 @@ pub struct ReportArgs {
     pub scenes: Option<PathBuf>,
     /// Refuse `--scenes` whose runs are estimated to take longer than this many seconds
     /// together (steps times each method's cost per step, the timing repeats included).
-    #[arg(long, value_name = "S", default_value_t = super::budget::DEFAULT_REPORT_MAX_SECONDS)]
+    #[arg(long, value_name = "S", default_value_t = limits::DEFAULT_REPORT_MAX_SECONDS)]
     pub max_seconds: u64,
 }
 
+/// A registry method as a command-line value (clap's trait on the library's type).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct MethodArg(pub Method);
+
+/// Every registry method, in the registry's order, as [`MethodArg`]s.
+const METHOD_ARGS: [MethodArg; Method::ALL.len()] = {
+    let mut all = [MethodArg(Method::ALL[0]); Method::ALL.len()];
+    let mut k = 0;
+    while k < all.len() {
+        all[k] = MethodArg(Method::ALL[k]);
+        k += 1;
+    }
+    all
+};
+
 // clap learns the method names from the library's registry: one table, one name each.
-impl ValueEnum for Method {
+impl ValueEnum for MethodArg {
     fn value_variants<'a>() -> &'a [Self] {
-        &Method::ALL
+        &METHOD_ARGS
     }
 
     fn to_possible_value(&self) -> Option<PossibleValue> {
-        Some(PossibleValue::new(self.name()).help(self.info().summary))
+        Some(PossibleValue::new(self.0.name()).help(self.0.info().summary))
     }
 }

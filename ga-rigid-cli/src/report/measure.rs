@@ -5,12 +5,10 @@ use std::time::{Duration, Instant};
 
 use ga_core::f64::g3::Rotor;
 
-use crate::dynamics::State;
-use crate::error::Error;
-use crate::integrators::{
-    ClosedForm, DormandPrince, ExactFreeBody, Integrator, LieRk4, Method, Step, StepKind,
-    DOPRI_ABSOLUTE_TOLERANCE_RATIO,
-};
+use ga_rigid::dynamics::State;
+use ga_rigid::error::Error;
+use ga_rigid::integrators::{ClosedForm, DormandPrince, ExactFreeBody, Integrator, LieRk4};
+use ga_rigid::registry::{Method, Step, StepKind, DOPRI_ABSOLUTE_TOLERANCE_RATIO};
 
 use super::scenes::{Sweep, TestScene, SAMPLES};
 

@@ -3,7 +3,7 @@
 //! method's cost per step from the registry. A rough upper estimate, for refusing a
 //! scene that would run for hours before it starts.
 
-use crate::integrators::{Method, StepKind};
+use ga_rigid::registry::{Method, StepKind};
 
 use super::measure::{MIN_REPEATS, MIN_TOTAL_TIME, TIGHTEST_TOL};
 use super::scenes::{TestScene, SAMPLES};

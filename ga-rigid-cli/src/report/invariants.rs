@@ -14,10 +14,11 @@ use std::time::{Duration, Instant};
 
 use ga_core::f64::g3::{Bivector, Rotor, Vector};
 
-use crate::dynamics::{omega_from_vector, Gravity, RigidBody, State};
-use crate::error::Error;
-use crate::exact_flow::free_body_orbit;
-use crate::integrators::{Integrator, Method, Step, StepKind, METHODS};
+use ga_rigid::dynamics::{omega_from_vector, Gravity, RigidBody, State};
+use ga_rigid::error::Error;
+use ga_rigid::exact_flow::free_body_orbit;
+use ga_rigid::integrators::Integrator;
+use ga_rigid::registry::{Method, Step, StepKind, METHODS};
 
 use super::Size;
 

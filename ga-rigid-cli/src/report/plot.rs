@@ -4,9 +4,9 @@
 
 use plotters::prelude::*;
 
-use crate::csv::Row;
-use crate::error::Error;
-use crate::integrators::Method;
+use ga_rigid::csv::Row;
+use ga_rigid::error::Error;
+use ga_rigid::registry::Method;
 
 use super::SceneResult;
 

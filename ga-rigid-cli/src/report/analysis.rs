@@ -1,7 +1,7 @@
 //! What the page says about the measurements: the fastest method at each error level,
 //! each method's observed order, and its stability verdict.
 
-use crate::integrators::{Method, StepKind};
+use ga_rigid::registry::{Method, StepKind};
 
 use super::{Measurement, SceneResult};
 

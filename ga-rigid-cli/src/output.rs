@@ -25,7 +25,9 @@ use std::fs::{File, OpenOptions};
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
 
-use crate::error::{echo_path, Error};
+use ga_rigid::error::{echo_path, Error as LibError};
+
+use crate::error::Error;
 
 /// The file `emit` will replace: `out` itself, or the final target of a symbolic link.
 ///
@@ -52,11 +54,12 @@ fn checked_target(field: &str, out: &Path, stdout_hint: bool) -> Result<PathBuf,
             return Ok(out.to_path_buf());
         }
         Err(source) => {
-            return Err(Error::Read {
+            return Err(LibError::Read {
                 field: field.to_string(),
                 path: out.to_path_buf(),
                 source,
-            })
+            }
+            .into())
         }
     };
     if meta.file_type().is_symlink() {
@@ -69,7 +72,7 @@ fn checked_target(field: &str, out: &Path, stdout_hint: bool) -> Result<PathBuf,
                 ),
             )
         })?;
-        let meta = std::fs::symlink_metadata(&target).map_err(|source| Error::Read {
+        let meta = std::fs::symlink_metadata(&target).map_err(|source| LibError::Read {
             field: field.to_string(),
             path: target.clone(),
             source,

@@ -3,13 +3,13 @@
 
 use ga_core::f64::g3::{Bivector, Rotor, Vector};
 
-use crate::dynamics::{
+use ga_rigid::dynamics::{
     omega_from_vector, omega_to_vector, Gravity, GravityGradient, RigidBody, State,
 };
-use crate::error::Error;
-use crate::exact_flow::free_body_orbit;
-use crate::integrators::{Method, StepKind};
-use crate::scene::Scene;
+use ga_rigid::error::Error;
+use ga_rigid::exact_flow::free_body_orbit;
+use ga_rigid::registry::{Method, StepKind};
+use ga_rigid::scene::Scene;
 
 use super::Size;
 

@@ -42,8 +42,8 @@ impl Progress {
         let _ = write!(
             std::io::stderr(),
             "\r\x1b[Ksimulate: t = {} of {} ({percent:.1}%)",
-            crate::error::num(t),
-            crate::error::num(self.t_end)
+            ga_rigid::error::num(t),
+            ga_rigid::error::num(self.t_end)
         );
     }
 
@@ -95,7 +95,7 @@ impl Ticker {
             "{}: {done} of {total} runs, {:.0} s ({})",
             self.label,
             self.started.elapsed().as_secs_f64(),
-            crate::error::echo(what)
+            ga_rigid::error::echo(what)
         ))
     }
 }

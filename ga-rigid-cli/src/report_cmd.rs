@@ -12,13 +12,15 @@ use std::ffi::OsStr;
 use std::io::{IsTerminal as _, Write as _};
 use std::path::{Path, PathBuf};
 
-use super::budget::seconds;
-use super::output::{parent_dir, OutputPlan};
-use super::progress::Ticker;
-use super::ReportArgs;
-use crate::error::{echo, echo_path, Error};
+use ga_rigid::limits::seconds;
+use crate::output::{parent_dir, OutputPlan};
+use crate::progress::Ticker;
+use crate::ReportArgs;
+use ga_rigid::error::{echo, echo_path, Error as LibError};
+
+use crate::error::Error;
 use crate::report::{self, Size, TestScene};
-use crate::scene::Scene;
+use ga_rigid::scene::Scene;
 
 /// Run the report as `args` say.
 pub fn run(args: &ReportArgs) -> Result<(), Error> {
@@ -150,11 +152,12 @@ fn check_dir(dir: &Path) -> Result<bool, Error> {
                 ))
             }
         }
-        Err(source) => Err(Error::Read {
+        Err(source) => Err(LibError::Read {
             field: "--out".to_string(),
             path: dir.to_path_buf(),
             source,
-        }),
+        }
+        .into()),
     }
 }
 
@@ -231,7 +234,7 @@ fn check_time(scenes: &[TestScene], size: Size, max_seconds: u64) -> Result<(), 
 /// entry that cannot be read as a regular file (a directory, a FIFO, a dangling link or
 /// a link loop) is refused by name rather than skipped. The paths come back too.
 fn user_scenes(dir: &Path) -> Result<(Vec<TestScene>, Vec<PathBuf>), Error> {
-    let read_err = |path: &Path, source| Error::Read {
+    let read_err = |path: &Path, source| LibError::Read {
         field: "--scenes".to_string(),
         path: path.to_path_buf(),
         source,

@@ -2,7 +2,7 @@
 
 use std::fmt::Write as _;
 
-use crate::scene::Scene;
+use ga_rigid::scene::Scene;
 
 /// The text `inertia` prints: one `key: value` line each for the mass, the centre of
 /// mass, the principal moments and the principal rotor, numbers round-trip exact.
@@ -18,7 +18,7 @@ pub fn describe(scene: &Scene) -> String {
     // Which point the moments are about: a heavy top built from a solid turns about its
     // fixed point, and its moments were shifted there.
     let _ = match (&scene.body, scene.torque) {
-        (crate::scene::BodySpec::Moments(_), Some(_)) => {
+        (ga_rigid::scene::BodySpec::Moments(_), Some(_)) => {
             writeln!(out, "about: the fixed point (moments as given)")
         }
         (_, Some(t)) => {

@@ -1,30 +1,96 @@
-//! `simulate`: a scene, a method, rows of CSV.
-//!
-//! The equations run in the body's principal frame; a scene's `rotor` and `omega` describe
-//! its own (mesh or point-cloud) frame, related by the principal rotor `P` (principal to
-//! scene frame): the principal attitude is `R P`, the principal angular velocity
-//! `~P Omega P`, and rows are turned back into the scene frame.
+//! The limits a run is checked against before any work is done: the step control when
+//! none is given ([`default_step`]), the stability of a fixed step ([`check_stability`]),
+//! the phase rounding alone loses by `t_end` ([`check_phase_error`]), and the work in
+//! steps, output and seconds ([`check_work`], [`check_seconds`]). [`plan`] runs them all
+//! in order; the command and other front ends call it and rename the fields (`dt`,
+//! `max_steps`, ...) to their own words at their edge.
 
-use ga_core::f64::g3::{Rotor, Sandwich};
-
-use crate::csv::Row;
-use crate::dynamics::{omega_to_vector, RigidBody};
-use crate::error::Error;
-use crate::integrators::{Method, Step, StepKind};
+use crate::dynamics::omega_to_vector;
+use crate::error::{num, Error};
+use crate::registry::{Method, Step, StepKind};
 use crate::scene::Scene;
-use crate::simulation::{Sample, Simulation};
 
-/// The body of a scene in its principal frame, with gravity when the scene has it.
-pub fn principal_body(scene: &Scene) -> Result<RigidBody, Error> {
-    scene.principal_body()
+/// The limits of one run; [`Limits::default`] gives the command's defaults.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Limits {
+    /// The most steps (or solution evaluations) a run may be estimated to take.
+    pub max_steps: u64,
+    /// The most megabytes of CSV its samples may take.
+    pub max_output_mb: u64,
+    /// The most seconds it may be estimated to take in a release build.
+    pub max_seconds: u64,
+    /// The most attitude (rad) rounding alone may lose by `t_end`; infinity turns the
+    /// check off.
+    pub max_phase_error: f64,
+    /// Run a fixed step beyond the method's stability limit instead of refusing it.
+    pub allow_unstable: bool,
 }
 
-/// The default limit on the estimated number of steps (`--max-steps`): 25 s of `rk4` but
-/// 300 s of `splitting-8` in a release build, so time has its own limit (`--max-seconds`,
-/// in `budget.rs`); 10^14 steps would take months.
+impl Default for Limits {
+    fn default() -> Self {
+        Limits {
+            max_steps: DEFAULT_MAX_STEPS,
+            max_output_mb: DEFAULT_MAX_OUTPUT_MB,
+            max_seconds: DEFAULT_MAX_SECONDS,
+            max_phase_error: DEFAULT_MAX_PHASE_ERROR,
+            allow_unstable: false,
+        }
+    }
+}
+
+/// A run that passed its checks: the step control, where it came from and what it costs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Plan {
+    /// The step control to run with.
+    pub step: Step,
+    /// Where the step control came from.
+    pub source: StepSource,
+    /// The estimated steps and output.
+    pub work: Work,
+    /// The estimated seconds in a release build.
+    pub seconds: f64,
+}
+
+/// Check a run of `scene` by `method` before it starts, in the order a user fixes them:
+/// the step control ([`Method::given_step`], or the scene's default when neither `dt`
+/// nor `tol` is given), the phase error bound, the stability of a fixed step (unless
+/// `allow_unstable`), the work and the time. `given` is the result of
+/// [`Method::given_step`], which a front end may call earlier to report a bad step before
+/// it reads the scene.
+pub fn plan(scene: &Scene, method: Method, given: Option<Step>, limits: &Limits) -> Result<Plan, Error> {
+    let (step, source) = match given {
+        Some(step) => (step, StepSource::Given),
+        None => default_step(scene, method),
+    };
+    if limits.max_phase_error.is_nan() || limits.max_phase_error <= 0.0 {
+        return Err(Error::invalid(
+            "max_phase_error",
+            format!(
+                "the bound must be positive (infinity turns the check off), got {}",
+                num(limits.max_phase_error)
+            ),
+        ));
+    }
+    check_phase_error(scene, limits.max_phase_error)?;
+    if !limits.allow_unstable {
+        check_stability(scene, method, step)?;
+    }
+    let work = check_work(scene, step, limits.max_steps, limits.max_output_mb)?;
+    let seconds = check_seconds(method, step, work.steps, limits.max_seconds)?;
+    Ok(Plan {
+        step,
+        source,
+        work,
+        seconds,
+    })
+}
+
+/// The default limit on the estimated number of steps ([`Limits::max_steps`]): 25 s of `rk4` but
+/// 300 s of `splitting-8` in a release build, so time has its own limit
+/// ([`Limits::max_seconds`]); 10^14 steps would take months.
 pub const DEFAULT_MAX_STEPS: u64 = 100_000_000;
 
-/// The default limit on the estimated CSV size in megabytes (`--max-output-mb`).
+/// The default limit on the estimated CSV size in megabytes ([`Limits::max_output_mb`]).
 pub const DEFAULT_MAX_OUTPUT_MB: u64 = 1024;
 
 /// The most bytes one CSV row can take: twelve numbers of at most 24 characters
@@ -94,8 +160,8 @@ pub fn free_rate_bound(i: [f64; 3], squares: [f64; 3], two_e: f64) -> f64 {
     best.unwrap_or(fallback).min(fallback).sqrt()
 }
 
-/// The attitude error rounding alone causes by the end of a run when `--max-phase-error`
-/// is not given (rad).
+/// The attitude error rounding alone causes by the end of a run when
+/// [`Limits::max_phase_error`] is not set (rad).
 pub const DEFAULT_MAX_PHASE_ERROR: f64 = 1e-3;
 
 /// The phase every method loses to rounding by `t_end`: the angle `|w|max t_end` is known
@@ -116,7 +182,7 @@ pub fn check_phase_error(scene: &Scene, max_phase_error: f64) -> Result<f64, Err
             format!(
                 "t_end = {} at |w|max = {} loses about {:.1e} rad of attitude to rounding \
                  (|w|max t_end eps), above the bound {}; shorten the run or raise \
-                 --max-phase-error",
+                 max_phase_error",
                 short(scene.run.t_end),
                 short(angular_speed_bound(scene)),
                 error,
@@ -142,7 +208,7 @@ fn short(x: f64) -> String {
 }
 
 /// Refuse a fixed step beyond the method's stability limit `h |w|max` (the registry's
-/// [`crate::integrators::StepLimit`]), naming the limit and the largest stable step.
+/// [`crate::registry::StepLimit`]), naming the limit and the largest stable step.
 pub fn check_stability(scene: &Scene, method: Method, step: Step) -> Result<(), Error> {
     let (Step::Fixed(h), Some(limit)) = (step, method.stable_step_rate(scene.torque.is_some()))
     else {
@@ -152,10 +218,10 @@ pub fn check_stability(scene: &Scene, method: Method, step: Step) -> Result<(), 
     let hw = h * rate;
     if hw.is_nan() || hw > limit {
         return Err(Error::invalid(
-            "--dt",
+            "dt",
             format!(
                 "h |w|max = {} is beyond {}'s stability limit {} (|w|max = {}): take dt <= {} \
-                 or pass --allow-unstable",
+                 or pass allow_unstable",
                 short(hw),
                 method.name(),
                 short(limit),
@@ -199,15 +265,15 @@ pub fn check_work(
     // NaN steps (never expected) count as too many.
     if work.steps.is_nan() || work.steps > max_steps as f64 {
         let (field, what) = match step {
-            Step::Fixed(h) => ("--dt", format!("a step of {}", num(h))),
-            Step::Tolerance(tol) => ("--tol", format!("a tolerance of {}", num(tol))),
+            Step::Fixed(h) => ("dt", format!("a step of {}", num(h))),
+            Step::Tolerance(tol) => ("tol", format!("a tolerance of {}", num(tol))),
             Step::AtSamples => ("run.samples", "one evaluation per sample".to_string()),
         };
         return Err(Error::invalid(
             field,
             format!(
                 "{what} needs about {} steps to reach t_end = {}, above the limit {}; \
-                 raise it with --max-steps",
+                 raise it with max_steps",
                 if work.steps.is_finite() {
                     format!("{:.1e}", work.steps)
                 } else {
@@ -224,7 +290,7 @@ pub fn check_work(
             "run.samples",
             format!(
                 "{} rows may take {megabytes:.0} MB of CSV, above the limit {max_output_mb} MB; \
-                 raise it with --max-output-mb",
+                 raise it with max_output_mb",
                 scene.run.samples
             ),
         ));
@@ -232,17 +298,17 @@ pub fn check_work(
     Ok(work)
 }
 
-/// Fixed steps per period of the fastest rotation when `--dt` is not given: RK4's error
+/// Fixed steps per period of the fastest rotation when `dt` is not given: RK4's error
 /// per period is then about (2 pi / 200)^4 ~ 1e-6 relative, the splitting's a few 1e-4.
 pub const DEFAULT_STEPS_PER_PERIOD: f64 = 200.0;
 
-/// The relative tolerance of `dopri` when `--tol` is not given.
+/// The relative tolerance of the adaptive methods when `tol` is not given.
 pub const DEFAULT_TOLERANCE: f64 = 1e-9;
 
 /// Where the step control of a run came from.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum StepSource {
-    /// `--dt` or `--tol` on the command line (or no step control at all).
+    /// `dt` or `tol` as given (or no step control at all).
     Given,
     /// Chosen from the scene; the text says how.
     Default(&'static str),
@@ -277,198 +343,58 @@ pub fn default_step(scene: &Scene, method: Method) -> (Step, StepSource) {
     }
 }
 
-/// The sidecar record of a CSV written with `--out FILE`: `FILE.json`.
+/// The default limit on a `simulate` run's estimated time in seconds ([`Limits::max_seconds`]).
+pub const DEFAULT_MAX_SECONDS: u64 = 60;
+
+/// The default limit on the estimated time of the scenes a report adds, all of them
+/// together, in seconds.
+pub const DEFAULT_REPORT_MAX_SECONDS: u64 = 600;
+
+/// A duration in seconds for a message: `0.5 s`, `42 s`, `3.1e4 s`.
 #[must_use]
-pub fn sidecar_path(out: &std::path::Path) -> std::path::PathBuf {
-    let mut name = out.as_os_str().to_os_string();
-    name.push(".json");
-    std::path::PathBuf::from(name)
-}
-
-/// What produced a CSV: the scene file, the method, the step control and where it came
-/// from, the run.
-#[derive(Clone, Copy, Debug)]
-pub struct Record<'a> {
-    /// The scene file as given on the command line.
-    pub scene: &'a std::path::Path,
-    /// The method.
-    pub method: Method,
-    /// The step control used.
-    pub step: Step,
-    /// Where the step control came from.
-    pub source: StepSource,
-    /// The run length and sampling.
-    pub run: crate::scene::Run,
-}
-
-impl Record<'_> {
-    /// One sentence on the step control, for the note on standard error.
-    #[must_use]
-    pub fn describe_step(&self) -> String {
-        let reason = match self.source {
-            StepSource::Given => "as given",
-            StepSource::Default(reason) => reason,
-        };
-        match self.step {
-            Step::Fixed(h) => format!("--dt {} ({reason})", crate::error::num(h)),
-            Step::Tolerance(tol) => format!("--tol {} ({reason})", crate::error::num(tol)),
-            Step::AtSamples => "no step: the solution is evaluated at the samples".to_string(),
-        }
-    }
-
-    /// The record as a JSON object, `csv` naming the file it describes.
-    #[must_use]
-    pub fn to_json(self, csv: &std::path::Path) -> String {
-        let (dt, tol) = match self.step {
-            Step::Fixed(h) => (format!("{h:?}"), "null".to_string()),
-            Step::Tolerance(tol) => ("null".to_string(), format!("{tol:?}")),
-            Step::AtSamples => ("null".to_string(), "null".to_string()),
-        };
-        let source = match self.source {
-            StepSource::Given => "given",
-            StepSource::Default(reason) => reason,
-        };
-        format!(
-            "{{\n  \"csv\": {},\n  \"scene\": {},\n  \"method\": {},\n  \"dt\": {dt},\n  \
-             \"tol\": {tol},\n  \"step_source\": {},\n  \"t_end\": {:?},\n  \"samples\": {},\n  \
-             \"ga_rigid_version\": {}\n}}\n",
-            json_string(&csv.display().to_string()),
-            json_string(&self.scene.display().to_string()),
-            json_string(self.method.name()),
-            json_string(source),
-            self.run.t_end,
-            self.run.samples,
-            json_string(env!("CARGO_PKG_VERSION")),
-        )
+pub fn seconds(s: f64) -> String {
+    if !s.is_finite() || s >= 1e4 {
+        format!("{:.1e} s", s.min(f64::MAX))
+    } else if s >= 10.0 {
+        format!("{s:.0} s")
+    } else {
+        format!("{s:.2} s")
     }
 }
 
-/// A JSON string literal (RFC 8259, section 7).
-fn json_string(text: &str) -> String {
-    let mut out = String::with_capacity(text.len() + 2);
-    out.push('"');
-    for c in text.chars() {
-        match c {
-            '"' => out.push_str("\\\""),
-            '\\' => out.push_str("\\\\"),
-            '\n' => out.push_str("\\n"),
-            c if (c as u32) < 0x20 => out.push_str(&format!("\\u{:04x}", c as u32)),
-            c => out.push(c),
-        }
-    }
-    out.push('"');
-    out
-}
-
-/// Integrate `scene` with `method` and return one row per sample time.
-pub fn run_simulation(scene: &Scene, method: Method, step: Step) -> Result<Vec<Row>, Error> {
-    run_simulation_with_progress(scene, method, step, &mut |_| {})
-}
-
-/// [`run_simulation`], calling `progress(t)` after each sample (for a progress display).
-pub fn run_simulation_with_progress(
-    scene: &Scene,
+/// Refuse a run of `method` at `step` whose `steps` (from
+/// [`check_work`]) would take more than `max_seconds`; the estimate
+/// in seconds otherwise.
+pub fn check_seconds(
     method: Method,
     step: Step,
-    progress: &mut dyn FnMut(f64),
-) -> Result<Vec<Row>, Error> {
-    let body = principal_body(scene)?;
-    let principal = scene.inertia.rotor();
-    let integrator = method.integrator(step)?;
-    let state = scene.principal_state();
-    // The dynamics name the principal moments `body.moments`; a scene may have written
-    // its body as a shape, points or a mesh, and the message should name what it wrote.
-    let body_field = |e: Error| {
-        if e.field() == Some("body.moments") {
-            e.at(scene.body_field())
-        } else {
-            e
-        }
-    };
-    let mut simulation = Simulation::new(body, state, integrator);
-    let mut rows = Vec::with_capacity(scene.run.samples);
-    for sample in simulation.samples(scene.run.t_end, scene.run.samples) {
-        let sample = sample.map_err(body_field)?;
-        rows.push(scene_row(method, principal, &sample)?);
-        progress(sample.t);
-    }
-    Ok(rows)
-}
-
-/// The row unchanged if every number in it is finite; otherwise an error naming the
-/// method, the time and the first column that is not, so that no method can write `inf`
-/// or `NaN` into a CSV and exit 0.
-fn finite_row(method: Method, row: Row) -> Result<Row, Error> {
-    let columns = crate::csv::HEADER.split(',');
-    match columns.zip(row.values()).find(|(_, x)| !x.is_finite()) {
-        None => Ok(row),
-        Some((column, x)) => Err(Error::invalid(
-            method.name(),
+    steps: f64,
+    max_seconds: u64,
+) -> Result<f64, Error> {
+    let estimate = method.seconds_for(steps);
+    if estimate.is_nan() || estimate > max_seconds as f64 {
+        let (field, what) = match step {
+            Step::Fixed(h) => ("dt", format!("a step of {}", num(h))),
+            Step::Tolerance(tol) => ("tol", format!("a tolerance of {}", num(tol))),
+            Step::AtSamples => ("run.samples", "one evaluation per sample".to_string()),
+        };
+        return Err(Error::invalid(
+            field,
             format!(
-                "{column} is not finite ({x}) at t = {:e}: the scene's numbers are too large \
-                 for this method",
-                row.t
+                "{what} needs about {steps:.1e} steps of {}, about {} at {} ns a step, \
+                 above the limit of {max_seconds} s; raise it with max_seconds",
+                method.name(),
+                seconds(estimate),
+                method.info().ns_per_step
             ),
-        )),
+        ));
     }
-}
-
-/// A sample as a row in the scene's frame, checked finite ([`finite_row`]): turning a
-/// finite principal-frame state into the scene's frame can still overflow.
-fn scene_row(method: Method, principal: Rotor, sample: &Sample) -> Result<Row, Error> {
-    finite_row(method, row(principal, sample))
-}
-
-/// A sample of the principal-frame simulation as a row in the scene's frame.
-fn row(principal: Rotor, sample: &Sample) -> Row {
-    let state = &sample.state;
-    Row {
-        t: sample.t,
-        rotor: state.rotor * principal.reverse(),
-        omega: omega_to_vector(principal.sandwich(state.omega)),
-        energy: sample.energy,
-        momentum: sample.momentum.undual().to_array(),
-    }
+    Ok(estimate)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// A finite principal-frame sample whose angular velocity overflows when turned into
-    /// the scene's frame is an error, not a row of `inf`.
-    #[test]
-    fn a_sample_that_overflows_in_the_scene_frame_is_an_error() {
-        use crate::dynamics::State;
-        use ga_core::f64::g3::Bivector;
-        let sample = Sample {
-            t: 2.0,
-            state: State {
-                rotor: Rotor::ONE,
-                omega: Bivector::new(1.5e308, 1.5e308, 0.0),
-            },
-            energy: 1.0,
-            momentum: Bivector::new(0.0, 0.0, 1.0),
-        };
-        // A quarter turn in the e12-e13 plane mixes the two huge components.
-        let principal = (Bivector::new(0.0, 0.0, 1.0) * -std::f64::consts::FRAC_PI_8).exp();
-        let e = scene_row(Method::Rk4, principal, &sample)
-            .unwrap_err()
-            .to_string();
-        assert!(e.starts_with("rk4: w"), "{e}");
-        assert!(
-            e.contains("is not finite (") && e.contains("inf) at t = 2e0"),
-            "{e}"
-        );
-        let fine = Sample {
-            state: State {
-                rotor: Rotor::ONE,
-                omega: Bivector::new(1.0, 1.0, 0.0),
-            },
-            ..sample
-        };
-        assert!(scene_row(Method::Rk4, principal, &fine).is_ok());
-    }
 
     #[test]
     fn short_numbers_keep_three_digits() {
@@ -478,32 +404,5 @@ mod tests {
         assert_eq!(short(1e16), "1.00e16");
         assert_eq!(short(0.001), "0.001");
         assert_eq!(short(123.456), "123");
-    }
-
-    #[test]
-    fn a_row_with_an_infinite_energy_is_an_error_naming_the_method_and_column() {
-        let good = Row {
-            t: 1.0,
-            rotor: Rotor::ONE,
-            omega: [0.0, 0.0, 1.0],
-            energy: 0.5,
-            momentum: [0.0, 0.0, 1.0],
-        };
-        assert_eq!(finite_row(Method::Exact, good).unwrap(), good);
-        let bad = Row {
-            energy: f64::INFINITY,
-            ..good
-        };
-        let e = finite_row(Method::Splitting, bad).unwrap_err().to_string();
-        assert!(
-            e.starts_with("splitting: energy is not finite (inf) at t = 1e0"),
-            "{e}"
-        );
-        let nan = Row {
-            omega: [0.0, f64::NAN, 1.0],
-            ..good
-        };
-        let e = finite_row(Method::Exact, nan).unwrap_err().to_string();
-        assert!(e.starts_with("exact: w2 is not finite (NaN)"), "{e}");
     }
 }

@@ -9,10 +9,11 @@
 //! renamed into place together (`output::OutputPlan`; see the README).
 
 mod args;
-mod budget;
+pub mod error;
 mod inertia_cmd;
 mod output;
 mod progress;
+pub mod report;
 mod report_cmd;
 mod simulate;
 
@@ -23,14 +24,16 @@ use std::process::ExitCode;
 
 use clap::Parser;
 
-pub use crate::integrators::{Method, Step, StepKind};
-pub use args::{Cli, Command, InertiaArgs, ReportArgs, SimulateArgs};
+pub use args::{Cli, Command, InertiaArgs, MethodArg, ReportArgs, SimulateArgs};
 pub use inertia_cmd::describe as describe_inertia;
-pub use simulate::{principal_body, run_simulation};
 
-use crate::csv::to_csv;
+use ga_rigid::csv::to_csv;
+use ga_rigid::error::Error as LibError;
+use ga_rigid::limits::{Limits, StepSource};
+use ga_rigid::run::run_simulation_with_progress;
+use ga_rigid::scene::Scene;
+
 use crate::error::Error;
-use crate::scene::Scene;
 
 /// Run the command line with the process's arguments; the body of `main`.
 #[must_use]
@@ -68,8 +71,8 @@ where
 #[must_use]
 pub fn exit_code(error: &Error) -> u8 {
     match error {
-        Error::Write { .. } | Error::NotAvailable { .. } => 1,
-        _ => 2,
+        Error::Write { .. } | Error::Library(LibError::NotAvailable { .. }) => 1,
+        Error::Library(_) => 2,
     }
 }
 
@@ -129,7 +132,7 @@ fn without_possible_values(line: &str) -> String {
 }
 
 /// clap's message with each '...'-quoted piece of the user's text cut by
-/// [`crate::error::echo`], so that a long argument does not make a long line.
+/// [`ga_rigid::error::echo`], so that a long argument does not make a long line.
 fn cut_quoted(line: &str) -> String {
     let mut out = String::new();
     for (k, piece) in line.split('\'').enumerate() {
@@ -138,7 +141,7 @@ fn cut_quoted(line: &str) -> String {
         }
         // Odd pieces are inside quotes.
         if k % 2 == 1 {
-            out.push_str(&crate::error::echo(piece));
+            out.push_str(&ga_rigid::error::echo(piece));
         } else {
             out.push_str(piece);
         }
@@ -146,15 +149,31 @@ fn cut_quoted(line: &str) -> String {
     out
 }
 
-/// `simulate`: validate the step control and every output path, load the scene, run the
-/// method, then write the CSV, its sidecar record and the plot together (see
-/// [`output::OutputPlan`]): a failure leaves every existing file as it was.
+/// The command's names for the library's run parameters, applied once to the library's
+/// errors at this edge ([`LibError::renamed`]).
+pub const FLAG_NAMES: [(&str, &str); 7] = [
+    ("dt", "--dt"),
+    ("tol", "--tol"),
+    ("max_steps", "--max-steps"),
+    ("max_output_mb", "--max-output-mb"),
+    ("max_seconds", "--max-seconds"),
+    ("max_phase_error", "--max-phase-error"),
+    ("allow_unstable", "--allow-unstable"),
+];
+
+/// A library error of the run's rule book in the command's words.
+fn in_flags(e: LibError) -> Error {
+    Error::Library(e.renamed(&FLAG_NAMES))
+}
+
+/// `simulate`: validate the step control and every output path, load the scene, check
+/// the run against its limits ([`ga_rigid::limits::plan`]), run the method, then write
+/// the CSV, its sidecar record and the plot together (see [`output::OutputPlan`]): a
+/// failure leaves every existing file as it was.
 fn simulate(args: &SimulateArgs) -> Result<(), Error> {
-    // Without --dt or --tol the step control comes from the scene (see `default_step`).
-    let given = match (args.method.step_kind(), args.dt, args.tol) {
-        (StepKind::Fixed | StepKind::Adaptive, None, None) => None,
-        _ => Some(step_control(args.method, args.dt, args.tol)?),
-    };
+    let method = args.method.0;
+    // Without --dt or --tol the step control comes from the scene (`limits::default_step`).
+    let given = method.given_step(args.dt, args.tol).map_err(in_flags)?;
     let mut plan = output::OutputPlan::with_stdout_alternative();
     plan.input("the scene file", &args.scene)?;
     let sidecar = args.out.as_deref().map(simulate::sidecar_path);
@@ -166,32 +185,29 @@ fn simulate(args: &SimulateArgs) -> Result<(), Error> {
         plan.add("--plot", plot)?;
     }
     let scene = Scene::load(&args.scene)?;
-    if let crate::scene::BodySpec::Mesh { path, .. } = &scene.body {
+    if let ga_rigid::scene::BodySpec::Mesh { path, .. } = &scene.body {
         plan.input("the scene's mesh (body.mesh)", path)?;
     }
-    let (step, source) = match given {
-        Some(step) => (step, simulate::StepSource::Given),
-        None => simulate::default_step(&scene, args.method),
+    let limits = Limits {
+        max_steps: args.max_steps,
+        max_output_mb: args.max_output_mb,
+        max_seconds: args.max_seconds,
+        max_phase_error: args.max_phase_error,
+        allow_unstable: args.allow_unstable,
     };
-    crate::error::positive("--max-phase-error", "the bound", args.max_phase_error)?;
-    simulate::check_phase_error(&scene, args.max_phase_error)?;
-    if !args.allow_unstable {
-        simulate::check_stability(&scene, args.method, step)?;
-    }
-    let work = simulate::check_work(&scene, step, args.max_steps, args.max_output_mb)?;
-    budget::check_seconds(args.method, step, work.steps, args.max_seconds)?;
-    let mut progress = progress::Progress::new(scene.run.t_end, work.steps);
-    let rows = simulate::run_simulation_with_progress(&scene, args.method, step, &mut |t| {
+    let run = ga_rigid::limits::plan(&scene, method, given, &limits).map_err(in_flags)?;
+    let mut progress = progress::Progress::new(scene.run.t_end, run.work.steps);
+    let rows = run_simulation_with_progress(&scene, method, run.step, &mut |t| {
         progress.update(t);
     });
     progress.finish();
-    let rows = rows?;
+    let rows = rows.map_err(in_flags)?;
     let plot = match &args.plot {
         Some(_) => {
             let title = format!(
                 "{}: {}",
-                crate::error::echo_path(&args.scene),
-                args.method.name()
+                ga_rigid::error::echo_path(&args.scene),
+                method.name()
             );
             Some(crate::report::simulation_svg(&rows, &title)?)
         }
@@ -200,9 +216,9 @@ fn simulate(args: &SimulateArgs) -> Result<(), Error> {
     let csv = to_csv(&rows);
     let record = simulate::Record {
         scene: &args.scene,
-        method: args.method,
-        step,
-        source,
+        method,
+        step: run.step,
+        source: run.source,
         run: scene.run,
     };
     // The texts in the order the plan's outputs were added.
@@ -210,7 +226,7 @@ fn simulate(args: &SimulateArgs) -> Result<(), Error> {
     if let Some(out) = &args.out {
         texts.push(csv.clone());
         texts.push(record.to_json(out));
-    } else if let simulate::StepSource::Default(_) = source {
+    } else if let StepSource::Default(_) = run.source {
         // Standard output carries only the CSV; say what was chosen on stderr.
         eprintln!("note: {}", record.describe_step());
     }
@@ -221,86 +237,6 @@ fn simulate(args: &SimulateArgs) -> Result<(), Error> {
         emit_stdout(&csv)?;
     }
     staged.publish()
-}
-
-/// Check `--dt` and `--tol` and match them to the method: fixed-step methods need
-/// `--dt`, adaptive ones `--tol`, and methods that evaluate a solution at the sample
-/// times take neither. Both values must be finite and positive, and at most one given.
-pub fn step_control(method: Method, dt: Option<f64>, tol: Option<f64>) -> Result<Step, Error> {
-    if dt.is_some() && tol.is_some() {
-        return Err(Error::invalid(
-            "--dt",
-            "--dt and --tol are mutually exclusive: give one",
-        ));
-    }
-    if let Some(dt) = dt {
-        if !(dt.is_finite() && dt > 0.0) {
-            return Err(Error::invalid(
-                "--dt",
-                format!(
-                    "the step size must be positive and finite, got {}",
-                    crate::error::num(dt)
-                ),
-            ));
-        }
-    }
-    if let Some(tol) = tol {
-        if !(tol.is_finite() && tol > 0.0) {
-            return Err(Error::invalid(
-                "--tol",
-                format!(
-                    "the tolerance must be positive and finite, got {}",
-                    crate::error::num(tol)
-                ),
-            ));
-        }
-        // Below about 1e-14 the rounding error of a step exceeds the tolerance and the
-        // step size shrinks without end; above 1 a "relative" tolerance means nothing.
-        if !(1e-14..=1.0).contains(&tol) {
-            return Err(Error::invalid(
-                "--tol",
-                format!(
-                    "the tolerance must be between 1e-14 and 1, got {}",
-                    crate::error::num(tol)
-                ),
-            ));
-        }
-    }
-    let name = method.name();
-    match (method.step_kind(), dt, tol) {
-        (StepKind::Fixed, Some(dt), None) => Ok(Step::Fixed(dt)),
-        (StepKind::Fixed, None, Some(_)) => Err(Error::invalid(
-            "--tol",
-            format!("method {name} takes a fixed step: give --dt, not --tol"),
-        )),
-        (StepKind::Fixed, None, None) => Err(Error::invalid(
-            "--dt",
-            format!("method {name} takes a fixed step: give --dt"),
-        )),
-        (StepKind::Adaptive, None, Some(tol)) => Ok(Step::Tolerance(tol)),
-        (StepKind::Adaptive, Some(_), None) => Err(Error::invalid(
-            "--dt",
-            format!("method {name} is adaptive: give --tol, not --dt"),
-        )),
-        (StepKind::Adaptive, None, None) => Err(Error::invalid(
-            "--tol",
-            format!("method {name} is adaptive: give --tol"),
-        )),
-        (StepKind::AtSamples, None, None) => Ok(Step::AtSamples),
-        (StepKind::AtSamples, Some(_), _) => Err(Error::invalid(
-            "--dt",
-            format!("method {name} evaluates its solution at the sample times and takes no --dt"),
-        )),
-        (StepKind::AtSamples, None, Some(_)) => Err(Error::invalid(
-            "--tol",
-            format!("method {name} evaluates its solution at the sample times and takes no --tol"),
-        )),
-        // Both given was rejected above.
-        (_, Some(_), Some(_)) => Err(Error::invalid(
-            "--dt",
-            "--dt and --tol are mutually exclusive: give one",
-        )),
-    }
 }
 
 /// `inertia`: load the scene and print its body's mass properties.

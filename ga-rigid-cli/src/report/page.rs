@@ -3,7 +3,7 @@
 
 use std::fmt::Write as _;
 
-use crate::integrators::{Method, StepKind, METHODS};
+use ga_rigid::registry::{Method, StepKind, METHODS};
 
 use super::analysis::{
     cost_per_step_ns, error_floor, fastest_at, fastest_over, order, verdict, Order, SceneKind,

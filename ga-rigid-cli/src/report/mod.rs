@@ -39,8 +39,8 @@ pub use scenes::{reference_scenes, stability_scenes, suite, Sweep, TestScene, SA
 
 use std::fmt::Write as _;
 
-use crate::error::Error;
-use crate::integrators::{Method, StepKind};
+use ga_rigid::error::Error;
+use ga_rigid::registry::{Method, StepKind};
 
 /// How much to run.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

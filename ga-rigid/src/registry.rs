@@ -10,7 +10,7 @@ use std::str::FromStr;
 
 use crate::error::{self, Error};
 
-use super::{
+use crate::integrators::{
     CasimirSplitting, ClosedForm, ComposedSplitting, CorrectedSplitting, DormandPrince,
     ExactFreeBody, ExactSplitting, ImplicitMidpoint, Integrator, LieDop853, LieRk4, Rk4, Splitting,
 };
@@ -21,6 +21,34 @@ use crate::peers::{
 /// The absolute tolerance paired with a relative tolerance `tol` for Dormand-Prince, as a
 /// fraction of `tol`.
 pub const DOPRI_ABSOLUTE_TOLERANCE_RATIO: f64 = 1e-3;
+
+/// The smallest relative tolerance a run may ask for ([`Method::step`]).
+pub const MIN_TOLERANCE: f64 = 1e-14;
+
+/// A step size: finite, positive and a normal number (a subnormal step has lost its
+/// precision and turns into zero or infinity in the first product), or an error naming
+/// `dt`.
+fn step_size(dt: f64) -> Result<f64, Error> {
+    if !(dt.is_finite() && dt > 0.0) {
+        return Err(Error::invalid(
+            "dt",
+            format!(
+                "the step size must be positive and finite, got {}",
+                error::num(dt)
+            ),
+        ));
+    }
+    if dt < f64::MIN_POSITIVE {
+        return Err(Error::invalid(
+            "dt",
+            format!(
+                "the step size must be at least {:e} (a normal number), got {dt:e}",
+                f64::MIN_POSITIVE
+            ),
+        ));
+    }
+    Ok(dt)
+}
 
 /// A time-stepping (or solution-evaluating) method for the rigid body.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -457,40 +485,83 @@ impl Method {
             .map(|r| r.method)
     }
 
-    /// Match a step size `dt` or a tolerance `tol` to the method: fixed-step methods need
-    /// `dt`, adaptive ones `tol`, and methods evaluated at the sample times take neither.
-    /// Both must be finite and positive; at most one may be given.
+    /// The one rule book for a run's step control: match a step size `dt` or a tolerance
+    /// `tol` to the method. Fixed-step methods need `dt`, adaptive ones `tol`, and methods
+    /// evaluated at the sample times take neither; at most one may be given. `dt` must be
+    /// finite, positive and a normal number; `tol` as well, and between
+    /// [`MIN_TOLERANCE`] and 1. Errors name `dt` or `tol` (the command renames them to its
+    /// flags at its edge).
     pub fn step(self, dt: Option<f64>, tol: Option<f64>) -> Result<Step, Error> {
         let name = self.name();
         if dt.is_some() && tol.is_some() {
-            return Err(Error::invalid("dt", "dt and tol are mutually exclusive"));
+            return Err(Error::invalid(
+                "dt",
+                "dt and tol are mutually exclusive: give one",
+            ));
         }
         if let Some(dt) = dt {
-            error::positive("dt", "the step size", dt)?;
+            step_size(dt)?;
         }
         if let Some(tol) = tol {
-            error::positive("tol", "the tolerance", tol)?;
+            if !(tol.is_finite() && tol > 0.0) {
+                return Err(Error::invalid(
+                    "tol",
+                    format!(
+                        "the tolerance must be positive and finite, got {}",
+                        error::num(tol)
+                    ),
+                ));
+            }
+            // Below about 1e-14 the rounding error of a step exceeds the tolerance and the
+            // step size shrinks without end; above 1 a "relative" tolerance means nothing.
+            if !(MIN_TOLERANCE..=1.0).contains(&tol) {
+                return Err(Error::invalid(
+                    "tol",
+                    format!(
+                        "the tolerance must be between 1e-14 and 1, got {}",
+                        error::num(tol)
+                    ),
+                ));
+            }
         }
         match (self.step_kind(), dt, tol) {
             (StepKind::Fixed, Some(dt), None) => Ok(Step::Fixed(dt)),
+            (StepKind::Fixed, None, Some(_)) => Err(Error::invalid(
+                "tol",
+                format!("method {name} takes a fixed step: give dt, not tol"),
+            )),
             (StepKind::Fixed, _, _) => Err(Error::invalid(
                 "dt",
-                format!("method {name} takes a fixed step dt"),
+                format!("method {name} takes a fixed step: give dt"),
             )),
             (StepKind::Adaptive, None, Some(tol)) => Ok(Step::Tolerance(tol)),
+            (StepKind::Adaptive, Some(_), None) => Err(Error::invalid(
+                "dt",
+                format!("method {name} is adaptive: give tol, not dt"),
+            )),
             (StepKind::Adaptive, _, _) => Err(Error::invalid(
                 "tol",
-                format!("method {name} is adaptive and takes a tolerance tol"),
+                format!("method {name} is adaptive: give tol"),
             )),
             (StepKind::AtSamples, None, None) => Ok(Step::AtSamples),
             (StepKind::AtSamples, Some(_), _) => Err(Error::invalid(
                 "dt",
-                format!("method {name} is evaluated at the sample times and takes no dt"),
+                format!("method {name} evaluates its solution at the sample times and takes no dt"),
             )),
             (StepKind::AtSamples, None, Some(_)) => Err(Error::invalid(
                 "tol",
-                format!("method {name} is evaluated at the sample times and takes no tol"),
+                format!("method {name} evaluates its solution at the sample times and takes no tol"),
             )),
+        }
+    }
+
+    /// [`Method::step`] where leaving both out is allowed: `None` when neither `dt` nor
+    /// `tol` is given to a method that takes one, so that the scene's default applies
+    /// ([`crate::limits::default_step`]).
+    pub fn given_step(self, dt: Option<f64>, tol: Option<f64>) -> Result<Option<Step>, Error> {
+        match (self.step_kind(), dt, tol) {
+            (StepKind::Fixed | StepKind::Adaptive, None, None) => Ok(None),
+            _ => self.step(dt, tol).map(Some),
         }
     }
 
@@ -727,8 +798,10 @@ mod tests {
     fn step_errors_name_dt_and_tol_not_flags() {
         let e = Method::Rk4.step(None, None).unwrap_err().to_string();
         assert!(e.starts_with("dt: "), "{e}");
-        let e = Method::Dopri.step(Some(0.1), None).unwrap_err().to_string();
+        let e = Method::Dopri.step(None, None).unwrap_err().to_string();
         assert!(e.starts_with("tol: "), "{e}");
+        let e = Method::Dopri.step(Some(0.1), None).unwrap_err().to_string();
+        assert!(e.starts_with("dt: ") && e.contains("give tol, not dt"), "{e}");
         let e = Method::Rk4.step(Some(-1.0), None).unwrap_err().to_string();
         assert!(e.starts_with("dt: ") && !e.contains("--"), "{e}");
         let e = Method::Exact
@@ -739,5 +812,27 @@ mod tests {
         assert_eq!(Method::Exact.step(None, None).unwrap(), Step::AtSamples);
         assert!(Method::Rk4.integrator(Step::Tolerance(1.0)).is_err());
         assert!(Method::Dopri.integrator(Step::Tolerance(0.0)).is_err());
+    }
+
+    /// The tolerance's range and the subnormal step are the rule book's, not only the
+    /// command's: a program calling the library meets the same rules.
+    #[test]
+    fn the_rule_book_bounds_the_tolerance_and_refuses_subnormal_steps() {
+        let e = Method::Dopri.step(None, Some(1e-15)).unwrap_err().to_string();
+        assert_eq!(e, "tol: the tolerance must be between 1e-14 and 1, got 1e-15");
+        assert!(Method::Dopri.step(None, Some(2.0)).is_err());
+        assert_eq!(
+            Method::Dopri.step(None, Some(1e-14)).unwrap(),
+            Step::Tolerance(1e-14)
+        );
+        let e = Method::Rk4.step(Some(1e-310), None).unwrap_err().to_string();
+        assert!(e.starts_with("dt: ") && e.contains("normal number"), "{e}");
+        let e = Method::Rk4.step(Some(f64::NAN), None).unwrap_err().to_string();
+        assert_eq!(e, "dt: the step size must be positive and finite, got NaN");
+        assert_eq!(Method::Rk4.given_step(None, None).unwrap(), None);
+        assert_eq!(
+            Method::Exact.given_step(None, None).unwrap(),
+            Some(Step::AtSamples)
+        );
     }
 }
