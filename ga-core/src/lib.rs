@@ -217,3 +217,20 @@ pub mod f32 {
 ))]
 #[doc = include_str!("../../README.md")]
 struct ReadmeDoctests;
+
+/// docs/glam.md's examples, compiled and run as doctests.
+#[cfg(all(
+    doctest,
+    feature = "std",
+    feature = "glam",
+    feature = "g3",
+    feature = "f32",
+    feature = "f64"
+))]
+#[doc = include_str!("../../docs/glam.md")]
+struct GlamDoctests;
+
+/// docs/dual-numbers.md's examples, compiled and run as doctests.
+#[cfg(all(doctest, feature = "std", feature = "dual", feature = "g3"))]
+#[doc = include_str!("../../docs/dual-numbers.md")]
+struct DualNumberDoctests;

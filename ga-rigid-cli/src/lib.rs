@@ -6,7 +6,10 @@
 //! is checked before any work (a regular file or missing, a symbolic link followed to
 //! one; never a directory, FIFO, socket or device, the scene, its mesh or another output)
 //! and written only when the command has succeeded: all to temporary files first, then
-//! renamed into place together (`output::OutputPlan`; see the README).
+//! renamed into place together (`output::OutputPlan`).
+//!
+//! The command's manual follows (also `docs/command.md` in the repository).
+#![doc = include_str!("../../docs/command.md")]
 
 mod args;
 pub mod error;

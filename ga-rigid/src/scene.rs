@@ -30,6 +30,10 @@
 //! (missing, unknown and mistyped fields: reported with the dotted path serde's value
 //! deserializer records), and the checks of this module and of the inertia constructors
 //! (non-finite numbers, non-positive moments, ...: named by [`Error::within`]).
+//!
+//! The whole format follows (also `docs/scenes.md` in the repository).
+//!
+#![doc = include_str!("../../docs/scenes.md")]
 
 use std::path::{Path, PathBuf};
 
