@@ -8,6 +8,9 @@
 //! reads two random multivectors per item (dense, indexed by blade bitmask), builds each
 //! parameter of its functions from them, and writes each result's components to its own
 //! place in the output.
+//!
+//! Everything here needs the `vulkan` feature (wgpu); without it the crate is empty.
+#![cfg(feature = "vulkan")]
 
 use std::collections::HashMap;
 
