@@ -59,13 +59,19 @@
 mod api;
 #[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
 mod avx;
+mod dispatch;
+mod divided;
 mod eigen;
 mod error;
 mod euler;
+mod free_flow;
 mod inertia;
 #[cfg(feature = "rayon")]
 mod parallel;
+mod parts;
 mod projective;
+mod range;
+mod rates;
 mod real;
 mod rotation;
 mod slice;
@@ -73,6 +79,7 @@ mod split;
 mod splitting;
 #[cfg(target_arch = "x86_64")]
 mod sse;
+mod turning;
 
 pub use error::BodyError;
 

@@ -40,7 +40,7 @@ pub(crate) struct Split<R> {
     /// `-2` times it.
     pub(crate) shift: R,
     /// Times `h^2 |L|^2`, the largest of the projective form's range quotients
-    /// (`projective::RANGE`): below 1, every turn is in its range.
+    /// (`range::RANGE`): below 1, every turn is in its range.
     pub(crate) reach: R,
 }
 
@@ -84,7 +84,7 @@ impl<R: Real> Split<R> {
         let (outer_rate, middle_rate) = (alpha / 4.0, beta / 2.0);
         let casimir_rate = inverse[2] / 2.0;
         let shift = libm::fabs(alpha * beta) / 6.0;
-        let [b, cubic_term, e, w] = super::projective::RANGE;
+        let [b, cubic_term, e, w] = super::range::RANGE;
         let reach = [
             outer_rate * outer_rate / b,
             middle_rate * middle_rate / b,
