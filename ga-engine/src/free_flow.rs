@@ -262,8 +262,9 @@ mod tests {
     /// What the corrected turns are for: the body-momentum map of the free flow keeps
     /// `H + h^2 alpha beta (alpha - 2 beta) / 12 L_o^2 L_m^2` (the splitting's modified
     /// energy once the single-axis terms of its `h^2` error are cancelled, from the
-    /// Baker-Campbell-Hausdorff formula; docs/references.md) to `O(h^4)`, while `H` itself
-    /// moves at `O(h^2)`. A T-handle spun near its middle axis, in f64, two step sizes.
+    /// Baker-Campbell-Hausdorff formula; docs/derivations/corrected-splitting.md) to
+    /// `O(h^4)`, while `H` itself moves at `O(h^2)`. A T-handle spun near its middle axis,
+    /// in f64, two step sizes.
     #[test]
     fn the_corrected_split_keeps_its_modified_energy_to_fourth_order() {
         let inertia = Inertia::<f64>::from_principal([1.0, 2.0, 3.0], Q::identity()).unwrap();

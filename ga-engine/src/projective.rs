@@ -1,29 +1,19 @@
-//! The free flow's three turns without a division: the body momentum and each angle
-//! carried as numerators over one common denominator, for the steps an engine takes.
+//! The free flow's three turns without a division, for the steps an engine takes (the
+//! range in `range.rs`): the body momentum and each angle carried as numerators over one
+//! common denominator, divided out once with the final normalisation. The same map as
+//! the divided form (`divided.rs`), rounded differently; docs/derivations/projective-turns.md
+//! has the derivation and the range's proof.
 //!
-//! `splitting.rs` turns the body momentum by `cos = (p^2 - b^2)/n`, `sin = 2pb/n` with
-//! `p = e - lambda b^2`, `n = p^2 + b^2`, and divides by `n` every turn; each turn's
-//! angle needs the last turn's momentum, so those divisions would sit one after another
-//! on the step's critical path. Here the momentum is `X / D` and the angle parameter
-//! `b = B / D`, and a turn works on the numerators:
+//! The momentum is `X / D` and the angle parameter `b = B / D`; a turn works on the
+//! numerators:
 //!
 //! - `P = e D^2 - lambda B^2` and `A = B D` are `p` and `b` times `D^2`, so the turn's
-//!   quaternion `P + A e_K` is `p + b e_K` scaled by `D^2` (the scale goes with the
-//!   normalisation at the end);
+//!   quaternion `P + A e_K` is `p + b e_K` scaled by `D^2`;
 //! - `C = P^2 - A^2` and `S = 2 P A` are `cos` and `sin` times `D^4 n`, and
 //!   `N = P^2 + A^2` is `D^4 n`;
 //! - the turned components are `C X_i + S X_j`, the untouched one `N X_K`, all over the
 //!   new denominator `D N`, and the next angle's numerators are `C (r X_i) + S (r X_j)`
 //!   and the same with `lambda r` (so that `lambda B^2` is one product, not two).
-//!
-//! That is the same map as `splitting.rs`, rounded differently, with no division until
-//! the quaternion is normalised.
-//!
-//! The numerators grow or shrink by each turn's `g = n` (`D` is multiplied by
-//! `N ~ D^4 g`): over the three turns every value stays within `g^31` of `|L|`. In the
-//! range the form is used in ([`RANGE`](crate::range::RANGE)), `0.81 <= g <= 1.27`, so with `|L| < 1e18`
-//! nothing overflows in `f32` and nothing comes near its smallest normal number that
-//! `|L|` itself does not; elsewhere `splitting.rs` turns with its clamps.
 
 use super::rates::Rates;
 use super::real::Real;

@@ -1,6 +1,6 @@
 //! The free flow's split, chosen once per body: which principal axis is the Casimir's
 //! reference, which two turn, and the constants of the corrected turns
-//! (`splitting.rs` has the derivation).
+//! (docs/derivations/corrected-splitting.md has the derivation).
 //!
 //! With the inverse moments `k_o, k_m, k_r` of the outer, middle and reference axes,
 //! `alpha = k_o - k_r` and `beta = k_m - k_r` are the coefficients of the two turns.
@@ -106,7 +106,7 @@ impl<R: Real> Split<R> {
     }
 
     /// The largest `|b|` of the outer and middle turns in the divided form
-    /// (`splitting.rs`): 64, or less where `|lambda| b^2` would pass `MAX_CUBIC_TERM`.
+    /// (`divided.rs`): 64, or less where `|lambda| b^2` would pass `MAX_CUBIC_TERM`.
     #[inline(always)]
     pub(crate) fn limits(&self) -> (R, R) {
         let limit = |lambda: R| {

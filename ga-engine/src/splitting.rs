@@ -1,77 +1,25 @@
-//! The free-flow-plus-kick splitting: second order, and its fourth-order composition.
+//! The steps: the free flow between torque kicks, second order, and its fourth-order
+//! composition (docs/derivations/corrected-splitting.md has the derivation, its sources
+//! and the tests that check it).
 //!
 //! The state is the orientation and the angular momentum **in the world frame**. A
 //! torque constant in the world frame changes only the world momentum, and exactly:
 //! `L += h T` (the kick), and `kick(h/2) free(h) kick(h/2)` is Strang's splitting:
-//! time-reversible, second order.
+//! time-reversible, second order. The free flow (`free_flow.rs`) never touches the world
+//! momentum, so `|L|` of a torque-free body is kept to the bit; it is the free body's
+//! energy split around the Casimir `|L|^2` into three turns about principal axes, each
+//! angle corrected for its own part of the splitting's `h^2` energy error, and a turn
+//! about `L`, all rational (no sine or cosine) and normalised once.
 //!
-//! **The free flow** keeps the world momentum and the kinetic energy
-//! `H = m_o^2/2I_o + m_m^2/2I_m + m_r^2/2I_r` (body components; `split.rs` orders the
-//! principal axes: `o` the smallest moment, `r` the largest). `H` is split around the
-//! Casimir `|m|^2` (McLachlan, Phys. Rev. Lett. 71, 1993; Fassò, J. Comput. Phys. 189,
-//! 2003): `H = k_r |m|^2/2 + alpha m_o^2/2 + beta m_m^2/2` with `alpha = k_o - k_r`,
-//! `beta = k_m - k_r` (`k` the inverse moments). The Casimir's flow turns the body about
-//! `L` and commutes with everything; the other two parts are turns about one body axis
-//! each, so the free flow is three turns in a chain, `o(h/2) m(h) o(h/2)`, and the turn
-//! about `L`, known from the step's start (Dullweber, Leimkuhler and McLachlan's split
-//! of the three terms takes five).
-//!
-//! **The corrected turns.** Strang's splitting of `A = alpha m_o^2/2` and
-//! `B = beta m_m^2/2` keeps the modified energy
-//! `H + h^2 (-{A,{A,B}}/24 + {B,{B,A}}/12) + O(h^4)` (Baker-Campbell-Hausdorff); with
-//! `{A,{A,B}} = alpha^2 beta m_o^2 (m_r^2 - m_m^2)` and
-//! `{B,{B,A}} = alpha beta^2 m_m^2 (m_r^2 - m_o^2)` and `m_r^2 = |m|^2 - m_o^2 - m_m^2`,
-//! that term is a function of `m_o` alone, one of `m_m` alone (each times a function of
-//! `|m|^2`), and `alpha beta (alpha - 2 beta)/12 m_o^2 m_m^2`. A turn may be the flow of
-//! any function of its own component and of `|m|^2` (it stays a turn about that axis),
-//! so each turn's angle carries the negative of its own single-axis term: the outer half
-//! turn by `2 atan2(b, e_o - lambda_o b^2)` with `b = h alpha m_o / 4`, the middle turn
-//! by `2 atan2(b, e_m - lambda_m b^2)` with `b = h beta m_m / 2`, where
-//! `e_o = 1 - h^2 |m|^2 alpha beta/12`, `e_m = 1 + h^2 |m|^2 alpha beta/6`,
-//! `lambda_o = (alpha - 8 beta)/3 alpha`, `lambda_m = (beta + 4 alpha)/3 beta` (the
-//! `b^3` terms of those arctangents are the `m^4` parts, the `e` the `|m|^2 m^2` parts;
-//! docs/references.md has the algebra). What is left of the `h^2` term is the cross term
-//! alone, small where the body is near symmetric, and the energy error with it: on the
-//! T-handle 1 : 2 : 3 at 60 Hz its largest excursion is 3.4e-5 in f64, against 1.0e-4
-//! for the uncorrected split and 7.6e-5 for the five-turn one (a unit test checks that
-//! the modified energy is kept to `O(h^4)`).
-//!
-//! Each turn is written without sine or cosine: a turn by `2 atan2(b, p)` about a body
-//! axis `e_k` is the quaternion `p + b e_k` up to a positive scale, and its matrix has
-//! `cos = (p^2 - b^2)/(p^2 + b^2)`, `sin = 2 p b/(p^2 + b^2)` (the Cayley transform), so
-//! the step takes no sine and one square root, the quaternion normalised once at the end.
-//! The turn about `L` is `(1 - w^2/3) + (h k_r / 2) L`, `w = h k_r |L| / 2`, by the
-//! angle `2 atan(w / (1 - w^2/3))`, which agrees with `h k_r |L|` to `w^5`.
-//!
-//! The body-momentum map is a composition of exact Lie-Poisson flows (each turn the flow
-//! of a function of its component and `|m|^2`), so `|m|` is kept and the energy's error
-//! stays bounded. The orientation follows each turn about its axis; the rotation about
-//! `L` that the `|m|^2`-dependence of the angles adds to the exact flow of those
-//! functions (of order `h^3` a step, about `L`, which no other quantity depends on) is
-//! left out.
-//!
-//! For the steps an engine takes (`range::RANGE`, `|L| < 1e18`), `projective.rs`
-//! does the same turns with no division at all: the momentum and angle as numerators
-//! over one denominator, divided out once with the final normalisation, and in that
-//! range the result provably stays in the starting hemisphere, so the hemisphere test
-//! is left out. Beyond it the divided form runs with its clamps; a lane group of the
-//! slice form that mixes ranges computes both forms and takes each lane's own, so a body
-//! gets the same bits in every form.
-//!
-//! Since the world momentum is never touched by the free flow, `|L|` of a torque-free
-//! body is conserved to the bit, not just to rounding; the body momentum the angles need
-//! is computed from it and the orientation at the start of each free flow and then turned
-//! along with the body.
+//! The fourth-order step is the symmetric triple jump `S(g1 h) S(g0 h) S(g1 h)` with
+//! `g1 = 1/(2 - 2^(1/3))`, `g0 = 1 - 2 g1` (Yoshida, Phys. Lett. A 150, 1990; Suzuki,
+//! Phys. Lett. A 146, 1990), the kicks between free flows merged.
 //!
 //! Unoptimised builds: every function of a step is `#[inline(always)]` so that the
 //! optimiser sees one body's (or one lane group's) whole chain, but unoptimised, each
 //! inlined temporary keeps its own stack slot, and the slice form's AVX loop had a frame
 //! of over a megabyte (its fourth order two: a test thread's 2 MiB stack overflowed).
 //! With debug assertions on, the turns and free flows are ordinary functions instead.
-//!
-//! The fourth-order step is the symmetric triple jump `S(g1 h) S(g0 h) S(g1 h)` with
-//! `g1 = 1/(2 - 2^(1/3))`, `g0 = 1 - 2 g1` (Yoshida, Phys. Lett. A 150, 1990; Suzuki,
-//! Phys. Lett. A 146, 1990), the kicks between free flows merged.
 
 use super::free_flow::free_flow_normalized;
 use super::inertia::Inertia;
@@ -112,7 +60,7 @@ pub(crate) fn step2_in<R: Real, T: Turning<R>>(
 /// [`step2_in`] with the frame's products also in the form `T` (one register for one f32
 /// body), as `Inertia::principal_orientation` and `body_orientation` do them: the same
 /// bits. Kept apart from [`step2_in`], which the lane forms run: written this way there,
-/// the slice form over 2^20 bodies measured 11% slower.
+/// the slice form measured slower (BENCHMARKS.md).
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
 fn step2_in_framed<R: Real, T: Turning<R>>(
@@ -164,8 +112,7 @@ pub(crate) fn step2_f32(
 /// One second-order step of `h` under a torque that depends on the orientation:
 /// `kick(h/2, T(q_n)) free(h) kick(h/2, T(q_n+1))`, Strang's splitting with the torque
 /// read at both ends. For a torque from a potential (gravity on a top) the energy then
-/// does not drift (3.6e-6 at most over an hour of a heavy top at 60 Hz in f32); holding
-/// `T(q_n)` over the whole step lets it drift (30%).
+/// does not drift; holding `T(q_n)` over the whole step lets it drift.
 #[inline(always)]
 pub(crate) fn step2_with<R: Real>(
     inertia: &Inertia<R>,

@@ -7,7 +7,7 @@
 //! vectors with shuffles (BENCHMARKS.md, issue 19). Here the quaternion is one register
 //! from the start, and a turn `q (c + s e_K)` is `q c + perm_K(q) (±s)`: one shuffle for
 //! the permutation, two broadcasts, a sign flip, two products and a sum. The angles,
-//! norms and body momentum stay scalar, as in `splitting.rs`. The turn about `L` is a
+//! norms and body momentum stay scalar, as in the component form. The turn about `L` is a
 //! left product `w q`: four products of broadcast, pre-signed `w` lanes (known from the
 //! step's start) with three shuffles of `q`.
 //!
