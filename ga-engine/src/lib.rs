@@ -84,6 +84,11 @@ mod turning;
 
 pub use error::BodyError;
 
+// The README's example, run as a doctest so that it stays true.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;
+
 /// The engine on glam 0.29 (feature `glam-0-29`).
 #[cfg(feature = "glam-0-29")]
 pub mod glam_0_29 {

@@ -1,8 +1,9 @@
 //! Many bodies with one `dt`: groups of `N` bodies stepped side by side in lanes.
 //!
-//! The bodies of a group are gathered into a [`Group`] (one lane per body: [`Lanes`] of
-//! four, or eight in one AVX register for f32 where the CPU has AVX), stepped by the
-//! same generic code as one body, and scattered back; the bodies left over at the end
+//! The bodies of a group are gathered into a [`Group`] (one lane per body: four in
+//! [`Lanes`](crate::real::Lanes), or eight in one AVX register for f32 where the CPU has
+//! AVX, as `dispatch.rs` chooses), stepped by the same generic code as one body, and
+//! scattered back; the bodies left over at the end
 //! are stepped one by one. Each lane rounds as the scalar does, so a body's bits do not
 //! depend on its neighbours, its position in the slice, the group width or the CPU.
 
