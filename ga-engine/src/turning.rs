@@ -1,7 +1,5 @@
-//! The quaternion the free flow's turns build up, as one trait for both forms of the
-//! turns (`divided.rs`, `projective.rs`): in components ([`Q`]), or, for one `f32` body on
-//! x86-64, in one SSE register (`sse.rs`). Every implementation does the same IEEE
-//! operations on each component, so they give the same bits.
+//! The quaternion the free flow's turns build up, as one trait ([`Turning`]) that both
+//! forms of the turns (`divided.rs`, `projective.rs`) are written against.
 
 use super::real::Real;
 use super::rotation::{Q, V};
