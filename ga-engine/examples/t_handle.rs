@@ -6,7 +6,7 @@
 //! largest excursion, and for the T-handle the flip period (mean time between successive
 //! flips in the same direction, from the sign changes of the momentum along the
 //! intermediate axis) against the exact flow's (`free_body_orbit`, elliptic functions in
-//! f64). Run: `cargo run --release -p ga-rigid --example engine_t_handle`.
+//! f64). Run: `cargo run --release -p ga-engine --example t_handle`.
 
 use ga_engine::f32::{
     explicit_gyroscopic_euler, implicit_gyroscopic_euler, step, step_order4, step_with, Body,

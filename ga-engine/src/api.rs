@@ -8,8 +8,9 @@ macro_rules! precision_api {
     ($glam:ident, $t:ident, $quat:ident, $vec3:ident, $mat3:ident, $step2:path, $slice_all:path) => {
         use crate::error::BodyError;
         use crate::inertia::Inertia;
+        use crate::parts::{Order, Parts};
         use crate::rotation::{Q, V};
-        use crate::slice::{self, Order, Parts};
+        use crate::slice;
         use ::$glam::{$mat3, $quat, $vec3};
 
         #[inline(always)]
@@ -332,7 +333,7 @@ macro_rules! engine_api {
                 Vec3,
                 Mat3,
                 crate::splitting::step2_f32,
-                slice::step_all_f32
+                crate::dispatch::step_all_f32
             );
         }
         /// The engine in `f64` (`DQuat`, `DVec3`, `DMat3`).
@@ -344,7 +345,7 @@ macro_rules! engine_api {
                 DVec3,
                 DMat3,
                 crate::splitting::step2,
-                slice::step_all_f64
+                crate::dispatch::step_all_f64
             );
         }
     };

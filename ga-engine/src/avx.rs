@@ -7,8 +7,9 @@
 //! operation the scalar does (`vaddps` rounds each lane as `addss` does; no FMA), so
 //! each body gets the bits it gets alone, with or without AVX.
 //!
-//! The code is generic (`splitting.rs` over [`Real`]) and inlined into [`step_all`],
-//! the one function compiled for AVX; the CPU is checked before it is called.
+//! The code is generic (`splitting.rs` over [`Real`]) and inlined into
+//! `dispatch.rs`'s `step_all_avx`, the one function compiled for AVX; the CPU is checked
+//! before it is called.
 
 use core::arch::x86_64::{
     __m256, _mm256_add_ps, _mm256_and_ps, _mm256_andnot_ps, _mm256_cmp_ps, _mm256_div_ps,
@@ -18,33 +19,6 @@ use core::arch::x86_64::{
 use core::ops::{Add, Div, Mul, Neg, Sub};
 
 use super::real::{Group, Real};
-use super::slice::{Order, Parts};
-
-/// Whether this CPU has AVX.
-#[inline(always)]
-pub(crate) fn available() -> bool {
-    #[cfg(target_feature = "avx")]
-    {
-        true
-    }
-    #[cfg(all(not(target_feature = "avx"), feature = "std"))]
-    {
-        std::is_x86_feature_detected!("avx")
-    }
-    #[cfg(all(not(target_feature = "avx"), not(feature = "std")))]
-    {
-        false
-    }
-}
-
-/// Every body of `states`, eight at a time.
-///
-/// # Safety
-/// The CPU must have AVX ([`available`]).
-#[target_feature(enable = "avx")]
-pub(crate) unsafe fn step_all<S: Parts<f32>>(states: &mut [S], h: f32, order: Order) {
-    super::slice::step_all::<f32, S, F32x8, 8>(states, h, order);
-}
 
 /// Eight `f32` stepped side by side.
 #[derive(Clone, Copy, Debug)]
@@ -62,8 +36,8 @@ macro_rules! avx_op {
             type Output = Self;
             #[inline(always)]
             fn $method(self, other: Self) -> Self {
-                // SAFETY: only reached from `step_all`, compiled for AVX and called on a
-                // CPU that has it.
+                // SAFETY: only reached from `dispatch.rs`'s `step_all_avx`, compiled for
+                // AVX and called on a CPU that has it.
                 F32x8(unsafe { $intrinsic(self.0, other.0) })
             }
         }

@@ -1,6 +1,6 @@
 //! A symmetric 3x3 tensor's principal moments and frame, once per body, in f64.
 //!
-//! A port of [`crate::inertia::symmetric_eigen`]'s cyclic Jacobi method (Golub & Van
+//! A port of ga-rigid's `inertia::symmetric_eigen` (its cyclic Jacobi method: Golub & Van
 //! Loan, *Matrix Computations*, 4th ed., section 8.5.2) that needs no standard library:
 //! square roots from `libm`, no sorting, and a diagonal input left exactly as it is (the
 //! frame is then the identity and the engine skips it). The eigenvector matrix is made

@@ -15,11 +15,12 @@
 //! ```
 //!
 //! # What is here
-//! - [`f32`](mod@f32) and [`f64`](mod@f64) (glam 0.32, feature `glam`; `glam_0_29` ... `glam_0_32` for
-//!   the glam a project pins, features `glam-0-29` ...): a [`f32::Body`] from an inertia
-//!   tensor in the body frame or from principal moments and their frame, diagonalised
-//!   once; [`f32::step`] (free flow plus kick, second order; the free flow split around
-//!   the Casimir `|L|^2` into three corrected axis turns, `splitting.rs`) and [`f32::step_order4`]
+//! - [`f32`](mod@f32) and [`f64`](mod@f64) (glam 0.32, feature `glam`; `glam_0_29` ...
+//!   `glam_0_32` for the glam a project pins, features `glam-0-29` ...): a [`f32::Body`]
+//!   from an inertia tensor in the body frame or from principal moments and their frame,
+//!   diagonalised once; [`f32::step`] (free flow plus kick, second order; the free flow
+//!   split around the Casimir `|L|^2` into three corrected axis turns, derived in the
+//!   repository's `docs/derivations/corrected-splitting.md`) and [`f32::step_order4`]
 //!   (its fourth-order composition) on the orientation and the world angular momentum;
 //!   the engines' baselines [`f32::explicit_gyroscopic_euler`] and
 //!   [`f32::implicit_gyroscopic_euler`] on the world angular velocity; the slice forms
@@ -33,11 +34,11 @@
 //! # The same bits everywhere: what is promised
 //! The steps use only IEEE-754 `+ - * /` and `sqrt` (each correctly rounded), in a fixed
 //! order: no fused multiply-add (Rust never contracts `a * b + c`, with or without
-//! `-C target-cpu=native`), no `sin`/`cos` at all (rational turns, `splitting.rs`), no
-//! reassociation. The one run-time CPU check is the f32 slice form's: with AVX it steps
-//! eight bodies in one register instead of four (`avx.rs`), each lane doing the scalar's
-//! operations in the scalar's order, so the bits are the same either way (a unit test in
-//! `slice.rs` compares both widths with one body at a time). So on every target where
+//! `-C target-cpu=native`), no `sin`/`cos` at all (rational turns), no reassociation. The
+//! one run-time CPU check is the f32 slice form's: with AVX it steps eight bodies in one
+//! register instead of four, each lane doing the scalar's operations in the scalar's
+//! order, so the bits are the same either way (a unit test compares both widths with one
+//! body at a time). So on every target where
 //! `f32`/`f64` are IEEE binary32/binary64 with round-to-nearest and no flush of
 //! subnormals (x86-64 with SSE2, AVX2 or AVX-512; AArch64; wasm32), the same inputs give
 //! the same bits, in the one-body, slice and parallel forms alike
@@ -59,13 +60,19 @@
 mod api;
 #[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
 mod avx;
+mod dispatch;
+mod divided;
 mod eigen;
 mod error;
 mod euler;
+mod free_flow;
 mod inertia;
 #[cfg(feature = "rayon")]
 mod parallel;
+mod parts;
 mod projective;
+mod range;
+mod rates;
 mod real;
 mod rotation;
 mod slice;
@@ -73,8 +80,14 @@ mod split;
 mod splitting;
 #[cfg(target_arch = "x86_64")]
 mod sse;
+mod turning;
 
 pub use error::BodyError;
+
+// The README's example, run as a doctest so that it stays true.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;
 
 /// The engine on glam 0.29 (feature `glam-0-29`).
 #[cfg(feature = "glam-0-29")]
@@ -94,7 +107,8 @@ pub mod glam_0_31 {
     engine_api!(glam_0_31);
 }
 
-/// The engine on glam 0.32 (feature `glam-0-32`, or `glam`), also at [`f32`](mod@f32) and [`f64`](mod@f64).
+/// The engine on glam 0.32 (feature `glam-0-32`, or `glam`), also at [`f32`](mod@f32) and
+/// [`f64`](mod@f64).
 #[cfg(feature = "glam-0-32")]
 pub mod glam_0_32 {
     engine_api!(glam_0_32);

@@ -1,52 +1,24 @@
-//! The free flow's three turns without a division: the body momentum and each angle
-//! carried as numerators over one common denominator, for the steps an engine takes.
+//! The free flow's three turns without a division, for the steps an engine takes (the
+//! range in `range.rs`): the body momentum and each angle carried as numerators over one
+//! common denominator, divided out once with the final normalisation. The same map as
+//! the divided form (`divided.rs`), rounded differently; docs/derivations/projective-turns.md
+//! has the derivation and the range's proof.
 //!
-//! `splitting.rs` turns the body momentum by `cos = (p^2 - b^2)/n`, `sin = 2pb/n` with
-//! `p = e - lambda b^2`, `n = p^2 + b^2`, and divides by `n` every turn; each turn's
-//! angle needs the last turn's momentum, so those divisions would sit one after another
-//! on the step's critical path. Here the momentum is `X / D` and the angle parameter
-//! `b = B / D`, and a turn works on the numerators:
+//! The momentum is `X / D` and the angle parameter `b = B / D`; a turn works on the
+//! numerators:
 //!
 //! - `P = e D^2 - lambda B^2` and `A = B D` are `p` and `b` times `D^2`, so the turn's
-//!   quaternion `P + A e_K` is `p + b e_K` scaled by `D^2` (the scale goes with the
-//!   normalisation at the end);
+//!   quaternion `P + A e_K` is `p + b e_K` scaled by `D^2`;
 //! - `C = P^2 - A^2` and `S = 2 P A` are `cos` and `sin` times `D^4 n`, and
 //!   `N = P^2 + A^2` is `D^4 n`;
 //! - the turned components are `C X_i + S X_j`, the untouched one `N X_K`, all over the
 //!   new denominator `D N`, and the next angle's numerators are `C (r X_i) + S (r X_j)`
 //!   and the same with `lambda r` (so that `lambda B^2` is one product, not two).
-//!
-//! That is the same map as `splitting.rs`, rounded differently, with no division until
-//! the quaternion is normalised.
-//!
-//! The numerators grow or shrink by each turn's `g = n` (`D` is multiplied by
-//! `N ~ D^4 g`): over the three turns every value stays within `g^31` of `|L|`. In the
-//! range the form is used in ([`RANGE`]), `0.81 <= g <= 1.27`, so with `|L| < 1e18`
-//! nothing overflows in `f32` and nothing comes near its smallest normal number that
-//! `|L|` itself does not; elsewhere `splitting.rs` turns with its clamps.
 
+use super::rates::Rates;
 use super::real::Real;
 use super::rotation::{turn_body_about, V};
-use super::splitting::{Rates, Turning};
-
-/// The projective form's range, as bounds on each turn's `b^2`, `|lambda| b^2` and
-/// `|1 - e|`, and on the turn about `L`'s `w^2`: then each turn's
-/// `g = (e - lambda b^2)^2 + b^2` lies in `[0.81, 1.27]` and `g^31 < 1.7e3`.
-/// `Split::reach` is the largest of the quotients by these (per `h^2 |L|^2`).
-///
-/// In that range the result stays in the starting quaternion's hemisphere, so it is
-/// normalised without the hemisphere test (a dot product and a select fewer at the end
-/// of the step's chain; `free_flow_normalized` in `splitting.rs`). A turn `p + b e_K`
-/// (times `D^2 > 0`) has the half-angle `atan(|b| / p) <= atan(0.25 / 0.9) = 0.271` rad,
-/// the turn about `L`, `(1 - w^2/3) + w L/|L|`, at most `atan(0.25 / 0.979) = 0.251`.
-/// Half-angles are distances on the unit sphere of quaternions, so the four turns move
-/// `q_p` by at most 1.07 rad, and the result's dot product with `q_p` is at least
-/// `cos 1.07 = 0.48` times their norms: the test would never negate (a unit test checks
-/// it at the range's edge).
-pub(crate) const RANGE: [f64; 4] = [0.0625, 0.05, 0.05, 0.0625];
-
-/// The largest squared body momentum the projective form takes (`|L| < 1e18`).
-pub(crate) const FAST_MOMENTUM2: f64 = 1e36;
+use super::turning::Turning;
 
 /// One turn about the body axis `K` by `b = B / D`: the quaternion `q (P + A e_K)`, the
 /// momentum's numerators turned, the next turn's `B` and `lambda B` for the axis `N`
@@ -118,7 +90,7 @@ fn turn<R: Real, T: Turning<R>, const K: usize, const N: usize>(
 /// squared norm) and the body momentum `body`: the turned quaternion scaled by a
 /// positive number, and its squared norm, `q_p2` times the turns' `N` (the last turn's
 /// multiplied in last, as it is the last to be known). The caller checks the range
-/// ([`RANGE`], [`FAST_MOMENTUM2`]).
+/// ([`RANGE`](crate::range::RANGE), [`FAST_MOMENTUM2`](crate::range::FAST_MOMENTUM2)).
 // Inlined only when optimised (see "Unoptimised builds" in `splitting.rs`).
 #[cfg_attr(not(debug_assertions), inline(always))]
 #[cfg_attr(debug_assertions, inline)]

@@ -225,6 +225,20 @@ impl<R: Real> Q<R> {
     }
 }
 
+#[cfg(test)]
+impl<R: Real> Q<R> {
+    /// The identity, for the unit tests.
+    pub(crate) fn identity() -> Q<R> {
+        let (zero, one) = (R::splat(0.0), R::splat(1.0));
+        Q {
+            x: zero,
+            y: zero,
+            z: zero,
+            w: one,
+        }
+    }
+}
+
 /// `L_b` seen from a body turned about its axis `k` by the angle whose cosine and sine
 /// are `c` and `s`: the body momentum after the turn.
 #[inline(always)]

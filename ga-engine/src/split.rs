@@ -1,6 +1,6 @@
 //! The free flow's split, chosen once per body: which principal axis is the Casimir's
 //! reference, which two turn, and the constants of the corrected turns
-//! (`splitting.rs` has the derivation).
+//! (docs/derivations/corrected-splitting.md has the derivation).
 //!
 //! With the inverse moments `k_o, k_m, k_r` of the outer, middle and reference axes,
 //! `alpha = k_o - k_r` and `beta = k_m - k_r` are the coefficients of the two turns.
@@ -40,7 +40,7 @@ pub(crate) struct Split<R> {
     /// `-2` times it.
     pub(crate) shift: R,
     /// Times `h^2 |L|^2`, the largest of the projective form's range quotients
-    /// (`projective::RANGE`): below 1, every turn is in its range.
+    /// (`range::RANGE`): below 1, every turn is in its range.
     pub(crate) reach: R,
 }
 
@@ -84,7 +84,7 @@ impl<R: Real> Split<R> {
         let (outer_rate, middle_rate) = (alpha / 4.0, beta / 2.0);
         let casimir_rate = inverse[2] / 2.0;
         let shift = libm::fabs(alpha * beta) / 6.0;
-        let [b, cubic_term, e, w] = super::projective::RANGE;
+        let [b, cubic_term, e, w] = super::range::RANGE;
         let reach = [
             outer_rate * outer_rate / b,
             middle_rate * middle_rate / b,
@@ -106,7 +106,7 @@ impl<R: Real> Split<R> {
     }
 
     /// The largest `|b|` of the outer and middle turns in the divided form
-    /// (`splitting.rs`): 64, or less where `|lambda| b^2` would pass `MAX_CUBIC_TERM`.
+    /// (`divided.rs`): 64, or less where `|lambda| b^2` would pass `MAX_CUBIC_TERM`.
     #[inline(always)]
     pub(crate) fn limits(&self) -> (R, R) {
         let limit = |lambda: R| {

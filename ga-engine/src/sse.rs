@@ -7,14 +7,14 @@
 //! vectors with shuffles (BENCHMARKS.md, issue 19). Here the quaternion is one register
 //! from the start, and a turn `q (c + s e_K)` is `q c + perm_K(q) (±s)`: one shuffle for
 //! the permutation, two broadcasts, a sign flip, two products and a sum. The angles,
-//! norms and body momentum stay scalar, as in `splitting.rs`. The turn about `L` is a
+//! norms and body momentum stay scalar, as in the component form. The turn about `L` is a
 //! left product `w q`: four products of broadcast, pre-signed `w` lanes (known from the
 //! step's start) with three shuffles of `q`.
 //!
 //! Every lane does the IEEE operations the component form does, on the same operands:
 //! `w c - x s` is `w c + (-x) s`, exactly (negation is exact, and `+` and `*` commute
 //! bit for bit). So the bits are those of `splitting::step2` on components, which the
-//! slice form and other targets run; a unit test below compares them.
+//! slice form and other targets run; a unit test in `splitting.rs` compares them.
 
 use core::arch::x86_64::{
     __m128, _mm_add_ps, _mm_add_ss, _mm_cvtss_f32, _mm_div_ps, _mm_movehl_ps, _mm_mul_ps,
@@ -23,7 +23,7 @@ use core::arch::x86_64::{
 
 use super::real::Real;
 use super::rotation::{Q, V};
-use super::splitting::Turning;
+use super::turning::Turning;
 
 /// A quaternion `[x, y, z, w]`, lane 0 first (glam's `Quat` layout).
 #[derive(Clone, Copy, Debug)]
@@ -207,93 +207,4 @@ unsafe fn cross(a: __m128, b: __m128) -> __m128 {
     let a_zxy = _mm_shuffle_ps::<0b11_01_00_10>(a, a);
     let b_yzx = _mm_shuffle_ps::<0b11_00_10_01>(b, b);
     _mm_sub_ps(_mm_mul_ps(a_yzx, b_zxy), _mm_mul_ps(a_zxy, b_yzx))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::inertia::Inertia;
-
-    /// A seeded stream of floats in [-1, 1).
-    fn stream(mut seed: u64) -> impl FnMut() -> f32 {
-        move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 40) as f32 / (1u64 << 23) as f32 - 1.0
-        }
-    }
-
-    fn bits(q: Q<f32>, l: V<f32>) -> [u32; 7] {
-        [q.x, q.y, q.z, q.w, l.x, l.y, l.z].map(f32::to_bits)
-    }
-
-    #[test]
-    fn the_register_form_gives_the_component_forms_bits() {
-        let mut next = stream(0x2545_f491_4f6c_dd1d);
-        let mut compared = 0;
-        for case in 0..20_000 {
-            let moments = [1.0 + next().abs() * 3.0, 0.5 + next().abs(), 2.0 + next()];
-            let frame = Q {
-                x: next(),
-                y: next(),
-                z: next(),
-                w: next(),
-            };
-            let inertia = if case % 2 == 0 {
-                Inertia::from_principal(moments, frame)
-            } else {
-                Inertia::from_principal(
-                    moments,
-                    Q {
-                        x: 0.0,
-                        y: 0.0,
-                        z: 0.0,
-                        w: 1.0,
-                    },
-                )
-            };
-            let Ok(inertia) = inertia else { continue };
-            // Every few cases, momenta and steps far out, where the clamps decide.
-            let scale = match case % 5 {
-                0 => 1e3,
-                1 => 1e19,
-                _ => 10.0,
-            };
-            let q = Q {
-                x: next(),
-                y: next(),
-                z: next(),
-                w: next(),
-            };
-            let l = V {
-                x: next() * scale,
-                y: next() * scale,
-                z: next() * scale,
-            };
-            let t = V {
-                x: next(),
-                y: next(),
-                z: next(),
-            };
-            let h = if case % 7 == 0 { 2.0 } else { 1.0 / 60.0 };
-            let (q, _) = super::super::splitting::step2(&inertia, q, l, t, h);
-            let expected = super::super::splitting::step2(&inertia, q, l, t, h);
-            let got = super::super::splitting::step2_in::<f32, Q4>(&inertia, q, l, t, h);
-            assert_eq!(
-                bits(got.0, got.1),
-                bits(expected.0, expected.1),
-                "case {case}"
-            );
-            // What `step2_f32` runs: the frame's products in the register too.
-            let got = super::super::splitting::step2_f32(&inertia, q, l, t, h);
-            assert_eq!(
-                bits(got.0, got.1),
-                bits(expected.0, expected.1),
-                "case {case}"
-            );
-            compared += 1;
-        }
-        assert!(compared > 15_000);
-    }
 }

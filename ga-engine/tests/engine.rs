@@ -585,10 +585,11 @@ fn every_form_runs_on_a_small_thread_stack() {
         .expect("no stack overflow");
 }
 
-/// The registry's `splitting-corrected` (ga-rigid) and the engine's step are the same method: a T-handle
-/// (moments 1 : 2 : 3, `|m| = 12.6`) stepped by both in f64 agrees to rounding after
-/// ten steps and stays within the flips' amplification of rounding (1e-7) over six
-/// flips; a wrong coefficient would part them by the method's own error, 1e-4 and up.
+/// The registry's `splitting-corrected` (ga-rigid) and the engine's step are the same
+/// method: a T-handle (moments 1 : 2 : 3, `|m| = 12.6`) stepped by both in f64 agrees to
+/// rounding after ten steps and stays within the flips' amplification of rounding (1e-7)
+/// over six flips; a wrong coefficient would part them by the method's own error, 1e-4
+/// and up.
 #[test]
 fn the_registry_form_is_the_engines_step() {
     use ga_core::f64::g3::Rotor;

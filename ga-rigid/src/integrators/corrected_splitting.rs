@@ -1,8 +1,9 @@
-//! The corrected Casimir split, `ga_rigid::engine`'s step in the registry's terms (f64,
-//! on the rotor and body momentum): the free body split around `|m|^2` with the largest
-//! moment as reference, the outer turns about the smallest moment's axis and the middle
-//! turn about the middle one, each turn's angle corrected so that the single-axis parts
-//! of the splitting's `h^2` energy error cancel (`engine/splitting.rs` derives it):
+//! The corrected Casimir split, the step of the `ga_engine` crate in the registry's terms
+//! (f64, on the rotor and body momentum): the free body split around `|m|^2` with the
+//! largest moment as reference, the outer turns about the smallest moment's axis and the
+//! middle turn about the middle one, each turn's angle corrected so that the single-axis
+//! parts of the splitting's `h^2` energy error cancel, then the turn about `m`
+//! (docs/derivations/corrected-splitting.md derives it and lists its tests). Each turn:
 //!
 //! ```text
 //! outer half turn:  2 atan2(a, e_o - lambda_o a^2),  a = h alpha m_o / 4,
@@ -11,8 +12,7 @@
 //! lambda_o = (alpha - 8 beta) / 3 alpha,  lambda_m = (beta + 4 alpha) / 3 beta,
 //! ```
 //!
-//! `alpha`, `beta` the outer and middle inverse moments less the reference's. What is
-//! left of the `h^2` error is `alpha beta (alpha - 2 beta) / 12 m_o^2 m_m^2`. A torque
+//! `alpha`, `beta` the outer and middle inverse moments less the reference's. A torque
 //! enters as Strang half-kicks around the free step, as in [`Splitting`].
 //!
 //! [`Splitting`]: super::Splitting
