@@ -26,7 +26,7 @@ const RESTART: usize = 100;
 /// The step sizes, as `h |w(0)|`.
 const RATES: [f64; 2] = [0.1, 0.5];
 
-/// The T-handle and its start (the values of `ga-rigid/src/report/engine_steps.rs`).
+/// The T-handle and its start (the values of `ga-rigid-cli/src/report/engine_steps.rs`).
 fn t_handle() -> (RigidBody, State) {
     let moments = [3.0, 5.0, 9.0];
     let momentum = [0.0, 2.0, 0.01];
