@@ -132,6 +132,12 @@ pub fn verdict(scene: &SceneResult, method: Method) -> String {
         };
     }
     let hw = |r: &Measurement| r.mean_step(scene.t_end) * scene.rate;
+    // An adaptive method's runs differ by tolerance, not step: its h|w| is the mean step's.
+    let (step, steps) = if method.step_kind() == StepKind::Adaptive {
+        ("mean h|w|", "tolerance")
+    } else {
+        ("h|w|", "step")
+    };
     let bad: Vec<&&Measurement> = rows.iter().filter(|r| !good(r)).collect();
     let coarsest_good = rows
         .iter()
@@ -140,7 +146,7 @@ pub fn verdict(scene: &SceneResult, method: Method) -> String {
         .fold(f64::NAN, f64::max);
     if bad.is_empty() {
         return format!(
-            "stable: keeps the solution at every step tried, up to h|w| = {coarsest_good:.3}"
+            "keeps the solution at every {steps} tried, up to {step} = {coarsest_good:.3}"
         );
     }
     let failed = bad.iter().filter(|r| r.failure.is_some()).count();
@@ -154,13 +160,13 @@ pub fn verdict(scene: &SceneResult, method: Method) -> String {
         "fails or loses the solution"
     };
     if coarsest_good.is_nan() {
-        if least_bad == most_bad {
-            format!("{what} at the one step tried (h|w| = {least_bad:.3})")
+        if bad.len() == 1 {
+            format!("{what} at the one {steps} tried ({step} = {least_bad:.3})")
         } else {
-            format!("{what} at every step tried (h|w| from {least_bad:.3} to {most_bad:.3})")
+            format!("{what} at every {steps} tried ({step} from {least_bad:.3} to {most_bad:.3})")
         }
     } else {
-        format!("{what} from h|w| = {least_bad:.3}; keeps it up to h|w| = {coarsest_good:.3}")
+        format!("{what} from {step} = {least_bad:.3}; keeps it up to {step} = {coarsest_good:.3}")
     }
 }
 

@@ -14,6 +14,7 @@ mod page;
 mod plot;
 mod results;
 mod scenes;
+pub mod style;
 
 pub use analysis::{
     cost_per_step_ns, error_floor, fastest_at, fastest_over, observed_order, order, scene_kind,
@@ -33,9 +34,10 @@ pub use measure::{
     MIN_REPEATS, MIN_TOTAL_TIME, TIGHTEST_TOL,
 };
 pub use page::{html, svg_name};
-pub use plot::{method_colour, simulation_svg, svg};
+pub use plot::{fastest_of_ours_to_the_peers_best, simulation_svg, svg};
 pub use results::{csv, CSV_HEADER};
 pub use scenes::{reference_scenes, stability_scenes, suite, Sweep, TestScene, SAMPLES};
+pub use style::method_colour;
 
 use std::fmt::Write as _;
 

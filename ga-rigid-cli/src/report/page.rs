@@ -120,12 +120,7 @@ pub fn html(report: &Report, svg_names: &[String]) -> String {
 /// The answer first: per kind of scene and error level, the fastest stepping method over
 /// all the kind's scenes, and the exact or closed form where one applies.
 fn summary_section(out: &mut String, report: &Report) {
-    let mut kinds: Vec<SceneKind> = report
-        .scenes
-        .iter()
-        .map(|s| s.kind)
-        .filter(|k| *k != SceneKind::Long)
-        .collect();
+    let mut kinds: Vec<SceneKind> = report.scenes.iter().map(|s| s.kind).collect();
     kinds.sort();
     kinds.dedup();
     out.push_str(
@@ -134,9 +129,11 @@ fn summary_section(out: &mut String, report: &Report) {
          scene of the kind in the least time (its fastest run at that error on each scene, \
          summed over the scenes). Below it the best <b>peer</b> (what people use today: \
          ode_solvers' Dop853 and Dopri5 on the quaternion form, the engines' gyroscopic Euler \
-         steps, Buss's method) by the same rule, with the ratio of the two times; then, where \
-         the body has one, the exact or closed-form solution, which takes no steps and is \
-         evaluated at the sample times.</p>\n<table><tr><th>kind (scenes)</th>",
+         steps, Buss's method) by the same rule, with the ratio of the two times. Where the \
+         bodies have an exact or closed-form solution (no steps: it is evaluated at the sample \
+         times) and it is faster than every stepper, it is the answer and heads the cell. \
+         Where none of ours reached a level on every scene, the cell names the fastest method \
+         of any kind on each scene that reached it.</p>\n<table><tr><th>kind (scenes)</th>",
     );
     for level in ERROR_LEVELS {
         let _ = write!(out, "<th>≤ {level:.0e} rad</th>");
@@ -160,22 +157,64 @@ fn summary_section(out: &mut String, report: &Report) {
             let exact = fastest_over(&scenes, level, |m| m.step_kind() == StepKind::AtSamples);
             let peer = fastest_over(&scenes, level, |m| !ours(m));
             out.push_str("<td>");
-            match &stepper {
-                Some(pick) => {
+            // The exact form is the answer where it beats every stepper: a stepper far
+            // slower than it must not be the headline.
+            let exact_first = match (&exact, &stepper) {
+                (Some(e), Some(s)) => e.time_us < s.time_us,
+                (Some(_), None) => true,
+                (None, _) => false,
+            };
+            if let (true, Some(pick)) = (exact_first, &exact) {
+                let _ = write!(
+                    out,
+                    "<b>{}</b> (no steps)<br>{:.1} µs",
+                    pick.method.name(),
+                    pick.time_us
+                );
+                if let Some(s) = &stepper {
                     let _ = write!(
                         out,
-                        "<b>{}</b><br>{:.1} µs",
-                        pick.method.name(),
-                        pick.time_us
+                        "<br><span class=\"note\">fastest stepper {}: {:.1} µs ({:.1}x the exact \
+                         form's time; for torques and bodies without one)</span>",
+                        s.method.name(),
+                        s.time_us,
+                        s.time_us / pick.time_us
                     );
                 }
-                None => out.push_str("none of ours reached it everywhere"),
+            } else {
+                match &stepper {
+                    Some(pick) => {
+                        let _ = write!(
+                            out,
+                            "<b>{}</b><br>{:.1} µs",
+                            pick.method.name(),
+                            pick.time_us
+                        );
+                    }
+                    None => {
+                        out.push_str("none of ours reached it on every scene");
+                        let each: Vec<String> = scenes
+                            .iter()
+                            .map(|scene| {
+                                let who =
+                                    fastest_at(scene, level).map_or("nobody", |r| r.method.name());
+                                format!("{}: {who}", esc(&scene.name))
+                            })
+                            .collect();
+                        let _ = write!(
+                            out,
+                            "<br><span class=\"note\">fastest there: {}</span>",
+                            each.join("; ")
+                        );
+                    }
+                }
             }
             match (&peer, &stepper) {
                 (Some(p), Some(s)) => {
                     let _ = write!(
                         out,
-                        "<br><span class=\"note\">best peer {}: {:.1} µs; ours take {:.2}x</span>",
+                        "<br><span class=\"note\">best peer {}: {:.1} µs; our stepper takes \
+                         {:.2}x</span>",
                         p.method.name(),
                         p.time_us,
                         s.time_us / p.time_us
@@ -191,7 +230,7 @@ fn summary_section(out: &mut String, report: &Report) {
                 }
                 (None, _) => out.push_str("<br><span class=\"note\">no peer reached it</span>"),
             }
-            if let Some(pick) = exact {
+            if let (false, Some(pick)) = (exact_first, &exact) {
                 let _ = write!(
                     out,
                     "<br><span class=\"note\">{} (no steps): {:.1} µs</span>",
@@ -255,16 +294,23 @@ fn section(out: &mut String, index: usize, scene: &SceneResult, svg_name: &str) 
     }
     out.push_str(
         "</table>\n<table><tr><th>method</th><th>observed order</th><th>cost per step (ns)</th>\
-         <th>energy drift at the finest setting</th><th>stability</th></tr>\n",
+         <th>energy drift at the finest setting</th><th>accuracy by step size (error &lt; 0.1 kept or lost)</th></tr>\n",
     );
     let mut methods: Vec<Method> = scene.rows.iter().map(|r| r.method).collect();
     methods.dedup();
     for method in methods {
-        let order = match order(scene, method) {
-            Order::Fitted(p, n) => format!("{p:.2} ({n} runs)"),
-            Order::TooFewPoints(n) => {
-                format!("– ({n} runs above the floor, {MIN_ORDER_POINTS} needed)")
+        let floor = error_floor(scene);
+        let order = match (method.step_kind(), order(scene, method)) {
+            (StepKind::AtSamples, _) => "– (no steps)".to_string(),
+            // Error against the mean step of runs at several tolerances is not the
+            // method's order: the controller chooses the steps.
+            (StepKind::Adaptive, Order::Fitted(p, n)) => {
+                format!("– (adaptive; error falls as mean step^{p:.1} over {n} tolerances)")
             }
+            (_, Order::Fitted(p, n)) => format!("{p:.2} ({n} runs)"),
+            (_, Order::TooFewPoints(n)) => format!(
+                "– ({n} runs with error between {floor:.0e} and 0.1; {MIN_ORDER_POINTS} needed)"
+            ),
         };
         let cost = cost_per_step_ns(scene, method).map_or("–".to_string(), |c| format!("{c:.0}"));
         // The last row of a method is its finest step or tightest tolerance.
@@ -296,7 +342,7 @@ fn section(out: &mut String, index: usize, scene: &SceneResult, svg_name: &str) 
         error_floor(scene),
         MIN_ORDER_POINTS
     );
-    out.push_str(" Cost per step: median time over steps (evaluations for methods without steps), median over settings. Energy drift: the largest relative drift over the run. Stability: a run keeps the solution while its attitude and relative momentum errors stay below 0.1 over the whole run; h|w| is the (mean) step times the initial rate.</p>\n");
+    out.push_str(" Cost per step: median time over steps (evaluations for methods without steps), median over settings. Energy drift: the largest relative drift over the run. Accuracy by step size: a run keeps the solution while its attitude and relative momentum errors stay below 0.1 over the whole run; h|w| is the (mean) step times the initial rate. This is not the registry's stability limit that <code>ga-rigid simulate</code> checks before a run (the h|w|max beyond which a method's numbers blow up, listed in <code>--help</code>): a method can lose the accuracy well before it loses stability.</p>\n");
     for (what, why) in &scene.left_out {
         let _ = writeln!(
             out,

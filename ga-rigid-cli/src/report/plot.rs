@@ -1,50 +1,28 @@
 //! One work-precision diagram per scene, as SVG text: the largest attitude error over the
-//! run against the median run time, log-log, one line per method with its points
-//! labelled by step or tolerance, the legend in its own panel beside the plot.
+//! run against the median run time, log-log, in four panels of at most eight methods
+//! ([`super::style`]): each method a line through its settings, in its own colour and
+//! marker, the peers dashed, the legend under each panel. Points are not labelled with
+//! their step or tolerance (labels on crowded lines overprint each other); results.csv
+//! and the page's tables hold every setting.
 
+use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use ga_rigid::csv::Row;
 use ga_rigid::error::Error;
 use ga_rigid::registry::Method;
 
+use super::style::{panel, style, Marker, Panel};
 use super::SceneResult;
 
 /// Errors below this are drawn at it: a log axis has no zero.
 const ERROR_FLOOR: f64 = 1e-17;
 
-/// Each method's colour, the same in every diagram (by the method's place in
-/// [`Method::ALL`]; a method added later takes the next colour of the palette).
-#[must_use]
-pub fn method_colour(method: Method) -> RGBColor {
-    const PALETTE: [RGBColor; 21] = [
-        RGBColor(140, 86, 75),   // brown
-        RGBColor(0, 0, 0),       // black
-        RGBColor(214, 39, 40),   // red
-        RGBColor(255, 127, 14),  // orange
-        RGBColor(44, 160, 44),   // green
-        RGBColor(31, 119, 180),  // blue
-        RGBColor(148, 103, 189), // purple
-        RGBColor(227, 119, 194), // pink
-        RGBColor(23, 190, 207),  // cyan
-        RGBColor(188, 189, 34),  // olive
-        // The high-order steppers of issue 11: darker tones, apart from the ten above.
-        RGBColor(0, 90, 50),   // dark green
-        RGBColor(8, 48, 107),  // navy
-        RGBColor(103, 0, 13),  // maroon
-        RGBColor(127, 39, 4),  // rust
-        RGBColor(63, 0, 125),  // indigo
-        RGBColor(0, 109, 119), // teal
-        // The peers (drawn dashed): greys and muted tones.
-        RGBColor(110, 110, 110), // grey
-        RGBColor(184, 134, 11),  // dark gold
-        RGBColor(170, 0, 170),   // magenta
-        RGBColor(90, 160, 0),    // lime
-        RGBColor(80, 80, 140),   // slate
-    ];
-    let index = Method::ALL.iter().position(|&m| m == method).unwrap_or(0);
-    PALETTE[index % PALETTE.len()]
-}
+/// The size of one panel (a chart and its legend) in pixels.
+const PANEL: (u32, u32) = (620, 470);
+
+/// The height of the legend under each chart: four rows of two columns.
+const LEGEND_HEIGHT: u32 = 104;
 
 /// The scene's work-precision diagram as an SVG document.
 pub fn svg(scene: &SceneResult) -> Result<String, Error> {
@@ -55,24 +33,90 @@ pub fn svg(scene: &SceneResult) -> Result<String, Error> {
 
 type DrawResult = Result<(), Box<dyn std::error::Error>>;
 
-fn draw(scene: &SceneResult, text: &mut String) -> DrawResult {
-    let mut methods: Vec<Method> = scene.rows.iter().map(|r| r.method).collect();
-    methods.dedup();
-    let points = |method: Method| -> Vec<(f64, f64, String)> {
-        scene
-            .rows
-            .iter()
-            .filter(|r| r.method == method)
-            .filter_map(|r| {
-                let e = r.errors?.attitude_max.max(ERROR_FLOOR);
-                Some((r.time_us()?, e, r.label()))
+/// A method's drawn points: (median run time in µs, largest attitude error), in the order
+/// of its settings.
+fn points(scene: &SceneResult, method: Method) -> Vec<(f64, f64)> {
+    scene
+        .rows
+        .iter()
+        .filter(|r| r.method == method)
+        .filter_map(|r| {
+            let e = r.errors?.attitude_max.max(ERROR_FLOOR);
+            Some((r.time_us()?, e))
+        })
+        .filter(|(t, e)| t.is_finite() && e.is_finite() && *t > 0.0)
+        .collect()
+}
+
+/// Our method to draw beside the peers: the fastest of ours to reach the smallest error
+/// any peer reached on this scene; without such a run, ours that reached the smallest
+/// error.
+#[must_use]
+pub fn fastest_of_ours_to_the_peers_best(scene: &SceneResult) -> Option<Method> {
+    let mut ours: Vec<Method> = scene
+        .rows
+        .iter()
+        .map(|r| r.method)
+        .filter(|&m| panel(m) != Panel::Peers)
+        .collect();
+    ours.dedup();
+    let peers_best = scene
+        .rows
+        .iter()
+        .filter(|r| panel(r.method) == Panel::Peers)
+        .flat_map(|r| points(scene, r.method))
+        .map(|(_, e)| e)
+        .fold(f64::INFINITY, f64::min);
+    let fastest = ours
+        .iter()
+        .filter_map(|&m| {
+            let t = points(scene, m)
+                .into_iter()
+                .filter(|&(_, e)| e <= peers_best)
+                .map(|(t, _)| t)
+                .fold(f64::INFINITY, f64::min);
+            t.is_finite().then_some((t, m))
+        })
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .map(|(_, m)| m);
+    fastest.or_else(|| {
+        ours.iter()
+            .filter_map(|&m| {
+                let e = points(scene, m)
+                    .into_iter()
+                    .map(|(_, e)| e)
+                    .fold(f64::INFINITY, f64::min);
+                e.is_finite().then_some((e, m))
             })
-            .filter(|(t, e, _)| t.is_finite() && e.is_finite() && *t > 0.0)
-            .collect()
-    };
-    let all: Vec<(f64, f64, String)> = methods.iter().flat_map(|&m| points(m)).collect();
+            .min_by(|a, b| a.0.total_cmp(&b.0))
+            .map(|(_, m)| m)
+    })
+}
+
+/// The methods drawn in `which`: those of the scene in that panel, and beside the peers
+/// our fastest to their best.
+fn panel_methods(scene: &SceneResult, which: Panel) -> Vec<Method> {
+    let mut methods: Vec<Method> = which
+        .methods()
+        .into_iter()
+        .filter(|&m| scene.rows.iter().any(|r| r.method == m))
+        .collect();
+    if which == Panel::Peers {
+        methods.extend(fastest_of_ours_to_the_peers_best(scene));
+    }
+    methods
+}
+
+fn draw(scene: &SceneResult, text: &mut String) -> DrawResult {
+    // One pair of axes for the four panels, so that they compare at a glance.
+    let all: Vec<(f64, f64)> = scene
+        .rows
+        .iter()
+        .map(|r| r.method)
+        .flat_map(|m| points(scene, m))
+        .collect();
     let (mut t_lo, mut t_hi, mut e_lo, mut e_hi) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
-    for (t, e, _) in &all {
+    for (t, e) in &all {
         t_lo = t_lo.min(*t);
         t_hi = t_hi.max(*t);
         e_lo = e_lo.min(*e);
@@ -81,100 +125,111 @@ fn draw(scene: &SceneResult, text: &mut String) -> DrawResult {
     if all.is_empty() {
         (t_lo, t_hi, e_lo, e_hi) = (1.0, 10.0, 1e-10, 1.0);
     }
-    // Room around the points, and for the labels to the right of the last ones; at
-    // least two decades each way, so that a log axis gets a few whole-decade ticks
-    // rather than a crowd of labels inside one decade.
+    // Room around the points; at least two decades each way, so that a log axis gets a
+    // few whole-decade ticks rather than a crowd of labels inside one decade.
     let widen = |lo: f64, hi: f64| {
         let mid = (lo * hi).sqrt();
         let half = (hi / lo).sqrt().max(10.0);
         (mid / half)..(mid * half)
     };
-    let x_range = widen(t_lo / 2.0, t_hi * 6.0);
+    let x_range = widen(t_lo / 2.0, t_hi * 2.0);
     let y_range = widen(e_lo / 5.0, e_hi * 5.0);
 
-    let root = SVGBackend::with_string(text, (1000, 640)).into_drawing_area();
+    let size = (2 * PANEL.0, 2 * PANEL.1 + 40);
+    let root = SVGBackend::with_string(text, size).into_drawing_area();
     root.fill(&WHITE)?;
-    let (plot_area, legend_area) = root.split_horizontally(760);
-    let mut chart = ChartBuilder::on(&plot_area)
-        .caption(&scene.name, ("sans-serif", 20))
-        .margin(12)
-        .x_label_area_size(48)
-        .y_label_area_size(80)
-        .build_cartesian_2d(x_range.log_scale(), y_range.log_scale())?;
-    chart
-        .configure_mesh()
-        .x_desc("run time, median of repeated runs (µs)")
-        .y_desc("largest attitude error over the run (rad)")
-        .x_label_formatter(&|x| format!("{x:.0e}"))
-        .y_label_formatter(&|y| format!("{y:.0e}"))
-        .label_style(("sans-serif", 13))
-        .axis_desc_style(("sans-serif", 15))
-        .light_line_style(RGBColor(235, 235, 235))
-        .draw()?;
-    for (i, &method) in methods.iter().enumerate() {
-        let colour = method_colour(method);
-        let pts = points(method);
-        // Labels above the points for every other method, below for the rest: lines that
-        // run close together keep their labels apart.
-        let label_dy = if i % 2 == 0 { -13 } else { 5 };
-        // Peers dashed, ours solid: which line is whose shows without the legend.
-        if method.info().peer.is_some() {
-            chart.draw_series(DashedLineSeries::new(
-                pts.iter().map(|(t, e, _)| (*t, *e)),
-                6,
-                4,
-                colour.stroke_width(2),
-            ))?;
-        } else {
-            chart.draw_series(LineSeries::new(
-                pts.iter().map(|(t, e, _)| (*t, *e)),
-                colour.stroke_width(2),
-            ))?;
-        }
-        // Only a line's two ends are labelled (its coarsest and finest setting): a label on
-        // every point crowded the plot; the CSV has every setting.
-        let last = pts.len().saturating_sub(1);
-        chart.draw_series(pts.iter().enumerate().map(|(k, (t, e, label))| {
-            let text = if k == 0 || k == last {
-                label.clone()
+    let root = root.titled(&scene.name, ("sans-serif", 22))?;
+    let areas = root.split_evenly((2, 2));
+    for (area, which) in areas.iter().zip(Panel::ALL) {
+        let (chart_area, legend_area) = area.split_vertically(PANEL.1 - LEGEND_HEIGHT);
+        let methods = panel_methods(scene, which);
+        let mut chart = ChartBuilder::on(&chart_area)
+            .caption(which.title(), ("sans-serif", 16))
+            .margin(10)
+            .x_label_area_size(40)
+            .y_label_area_size(64)
+            .build_cartesian_2d(x_range.clone().log_scale(), y_range.clone().log_scale())?;
+        chart
+            .configure_mesh()
+            .x_desc("median run time (µs)")
+            .y_desc("largest attitude error (rad)")
+            .x_label_formatter(&|x| format!("{x:.0e}"))
+            .y_label_formatter(&|y| format!("{y:.0e}"))
+            .label_style(("sans-serif", 12))
+            .axis_desc_style(("sans-serif", 13))
+            .light_line_style(RGBColor(235, 235, 235))
+            .draw()?;
+        for &method in &methods {
+            let look = style(method);
+            let pts = points(scene, method);
+            if look.dashed {
+                chart.draw_series(DashedLineSeries::new(
+                    pts.iter().copied(),
+                    6,
+                    4,
+                    look.colour.stroke_width(2),
+                ))?;
             } else {
-                String::new()
-            };
-            EmptyElement::at((*t, *e))
-                + Circle::new((0, 0), 4, colour.filled())
-                + Text::new(
-                    text,
-                    (6, label_dy),
-                    ("sans-serif", 11).into_font().color(&colour),
-                )
-        }))?;
+                chart.draw_series(LineSeries::new(
+                    pts.iter().copied(),
+                    look.colour.stroke_width(2),
+                ))?;
+            }
+            chart.draw_series(
+                pts.iter()
+                    .map(|&p| EmptyElement::at(p) + marker(look.marker, look.colour)),
+            )?;
+        }
+        legend(&legend_area, scene, &methods)?;
     }
+    root.present()?;
+    Ok(())
+}
 
-    legend_area.fill(&WHITE)?;
-    let font = ("sans-serif", 15).into_font();
-    legend_area.draw(&Text::new("method", (10, 40), font.clone()))?;
-    for (i, &method) in methods.iter().enumerate() {
-        let y = 70 + 24 * i as i32;
-        let colour = method_colour(method);
-        legend_area.draw(&Rectangle::new([(10, y), (34, y + 4)], colour.filled()))?;
+/// A marker centred on its point.
+fn marker<DB: DrawingBackend>(
+    shape: Marker,
+    colour: RGBColor,
+) -> DynElement<'static, DB, (i32, i32)> {
+    match shape {
+        Marker::Circle => Circle::new((0, 0), 4, colour.filled()).into_dyn(),
+        Marker::Square => Rectangle::new([(-4, -4), (4, 4)], colour.filled()).into_dyn(),
+        Marker::Triangle => TriangleMarker::new((0, 0), 5, colour.filled()).into_dyn(),
+        Marker::Ring => Circle::new((0, 0), 4, colour.stroke_width(2)).into_dyn(),
+    }
+}
+
+/// The legend under a panel: two columns, each entry the method's line (dashed for peers)
+/// with its marker, and its name with the number of its runs that failed.
+fn legend(
+    area: &DrawingArea<SVGBackend<'_>, Shift>,
+    scene: &SceneResult,
+    methods: &[Method],
+) -> DrawResult {
+    let font = ("sans-serif", 12).into_font();
+    let column = (PANEL.0 - 40) as i32 / 2;
+    for (k, &method) in methods.iter().enumerate() {
+        let (x, y) = (20 + column * (k as i32 / 4), 12 + 22 * (k as i32 % 4));
+        let look = style(method);
+        let line = look.colour.stroke_width(2);
+        if look.dashed {
+            area.draw(&PathElement::new(vec![(x, y), (x + 10, y)], line))?;
+            area.draw(&PathElement::new(vec![(x + 16, y), (x + 26, y)], line))?;
+        } else {
+            area.draw(&PathElement::new(vec![(x, y), (x + 26, y)], line))?;
+        }
+        area.draw(&(EmptyElement::at((x + 13, y)) + marker(look.marker, look.colour)))?;
         let failed = scene
             .rows
             .iter()
             .filter(|r| r.method == method && r.failure.is_some())
             .count();
-        let peer = if method.info().peer.is_some() {
-            " (peer)"
-        } else {
-            ""
-        };
-        let name = if failed > 0 {
-            format!("{}{peer} ({failed} failed)", method.name())
-        } else {
-            format!("{}{peer}", method.name())
-        };
-        legend_area.draw(&Text::new(name, (42, y - 6), font.clone()))?;
+        let mut name = method.name().to_string();
+        if failed > 0 {
+            name.push_str(&format!(" ({failed} failed)"));
+        }
+        area.draw(&Text::new(name, (x + 34, y - 7), font.clone()))?;
     }
-    root.present()?;
     Ok(())
 }
 
