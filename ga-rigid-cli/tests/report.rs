@@ -5,8 +5,8 @@
 use std::path::{Path, PathBuf};
 
 use ga_rigid::registry::{Method, StepKind};
-use ga_rigid_cli::report::{self, reference_scenes, Size, TestScene, CSV_HEADER};
 use ga_rigid::scene::Scene;
+use ga_rigid_cli::report::{self, reference_scenes, Size, TestScene, CSV_HEADER};
 
 /// A fresh directory for one test, under cargo's per-target temporary directory.
 fn test_dir(name: &str) -> PathBuf {

@@ -7,7 +7,10 @@ mod support;
 use ga_core::f64::g3::*;
 use ga_rigid::dynamics::{omega_from_vector, Gravity, RigidBody, State};
 use ga_rigid::error::Error;
-use ga_rigid::integrators::{CasimirSplitting, DormandPrince, ExactFreeBody, ImplicitMidpoint, Integrator, LieRk4, Rk4, Splitting};
+use ga_rigid::integrators::{
+    CasimirSplitting, DormandPrince, ExactFreeBody, ImplicitMidpoint, Integrator, LieRk4, Rk4,
+    Splitting,
+};
 use support::*;
 
 /// A fixed-step method by name.
