@@ -22,7 +22,7 @@ use std::sync::OnceLock;
 use ga_rigid::dynamics::State;
 use ga_rigid::registry::{Method, Step, StepKind};
 use ga_rigid_cli::report::{
-    attitude_error, errors, reference_scenes, references, sample_times, TestScene,
+    attitude_error, errors, reference_scenes, references, sample_times, TestScene, SAMPLES,
 };
 
 /// A scene cut to its first `TURN` radians (at its initial rate), with its references.
@@ -199,9 +199,6 @@ fn observed_orders(p: &Prepared, method: Method, order: u32) -> (Option<f64>, Op
             break;
         }
     }
-    if std::env::var_os("HARNESS_DEBUG").is_some() {
-        println!("  {method} low {low:.1e}: attitude {attitude:?}\n  momentum {momentum:?}");
-    }
     let fit = |points: &[(f64, f64)]| {
         (points.len() >= FIT_POINTS).then(|| fitted_slope(&points[points.len() - FIT_POINTS..]))
     };
@@ -284,4 +281,182 @@ fn fixed_step_methods_converge_at_their_registered_order_on_every_reference_scen
         }
     }
     assert!(checked > 0);
+}
+
+/// What a method keeps exactly (to rounding) on a free body.
+#[derive(Clone, Copy, Debug, Default)]
+struct Promises {
+    /// The Casimir `|m|`.
+    momentum_norm: bool,
+    /// The space angular momentum `L = R m ~R` (and with it `|m|`).
+    space_momentum: bool,
+    /// The kinetic energy.
+    energy: bool,
+}
+
+/// The invariants each method promises on a free body, from its documentation. The match
+/// has no wildcard: a new method in the registry does not compile here until its promises
+/// are stated.
+fn promises(method: Method) -> Promises {
+    let none = Promises::default();
+    let all = Promises {
+        momentum_norm: true,
+        space_momentum: true,
+        energy: true,
+    };
+    // Compositions of exact rotations of `m` about body axes, each the flow of a part of
+    // the Hamiltonian that is invariant under rotations in space (Dullweber-Leimkuhler-
+    // McLachlan; Buss: `L` moves only by the torque's impulse; Moser-Veselov: its
+    // `Omega` turns the attitude and, transposed, the body momentum).
+    let rotations = Promises {
+        momentum_norm: true,
+        space_momentum: true,
+        energy: false,
+    };
+    match method {
+        Method::ClosedForm | Method::Exact => all,
+        // Without a torque each step is the exact free flow.
+        Method::ExactSplitting
+        | Method::ExactSplitting4
+        | Method::ExactSplitting6
+        | Method::ExactSplitting8 => all,
+        Method::Splitting
+        | Method::SplittingCayley
+        | Method::SplittingCasimir
+        | Method::SplittingCorrected
+        | Method::Splitting4
+        | Method::Splitting6
+        | Method::Splitting8
+        | Method::Buss2 => rotations,
+        // The discrete Moser-Veselov step keeps its energy too (a discrete Lagrangian
+        // whose energy is the kinetic energy; McLachlan-Zanna 2005).
+        Method::MoserVeselov => all,
+        // The implicit midpoint rule keeps every quadratic invariant of the ODE: `|m|^2`
+        // and the energy, not `L`, which is not quadratic in its unknowns.
+        Method::Midpoint | Method::MidpointQuaternion => Promises {
+            momentum_norm: true,
+            space_momentum: false,
+            energy: true,
+        },
+        Method::Rk4
+        | Method::LieRk4
+        | Method::Dopri
+        | Method::LieDop853
+        | Method::LieDop853Cayley
+        | Method::Dop853Quaternion
+        | Method::Dopri5Quaternion
+        | Method::EulerGyroExplicit
+        | Method::EulerGyroImplicit => none,
+    }
+}
+
+/// The bound on a promised invariant's relative drift and on `|R ~R - 1|`. A run here
+/// takes some 200 steps of a few roundings each (a random walk of some 1e-15), and the
+/// implicit methods solve their equations to rounding; 1e-12 leaves a wide margin and is
+/// far below any truncation error at these steps (h |w| = 0.05: above 1e-6 for every
+/// method that does not keep the invariant).
+const INVARIANT_BOUND: f64 = 1e-12;
+
+/// The adaptive methods' tolerance here (relative; the absolute one a thousandth of it).
+const ADAPTIVE_TOL: f64 = 1e-8;
+/// How far above its tolerance an adaptive method's global error may be: the tolerance
+/// bounds each step's local error, and some tens of steps a radian add up (the
+/// published-value tests of ga-rigid allow 1e3 times the tolerance).
+const ADAPTIVE_FACTOR: f64 = 1e3;
+/// How close an exact solution must come to the other reference: the references agree to
+/// some 1e-11 (`floor`), and the elliptic functions and the closed form are accurate to
+/// rounding.
+const EXACT_BOUND: f64 = 1e-9;
+
+/// The step of the invariant runs: h |w(0)| = 0.05, below every stability limit, and a
+/// whole number of steps between samples.
+fn invariant_steps(p: &Prepared) -> u64 {
+    let n = (p.scene.t_end * p.scene.rate() / 0.05).ceil() as u64;
+    n.div_ceil(SAMPLES) * SAMPLES
+}
+
+#[test]
+fn every_method_keeps_a_unit_rotor_and_the_free_body_invariants_it_promises() {
+    for p in prepared() {
+        let s = &p.scene;
+        let free = !s.body.has_torque();
+        let (methods, _) = s.methods();
+        let m0 = s.body.body_momentum(s.initial.omega).norm();
+        let l0 = s.body.space_momentum(&s.initial);
+        let e0 = s.body.energy(s.initial.omega);
+        for method in methods {
+            let step = match method.step_kind() {
+                StepKind::Fixed => Step::Fixed(s.t_end / invariant_steps(p) as f64 * (1.0 + 1e-9)),
+                StepKind::Adaptive => Step::Tolerance(ADAPTIVE_TOL),
+                StepKind::AtSamples => Step::AtSamples,
+            };
+            let states = match p.run(method, step) {
+                Ok(states) => states,
+                // ode_solvers' Dop853 gives up on the satellite, its stiffness test firing
+                // at t = 0.16 (the report shows the failed row): a known limit of the peer,
+                // not ours, kept in view here so that any other failure fails.
+                Err(e)
+                    if method == Method::Dop853Quaternion
+                        && s.name == "gravity-gradient satellite"
+                        && e.to_string().contains("stiff") =>
+                {
+                    println!("{} / {method}: {e}", s.name);
+                    continue;
+                }
+                Err(e) => panic!("{} / {method}: {e}", s.name),
+            };
+            let accuracy = errors(s, &states, p.reference_for(method));
+            let error = accuracy.attitude_max.max(accuracy.momentum_max);
+            match method.step_kind() {
+                StepKind::Adaptive => assert!(
+                    error < ADAPTIVE_FACTOR * ADAPTIVE_TOL,
+                    "{} / {method}: error {error:e} at tol {ADAPTIVE_TOL:e}",
+                    s.name
+                ),
+                StepKind::AtSamples => assert!(
+                    error < EXACT_BOUND,
+                    "{} / {method}: {error:e} off the other reference",
+                    s.name
+                ),
+                StepKind::Fixed => {}
+            }
+            let promised = promises(method);
+            let (mut unit, mut norm, mut space, mut energy) = (0f64, 0f64, 0f64, 0f64);
+            for state in &states {
+                let r = state.rotor;
+                unit = unit
+                    .max((r.s * r.s + r.e12 * r.e12 + r.e13 * r.e13 + r.e23 * r.e23 - 1.0).abs());
+                norm = norm.max((s.body.body_momentum(state.omega).norm() - m0).abs() / m0);
+                space = space.max((s.body.space_momentum(state) - l0).norm() / l0.norm());
+                energy = energy.max((s.body.energy(state.omega) - e0).abs() / e0);
+            }
+            println!(
+                "{} / {method}: error {error:.1e}, |R~R - 1| {unit:.1e}, |m| {norm:.1e}, L {space:.1e}, energy {energy:.1e}",
+                s.name
+            );
+            assert!(
+                unit < INVARIANT_BOUND,
+                "{} / {method}: |R~R - 1| = {unit:e}",
+                s.name
+            );
+            if !free {
+                continue;
+            }
+            for (what, kept, drift) in [
+                (
+                    "|m|",
+                    promised.momentum_norm || promised.space_momentum,
+                    norm,
+                ),
+                ("L", promised.space_momentum, space),
+                ("energy", promised.energy, energy),
+            ] {
+                assert!(
+                    !kept || drift < INVARIANT_BOUND,
+                    "{} / {method}: {what} drifts by {drift:e}",
+                    s.name
+                );
+            }
+        }
+    }
 }
