@@ -180,18 +180,6 @@ fn measured_order(name: &str, h0: f64) -> f64 {
 }
 
 #[test]
-fn rk4_converges_at_order_four() {
-    let order = measured_order("rk4", 0.1);
-    assert!((3.8..=4.2).contains(&order), "{order}");
-}
-
-#[test]
-fn lie_rk4_converges_at_order_four() {
-    let order = measured_order("lie-rk4", 0.1);
-    assert!((3.8..=4.2).contains(&order), "{order}");
-}
-
-#[test]
 fn midpoint_converges_at_order_two() {
     let order = measured_order("midpoint", 0.1);
     assert!((1.9..=2.1).contains(&order), "{order}");
