@@ -155,6 +155,13 @@ pub struct MethodInfo {
     pub name: &'static str,
     /// The step control it takes.
     pub kind: StepKind,
+    /// The order `p` of a fixed-step method on a free body: its global error falls as
+    /// `h^p`. `None` for the adaptive methods and the exact solutions.
+    pub order: Option<u32>,
+    /// The order under a torque; it differs where a torque enters less accurately than the
+    /// free flow (Buss's update takes the torque's
+    /// impulse by an explicit Euler step, first order).
+    pub order_under_torque: Option<u32>,
     /// About how long one step takes in a release build, in nanoseconds: measured here on
     /// a heavy top (the dearer case) by timing `simulate` over 4e5 steps, on a shared
     /// 2-core AMD EPYC; per sample for the methods evaluated at the samples, and per
@@ -191,6 +198,8 @@ pub const METHODS: [MethodInfo; 26] = [
         method: Method::ClosedForm,
         name: "closed-form",
         kind: StepKind::AtSamples,
+        order: None,
+        order_under_torque: None,
         ns_per_step: 200.0,
         summary: "the closed-form solution (torque-free symmetric top)",
         step_limit: StepLimit::None,
@@ -200,6 +209,8 @@ pub const METHODS: [MethodInfo; 26] = [
         method: Method::Exact,
         name: "exact",
         kind: StepKind::AtSamples,
+        order: None,
+        order_under_torque: None,
         ns_per_step: 1000.0,
         summary: "the exact flow of the free body (Jacobi elliptic functions)",
         step_limit: StepLimit::None,
@@ -209,6 +220,8 @@ pub const METHODS: [MethodInfo; 26] = [
         method: Method::Rk4,
         name: "rk4",
         kind: StepKind::Fixed,
+        order: Some(4),
+        order_under_torque: Some(4),
         ns_per_step: 250.0,
         summary: "classical fourth-order Runge-Kutta, rotor renormalised",
         step_limit: StepLimit::Rate(2.0),
@@ -218,6 +231,8 @@ pub const METHODS: [MethodInfo; 26] = [
         method: Method::LieRk4,
         name: "lie-rk4",
         kind: StepKind::Fixed,
+        order: Some(4),
+        order_under_torque: Some(4),
         ns_per_step: 250.0,
         summary: "fourth-order Runge-Kutta-Munthe-Kaas on the rotor group",
         step_limit: StepLimit::Rate(2.0),
@@ -227,6 +242,8 @@ pub const METHODS: [MethodInfo; 26] = [
         method: Method::Midpoint,
         name: "midpoint",
         kind: StepKind::Fixed,
+        order: Some(2),
+        order_under_torque: Some(2),
         ns_per_step: 400.0,
         summary: "the implicit midpoint rule (symplectic, order two)",
         step_limit: StepLimit::Rate(2.5),
@@ -236,6 +253,8 @@ pub const METHODS: [MethodInfo; 26] = [
         method: Method::Splitting,
         name: "splitting",
         kind: StepKind::Fixed,
+        order: Some(2),
+        order_under_torque: Some(2),
         ns_per_step: 500.0,
         summary: "splitting into exact axis rotations (Dullweber-Leimkuhler-McLachlan)",
         step_limit: StepLimit::Rate(3.0),
@@ -245,6 +264,8 @@ pub const METHODS: [MethodInfo; 26] = [
         method: Method::SplittingCayley,
         name: "splitting-cayley",
         kind: StepKind::Fixed,
+        order: Some(2),
+        order_under_torque: Some(2),
         ns_per_step: 150.0,
         summary: "the same splitting with rational (Cayley) axis turns, no sine",
         step_limit: StepLimit::Rate(3.0),
@@ -254,6 +275,8 @@ pub const METHODS: [MethodInfo; 26] = [
         method: Method::SplittingCasimir,
         name: "splitting-casimir",
         kind: StepKind::Fixed,
+        order: Some(2),
+        order_under_torque: Some(2),
         ns_per_step: 120.0,
         summary: "the free body split around its Casimir |m|^2, rational turns, order two",
         step_limit: StepLimit::Rate(3.0),
@@ -263,6 +286,8 @@ pub const METHODS: [MethodInfo; 26] = [
         method: Method::SplittingCorrected,
         name: "splitting-corrected",
         kind: StepKind::Fixed,
+        order: Some(2),
+        order_under_torque: Some(2),
         ns_per_step: 120.0,
         summary:
             "the Casimir split with turns corrected to cancel its one-axis h^2 error: engine's step",
@@ -273,6 +298,8 @@ pub const METHODS: [MethodInfo; 26] = [
         method: Method::Dopri,
         name: "dopri",
         kind: StepKind::Adaptive,
+        order: None,
+        order_under_torque: None,
         ns_per_step: 100.0,
         summary: "adaptive Dormand-Prince 5(4)",
         step_limit: StepLimit::None,
@@ -282,6 +309,8 @@ pub const METHODS: [MethodInfo; 26] = [
         method: Method::ExactSplitting,
         name: "exact-splitting",
         kind: StepKind::Fixed,
+        order: Some(2),
+        order_under_torque: Some(2),
         ns_per_step: 250.0,
         summary: "torque kick, exact free flow, torque kick (Celledoni et al. 2008), order two",
         step_limit: StepLimit::RateUnderTorque(30.0),
@@ -291,6 +320,8 @@ pub const METHODS: [MethodInfo; 26] = [
         method: Method::ExactSplitting4,
         name: "exact-splitting-4",
         kind: StepKind::Fixed,
+        order: Some(4),
+        order_under_torque: Some(4),
         ns_per_step: 700.0,
         summary: "the exact-flow splitting raised to order four (Blanes-Moan SRKN_6^b)",
         step_limit: StepLimit::RateUnderTorque(30.0),
@@ -300,6 +331,8 @@ pub const METHODS: [MethodInfo; 26] = [
         method: Method::ExactSplitting6,
         name: "exact-splitting-6",
         kind: StepKind::Fixed,
+        order: Some(6),
+        order_under_torque: Some(6),
         ns_per_step: 1100.0,
         summary: "the exact-flow splitting raised to order six (Blanes-Moan SRKN_11^b)",
         step_limit: StepLimit::RateUnderTorque(30.0),
@@ -309,6 +342,8 @@ pub const METHODS: [MethodInfo; 26] = [
         method: Method::ExactSplitting8,
         name: "exact-splitting-8",
         kind: StepKind::Fixed,
+        order: Some(8),
+        order_under_torque: Some(8),
         ns_per_step: 1500.0,
         summary: "the exact-flow splitting composed to order eight (Kahan-Li)",
         step_limit: StepLimit::RateUnderTorque(30.0),
@@ -318,6 +353,8 @@ pub const METHODS: [MethodInfo; 26] = [
         method: Method::Splitting4,
         name: "splitting-4",
         kind: StepKind::Fixed,
+        order: Some(4),
+        order_under_torque: Some(4),
         ns_per_step: 1300.0,
         summary: "the axis-rotation splitting composed to order four (Suzuki)",
         step_limit: StepLimit::Rate(4.0),
@@ -327,6 +364,8 @@ pub const METHODS: [MethodInfo; 26] = [
         method: Method::Splitting6,
         name: "splitting-6",
         kind: StepKind::Fixed,
+        order: Some(6),
+        order_under_torque: Some(6),
         ns_per_step: 2200.0,
         summary: "the axis-rotation splitting composed to order six (Kahan-Li)",
         step_limit: StepLimit::Rate(4.0),
@@ -336,6 +375,8 @@ pub const METHODS: [MethodInfo; 26] = [
         method: Method::Splitting8,
         name: "splitting-8",
         kind: StepKind::Fixed,
+        order: Some(8),
+        order_under_torque: Some(8),
         ns_per_step: 3000.0,
         summary: "the axis-rotation splitting composed to order eight (Kahan-Li)",
         step_limit: StepLimit::Rate(4.0),
@@ -345,6 +386,8 @@ pub const METHODS: [MethodInfo; 26] = [
         method: Method::LieDop853,
         name: "lie-dop853",
         kind: StepKind::Adaptive,
+        order: None,
+        order_under_torque: None,
         ns_per_step: 100.0,
         summary: "adaptive order-8 Runge-Kutta-Munthe-Kaas on the rotor group (DOP853 pair)",
         step_limit: StepLimit::None,
@@ -354,6 +397,8 @@ pub const METHODS: [MethodInfo; 26] = [
         method: Method::LieDop853Cayley,
         name: "lie-dop853-cayley",
         kind: StepKind::Adaptive,
+        order: None,
+        order_under_torque: None,
         ns_per_step: 100.0,
         summary: "lie-dop853 in Cayley coordinates: the same pair, no exponentials in the stages",
         step_limit: StepLimit::None,
@@ -363,6 +408,8 @@ pub const METHODS: [MethodInfo; 26] = [
         method: Method::Dop853Quaternion,
         name: "dop853-quaternion",
         kind: StepKind::Adaptive,
+        order: None,
+        order_under_torque: None,
         ns_per_step: 300.0,
         summary: "peer: ode_solvers' Dop853 on body momentum and a unit quaternion",
         step_limit: StepLimit::None,
@@ -372,6 +419,8 @@ pub const METHODS: [MethodInfo; 26] = [
         method: Method::Dopri5Quaternion,
         name: "dopri5-quaternion",
         kind: StepKind::Adaptive,
+        order: None,
+        order_under_torque: None,
         ns_per_step: 200.0,
         summary: "peer: ode_solvers' Dopri5 on body momentum and a unit quaternion",
         step_limit: StepLimit::None,
@@ -381,6 +430,8 @@ pub const METHODS: [MethodInfo; 26] = [
         method: Method::EulerGyroExplicit,
         name: "euler-gyro-explicit",
         kind: StepKind::Fixed,
+        order: Some(1),
+        order_under_torque: Some(1),
         ns_per_step: 100.0,
         summary: "peer: game engines' explicit gyroscopic Euler step",
         step_limit: StepLimit::Rate(STEP_LIMIT_EULER_EXPLICIT),
@@ -390,6 +441,8 @@ pub const METHODS: [MethodInfo; 26] = [
         method: Method::EulerGyroImplicit,
         name: "euler-gyro-implicit",
         kind: StepKind::Fixed,
+        order: Some(1),
+        order_under_torque: Some(1),
         ns_per_step: 150.0,
         summary: "peer: Bullet's and Jolt's implicit gyroscopic Euler step (one Newton iteration)",
         step_limit: StepLimit::Rate(STEP_LIMIT_EULER_IMPLICIT),
@@ -399,6 +452,8 @@ pub const METHODS: [MethodInfo; 26] = [
         method: Method::Buss2,
         name: "buss-2",
         kind: StepKind::Fixed,
+        order: Some(2),
+        order_under_torque: Some(1),
         ns_per_step: 300.0,
         summary: "peer: Buss's augmented second-order rotation update",
         step_limit: StepLimit::Rate(STEP_LIMIT_BUSS),
@@ -408,6 +463,8 @@ pub const METHODS: [MethodInfo; 26] = [
         method: Method::MidpointQuaternion,
         name: "midpoint-quaternion",
         kind: StepKind::Fixed,
+        order: Some(2),
+        order_under_torque: Some(2),
         ns_per_step: 500.0,
         summary: "peer: implicit midpoint on body momentum and a quaternion, Newton-solved",
         step_limit: StepLimit::Rate(STEP_LIMIT_MIDPOINT_QUATERNION),
@@ -417,6 +474,8 @@ pub const METHODS: [MethodInfo; 26] = [
         method: Method::MoserVeselov,
         name: "moser-veselov",
         kind: StepKind::Fixed,
+        order: Some(2),
+        order_under_torque: Some(2),
         ns_per_step: 350.0,
         summary: "peer: discrete Moser-Veselov step (RATTLE), torque kicks around it",
         step_limit: StepLimit::Rate(STEP_LIMIT_MOSER_VESELOV),
@@ -456,6 +515,18 @@ impl Method {
     #[must_use]
     pub fn step_kind(self) -> StepKind {
         self.info().kind
+    }
+
+    /// The order of a fixed-step method's global error on a body with or without a
+    /// torque, if it has one (see [`MethodInfo::order`]).
+    #[must_use]
+    pub fn order(self, torque: bool) -> Option<u32> {
+        let info = self.info();
+        if torque {
+            info.order_under_torque
+        } else {
+            info.order
+        }
     }
 
     /// The largest stable `h |w|max` on a body with or without a torque, if any step is
@@ -550,7 +621,9 @@ impl Method {
             )),
             (StepKind::AtSamples, None, Some(_)) => Err(Error::invalid(
                 "tol",
-                format!("method {name} evaluates its solution at the sample times and takes no tol"),
+                format!(
+                    "method {name} evaluates its solution at the sample times and takes no tol"
+                ),
             )),
         }
     }
@@ -801,7 +874,10 @@ mod tests {
         let e = Method::Dopri.step(None, None).unwrap_err().to_string();
         assert!(e.starts_with("tol: "), "{e}");
         let e = Method::Dopri.step(Some(0.1), None).unwrap_err().to_string();
-        assert!(e.starts_with("dt: ") && e.contains("give tol, not dt"), "{e}");
+        assert!(
+            e.starts_with("dt: ") && e.contains("give tol, not dt"),
+            "{e}"
+        );
         let e = Method::Rk4.step(Some(-1.0), None).unwrap_err().to_string();
         assert!(e.starts_with("dt: ") && !e.contains("--"), "{e}");
         let e = Method::Exact
@@ -818,16 +894,28 @@ mod tests {
     /// command's: a program calling the library meets the same rules.
     #[test]
     fn the_rule_book_bounds_the_tolerance_and_refuses_subnormal_steps() {
-        let e = Method::Dopri.step(None, Some(1e-15)).unwrap_err().to_string();
-        assert_eq!(e, "tol: the tolerance must be between 1e-14 and 1, got 1e-15");
+        let e = Method::Dopri
+            .step(None, Some(1e-15))
+            .unwrap_err()
+            .to_string();
+        assert_eq!(
+            e,
+            "tol: the tolerance must be between 1e-14 and 1, got 1e-15"
+        );
         assert!(Method::Dopri.step(None, Some(2.0)).is_err());
         assert_eq!(
             Method::Dopri.step(None, Some(1e-14)).unwrap(),
             Step::Tolerance(1e-14)
         );
-        let e = Method::Rk4.step(Some(1e-310), None).unwrap_err().to_string();
+        let e = Method::Rk4
+            .step(Some(1e-310), None)
+            .unwrap_err()
+            .to_string();
         assert!(e.starts_with("dt: ") && e.contains("normal number"), "{e}");
-        let e = Method::Rk4.step(Some(f64::NAN), None).unwrap_err().to_string();
+        let e = Method::Rk4
+            .step(Some(f64::NAN), None)
+            .unwrap_err()
+            .to_string();
         assert_eq!(e, "dt: the step size must be positive and finite, got NaN");
         assert_eq!(Method::Rk4.given_step(None, None).unwrap(), None);
         assert_eq!(
