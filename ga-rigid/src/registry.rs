@@ -2,8 +2,9 @@
 //! build it, held in one table ([`METHODS`]). The command line, scene files, the report
 //! and the CSV all read names from here, so a method is spelt the same everywhere.
 //!
-//! To add a method: a variant of [`Method`], one row in [`METHODS`], one arm in
-//! [`Method::integrator`].
+//! To add a method: a variant of [`Method`], one row in [`METHODS`] (its order included),
+//! one arm in [`Method::integrator`], and its promises in the harness that runs every
+//! method on every report scene (`ga-rigid-cli/tests/methods.rs`).
 
 use std::fmt;
 use std::str::FromStr;
