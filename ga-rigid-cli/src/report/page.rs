@@ -132,7 +132,7 @@ fn summary_section(out: &mut String, report: &Report) {
          steps, Buss's method) by the same rule, with the ratio of the two times. Where the \
          bodies have an exact or closed-form solution (no steps: it is evaluated at the sample \
          times) and it is faster than every stepper, it is the answer and heads the cell. \
-         Where none of ours reached a level on every scene, the cell names the fastest method \
+         Where none of our steppers reached a level on every scene, the cell names the fastest method \
          of any kind on each scene that reached it.</p>\n<table><tr><th>kind (scenes)</th>",
     );
     for level in ERROR_LEVELS {
@@ -192,7 +192,7 @@ fn summary_section(out: &mut String, report: &Report) {
                         );
                     }
                     None => {
-                        out.push_str("none of ours reached it on every scene");
+                        out.push_str("none of our steppers reached it on every scene");
                         let each: Vec<String> = scenes
                             .iter()
                             .map(|scene| {
