@@ -63,7 +63,8 @@ pub struct SimulateArgs {
     #[arg(long, value_name = "N", default_value_t = limits::DEFAULT_MAX_STEPS)]
     pub max_steps: u64,
     /// Refuse runs whose attitude at t_end rounding alone would put further off than this
-    /// many radians (about |w|max t_end 2.2e-16, for every method, the exact ones too).
+    /// many radians (about |w|max t_end 2.2e-16, for every method, the exact ones too); inf
+    /// turns the check off.
     #[arg(long, value_name = "RAD", default_value_t = limits::DEFAULT_MAX_PHASE_ERROR, allow_hyphen_values = true)]
     pub max_phase_error: f64,
     /// Run a fixed step beyond the method's stability limit h |w|max (see --help of

@@ -2193,6 +2193,38 @@ fn runs_whose_phase_rounding_exceeds_the_bound_are_refused() {
     );
     assert_eq!(bad.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&bad.stderr).starts_with("--max-phase-error: "));
+    // Infinity turns the check off (it was refused as not finite, so the check could not
+    // be turned off at all); the same run then goes through.
+    let off = run(
+        &dir,
+        &[
+            "simulate",
+            "scene.toml",
+            "--method",
+            "exact",
+            "--max-phase-error",
+            "inf",
+        ],
+    );
+    assert_eq!(
+        off.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&off.stderr)
+    );
+    let nan = run(
+        &dir,
+        &[
+            "simulate",
+            "scene.toml",
+            "--method",
+            "exact",
+            "--max-phase-error",
+            "NaN",
+        ],
+    );
+    assert_eq!(nan.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&nan.stderr).starts_with("--max-phase-error: "));
 }
 
 /// `rk4 --dt 1e308` ran to energy 9.6e12 and exited 0; a step past a method's measured
