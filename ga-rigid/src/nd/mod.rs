@@ -21,18 +21,26 @@
 
 mod algebra;
 mod body;
+mod closed_form;
 mod eigen;
 mod integrator;
+mod lie_dopri5;
 mod lie_rk4;
+mod midpoint;
 mod rk4;
+mod splitting;
 mod state;
 mod torque;
 
 pub use algebra::{Algebra, G2, G3, G4, MAX_DIMENSION};
 pub use body::{PrincipalFrame, RigidBody};
+pub use closed_form::{planar, SymmetricBody4};
 pub use eigen::{rotor_from_matrix, symmetric_eigen, Matrix};
 pub use integrator::Integrator;
+pub use lie_dopri5::LieDopri5;
 pub use lie_rk4::LieRk4;
+pub use midpoint::ImplicitMidpoint;
 pub use rk4::Rk4;
+pub use splitting::PlaneSplitting;
 pub use state::State;
 pub use torque::{BodyTorque, SpaceTorque, Torque};
