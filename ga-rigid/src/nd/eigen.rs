@@ -5,6 +5,9 @@
 //! (Cartan-Dieudonne: a rotation of R^n is a product of at most `n` reflections, and the
 //! reflection `x -> -v x v` of a unit vector `v` makes the rotor `v1 v2 ... vm`).
 
+// The matrix kernels index rows and columns by name, as the formulas they transcribe do.
+#![allow(clippy::needless_range_loop)]
+
 use super::algebra::{Algebra, MAX_DIMENSION};
 
 /// A square matrix of size up to 4, `m[row][column]`; only the leading `n x n` block is

@@ -15,6 +15,9 @@
 //! the gyroscopic term (bilinear, so built from its action on the basis planes); a torque
 //! enters the residual but not the Jacobian.
 
+// The matrix kernels index rows and columns by name, as the formulas they transcribe do.
+#![allow(clippy::needless_range_loop)]
+
 use super::algebra::Algebra;
 use super::body::RigidBody;
 use super::integrator::{fixed_steps, unit, Integrator};
