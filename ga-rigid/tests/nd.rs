@@ -646,3 +646,60 @@ fn point_masses_give_second_moments_and_the_principal_rotor() {
     }
     assert!((G4::rotor_norm(frame.rotor) - 1.0).abs() < 1e-14);
 }
+
+#[test]
+fn midpoint_and_splitting_converge_at_order_two_in_four_dimensions() {
+    let (body, s0) = reference_body();
+    let (omega_ref, q_ref) = matrix_reference(&L4, &OMEGA0, &IDENTITY, 2.0, 2000);
+    let error = |state: State<G4>| {
+        max_difference(&flat(&rotor_matrix(state.rotor)), &flat(&q_ref))
+            .max(max_difference(&state.omega.to_array(), &omega_ref))
+    };
+    for name in ["midpoint", "splitting"] {
+        let run = |h: f64| {
+            let mut method: Box<dyn Integrator<G4>> = if name == "midpoint" {
+                Box::new(ImplicitMidpoint::new(h).unwrap())
+            } else {
+                Box::new(PlaneSplitting::new(h).unwrap())
+            };
+            error(method.advance(&body, 0.0, s0, 2.0).unwrap())
+        };
+        let errors = [0.02, 0.01, 0.005].map(run);
+        let orders = [
+            (errors[0] / errors[1]).log2(),
+            (errors[1] / errors[2]).log2(),
+        ];
+        eprintln!("{name}: errors {errors:?}, orders {orders:?}");
+        assert!(
+            orders.iter().all(|p| (1.9..2.1).contains(p)),
+            "{name}: {orders:?}"
+        );
+    }
+}
+
+#[test]
+fn a_time_dependent_torque_on_an_isotropic_body_adds_its_integral() {
+    // All second moments l: I = 2l, Omega x I(Omega) = 0, so I(Omega)' = T(t) and with
+    // T = t T0 (a closure), Omega(t) = Omega(0) + t^2 T0 / (4 l).
+    let l = 0.8;
+    let t0 = g4::Bivector::new(0.2, -0.1, 0.4, 0.3, -0.5, 0.1);
+    let body = RigidBody::<G4>::new(&[l; 4])
+        .unwrap()
+        .with_torque(move |t: f64, _: &State<G4>| t0 * t);
+    let s0 = State::<G4>::new(
+        g4::Rotor::ONE,
+        g4::Bivector::new(0.5, 0.0, 0.3, -0.2, 0.0, 0.9),
+    );
+    let t = 3.0;
+    let expected = (s0.omega + t0 * (t * t / (4.0 * l))).to_array();
+    let methods: Vec<Box<dyn Integrator<G4>>> = vec![
+        Box::new(Rk4::new(0.1).unwrap()),
+        Box::new(LieRk4::new(0.1).unwrap()),
+        Box::new(LieDopri5::new(1e-12, 1e-12).unwrap()),
+    ];
+    for mut method in methods {
+        let state = method.advance(&body, 0.0, s0, t).unwrap();
+        let d = max_difference(&state.omega.to_array(), &expected);
+        assert!(d < 1e-13, "{}: {d:e}", method.name());
+    }
+}
