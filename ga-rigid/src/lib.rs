@@ -15,6 +15,7 @@ pub mod inertia;
 mod input;
 pub mod integrators;
 pub mod limits;
+pub mod nd;
 pub mod peers;
 pub mod registry;
 pub mod run;
