@@ -16,11 +16,11 @@ mod common;
 
 use common::config;
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
-use ga_engine::glam::{Quat, Vec3};
 use ga_engine::f32::{
     explicit_gyroscopic_euler, implicit_gyroscopic_euler, par_step_slice, step, step_order4,
     step_slice, Body, BodyState,
 };
+use ga_engine::glam::{Quat, Vec3};
 
 /// Bodies per batch.
 const BODIES: usize = 1024;

@@ -35,7 +35,10 @@ use ga_rigid::dynamics::{
     omega_to_vector, RigidBody, State, SymmetricTop, DEFAULT_SYMMETRY_TOLERANCE,
 };
 use ga_rigid::error::Error;
-use ga_rigid::integrators::{ComposedSplitting, DormandPrince, ExactFreeBody, ExactSplitting, ImplicitMidpoint, Integrator, LieDop853, LieRk4, Rk4, Splitting};
+use ga_rigid::integrators::{
+    ComposedSplitting, DormandPrince, ExactFreeBody, ExactSplitting, ImplicitMidpoint, Integrator,
+    LieDop853, LieRk4, Rk4, Splitting,
+};
 use ga_rigid_cli::report::attitude_error;
 use rayon::prelude::*;
 
