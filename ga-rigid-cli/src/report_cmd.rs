@@ -12,11 +12,11 @@ use std::ffi::OsStr;
 use std::io::{IsTerminal as _, Write as _};
 use std::path::{Path, PathBuf};
 
-use ga_rigid::limits::seconds;
 use crate::output::{parent_dir, OutputPlan};
 use crate::progress::Ticker;
 use crate::ReportArgs;
 use ga_rigid::error::{echo, echo_path, Error as LibError};
+use ga_rigid::limits::seconds;
 
 use crate::error::Error;
 use crate::report::{self, Size, TestScene};

@@ -90,4 +90,3 @@ fn json_string(text: &str) -> String {
     out.push('"');
     out
 }
-

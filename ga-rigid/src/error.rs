@@ -372,13 +372,15 @@ mod tests {
     #[test]
     fn renamed_replaces_whole_words_in_field_and_message_only() {
         let names = [("dt", "--dt"), ("max_steps", "--max-steps")];
-        let e = Error::invalid("dt", "a dt of 1 is too big for dtx; raise max_steps")
-            .renamed(&names);
+        let e =
+            Error::invalid("dt", "a dt of 1 is too big for dtx; raise max_steps").renamed(&names);
         assert_eq!(
             e.to_string(),
             "--dt: a --dt of 1 is too big for dtx; raise --max-steps"
         );
-        let e = positive("dt", "the step", -1.0).unwrap_err().renamed(&names);
+        let e = positive("dt", "the step", -1.0)
+            .unwrap_err()
+            .renamed(&names);
         assert_eq!(e.to_string(), "--dt: the step must be positive, got -1");
         let read = Error::Read {
             field: "dt".into(),

@@ -57,7 +57,12 @@ pub struct Plan {
 /// `allow_unstable`), the work and the time. `given` is the result of
 /// [`Method::given_step`], which a front end may call earlier to report a bad step before
 /// it reads the scene.
-pub fn plan(scene: &Scene, method: Method, given: Option<Step>, limits: &Limits) -> Result<Plan, Error> {
+pub fn plan(
+    scene: &Scene,
+    method: Method,
+    given: Option<Step>,
+    limits: &Limits,
+) -> Result<Plan, Error> {
     let (step, source) = match given {
         Some(step) => (step, StepSource::Given),
         None => default_step(scene, method),

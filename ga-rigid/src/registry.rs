@@ -550,7 +550,9 @@ impl Method {
             )),
             (StepKind::AtSamples, None, Some(_)) => Err(Error::invalid(
                 "tol",
-                format!("method {name} evaluates its solution at the sample times and takes no tol"),
+                format!(
+                    "method {name} evaluates its solution at the sample times and takes no tol"
+                ),
             )),
         }
     }
@@ -801,7 +803,10 @@ mod tests {
         let e = Method::Dopri.step(None, None).unwrap_err().to_string();
         assert!(e.starts_with("tol: "), "{e}");
         let e = Method::Dopri.step(Some(0.1), None).unwrap_err().to_string();
-        assert!(e.starts_with("dt: ") && e.contains("give tol, not dt"), "{e}");
+        assert!(
+            e.starts_with("dt: ") && e.contains("give tol, not dt"),
+            "{e}"
+        );
         let e = Method::Rk4.step(Some(-1.0), None).unwrap_err().to_string();
         assert!(e.starts_with("dt: ") && !e.contains("--"), "{e}");
         let e = Method::Exact
@@ -818,16 +823,28 @@ mod tests {
     /// command's: a program calling the library meets the same rules.
     #[test]
     fn the_rule_book_bounds_the_tolerance_and_refuses_subnormal_steps() {
-        let e = Method::Dopri.step(None, Some(1e-15)).unwrap_err().to_string();
-        assert_eq!(e, "tol: the tolerance must be between 1e-14 and 1, got 1e-15");
+        let e = Method::Dopri
+            .step(None, Some(1e-15))
+            .unwrap_err()
+            .to_string();
+        assert_eq!(
+            e,
+            "tol: the tolerance must be between 1e-14 and 1, got 1e-15"
+        );
         assert!(Method::Dopri.step(None, Some(2.0)).is_err());
         assert_eq!(
             Method::Dopri.step(None, Some(1e-14)).unwrap(),
             Step::Tolerance(1e-14)
         );
-        let e = Method::Rk4.step(Some(1e-310), None).unwrap_err().to_string();
+        let e = Method::Rk4
+            .step(Some(1e-310), None)
+            .unwrap_err()
+            .to_string();
         assert!(e.starts_with("dt: ") && e.contains("normal number"), "{e}");
-        let e = Method::Rk4.step(Some(f64::NAN), None).unwrap_err().to_string();
+        let e = Method::Rk4
+            .step(Some(f64::NAN), None)
+            .unwrap_err()
+            .to_string();
         assert_eq!(e, "dt: the step size must be positive and finite, got NaN");
         assert_eq!(Method::Rk4.given_step(None, None).unwrap(), None);
         assert_eq!(

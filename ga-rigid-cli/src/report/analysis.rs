@@ -343,6 +343,9 @@ mod tests {
         let odd = scene.rows[1..].to_vec();
         let median = cost_per_step_ns(&self::scene(odd), Method::Rk4).unwrap();
         assert!((median - 2.0).abs() < 1e-9, "{median}");
-        assert_eq!(cost_per_step_ns(&self::scene(Vec::new()), Method::Rk4), None);
+        assert_eq!(
+            cost_per_step_ns(&self::scene(Vec::new()), Method::Rk4),
+            None
+        );
     }
 }

@@ -247,7 +247,10 @@ mod tests {
         };
         let (coarse, fine) = (error(0.1), error(0.05));
         let order = (coarse / fine).log2();
-        assert!((order - 2.0).abs() < 0.1, "order {order} ({coarse:e}, {fine:e})");
+        assert!(
+            (order - 2.0).abs() < 0.1,
+            "order {order} ({coarse:e}, {fine:e})"
+        );
         assert!(coarse < 2e-3, "{coarse:e}");
     }
 
