@@ -430,7 +430,10 @@ mod tests {
     fn the_stability_check_uses_the_step_taken_not_a_longer_dt() {
         assert!(check_stability(&spinning(101), Method::Rk4, Step::Fixed(1.0)).is_ok());
         let e = check_stability(&spinning(2), Method::Rk4, Step::Fixed(1.0)).unwrap_err();
-        assert!(e.to_string().contains("beyond rk4's stability limit"), "{e}");
+        assert!(
+            e.to_string().contains("beyond rk4's stability limit"),
+            "{e}"
+        );
     }
 
     /// A limit of 0 s is not "0.00 s": the estimate is printed with its digits.
