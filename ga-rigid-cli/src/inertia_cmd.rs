@@ -38,7 +38,10 @@ pub fn describe(scene: &Scene) -> String {
     let c = inertia.centre_of_mass();
     let _ = match inertia.mass() {
         Some(_) => writeln!(out, "centre_of_mass: [{}, {}, {}]", c.e1, c.e2, c.e3),
-        None => writeln!(out, "centre_of_mass: unknown (the scene gives moments only)"),
+        None => writeln!(
+            out,
+            "centre_of_mass: unknown (the scene gives moments only)"
+        ),
     };
     let [i1, i2, i3] = inertia.moments();
     let _ = writeln!(out, "moments: [{i1}, {i2}, {i3}]");
@@ -79,7 +82,10 @@ mod tests {
         let [a, b, c] = scene.inertia.moments();
         let (axial, across) = (0.3 * 0.25, 0.6 * (0.25 / 4.0 + 1.0));
         assert!((a - axial).abs() < 1e-12, "{a}");
-        assert!((b - across).abs() < 1e-12 && (c - across).abs() < 1e-12, "{b} {c}");
+        assert!(
+            (b - across).abs() < 1e-12 && (c - across).abs() < 1e-12,
+            "{b} {c}"
+        );
         use ga_core::f64::g3::{Sandwich, Vector};
         let axis = scene.inertia.rotor().sandwich(Vector::new(1.0, 0.0, 0.0));
         assert!((axis.e3.abs() - 1.0).abs() < 1e-12, "{axis:?}");
