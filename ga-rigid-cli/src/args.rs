@@ -59,7 +59,8 @@ pub struct SimulateArgs {
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
     /// Refuse runs estimated to take more steps than this (t_end / dt plus one per
-    /// sample for fixed steps; a rough estimate for dopri).
+    /// sample for fixed steps; a rough estimate for the adaptive methods), and stop an
+    /// adaptive method, peers included, that takes more (accepted and rejected).
     #[arg(long, value_name = "N", default_value_t = limits::DEFAULT_MAX_STEPS)]
     pub max_steps: u64,
     /// Refuse runs whose attitude at t_end rounding alone would put further off than this

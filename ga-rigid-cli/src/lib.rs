@@ -200,7 +200,7 @@ fn simulate(args: &SimulateArgs) -> Result<(), Error> {
     };
     let run = ga_rigid::limits::plan(&scene, method, given, &limits).map_err(in_flags)?;
     let mut progress = progress::Progress::new(scene.run.t_end, run.work.steps);
-    let rows = run_simulation_with_progress(&scene, method, run.step, &mut |t| {
+    let rows = run_simulation_with_progress(&scene, method, run.step, limits.max_steps, &mut |t| {
         progress.update(t);
     });
     progress.finish();

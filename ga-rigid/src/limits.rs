@@ -212,14 +212,26 @@ fn short(x: f64) -> String {
     }
 }
 
+/// The time between samples, `t_end / (samples - 1)`: the longest step a fixed-step method
+/// takes, whatever its `dt` ([`crate::integrators::Integrator::advance`] cuts each sample
+/// interval into equal steps of at most `dt`).
+#[must_use]
+pub fn sample_spacing(scene: &Scene) -> f64 {
+    scene.run.t_end / (scene.run.samples.max(2) - 1) as f64
+}
+
 /// Refuse a fixed step beyond the method's stability limit `h |w|max` (the registry's
-/// [`crate::registry::StepLimit`]), naming the limit and the largest stable step.
+/// [`crate::registry::StepLimit`]), naming the limit and the largest stable step. The step
+/// checked is the one taken: `dt`, or the sample spacing where that is shorter.
 pub fn check_stability(scene: &Scene, method: Method, step: Step) -> Result<(), Error> {
     let (Step::Fixed(h), Some(limit)) = (step, method.stable_step_rate(scene.torque.is_some()))
     else {
         return Ok(());
     };
     let rate = angular_speed_bound(scene);
+    // Each sample interval is cut into equal steps of at most `dt`, so no step is longer
+    // than the sample spacing.
+    let h = h.min(sample_spacing(scene));
     let hw = h * rate;
     if hw.is_nan() || hw > limit {
         return Err(Error::invalid(
@@ -355,10 +367,11 @@ pub const DEFAULT_MAX_SECONDS: u64 = 60;
 /// together, in seconds.
 pub const DEFAULT_REPORT_MAX_SECONDS: u64 = 600;
 
-/// A duration in seconds for a message: `0.5 s`, `42 s`, `3.1e4 s`.
+/// A duration in seconds for a message: `0.5 s`, `42 s`, `3.1e4 s`, `9.3e-5 s` (never
+/// `0.00 s` for a time that is not zero).
 #[must_use]
 pub fn seconds(s: f64) -> String {
-    if !s.is_finite() || s >= 1e4 {
+    if !s.is_finite() || s >= 1e4 || (s != 0.0 && s < 0.01) {
         format!("{:.1e} s", s.min(f64::MAX))
     } else if s >= 10.0 {
         format!("{s:.0} s")
@@ -400,6 +413,41 @@ pub fn check_seconds(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A free body turning at about 10 rad/s for 1 s, sampled `samples` times.
+    fn spinning(samples: usize) -> Scene {
+        let text = format!(
+            "[body]\nmoments = [1.0, 2.0, 2.5]\n[initial]\nrotor = [1, 0, 0, 0]\n\
+             omega = [1.0, 10.0, 2.0]\n[run]\nt_end = 1.0\nsamples = {samples}\n"
+        );
+        Scene::parse(&text, std::path::Path::new("spinning.toml")).unwrap()
+    }
+
+    /// `dt = 1` on a scene sampled every 0.01 s takes steps of 0.01 s (each sample
+    /// interval is cut into steps of at most `dt`): `h |w|max` about 0.1, well inside
+    /// rk4's limit. Sampled only at the ends, the same `dt` is a step of 1 s, beyond it.
+    #[test]
+    fn the_stability_check_uses_the_step_taken_not_a_longer_dt() {
+        assert!(check_stability(&spinning(101), Method::Rk4, Step::Fixed(1.0)).is_ok());
+        let e = check_stability(&spinning(2), Method::Rk4, Step::Fixed(1.0)).unwrap_err();
+        assert!(
+            e.to_string().contains("beyond rk4's stability limit"),
+            "{e}"
+        );
+    }
+
+    /// A limit of 0 s is not "0.00 s": the estimate is printed with its digits.
+    #[test]
+    fn a_tiny_time_estimate_is_not_printed_as_zero() {
+        assert_eq!(seconds(2.5e-4), "2.5e-4 s");
+        assert_eq!(seconds(0.0), "0.00 s");
+        assert_eq!(seconds(0.5), "0.50 s");
+        let e = check_seconds(Method::Rk4, Step::Fixed(0.01), 400.0, 0).unwrap_err();
+        // 400 steps of rk4 at its 250 ns a step.
+        let expected = seconds(400.0 * Method::Rk4.info().ns_per_step * 1e-9);
+        assert_eq!(expected, "1.0e-4 s");
+        assert!(e.to_string().contains("about 1.0e-4 s"), "{e}");
+    }
 
     #[test]
     fn short_numbers_keep_three_digits() {

@@ -12,25 +12,36 @@ use ga_core::f64::g3::{Rotor, Sandwich};
 use crate::csv::Row;
 use crate::dynamics::omega_to_vector;
 use crate::error::Error;
+use crate::integrators::Integrator;
+use crate::limits::DEFAULT_MAX_STEPS;
 use crate::registry::{Method, Step};
 use crate::scene::Scene;
 use crate::simulation::{Sample, Simulation};
 
-/// Integrate `scene` with `method` and return one row per sample time.
+/// Integrate `scene` with `method` and return one row per sample time; a method that
+/// chooses its own steps stops at the default step limit
+/// ([`crate::limits::DEFAULT_MAX_STEPS`]).
 pub fn run_simulation(scene: &Scene, method: Method, step: Step) -> Result<Vec<Row>, Error> {
-    run_simulation_with_progress(scene, method, step, &mut |_| {})
+    run_simulation_with_progress(scene, method, step, DEFAULT_MAX_STEPS, &mut |_| {})
 }
 
-/// [`run_simulation`], calling `progress(t)` after each sample (for a progress display).
+/// [`run_simulation`] with the run's step limit `max_steps` (the one
+/// [`crate::limits::plan`] checked the estimate against, [`Limits::max_steps`]), which a
+/// method that chooses its own steps stops at ([`Integrator::limit_steps`]), calling
+/// `progress(t)` after each sample (for a progress display).
+///
+/// [`Limits::max_steps`]: crate::limits::Limits::max_steps
 pub fn run_simulation_with_progress(
     scene: &Scene,
     method: Method,
     step: Step,
+    max_steps: u64,
     progress: &mut dyn FnMut(f64),
 ) -> Result<Vec<Row>, Error> {
     let body = scene.principal_body()?;
     let principal = scene.inertia.rotor();
-    let integrator = method.integrator(step)?;
+    let mut integrator = method.integrator(step)?;
+    integrator.limit_steps(max_steps);
     let state = scene.principal_state();
     // The dynamics name the principal moments `body.moments`; a scene may have written
     // its body as a shape, points or a mesh, and the message should name what it wrote.

@@ -737,7 +737,28 @@ fn field_error(e: &toml::de::Error) -> Error {
     } else {
         echo(&path)
     };
-    Error::invalid(field, one_line(message))
+    Error::invalid(field, in_words(&one_line(message)))
+}
+
+/// serde's Rust type names in a message (`expected i64`) in the words of a scene file.
+fn in_words(message: &str) -> String {
+    let mut out = message.to_string();
+    for (rust, words) in [
+        ("expected f64", "expected a number"),
+        ("expected i64", "expected a whole number"),
+        ("expected u64", "expected a whole number"),
+        ("expected usize", "expected a whole number"),
+        ("expected u32", "expected a whole number"),
+        ("expected a boolean", "expected true or false"),
+    ] {
+        if out.ends_with(rust)
+            || out.contains(&format!("{rust} "))
+            || out.contains(&format!("{rust};"))
+        {
+            out = out.replace(rust, words);
+        }
+    }
+    out
 }
 
 /// A parser or serde message on one line, with every quoted piece of the user's text
@@ -778,6 +799,28 @@ fn one_line(message: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A value of the wrong type is named in words, not by the Rust type serde wanted.
+    #[test]
+    fn a_wrong_type_says_what_the_field_expects_in_words() {
+        let scene = |moments: &str, samples: &str| {
+            format!(
+                "[body]\nmoments = {moments}\n[initial]\nrotor = [1, 0, 0, 0]\n\
+                 omega = [0.1, 1.0, 0.2]\n[run]\nt_end = 10.0\nsamples = {samples}\n"
+            )
+        };
+        let path = Path::new("s.toml");
+        let e = Scene::parse(&scene("[1.0, 2.0, 2.5]", "1.5"), path).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "run.samples: invalid type: floating point `1.5`, expected a whole number"
+        );
+        let e = Scene::parse(&scene("[1.0, 2.0, \"x\"]", "3"), path).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "body.moments: invalid type: string \"x\", expected a number"
+        );
+    }
 
     fn parse(text: &str) -> Result<Scene, Error> {
         Scene::parse(text, Path::new("scene.toml"))

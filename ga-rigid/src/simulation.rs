@@ -222,6 +222,10 @@ impl<T: Integrator + ?Sized> Integrator for Box<T> {
         (**self).accepted_steps()
     }
 
+    fn limit_steps(&mut self, max_steps: u64) {
+        (**self).limit_steps(max_steps);
+    }
+
     fn advance_to_each(
         &mut self,
         body: &RigidBody,

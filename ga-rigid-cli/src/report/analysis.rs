@@ -97,7 +97,8 @@ pub fn observed_order(scene: &SceneResult, method: Method) -> Option<f64> {
     }
 }
 
-/// The median cost of one step (or evaluation) over a method's finished runs, in ns.
+/// The median cost of one step (or evaluation) over a method's finished runs, in ns: the
+/// middle one, or the mean of the two middle ones of an even number.
 #[must_use]
 pub fn cost_per_step_ns(scene: &SceneResult, method: Method) -> Option<f64> {
     let mut costs: Vec<f64> = scene
@@ -107,7 +108,12 @@ pub fn cost_per_step_ns(scene: &SceneResult, method: Method) -> Option<f64> {
         .filter_map(|r| Some(r.time_us()? * 1e3 / r.steps as f64))
         .collect();
     costs.sort_by(f64::total_cmp);
-    costs.get(costs.len() / 2).copied()
+    let half = costs.len() / 2;
+    match costs.len() {
+        0 => None,
+        n if n % 2 == 1 => Some(costs[half]),
+        _ => Some(0.5 * (costs[half - 1] + costs[half])),
+    }
 }
 
 /// Whether a method kept the solution at the steps it ran: accurate (attitude and momentum
@@ -266,4 +272,86 @@ pub fn fastest_over(
         }
     }
     best
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::report::{Errors, ReferenceCheck, Sweep, Timing};
+    use std::time::Duration;
+
+    /// A finished run of `method` with `steps` steps in `time_us` and largest attitude
+    /// error `attitude`.
+    fn row(method: Method, steps: u64, time_us: f64, attitude: f64) -> Measurement {
+        let time = Duration::from_secs_f64(time_us * 1e-6);
+        Measurement {
+            method,
+            param_kind: "dt",
+            param: 10.0 / steps as f64,
+            steps,
+            errors: Some(Errors {
+                attitude_end: attitude,
+                attitude_max: attitude,
+                ..Errors::default()
+            }),
+            timing: Some(Timing {
+                median: time,
+                min: time,
+                repeats: 3,
+            }),
+            failure: None,
+            reference: Method::Exact,
+        }
+    }
+
+    fn scene(rows: Vec<Measurement>) -> SceneResult {
+        SceneResult {
+            name: "made up".into(),
+            source: "a test".into(),
+            t_end: 10.0,
+            rate: 1.0,
+            sweep: Sweep::WorkPrecision,
+            kind: SceneKind::FreeAsymmetric,
+            check: ReferenceCheck {
+                primary: "exact".into(),
+                secondary: "dopri".into(),
+                errors: Errors::default(),
+            },
+            rows,
+            left_out: Vec::new(),
+            elapsed: Duration::ZERO,
+        }
+    }
+
+    /// "Reaches the level" includes a run whose error is exactly the level.
+    #[test]
+    fn a_run_exactly_at_a_level_reaches_it() {
+        let scene = scene(vec![
+            row(Method::Rk4, 100, 50.0, 1e-8),
+            row(Method::Splitting, 100, 5.0, 1e-6),
+        ]);
+        assert_eq!(fastest_at(&scene, 1e-6).unwrap().method, Method::Splitting);
+    }
+
+    /// The median of an even number of costs is the mean of the two middle ones: costs
+    /// 1, 2, 4 and 8 ns a step (given out of order) have the median 3 ns.
+    #[test]
+    fn the_median_cost_of_an_even_number_of_runs_is_the_mean_of_the_middle_two() {
+        let scene = scene(vec![
+            row(Method::Rk4, 1000, 4.0, 1e-3),
+            row(Method::Rk4, 1000, 1.0, 1e-3),
+            row(Method::Rk4, 1000, 8.0, 1e-3),
+            row(Method::Rk4, 1000, 2.0, 1e-3),
+            row(Method::Splitting, 1000, 100.0, 1e-3),
+        ]);
+        let median = cost_per_step_ns(&scene, Method::Rk4).unwrap();
+        assert!((median - 3.0).abs() < 1e-9, "{median}");
+        let odd = scene.rows[1..].to_vec();
+        let median = cost_per_step_ns(&self::scene(odd), Method::Rk4).unwrap();
+        assert!((median - 2.0).abs() < 1e-9, "{median}");
+        assert_eq!(
+            cost_per_step_ns(&self::scene(Vec::new()), Method::Rk4),
+            None
+        );
+    }
 }

@@ -127,3 +127,41 @@ impl Integrator for CorrectedSplitting {
         check_finite(self.name(), State { rotor, omega })
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::dynamics::omega_from_vector;
+    use ga_core::f64::g3::{Bivector, Sandwich};
+
+    /// A turn whose half-angle parameter is beyond the limit `|lambda| a^2 <= 1365` (the
+    /// engine's `MAX_CUBIC_TERM`, docs/derivations/corrected-splitting.md) turns by
+    /// `2 atan2(a*, e - lambda a*^2)` with `a* = sqrt(1365 / |lambda|)`, computed here with
+    /// `cos` and `sin`; the momentum in space, `R m ~R`, is kept.
+    #[test]
+    fn a_turn_beyond_the_cubic_limit_turns_by_the_limited_angle() {
+        let lambda = 10.0;
+        let e = 1.0;
+        let (cubic, limit) = cubic_and_limit(lambda);
+        assert_eq!(cubic, lambda);
+        let a_star = (1365.0_f64 / lambda).sqrt();
+        let angle = 2.0 * a_star.atan2(e - lambda * a_star * a_star);
+        let m0 = [0.7, -1.3, 0.4];
+        for k in 0..3 {
+            let mut m = m0;
+            let rotor0 = Bivector::new(0.2, -0.4, 0.3).exp();
+            let mut rotor = rotor0;
+            corrected_turn(k, 50.0, (limit, cubic, e), &mut rotor, &mut m);
+            let (ka, kb) = ((k + 1) % 3, (k + 2) % 3);
+            let (c, s) = (angle.cos(), angle.sin());
+            let expected_a = c * m0[ka] + s * m0[kb];
+            let expected_b = c * m0[kb] - s * m0[ka];
+            assert!((m[ka] - expected_a).abs() < 1e-12, "{k}: {m:?}");
+            assert!((m[kb] - expected_b).abs() < 1e-12, "{k}: {m:?}");
+            assert_eq!(m[k], m0[k]);
+            let space = |r: Rotor, m: [f64; 3]| (r / r.norm()).sandwich(omega_from_vector(m));
+            let moved = space(rotor, m) - space(rotor0, m0);
+            assert!(moved.norm() < 1e-12, "{k}: {moved:?}");
+        }
+    }
+}

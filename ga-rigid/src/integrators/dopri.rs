@@ -12,7 +12,7 @@
 use crate::dynamics::{RigidBody, State};
 use crate::error::{self, Error};
 
-use super::integrator::{check_finite, scaled_norm, Integrator};
+use super::integrator::{check_finite, scaled_norm, step_limit_reached, Integrator};
 
 /// The state as seven numbers: the rotor `[s, e12, e13, e23]` then `Omega_B`
 /// `[e12, e13, e23]`.
@@ -91,6 +91,9 @@ pub struct DormandPrince {
     rtol: f64,
     atol: f64,
     max_steps: u64,
+    /// The run's bound on all its steps ([`Integrator::limit_steps`]), counted in `stats`
+    /// (from construction); it replaces `max_steps`.
+    run_limit: Option<u64>,
     /// The step size the controller proposes next (its magnitude), once known.
     next_step: Option<f64>,
     /// The previous accepted error, for the Lund stabilisation.
@@ -108,6 +111,7 @@ impl DormandPrince {
             rtol,
             atol,
             max_steps: 1_000_000,
+            run_limit: None,
             next_step: None,
             previous_error: 1e-4,
             stats: DormandPrinceStats::default(),
@@ -244,6 +248,10 @@ impl Integrator for DormandPrince {
         Some(self.stats.accepted)
     }
 
+    fn limit_steps(&mut self, max_steps: u64) {
+        self.run_limit = Some(max_steps);
+    }
+
     fn advance(&mut self, body: &RigidBody, t: f64, state: State, dt: f64) -> Result<State, Error> {
         error::finite("dt", "time step", dt)?;
         if dt == 0.0 {
@@ -350,7 +358,11 @@ impl DormandPrince {
                 break;
             }
             steps += 1;
-            if steps > self.max_steps {
+            if let Some(limit) = self.run_limit {
+                if self.stats.accepted + self.stats.rejected >= limit {
+                    return Err(step_limit_reached(self.name(), limit, t, t_end));
+                }
+            } else if steps > self.max_steps {
                 return Err(Error::invalid(
                     "dopri",
                     format!(
@@ -433,5 +445,36 @@ impl DormandPrince {
         }
         self.next_step = Some(h);
         check_finite(self.name(), to_state(&y))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::dynamics::omega_from_vector;
+    use ga_core::f64::g3::Rotor;
+
+    /// The run's limit replaces the bound per call: it lets a call take more steps than
+    /// `with_max_steps` allows, and stops the run, naming `max_steps`, once all its calls
+    /// together reach it.
+    #[test]
+    fn the_runs_step_limit_replaces_the_bound_per_call() {
+        let body = RigidBody::new([1.0, 2.0, 3.0]).unwrap();
+        let state = State {
+            rotor: Rotor::ONE,
+            omega: omega_from_vector([0.5, 4.0, 0.3]),
+        };
+        let mut dopri = DormandPrince::new(1e-8, 1e-11).unwrap().with_max_steps(10);
+        assert!(dopri.advance(&body, 0.0, state, 5.0).is_err());
+        dopri.limit_steps(400);
+        let mid = dopri.advance(&body, 0.0, state, 5.0).unwrap();
+        let used = dopri.stats.accepted + dopri.stats.rejected;
+        assert!(used > 10 && used < 400, "{used}");
+        let e = dopri.advance(&body, 5.0, mid, 1000.0).unwrap_err();
+        assert_eq!(e.field(), Some("max_steps"), "{e}");
+        assert!(
+            e.to_string().contains("dopri needs more than 400 steps"),
+            "{e}"
+        );
     }
 }

@@ -26,6 +26,13 @@ pub trait Integrator {
         None
     }
 
+    /// Bound the steps (accepted and rejected, over every later call) of a method that
+    /// chooses its own steps: the run's limit ([`crate::limits::Limits::max_steps`]), which
+    /// replaces the method's own bound per call. A method that reaches it stops with an
+    /// error naming `max_steps`. Methods whose steps follow from their step size ignore it:
+    /// [`crate::limits::check_work`] counts their steps before they start.
+    fn limit_steps(&mut self, _max_steps: u64) {}
+
     /// The states at each of `times` (in order, in the direction of travel from `t`),
     /// starting from `state` at `t`. By default one [`Integrator::advance`] to each time;
     /// adaptive methods with a continuous extension override it so that the sample times
@@ -58,6 +65,20 @@ pub(crate) fn scaled_norm(x: &[f64]) -> f64 {
         return m;
     }
     m * x.iter().map(|v| (v / m) * (v / m)).sum::<f64>().sqrt()
+}
+
+/// The error of an adaptive method that reached the run's step limit
+/// ([`Integrator::limit_steps`]) at `t` on its way to `t_end`.
+pub(crate) fn step_limit_reached(method: &str, limit: u64, t: f64, t_end: f64) -> Error {
+    Error::invalid(
+        "max_steps",
+        format!(
+            "{method} needs more than {limit} steps (accepted and rejected) to reach t = {}: \
+             stopped at t = {}; raise the limit with max_steps or loosen tol",
+            error::num(t_end),
+            error::num(t)
+        ),
+    )
 }
 
 /// Check a method's step size: finite and positive.

@@ -51,7 +51,7 @@ use ga_core::f64::g3::{Bivector, Commutator, Rotor};
 use crate::dynamics::{RigidBody, State};
 use crate::error::{self, Error};
 
-use super::integrator::{check_finite, scaled_norm, unit, Integrator};
+use super::integrator::{check_finite, scaled_norm, step_limit_reached, unit, Integrator};
 
 /// The stages.
 const S: usize = 12;
@@ -566,6 +566,9 @@ pub struct LieDop853 {
     rtol: f64,
     atol: f64,
     max_steps: u64,
+    /// The run's bound on all its steps ([`Integrator::limit_steps`]), counted in `stats`
+    /// (from construction); it replaces `max_steps`.
+    run_limit: Option<u64>,
     next_step: Option<f64>,
     stats: LieDop853Stats,
     cayley: bool,
@@ -689,6 +692,7 @@ impl LieDop853 {
             rtol,
             atol,
             max_steps: 1_000_000,
+            run_limit: None,
             next_step: None,
             stats: LieDop853Stats::default(),
             cayley: false,
@@ -906,7 +910,11 @@ impl LieDop853 {
         let mut rejected_last = false;
         loop {
             *attempts += 1;
-            if *attempts > self.max_steps {
+            if let Some(limit) = self.run_limit {
+                if self.stats.accepted + self.stats.rejected >= limit {
+                    return Err(step_limit_reached(self.name(), limit, t, t_end));
+                }
+            } else if *attempts > self.max_steps {
                 return Err(Error::invalid(
                     "lie-dop853",
                     format!(
@@ -1212,6 +1220,10 @@ impl Integrator for LieDop853 {
         Some(self.stats.accepted)
     }
 
+    fn limit_steps(&mut self, max_steps: u64) {
+        self.run_limit = Some(max_steps);
+    }
+
     fn advance_to_each(
         &mut self,
         body: &RigidBody,
@@ -1257,6 +1269,26 @@ impl Integrator for LieDop853 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The run's limit replaces the bound per call and names `max_steps` when reached.
+    #[test]
+    fn the_runs_step_limit_stops_the_run_and_is_named() {
+        let body = RigidBody::new([1.0, 2.0, 3.0]).unwrap();
+        let state = State {
+            rotor: Rotor::ONE,
+            omega: crate::dynamics::omega_from_vector([0.5, 4.0, 0.3]),
+        };
+        let mut lie = LieDop853::new(1e-8, 1e-11).unwrap();
+        lie.limit_steps(100);
+        let mid = lie.advance(&body, 0.0, state, 2.0).unwrap();
+        let e = lie.advance(&body, 2.0, mid, 1000.0).unwrap_err();
+        assert_eq!(e.field(), Some("max_steps"), "{e}");
+        assert!(
+            e.to_string()
+                .contains("lie-dop853 needs more than 100 steps"),
+            "{e}"
+        );
+    }
 
     /// `c_i = sum_j a_ij`, and the quadrature conditions `sum b_i c_i^(k-1) = 1/k` of
     /// order eight: a typo in a coefficient fails one of them.

@@ -10,11 +10,12 @@
 //! glam's components (`w = s, x = -e23, y = e13, z = -e12`).
 
 use ga_core::f64::g3::Rotor;
+use ode_solvers::dop_shared::IntegrationError;
 use ode_solvers::{Dop853, Dopri5, OutputType, SVector, System};
 
 use crate::dynamics::{omega_from_vector, omega_to_vector, RigidBody, State};
 use crate::error::{self, Error};
-use crate::integrators::Integrator;
+use crate::integrators::{step_limit_reached, Integrator};
 
 /// The seven unknowns `[m1, m2, m3, qw, qx, qy, qz]`.
 type Y = SVector<f64, 7>;
@@ -34,7 +35,14 @@ pub struct QuaternionOde {
     solver: QuaternionSolver,
     tol: f64,
     accepted: u64,
+    rejected: u64,
+    /// The run's bound on all the steps ([`Integrator::limit_steps`]); ode_solvers' own
+    /// bound per call, [`ODE_SOLVERS_MAX_STEPS`], without one.
+    run_limit: Option<u64>,
 }
+
+/// ode_solvers' default bound on the steps of one integration (`n_max` in its `new`).
+const ODE_SOLVERS_MAX_STEPS: u32 = 100_000;
 
 impl QuaternionOde {
     /// `solver` at `rtol = atol = tol` (finite and positive).
@@ -44,6 +52,8 @@ impl QuaternionOde {
             solver,
             tol,
             accepted: 0,
+            rejected: 0,
+            run_limit: None,
         })
     }
 
@@ -63,24 +73,81 @@ impl QuaternionOde {
             Some(dx) => (OutputType::Dense, dx),
             None => (OutputType::Sparse, t_end - t),
         };
-        let failed = |e: ode_solvers::dop_shared::IntegrationError| {
-            Error::invalid(self.name(), format!("ode_solvers: {e}"))
+        // ode_solvers counts its steps (accepted and rejected) in a u32 per integration.
+        let n_max = match self.run_limit {
+            Some(limit) => {
+                let left = limit.saturating_sub(self.accepted + self.rejected);
+                u32::try_from(left).unwrap_or(u32::MAX)
+            }
+            None => ODE_SOLVERS_MAX_STEPS,
         };
+        let name = self.name();
+        let run_limit = self.run_limit;
+        let failed = |e: ode_solvers::dop_shared::IntegrationError| match (e, run_limit) {
+            (IntegrationError::MaxNumStepReached { x, .. }, Some(limit)) if n_max < u32::MAX => {
+                step_limit_reached(name, limit, x, t_end)
+            }
+            (IntegrationError::MaxNumStepReached { x, .. }, Some(_)) => Error::invalid(
+                name,
+                format!(
+                    "ode_solvers takes at most {} steps in one integration: stopped at t = {} \
+                     on the way to t = {}",
+                    u32::MAX,
+                    error::num(x),
+                    error::num(t_end)
+                ),
+            ),
+            (e, _) => Error::invalid(name, format!("ode_solvers: {e}")),
+        };
+        // `from_param` with the values ode_solvers' `new` uses, but `n_max`.
         let (stats, x, y) = match self.solver {
             QuaternionSolver::Dop853 => {
-                let mut s = Dop853::new(form, t, t_end, spacing, y0, self.tol, self.tol);
-                s.set_output(output);
+                let mut s = Dop853::from_param(
+                    form,
+                    t,
+                    t_end,
+                    spacing,
+                    y0,
+                    self.tol,
+                    self.tol,
+                    0.9,
+                    0.0,
+                    0.333,
+                    6.0,
+                    t_end - t,
+                    0.0,
+                    n_max,
+                    1000,
+                    output,
+                );
                 let stats = s.integrate().map_err(failed)?;
                 (stats, s.x_out().clone(), s.y_out().clone())
             }
             QuaternionSolver::Dopri5 => {
-                let mut s = Dopri5::new(form, t, t_end, spacing, y0, self.tol, self.tol);
-                s.set_output(output);
+                let mut s = Dopri5::from_param(
+                    form,
+                    t,
+                    t_end,
+                    spacing,
+                    y0,
+                    self.tol,
+                    self.tol,
+                    0.9,
+                    0.04,
+                    0.2,
+                    10.0,
+                    t_end - t,
+                    0.0,
+                    n_max,
+                    1000,
+                    output,
+                );
                 let stats = s.integrate().map_err(failed)?;
                 (stats, s.x_out().clone(), s.y_out().clone())
             }
         };
         self.accepted += u64::from(stats.accepted_steps);
+        self.rejected += u64::from(stats.rejected_steps);
         Ok((x, y))
     }
 }
@@ -158,6 +225,10 @@ impl Integrator for QuaternionOde {
         Some(self.accepted)
     }
 
+    fn limit_steps(&mut self, max_steps: u64) {
+        self.run_limit = Some(max_steps);
+    }
+
     fn advance(&mut self, body: &RigidBody, t: f64, state: State, dt: f64) -> Result<State, Error> {
         error::finite("dt", "time step", dt)?;
         if dt == 0.0 {
@@ -214,5 +285,36 @@ impl Integrator for QuaternionOde {
                 crate::integrators::check_finite(self.name(), state_of(body, &y[k]))
             })
             .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The run's limit replaces ode_solvers' 100000 steps, counts over calls, and the
+    /// error names it.
+    #[test]
+    fn the_runs_step_limit_stops_the_solver_and_is_named() {
+        let body = RigidBody::new([1.0, 2.0, 3.0]).unwrap();
+        let state = State {
+            rotor: Rotor::ONE,
+            omega: omega_from_vector([0.5, 4.0, 0.3]),
+        };
+        for solver in [QuaternionSolver::Dop853, QuaternionSolver::Dopri5] {
+            let mut ode = QuaternionOde::new(solver, 1e-8).unwrap();
+            ode.limit_steps(300);
+            let mid = ode.advance(&body, 0.0, state, 1.0).unwrap();
+            let used = ode.accepted + ode.rejected;
+            assert!(used > 0 && used < 300, "{used}");
+            let e = ode.advance(&body, 1.0, mid, 1000.0).unwrap_err();
+            assert_eq!(e.field(), Some("max_steps"), "{e}");
+            let text = e.to_string();
+            assert!(
+                text.contains("needs more than 300 steps")
+                    && text.contains("raise the limit with max_steps"),
+                "{text}"
+            );
+        }
     }
 }
