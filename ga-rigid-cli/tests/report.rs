@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 
 use ga_rigid::registry::{Method, StepKind};
 use ga_rigid::scene::Scene;
-use ga_rigid_cli::report::{self, reference_scenes, Size, TestScene, CSV_HEADER};
+use ga_rigid_cli::report::{self, reference_scenes, Size, TestScene};
 
 /// A fresh directory for one test, under cargo's per-target temporary directory.
 fn test_dir(name: &str) -> PathBuf {
@@ -47,50 +47,79 @@ fn a_quick_report_writes_csv_plots_and_page() {
     let dir = test_dir("quick");
     let csv = report::csv(&report);
     std::fs::write(dir.join("results.csv"), &csv).unwrap();
-    let mut lines = csv.lines();
-    assert_eq!(lines.next(), Some(CSV_HEADER));
-    let header: Vec<&str> = CSV_HEADER.split(',').collect();
-    for column in [
-        "scene",
-        "method",
-        "param_kind",
-        "param",
-        "steps",
-        "time_median_us",
-        "time_min_us",
-        "err_attitude_end",
-        "err_attitude_max",
-        "err_momentum_rel_end",
-        "err_momentum_rel_max",
-        "energy_drift_rel",
-    ] {
-        assert!(header.contains(&column), "{column} missing");
-    }
+    // The file as written, read back: its rows are the measurements, in order, each
+    // number the measurement's own (`{:e}` prints the shortest text that reads back to
+    // the same f64, so equality is exact).
+    let written = std::fs::read_to_string(dir.join("results.csv")).unwrap();
+    let mut lines = written.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let column = |name: &str| {
+        header
+            .iter()
+            .position(|c| *c == name)
+            .unwrap_or_else(|| panic!("{name} missing from the header"))
+    };
+    let measured = report
+        .scenes
+        .iter()
+        .flat_map(|scene| scene.rows.iter().map(move |row| (scene, row)));
     let mut rows = 0;
-    for line in lines {
+    for ((scene, row), line) in measured.zip(lines.by_ref()) {
         let cells: Vec<&str> = line.split(',').collect();
         assert_eq!(cells.len(), header.len(), "{line}");
-        assert_eq!(cells[header.len() - 1], "ok", "{line}");
-        for (name, cell) in header.iter().zip(&cells).skip(3).take(12) {
-            let x: f64 = cell.parse().unwrap_or_else(|_| panic!("{name}: {cell}"));
-            assert!(x.is_finite() && x >= 0.0, "{name} = {x} in {line}");
-        }
+        assert_eq!(
+            cells[column("scene")],
+            scene.name.replace(',', ""),
+            "{line}"
+        );
+        assert_eq!(cells[column("method")], row.method.name());
+        assert_eq!(cells[column("steps")].parse::<u64>().unwrap(), row.steps);
+        assert_eq!(cells[column("param")].parse::<f64>().unwrap(), row.param);
+        assert_eq!(cells[column("reference")], row.reference.name());
+        assert_eq!(cells[column("status")], "ok", "{line}");
+        let errors = row.errors.expect("every cheap run finishes");
+        let cell = |name: &str| cells[column(name)].parse::<f64>().unwrap();
+        assert_eq!(cell("err_attitude_max"), errors.attitude_max);
+        assert_eq!(cell("err_attitude_end"), errors.attitude_end);
+        assert_eq!(cell("err_momentum_rel_max"), errors.momentum_max);
+        assert_eq!(cell("energy_drift_rel_max"), errors.energy_max);
+        // The median time in µs to three decimals, and the cost per step from it.
+        let median = cell("time_median_us");
+        assert!((median - row.time_us().unwrap()).abs() <= 5e-4, "{line}");
+        let per_step = median * 1e3 / row.steps.max(1) as f64;
+        assert!((cell("cost_per_step_ns") - per_step).abs() <= 5e-4 + 1e-9 * per_step);
         rows += 1;
     }
+    assert_eq!(lines.next(), None, "more rows than measurements");
     let expected: usize = report.scenes.iter().map(|s| s.rows.len()).sum();
     assert_eq!(rows, expected);
 
     let mut names = Vec::new();
     for (i, scene) in report.scenes.iter().enumerate() {
         let svg = report::svg(scene).unwrap();
-        assert!(svg.contains("<svg"), "not an SVG");
-        assert!(svg.contains("run time, median of repeated runs (µs)"));
-        assert!(svg.contains("largest attitude error over the run (rad)"));
-        for row in &scene.rows {
-            assert!(
-                svg.contains(row.method.name()),
-                "{} not in the legend",
-                row.method
+        // Four panels of 620 x 470 under a 40-pixel title.
+        assert!(
+            svg.contains(r#"width="1240" height="980""#),
+            "{}",
+            &svg[..200]
+        );
+        for panel in report::style::Panel::ALL {
+            assert_eq!(svg.matches(panel.title()).count(), 1, "{}", panel.title());
+        }
+        assert_eq!(svg.matches("median run time (µs)").count(), 4);
+        // Each method run on the scene is named in exactly one legend, and in a second
+        // one only when it is ours and the fastest to the peers' best.
+        let beside_peers = report::fastest_of_ours_to_the_peers_best(scene);
+        let mut methods: Vec<Method> = scene.rows.iter().map(|r| r.method).collect();
+        methods.dedup();
+        for method in methods {
+            let legend_entry = format!("\n{}\n</text>", method.name());
+            let expected = 1 + usize::from(beside_peers == Some(method));
+            assert_eq!(
+                svg.matches(&legend_entry).count(),
+                expected,
+                "{} in the legends",
+                method
             );
         }
         let name = report::svg_name(i, &scene.name);
@@ -99,12 +128,16 @@ fn a_quick_report_writes_csv_plots_and_page() {
     }
     let html = report::html(&report, &names);
     std::fs::write(dir.join("index.html"), &html).unwrap();
+    let page = std::fs::read_to_string(dir.join("index.html")).unwrap();
     for name in &names {
-        assert!(html.contains(&format!("<img src=\"{name}\"")), "{name}");
+        assert_eq!(
+            page.matches(&format!("<img src=\"{name}\"")).count(),
+            1,
+            "{name}"
+        );
     }
-    assert!(html.contains("Check:") && html.contains("observed order"));
-    assert!(html.contains(&report.cpu));
-    assert!(dir.join("results.csv").is_file() && dir.join("index.html").is_file());
+    assert!(page.contains("Check:") && page.contains("observed order"));
+    assert!(page.contains(&report.cpu));
 }
 
 #[test]

@@ -206,7 +206,7 @@ fn legend(
     scene: &SceneResult,
     methods: &[Method],
 ) -> DrawResult {
-    let font = ("sans-serif", 12).into_font();
+    let font = ("sans-serif", 14).into_font();
     let column = (PANEL.0 - 40) as i32 / 2;
     for (k, &method) in methods.iter().enumerate() {
         let (x, y) = (20 + column * (k as i32 / 4), 12 + 22 * (k as i32 % 4));
