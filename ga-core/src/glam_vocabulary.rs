@@ -348,7 +348,7 @@ macro_rules! glam_vocabulary {
             #[inline]
             #[must_use]
             pub fn project_onto(self, rhs: Vector) -> Vector {
-                rhs * (self.dot(rhs) * (1.0 / rhs.dot(rhs)))
+                rhs * self.dot(rhs) * (1.0 / rhs.dot(rhs))
             }
 
             /// The part of `self` along the unit `rhs`, `rhs (self . rhs)` (glam's
