@@ -50,7 +50,7 @@ macro_rules! glam_vocabulary {
         };
 
         /// glam's field names: `v.x`, `v.y`, `v.z` are `e1`, `e2`, `e3` (read through
-        /// [`Xyz`], as glam's `Vec3A` reads through its `XYZ`).
+        /// `Xyz`, as glam's `Vec3A` reads through its `XYZ`).
         impl ::core::ops::Deref for Vector {
             type Target = Xyz<$s>;
 
@@ -411,6 +411,7 @@ macro_rules! glam_vocabulary {
         impl Rotor {
             /// The identity rotation (glam's `Quat::IDENTITY`), the same as `Rotor::ONE`.
             /// `Rotor::default()` is the zero rotor, not this: see docs/glam.md.
+            #[doc(alias = "default")]
             pub const IDENTITY: Rotor = Rotor::ONE;
 
             /// The rotor of glam's quaternion `(x, y, z, w)` (glam's `from_xyzw`):
@@ -420,6 +421,7 @@ macro_rules! glam_vocabulary {
             #[doc = concat!("use ga_core::", stringify!($s), "::g3::*;")]
             /// assert_eq!(Rotor::from_xyzw(0.0, 0.0, 0.0, 1.0), Rotor::IDENTITY);
             /// ```
+            #[doc(alias = "from_array")]
             #[inline]
             #[must_use]
             pub const fn from_xyzw(x: $s, y: $s, z: $s, w: $s) -> Rotor {
@@ -434,6 +436,7 @@ macro_rules! glam_vocabulary {
             #[doc = concat!("use ga_core::", stringify!($s), "::g3::*;")]
             /// assert_eq!(Rotor::from_xyzw(1.0, 2.0, 3.0, 4.0).to_xyzw(), [1.0, 2.0, 3.0, 4.0]);
             /// ```
+            #[doc(alias = "to_array")]
             #[inline]
             #[must_use]
             pub const fn to_xyzw(self) -> [$s; 4] {
@@ -525,6 +528,7 @@ macro_rules! glam_vocabulary {
             /// let r = Rotor::from_rotation_z(1.0);
             /// assert_eq!(r.mul_vec3(Vector::X), r.sandwich(Vector::X));
             /// ```
+            #[doc(alias = "mul")]
             #[inline]
             #[must_use]
             pub fn mul_vec3(self, v: Vector) -> Vector {
