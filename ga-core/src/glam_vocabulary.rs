@@ -4,14 +4,75 @@
 //! (docs/derivations/rotor-quaternion.md). What differs on purpose is listed in
 //! docs/glam.md with the reason.
 
+/// glam's view of a G3 vector: its components under glam's names, `x = e1`, `y = e2`,
+/// `z = e3`. `Vector` dereferences to it, as glam's `Vec3A` does to its `XYZ`, so that
+/// `v.x` reads and `v.x = 1.0` writes the `e1` component. Not made by itself: it is
+/// reached through a `Vector`.
+///
+/// ```
+/// use ga_core::f64::g3::*;
+/// let mut v = Vector::new(1.0, 2.0, 3.0);
+/// v.z += 1.0;
+/// assert_eq!((v.x, v.y, v.z), (1.0, 2.0, 4.0));
+/// assert_eq!(v.e3, 4.0);
+/// ```
+#[cfg(any(feature = "f32", feature = "f64"))]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(C)]
+pub struct Xyz<S> {
+    /// The `e1` component.
+    pub x: S,
+    /// The `e2` component.
+    pub y: S,
+    /// The `e3` component.
+    pub z: S,
+}
+
 // Unused when no precision is on.
 #[allow(unused_macros)]
 macro_rules! glam_vocabulary {
-    ($s:ident) => {
+    ($s:ident, $vec4:ident, $mat4:ident, $affine3:ident) => {
         #[cfg(not(feature = "std"))]
         #[allow(unused_imports)]
         use crate::rotor::no_std_math::Real as _;
+        use super::Xyz;
         use crate::$s::g3::{Rotor, Sandwich, Vector};
+
+        // The pointer casts of `Deref` and `DerefMut` below rely on this: both types are
+        // `#[repr(C)]` with three fields of type `$s` in the order e1/x, e2/y, e3/z.
+        const _: () = {
+            use ::core::mem::{align_of, offset_of, size_of};
+            assert!(size_of::<Vector>() == size_of::<Xyz<$s>>());
+            assert!(align_of::<Vector>() == align_of::<Xyz<$s>>());
+            assert!(offset_of!(Vector, e1) == offset_of!(Xyz<$s>, x));
+            assert!(offset_of!(Vector, e2) == offset_of!(Xyz<$s>, y));
+            assert!(offset_of!(Vector, e3) == offset_of!(Xyz<$s>, z));
+        };
+
+        /// glam's field names: `v.x`, `v.y`, `v.z` are `e1`, `e2`, `e3` (read through
+        /// `Xyz`, as glam's `Vec3A` reads through its `XYZ`).
+        impl ::core::ops::Deref for Vector {
+            type Target = Xyz<$s>;
+
+            #[inline]
+            fn deref(&self) -> &Xyz<$s> {
+                // SAFETY: `Vector` and `Xyz<$s>` are both `#[repr(C)]` structs of three
+                // `$s` fields with the same size, alignment and offsets (asserted at
+                // compile time above), so a valid `Vector` is a valid `Xyz<$s>`, and the
+                // reference borrows `self` for its lifetime.
+                unsafe { &*(self as *const Vector).cast::<Xyz<$s>>() }
+            }
+        }
+
+        /// glam's field names for writing: `v.x = 1.0` sets `e1`.
+        impl ::core::ops::DerefMut for Vector {
+            #[inline]
+            fn deref_mut(&mut self) -> &mut Xyz<$s> {
+                // SAFETY: as in `deref`; every bit pattern of the three `$s` is valid for
+                // both types, and the unique borrow of `self` is handed on.
+                unsafe { &mut *(self as *mut Vector).cast::<Xyz<$s>>() }
+            }
+        }
 
         impl Vector {
             /// The unit vector along x (glam's `Vec3::X`), `e1`.
@@ -137,9 +198,220 @@ macro_rules! glam_vocabulary {
             }
         }
 
+        /// glam's `Vec3` constants and component-wise methods, with glam's meanings.
+        impl Vector {
+            /// All components 1 (glam's `Vec3::ONE`); not the scalar 1 of the algebra.
+            pub const ONE: Vector = Vector::splat(1.0);
+            /// All components -1 (glam's `Vec3::NEG_ONE`).
+            pub const NEG_ONE: Vector = Vector::splat(-1.0);
+            /// `-e1` (glam's `Vec3::NEG_X`).
+            pub const NEG_X: Vector = Vector::new(-1.0, 0.0, 0.0);
+            /// `-e2` (glam's `Vec3::NEG_Y`).
+            pub const NEG_Y: Vector = Vector::new(0.0, -1.0, 0.0);
+            /// `-e3` (glam's `Vec3::NEG_Z`).
+            pub const NEG_Z: Vector = Vector::new(0.0, 0.0, -1.0);
+            /// `[X, Y, Z]` (glam's `Vec3::AXES`).
+            pub const AXES: [Vector; 3] = [Vector::X, Vector::Y, Vector::Z];
+            /// All components the smallest finite value (glam's `Vec3::MIN`).
+            pub const MIN: Vector = Vector::splat($s::MIN);
+            /// All components the largest finite value (glam's `Vec3::MAX`).
+            pub const MAX: Vector = Vector::splat($s::MAX);
+            /// All components NaN (glam's `Vec3::NAN`).
+            pub const NAN: Vector = Vector::splat($s::NAN);
+            /// All components `+inf` (glam's `Vec3::INFINITY`).
+            pub const INFINITY: Vector = Vector::splat($s::INFINITY);
+            /// All components `-inf` (glam's `Vec3::NEG_INFINITY`).
+            pub const NEG_INFINITY: Vector = Vector::splat($s::NEG_INFINITY);
+
+            /// Every component `v` (glam's `Vec3::splat`).
+            #[inline]
+            #[must_use]
+            pub const fn splat(v: $s) -> Vector {
+                Vector::new(v, v, v)
+            }
+
+            /// `self` at `s = 0`, `rhs` at `s = 1`, as `self (1 - s) + rhs s` (glam's
+            /// `lerp`, also called `mix`).
+            #[doc(alias = "mix")]
+            #[inline]
+            #[must_use]
+            pub fn lerp(self, rhs: Vector, s: $s) -> Vector {
+                self * (1.0 - s) + rhs * s
+            }
+
+            /// `|self - rhs|` (glam's `distance`).
+            #[inline]
+            #[must_use]
+            pub fn distance(self, rhs: Vector) -> $s {
+                (self - rhs).length()
+            }
+
+            /// `|self - rhs|^2` (glam's `distance_squared`).
+            #[inline]
+            #[must_use]
+            pub fn distance_squared(self, rhs: Vector) -> $s {
+                (self - rhs).length_squared()
+            }
+
+            /// `1 / |self|` (glam's `length_recip`): infinite for the zero vector.
+            #[inline]
+            #[must_use]
+            pub fn length_recip(self) -> $s {
+                1.0 / self.length()
+            }
+
+            /// `self / |self|`, or `fallback` when `1 / |self|` is zero or not finite
+            /// (zero, non-finite or overflowing length), as glam's `normalize_or`.
+            #[inline]
+            #[must_use]
+            pub fn normalize_or(self, fallback: Vector) -> Vector {
+                let recip = self.length_recip();
+                if recip.is_finite() && recip > 0.0 {
+                    self * recip
+                } else {
+                    fallback
+                }
+            }
+
+            /// `self / |self|`, or zero where glam's `normalize_or_zero` gives zero (zero,
+            /// non-finite or overflowing length).
+            #[inline]
+            #[must_use]
+            pub fn normalize_or_zero(self) -> Vector {
+                self.normalize_or(Vector::ZERO)
+            }
+
+            /// The angle in `[0, pi]` between two vectors (glam's `angle_between`), as
+            /// `atan2(|a x b|, a . b)`: no `acos`, so it keeps its digits near 0 and pi
+            /// where glam's (a polynomial `acos` of the clamped cosine in f32, `acos` in
+            /// f64) loses half of them. NaN when either vector is zero, as glam's.
+            ///
+            /// ```
+            #[doc = concat!("use ga_core::", stringify!($s), "::g3::*;")]
+            #[doc = concat!("use core::", stringify!($s), "::consts::PI;")]
+            /// assert!((Vector::X.angle_between(-Vector::X) - PI).abs() < 1e-6);
+            /// assert!(Vector::X.angle_between(Vector::ZERO).is_nan());
+            /// ```
+            #[inline]
+            #[must_use]
+            pub fn angle_between(self, rhs: Vector) -> $s {
+                let sin = self.cross(rhs).norm();
+                let cos = self.dot(rhs);
+                if sin == 0.0 && cos == 0.0 {
+                    return $s::NAN;
+                }
+                sin.atan2(cos)
+            }
+
+            /// Component-wise absolute value (glam's `abs`).
+            #[inline]
+            #[must_use]
+            pub fn abs(self) -> Vector {
+                Vector::new(self.e1.abs(), self.e2.abs(), self.e3.abs())
+            }
+
+            /// Component-wise minimum (glam's `min`: `rhs`'s component where the
+            /// comparison fails, so a NaN in `self` gives `rhs`'s).
+            #[inline]
+            #[must_use]
+            pub fn min(self, rhs: Vector) -> Vector {
+                let min = |a: $s, b: $s| if a < b { a } else { b };
+                Vector::new(min(self.e1, rhs.e1), min(self.e2, rhs.e2), min(self.e3, rhs.e3))
+            }
+
+            /// Component-wise maximum (glam's `max`, NaN as in [`min`](Self::min)).
+            #[inline]
+            #[must_use]
+            pub fn max(self, rhs: Vector) -> Vector {
+                let max = |a: $s, b: $s| if a > b { a } else { b };
+                Vector::new(max(self.e1, rhs.e1), max(self.e2, rhs.e2), max(self.e3, rhs.e3))
+            }
+
+            /// The smallest component (glam's `min_element`).
+            #[inline]
+            #[must_use]
+            pub fn min_element(self) -> $s {
+                let min = |a: $s, b: $s| if a < b { a } else { b };
+                min(self.e1, min(self.e2, self.e3))
+            }
+
+            /// The largest component (glam's `max_element`).
+            #[inline]
+            #[must_use]
+            pub fn max_element(self) -> $s {
+                let max = |a: $s, b: $s| if a > b { a } else { b };
+                max(self.e1, max(self.e2, self.e3))
+            }
+
+            /// The part of `self` along `rhs`, `rhs (self . rhs) / |rhs|^2` (glam's
+            /// `project_onto`): non-finite when `rhs` is zero.
+            #[inline]
+            #[must_use]
+            pub fn project_onto(self, rhs: Vector) -> Vector {
+                rhs * self.dot(rhs) * (1.0 / rhs.dot(rhs))
+            }
+
+            /// The part of `self` along the unit `rhs`, `rhs (self . rhs)` (glam's
+            /// `project_onto_normalized`).
+            #[inline]
+            #[must_use]
+            pub fn project_onto_normalized(self, rhs: Vector) -> Vector {
+                rhs * self.dot(rhs)
+            }
+
+            /// The part of `self` perpendicular to `rhs` (glam's `reject_from`):
+            /// non-finite when `rhs` is zero.
+            #[inline]
+            #[must_use]
+            pub fn reject_from(self, rhs: Vector) -> Vector {
+                self - self.project_onto(rhs)
+            }
+
+            /// A vector perpendicular to `self`, not unit (glam's
+            /// `any_orthogonal_vector`: `self x Y` when `|x| > |y|`, else `self x X`).
+            #[inline]
+            #[must_use]
+            pub fn any_orthogonal_vector(self) -> Vector {
+                if self.e1.abs() > self.e2.abs() {
+                    Vector::new(-self.e3, 0.0, self.e1)
+                } else {
+                    Vector::new(0.0, self.e3, -self.e2)
+                }
+            }
+
+            /// A unit vector perpendicular to the unit `self` (glam's
+            /// `any_orthonormal_vector`, the same vector): Duff et al., "Building an
+            /// orthonormal basis, revisited", JCGT 6(1), 2017, whose second basis vector
+            /// it is.
+            ///
+            /// ```
+            #[doc = concat!("use ga_core::", stringify!($s), "::g3::*;")]
+            /// let n = Vector::new(0.0, 0.6, -0.8);
+            /// let t = n.any_orthonormal_vector();
+            /// assert!(t.dot(n).abs() < 1e-6 && t.is_normalized());
+            /// ```
+            #[inline]
+            #[must_use]
+            pub fn any_orthonormal_vector(self) -> Vector {
+                let sign = (1.0 as $s).copysign(self.e3);
+                let a = -1.0 / (sign + self.e3);
+                let b = self.e1 * self.e2 * a;
+                Vector::new(b, sign + self.e2 * self.e2 * a, -self.e2)
+            }
+
+            /// Whether every component is within `max_abs_diff` of `rhs`'s (glam's
+            /// `abs_diff_eq`).
+            #[inline]
+            #[must_use]
+            pub fn abs_diff_eq(self, rhs: Vector, max_abs_diff: $s) -> bool {
+                (self - rhs).iter().all(|d| d.abs() <= max_abs_diff)
+            }
+        }
+
         impl Rotor {
             /// The identity rotation (glam's `Quat::IDENTITY`), the same as `Rotor::ONE`.
             /// `Rotor::default()` is the zero rotor, not this: see docs/glam.md.
+            #[doc(alias = "default")]
             pub const IDENTITY: Rotor = Rotor::ONE;
 
             /// The rotor of glam's quaternion `(x, y, z, w)` (glam's `from_xyzw`):
@@ -149,6 +421,7 @@ macro_rules! glam_vocabulary {
             #[doc = concat!("use ga_core::", stringify!($s), "::g3::*;")]
             /// assert_eq!(Rotor::from_xyzw(0.0, 0.0, 0.0, 1.0), Rotor::IDENTITY);
             /// ```
+            #[doc(alias = "from_array")]
             #[inline]
             #[must_use]
             pub const fn from_xyzw(x: $s, y: $s, z: $s, w: $s) -> Rotor {
@@ -163,6 +436,7 @@ macro_rules! glam_vocabulary {
             #[doc = concat!("use ga_core::", stringify!($s), "::g3::*;")]
             /// assert_eq!(Rotor::from_xyzw(1.0, 2.0, 3.0, 4.0).to_xyzw(), [1.0, 2.0, 3.0, 4.0]);
             /// ```
+            #[doc(alias = "to_array")]
             #[inline]
             #[must_use]
             pub const fn to_xyzw(self) -> [$s; 4] {
@@ -254,6 +528,7 @@ macro_rules! glam_vocabulary {
             /// let r = Rotor::from_rotation_z(1.0);
             /// assert_eq!(r.mul_vec3(Vector::X), r.sandwich(Vector::X));
             /// ```
+            #[doc(alias = "mul")]
             #[inline]
             #[must_use]
             pub fn mul_vec3(self, v: Vector) -> Vector {
@@ -444,15 +719,302 @@ macro_rules! glam_vocabulary {
                 Rotor::look_to_rh(center - eye, up)
             }
         }
+
+        /// glam's `Quat` names beyond the rotor toolkit, with glam's meanings.
+        impl Rotor {
+            /// All components NaN (glam's `Quat::NAN`).
+            pub const NAN: Rotor = Rotor::new($s::NAN, $s::NAN, $s::NAN, $s::NAN);
+
+            /// glam's vector part `(x, y, z) = (-e23, e13, -e12)` as a `Vector` (glam's
+            /// `Quat::xyz`): `sin(angle / 2)` times the axis for a unit rotor.
+            ///
+            /// ```
+            #[doc = concat!("use ga_core::", stringify!($s), "::g3::*;")]
+            /// let r = Rotor::from_xyzw(1.0, 2.0, 3.0, 4.0);
+            /// assert_eq!((r.xyz(), r.w()), (Vector::new(1.0, 2.0, 3.0), 4.0));
+            /// ```
+            #[inline]
+            #[must_use]
+            pub const fn xyz(self) -> Vector {
+                Vector::new(-self.e23, self.e13, -self.e12)
+            }
+
+            /// glam's `w`, the scalar part `s`: a method, since glam's `x, y, z` are not
+            /// this type's fields (see docs/glam.md).
+            #[inline]
+            #[must_use]
+            pub const fn w(self) -> $s {
+                self.s
+            }
+
+            /// `1 / |R|` (glam's `Quat::length_recip`): infinite for the zero rotor.
+            #[inline]
+            #[must_use]
+            pub fn length_recip(self) -> $s {
+                1.0 / self.length()
+            }
+
+            /// The rotor product `self rhs`, glam's `Quat::mul_quat` (and glam's
+            /// `Quat * Quat`, which `*` is here too): `rhs` acts first, then `self`.
+            #[inline]
+            #[must_use]
+            pub fn mul_quat(self, rhs: Rotor) -> Rotor {
+                self * rhs
+            }
+
+            /// Normalised linear interpolation along the shorter arc (glam's
+            /// `Quat::lerp`, also called `mix`): the same as [`nlerp`](Self::nlerp).
+            #[doc(alias = "mix")]
+            #[inline]
+            #[must_use]
+            pub fn lerp(self, end: Rotor, s: $s) -> Rotor {
+                self.nlerp(end, s)
+            }
+
+            /// Spherical interpolation that keeps the sign of `end`, so it takes the
+            /// longer arc when `self . end < 0` (glam 0.33's `Quat::slerp_long`): `self`
+            /// at `s = 0`, exactly `end`'s quaternion at `s = 1`, a turn of more than a
+            /// half turn in between. Both rotors unit. When `end = -self` the plane is
+            /// undefined and the full turn is taken about z (glam interpolates linearly
+            /// there through zero).
+            ///
+            /// ```
+            #[doc = concat!("use ga_core::", stringify!($s), "::g3::*;")]
+            #[doc = concat!("use core::", stringify!($s), "::consts::PI;")]
+            /// let end = Rotor::from_rotation_z(1.5 * PI); // the long way to a quarter turn back
+            /// let half = Rotor::IDENTITY.slerp_long(end, 0.5);
+            /// assert!((half - Rotor::from_rotation_z(0.75 * PI)).norm() < 1e-6);
+            /// ```
+            #[inline]
+            #[must_use]
+            pub fn slerp_long(self, end: Rotor, s: $s) -> Rotor {
+                let d = self.reverse() * end;
+                let length = (d.e12 * d.e12 + d.e13 * d.e13 + d.e23 * d.e23).sqrt();
+                if length == 0.0 && d.s < 0.0 {
+                    // `end = -self`: a full turn, about z.
+                    return self * Rotor::from_rotation_z(s * 2.0 * ::core::$s::consts::PI);
+                }
+                let (sin, cos) = (s * length.atan2(d.s)).sin_cos();
+                let k = if length > 0.0 { sin / length } else { s };
+                self * Rotor::new(cos, k * d.e12, k * d.e13, k * d.e23)
+            }
+
+            /// The rotor of the orthonormal frame whose columns are `x_axis`, `y_axis`,
+            /// `z_axis`, the images of `X`, `Y`, `Z` (glam's `Quat::from_rotation_axes`):
+            /// [`from_mat3`](Self::from_mat3) of those columns, unchecked as glam's.
+            #[inline]
+            #[must_use]
+            pub fn from_rotation_axes(x_axis: Vector, y_axis: Vector, z_axis: Vector) -> Rotor {
+                Rotor::from_mat3([x_axis.to_array(), y_axis.to_array(), z_axis.to_array()])
+            }
+
+            /// The rotation about z taking the direction of the 2D vector `from` to that
+            /// of `to`, the shorter way (glam's `Quat::from_rotation_arc_2d`; `from` and
+            /// `to` are glam's `Vec2`/`DVec2` or `[x, y]`). As
+            /// [`from_rotation_arc`](Self::from_rotation_arc): accurate near opposite
+            /// vectors, non-unit input counts by its direction, and a zero input gives
+            /// the zero rotor (glam: the identity). Exactly opposite vectors give the half
+            /// turn about z, as glam's.
+            ///
+            /// ```
+            #[doc = concat!("use ga_core::", stringify!($s), "::g3::*;")]
+            /// let r = Rotor::from_rotation_arc_2d([1.0, 0.0], [0.0, 1.0]);
+            /// assert!((r.mul_vec3(Vector::X) - Vector::Y).norm() < 1e-6);
+            /// assert_eq!(Rotor::from_rotation_arc_2d([1.0, 0.0], [-1.0, 0.0]), Rotor::from_xyzw(0.0, 0.0, 1.0, 0.0));
+            /// ```
+            #[inline]
+            #[must_use]
+            pub fn from_rotation_arc_2d(from: impl Into<[$s; 2]>, to: impl Into<[$s; 2]>) -> Rotor {
+                let ([fx, fy], [tx, ty]) = (from.into(), to.into());
+                let from = Vector::new(fx, fy, 0.0);
+                let to = Vector::new(tx, ty, 0.0);
+                if from == Vector::ZERO || to == Vector::ZERO {
+                    return Rotor::ZERO;
+                }
+                // glam's quaternion (0, 0, z, w): z = |f||t| sin(angle), w = |f||t| + f.t.
+                let (f, t) = (from.normalize(), to.normalize());
+                let z = f.e1 * t.e2 - f.e2 * t.e1;
+                let dot = f.dot(t);
+                let w = if dot >= 0.0 {
+                    1.0 + dot
+                } else if z == 0.0 {
+                    return Rotor::from_xyzw(0.0, 0.0, 1.0, 0.0);
+                } else {
+                    // (1 + dot)(1 - dot) = z^2, without the cancellation of 1 + dot.
+                    z * z / (1.0 - dot)
+                };
+                let k = 1.0 / (z * z + w * w).sqrt();
+                Rotor::from_xyzw(0.0, 0.0, z * k, w * k)
+            }
+
+            /// Whether every component is within `max_abs_diff` of `rhs`'s (glam's
+            /// `Quat::abs_diff_eq`; `R` and `-R` differ here, as in glam).
+            #[inline]
+            #[must_use]
+            pub fn abs_diff_eq(self, rhs: Rotor, max_abs_diff: $s) -> bool {
+                (self - rhs).iter().all(|d| d.abs() <= max_abs_diff)
+            }
+        }
+
+        /// glam's names whose inputs or outputs are glam's types (feature `glam`).
+        #[cfg(feature = "glam")]
+        impl Vector {
+            /// glam's 4-vector `(x, y, z, w)` (glam's `Vec3::extend`): there is no
+            /// 4-vector type in G3, so this exists only with the `glam` feature.
+            ///
+            /// ```
+            #[doc = concat!("use ga_core::", stringify!($s), "::g3::*;")]
+            /// let v = Vector::new(1.0, 2.0, 3.0).extend(4.0);
+            /// assert_eq!(v.to_array(), [1.0, 2.0, 3.0, 4.0]);
+            /// ```
+            #[inline]
+            #[must_use]
+            pub fn extend(self, w: $s) -> crate::glam::$vec4 {
+                crate::glam::$vec4::new(self.e1, self.e2, self.e3, w)
+            }
+        }
+
+        /// glam's names whose inputs are glam's types (feature `glam`).
+        #[cfg(feature = "glam")]
+        impl Rotor {
+            /// The rotor of glam's 4-vector `(x, y, z, w)` (glam's `Quat::from_vec4`),
+            /// not normalised.
+            #[inline]
+            #[must_use]
+            pub fn from_vec4(v: crate::glam::$vec4) -> Rotor {
+                Rotor::from_xyzw(v.x, v.y, v.z, v.w)
+            }
+
+            /// The rotor of the upper-left 3x3 block of a 4x4 matrix (glam's
+            /// `Quat::from_mat4`; translation and projection are ignored), unchecked as
+            /// glam's; [`from_matrix`](Self::from_matrix) is the checked form.
+            #[inline]
+            #[must_use]
+            pub fn from_mat4(mat: &crate::glam::$mat4) -> Rotor {
+                Rotor::from_mat3(mat)
+            }
+
+            /// The rotor of the 3x3 part of an affine transform (glam's
+            /// `Quat::from_affine3`), unchecked as glam's.
+            #[inline]
+            #[must_use]
+            pub fn from_affine3(a: &crate::glam::$affine3) -> Rotor {
+                Rotor::from_mat3(a.matrix3)
+            }
+        }
     };
 }
 
 #[cfg(all(feature = "g3", feature = "f64"))]
 mod g3_f64 {
-    glam_vocabulary!(f64);
+    glam_vocabulary!(f64, DVec4, DMat4, DAffine3);
 }
 
 #[cfg(all(feature = "g3", feature = "f32"))]
 mod g3_f32 {
-    glam_vocabulary!(f32);
+    glam_vocabulary!(f32, Vec4, Mat4, Affine3);
+}
+
+/// glam's SIMD-aligned f32 types as inputs (feature `glam`): `Vec3A`, `Mat3A`, `Affine3A`.
+#[cfg(all(feature = "g3", feature = "f32", feature = "glam"))]
+mod g3_f32_aligned {
+    use crate::f32::g3::{Rotor, Vector};
+    use crate::glam::{Affine3A, Mat3A, Vec3A};
+    use crate::RotationMatrix;
+
+    impl From<Vec3A> for Vector {
+        #[inline]
+        fn from(v: Vec3A) -> Vector {
+            Vector::new(v.x, v.y, v.z)
+        }
+    }
+
+    impl From<Vector> for Vec3A {
+        #[inline]
+        fn from(v: Vector) -> Vec3A {
+            Vec3A::new(v.e1, v.e2, v.e3)
+        }
+    }
+
+    /// So that `from_mat3`, `from_matrix` take glam's `Mat3A` as they take its `Mat3`.
+    impl RotationMatrix<f32> for Mat3A {
+        #[inline]
+        fn to_cols_array_2d(&self) -> [[f32; 3]; 3] {
+            Mat3A::to_cols_array_2d(self)
+        }
+    }
+
+    impl Rotor {
+        /// `R v ~R` for glam's `Vec3A` (glam's `Quat::mul_vec3a`).
+        ///
+        /// ```
+        /// use ga_core::f32::g3::*;
+        /// use ga_core::glam::Vec3A;
+        /// let r = Rotor::from_rotation_z(core::f32::consts::FRAC_PI_2);
+        /// assert!(r.mul_vec3a(Vec3A::X).abs_diff_eq(Vec3A::Y, 1e-6));
+        /// ```
+        #[inline]
+        #[must_use]
+        pub fn mul_vec3a(self, rhs: Vec3A) -> Vec3A {
+            self.mul_vec3(rhs.into()).into()
+        }
+
+        /// The rotor of glam's `Mat3A` (glam's `Quat::from_mat3a`), unchecked as glam's.
+        #[inline]
+        #[must_use]
+        pub fn from_mat3a(mat: &Mat3A) -> Rotor {
+            Rotor::from_mat3(mat)
+        }
+
+        /// The rotor of the 3x3 part of glam's `Affine3A` (glam's
+        /// `Quat::from_affine3a`), unchecked as glam's.
+        #[inline]
+        #[must_use]
+        pub fn from_affine3a(a: &Affine3A) -> Rotor {
+            Rotor::from_mat3(a.matrix3)
+        }
+    }
+}
+
+/// glam's precision casts `as_dquat`, `as_quat`, `as_dvec3`, `as_vec3`, the same as
+/// `as_f64` and `as_f32`.
+#[cfg(all(feature = "g3", feature = "f32", feature = "f64"))]
+mod g3_casts {
+    use crate::{f32, f64};
+
+    impl f32::g3::Rotor {
+        /// This rotor in f64 (glam's `Quat::as_dquat`, the same as `as_f64`).
+        #[inline]
+        #[must_use]
+        pub fn as_dquat(self) -> f64::g3::Rotor {
+            self.as_f64()
+        }
+    }
+
+    impl f64::g3::Rotor {
+        /// This rotor in f32 (glam's `DQuat::as_quat`, the same as `as_f32`).
+        #[inline]
+        #[must_use]
+        pub fn as_quat(self) -> f32::g3::Rotor {
+            self.as_f32()
+        }
+    }
+
+    impl f32::g3::Vector {
+        /// This vector in f64 (glam's `Vec3::as_dvec3`, the same as `as_f64`).
+        #[inline]
+        #[must_use]
+        pub fn as_dvec3(self) -> f64::g3::Vector {
+            self.as_f64()
+        }
+    }
+
+    impl f64::g3::Vector {
+        /// This vector in f32 (glam's `DVec3::as_vec3`, the same as `as_f32`).
+        #[inline]
+        #[must_use]
+        pub fn as_vec3(self) -> f32::g3::Vector {
+            self.as_f32()
+        }
+    }
 }

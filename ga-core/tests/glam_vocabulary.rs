@@ -34,11 +34,14 @@ fn proper(order: EulerRot) -> bool {
 }
 
 macro_rules! vocabulary_tests {
-    ($name:ident, $s:ident, $vec3:ident, $quat:ident, $mat3:ident, $mat4:ident, $tol:expr) => {
+    (
+        $name:ident, $s:ident, $vec2:ident, $vec3:ident, $vec4:ident, $quat:ident, $mat3:ident,
+        $mat4:ident, $affine3:ident, $tol:expr
+    ) => {
         mod $name {
             use super::*;
             use core::$s::consts::{FRAC_PI_2, PI};
-            use ga_core::glam::{$mat3, $mat4, $quat, $vec3};
+            use ga_core::glam::{$affine3, $mat3, $mat4, $quat, $vec2, $vec3, $vec4};
             use ga_core::$s::g3::*;
 
             const TOL: $s = $tol;
@@ -492,6 +495,301 @@ macro_rules! vocabulary_tests {
                 assert!(Rotor::look_to_rh(Vector::new($s::NAN, 0.0, 1.0), Vector::Y).is_none());
             }
 
+            /// Component-wise equality that counts NaN equal to NaN.
+            fn same(a: Vector, b: $vec3) -> bool {
+                a.to_array()
+                    .iter()
+                    .zip(b.to_array().iter())
+                    .all(|(x, y)| x == y || (x.is_nan() && y.is_nan()))
+            }
+
+            #[test]
+            fn field_names_read_and_write_glams_components() {
+                let mut v = Vector::new(1.0, -2.0, 3.5);
+                let g = $vec3::from(v);
+                assert_eq!((v.x, v.y, v.z), (g.x, g.y, g.z));
+                v.x = 4.0;
+                v.y += 1.0;
+                v.z *= 2.0;
+                assert_eq!(v, Vector::new(4.0, -1.0, 7.0));
+                let r = &mut v;
+                r.z = 0.0;
+                assert_eq!(v.e3, 0.0);
+                assert_eq!(
+                    core::mem::size_of::<Vector>(),
+                    core::mem::size_of::<$vec3>()
+                );
+            }
+
+            #[test]
+            fn vector_constants_are_glams() {
+                for (ours, theirs) in [
+                    (Vector::ONE, $vec3::ONE),
+                    (Vector::NEG_ONE, $vec3::NEG_ONE),
+                    (Vector::NEG_X, $vec3::NEG_X),
+                    (Vector::NEG_Y, $vec3::NEG_Y),
+                    (Vector::NEG_Z, $vec3::NEG_Z),
+                    (Vector::MIN, $vec3::MIN),
+                    (Vector::MAX, $vec3::MAX),
+                    (Vector::INFINITY, $vec3::INFINITY),
+                    (Vector::NEG_INFINITY, $vec3::NEG_INFINITY),
+                    (Vector::NAN, $vec3::NAN),
+                    (Vector::splat(-2.5), $vec3::splat(-2.5)),
+                ] {
+                    assert!(same(ours, theirs), "{ours:?}");
+                }
+                for (ours, theirs) in Vector::AXES.iter().zip($vec3::AXES.iter()) {
+                    assert_eq!($vec3::from(*ours), *theirs);
+                }
+            }
+
+            #[test]
+            fn component_wise_methods_match_glam_on_edge_cases() {
+                let mut rng = Rng(21);
+                let mut vectors = edge_vectors();
+                vectors.push(Vector::new($s::NAN, 1.0, -1.0));
+                vectors.push(Vector::new($s::INFINITY, 0.0, 0.0));
+                vectors.push(Vector::splat($s::MAX));
+                vectors.push(Vector::new(-0.0, 0.0, -0.0));
+                vectors.extend((0..60).map(|_| vector(&mut rng) * 4.0));
+                for &a in &vectors {
+                    let ga = $vec3::from(a);
+                    assert!(same(a.abs(), ga.abs()), "{a:?}");
+                    assert!(same(a.normalize_or_zero(), ga.normalize_or_zero()), "{a:?}");
+                    assert!(same(a.normalize_or(Vector::Y), ga.normalize_or($vec3::Y)));
+                    let (min, max) = (a.min_element(), a.max_element());
+                    assert!(min == ga.min_element() || (min.is_nan() && ga.min_element().is_nan()));
+                    assert!(max == ga.max_element() || (max.is_nan() && ga.max_element().is_nan()));
+                    assert!(same(a.any_orthogonal_vector(), ga.any_orthogonal_vector()));
+                    let l = a.length_recip();
+                    assert!(l == ga.length_recip() || (l.is_nan() && ga.length_recip().is_nan()));
+                    assert!(same(
+                        Vector::from_slice(&a.extend(7.0).to_array()),
+                        $vec3::from_slice(&ga.extend(7.0).to_array())
+                    ));
+                    assert_eq!(a.extend(7.0).w, 7.0);
+                    for &b in &vectors {
+                        let gb = $vec3::from(b);
+                        assert!(same(a.min(b), ga.min(gb)), "{a:?} {b:?}");
+                        assert!(same(a.max(b), ga.max(gb)), "{a:?} {b:?}");
+                        assert!(same(
+                            a.distance_squared(b) * Vector::ONE,
+                            ga.distance_squared(gb) * $vec3::ONE
+                        ));
+                        let d = a.distance(b);
+                        let gd = ga.distance(gb);
+                        assert!(
+                            d == gd || (d.is_nan() && gd.is_nan()) || (d - gd).abs() <= TOL * gd
+                        );
+                        for s in [0.0, 0.5, 1.0, -1.0, 2.0] {
+                            assert!(same(a.lerp(b, s), ga.lerp(gb, s)), "{a:?} {b:?} {s}");
+                        }
+                        let moderate = |v: Vector| v.length_squared() > 1e-12 && v.length() < 1e6;
+                        if moderate(a) && moderate(b) {
+                            let scale = TOL * (1.0 + ga.length()) * 4.0;
+                            assert!(
+                                close(a.project_onto(b), ga.project_onto(gb), scale),
+                                "{a:?} {b:?}"
+                            );
+                            assert!(
+                                close(a.reject_from(b), ga.reject_from(gb), scale),
+                                "{a:?} {b:?}"
+                            );
+                            let nb = b.normalize();
+                            assert!(close(
+                                a.project_onto_normalized(nb),
+                                ga.project_onto_normalized(nb.into()),
+                                scale
+                            ));
+                        }
+                    }
+                }
+                // any_orthonormal_vector: glam's vector, for unit input, including +-Z.
+                let mut units = vec![
+                    Vector::X,
+                    Vector::Z,
+                    Vector::NEG_Z,
+                    Vector::new(0.0, 0.6, -0.8),
+                ];
+                units.extend((0..100).map(|_| unit(&mut rng)));
+                for n in units {
+                    let ours = n.any_orthonormal_vector();
+                    assert!(
+                        close(ours, $vec3::from(n).any_orthonormal_vector(), TOL),
+                        "{n:?}"
+                    );
+                    assert!(
+                        ours.dot(n).abs() < 4.0 * TOL && (ours.length() - 1.0).abs() < 4.0 * TOL
+                    );
+                }
+                assert!(Vector::X.abs_diff_eq(Vector::X * (1.0 + TOL), 2.0 * TOL));
+                assert!(!Vector::X.abs_diff_eq(Vector::Y, 0.5));
+            }
+
+            #[test]
+            fn angle_between_vectors_matches_glam_and_is_accurate_near_0_and_pi() {
+                let mut rng = Rng(22);
+                for _ in 0..200 {
+                    let r = rotor(&mut rng);
+                    for angle in [
+                        0.0,
+                        1e-6,
+                        1e-3,
+                        0.1,
+                        1.0,
+                        FRAC_PI_2,
+                        3.0,
+                        PI - 1e-3,
+                        PI - 1e-6,
+                        PI,
+                    ] {
+                        // Non-unit input of known angle, turned anywhere.
+                        let a = r.mul_vec3(Vector::X * 2.0);
+                        let b = r.mul_vec3(Vector::new(angle.cos(), angle.sin(), 0.0) * 0.3);
+                        let ours = a.angle_between(b);
+                        let theirs = $vec3::from(a).angle_between(b.into());
+                        assert!((ours - angle).abs() < 16.0 * TOL, "{angle}: {ours}");
+                        // glam's acos loses half the digits near 0 and pi (and f32's is a
+                        // polynomial); it agrees to that.
+                        assert!(
+                            (ours - theirs).abs() < 4.0 * TOL.sqrt(),
+                            "{angle}: {ours} {theirs}"
+                        );
+                    }
+                }
+                for v in [Vector::ZERO, Vector::X] {
+                    assert!(v.angle_between(Vector::ZERO).is_nan());
+                    assert!($vec3::from(v).angle_between($vec3::ZERO).is_nan());
+                }
+            }
+
+            #[test]
+            fn quaternion_names_match_glam() {
+                let mut rng = Rng(23);
+                assert!(Rotor::NAN.is_nan() && $quat::NAN.is_nan());
+                for i in 0..200 {
+                    let (a, b) = (
+                        rotor(&mut rng),
+                        rotor(&mut rng) * if i % 4 == 0 { 1.5 } else { 1.0 },
+                    );
+                    let (qa, qb) = ($quat::from(a), $quat::from(b));
+                    assert_eq!($vec3::from(a.xyz()), qa.xyz());
+                    assert_eq!(a.w(), qa.w);
+                    assert!((b.length_recip() - qb.length_recip()).abs() <= 4.0 * TOL);
+                    // The product keeps its sign: compare exactly, not up to -1.
+                    let product = Rotor::from(qa.mul_quat(qb));
+                    assert!((a.mul_quat(b) - product).norm() < 4.0 * TOL);
+                    assert!((a * b - Rotor::from(qa * qb)).norm() < 4.0 * TOL);
+                    let b = b.normalize();
+                    let qb = $quat::from(b);
+                    for s in [0.0, 0.25, 0.5, 1.0] {
+                        let theirs = Rotor::from(qa.lerp(qb, s));
+                        assert!((a.lerp(b, s) - theirs).norm() < 4.0 * TOL, "{a} {b} {s}");
+                        let theirs = Rotor::from(qa.lerp(-qb, s));
+                        assert!((a.lerp(-b, s) - theirs).norm() < 4.0 * TOL, "{a} {b} {s}");
+                    }
+                    let v4 = $vec4::from(qb) * 2.0;
+                    assert_eq!($quat::from(Rotor::from_vec4(v4)), $quat::from_vec4(v4));
+                    let translation = $vec3::new(1.0, -2.0, 3.0);
+                    let m = $mat4::from_rotation_translation(qa, translation);
+                    assert!(gap(Rotor::from_mat4(&m), $quat::from_mat4(&m)) < 4.0 * TOL);
+                    let affine = $affine3::from_rotation_translation(qa, translation);
+                    assert!(
+                        gap(Rotor::from_affine3(&affine), $quat::from_affine3(&affine)) < 4.0 * TOL
+                    );
+                    let [x, y, z] = [Vector::X, Vector::Y, Vector::Z].map(|e| a.mul_vec3(e));
+                    let theirs = $quat::from_rotation_axes(x.into(), y.into(), z.into());
+                    assert!(gap(Rotor::from_rotation_axes(x, y, z), theirs) < 4.0 * TOL);
+                    assert_eq!(a.abs_diff_eq(b, 0.1), qa.abs_diff_eq(qb, 0.1));
+                    assert!(!a.abs_diff_eq(-a, 0.1) && !qa.abs_diff_eq(-qa, 0.1));
+                }
+            }
+
+            #[test]
+            fn slerp_long_takes_the_long_way_with_glams_definition() {
+                // glam 0.33's slerp_long is slerp without the flip of `end`: along the
+                // great arc of the quaternions themselves. About a fixed axis the rotor of
+                // angle `a` goes to that of `b` through the angles `a + s (b - a)` when
+                // `|b - a| < 2 pi`, the long way when `|b - a| > pi`.
+                let mut rng = Rng(24);
+                for _ in 0..200 {
+                    let axis = unit(&mut rng);
+                    let a = rng.next() as $s * PI;
+                    let b = a + rng.next() as $s * 1.99 * PI;
+                    let (start, end) = (
+                        Rotor::from_axis_angle(axis, a),
+                        Rotor::from_axis_angle(axis, b),
+                    );
+                    for s in [0.0, 0.1, 0.5, 0.9, 1.0] {
+                        let expected = Rotor::from_axis_angle(axis, a + s * (b - a));
+                        let ours = start.slerp_long(end, s);
+                        assert!(
+                            (ours - expected).norm() < 32.0 * TOL,
+                            "{a} {b} {s}: {ours} {expected}"
+                        );
+                        // The short way is glam's slerp and agrees where it is the same arc.
+                        if start.dot(end) > 0.0 {
+                            assert!((ours - start.slerp(end, s)).norm() < 32.0 * TOL);
+                        }
+                    }
+                }
+                // `end = -self`: a full turn, finite and unit throughout.
+                let r = Rotor::from_rotation_x(0.7);
+                for s in [0.0, 0.3, 0.5, 1.0] {
+                    let q = r.slerp_long(-r, s);
+                    assert!(q.is_finite() && (q.length() - 1.0).abs() < 4.0 * TOL);
+                }
+                assert!((r.slerp_long(-r, 1.0) + r).norm() < 8.0 * TOL);
+                assert!((r.slerp_long(r, 0.5) - r).norm() < 4.0 * TOL);
+            }
+
+            #[test]
+            fn rotation_arc_2d_matches_glam_on_its_edge_cases() {
+                let mut rng = Rng(25);
+                let plane = |rng: &mut Rng| {
+                    let t = rng.next() as $s * PI;
+                    $vec2::new(t.cos(), t.sin())
+                };
+                let mut pairs = vec![
+                    ($vec2::X, $vec2::X),
+                    ($vec2::X, -$vec2::X),
+                    ($vec2::Y, -$vec2::Y),
+                    ($vec2::X, $vec2::Y),
+                ];
+                for _ in 0..200 {
+                    let f = plane(&mut rng);
+                    pairs.push((f, plane(&mut rng)));
+                    pairs.push((f, f));
+                    pairs.push((f, -f));
+                    let near = $vec2::from_angle(PI - 1e-3).rotate(f);
+                    pairs.push((f, near));
+                }
+                for (from, to) in pairs {
+                    let ours = Rotor::from_rotation_arc_2d(from, to);
+                    let theirs = $quat::from_rotation_arc_2d(from, to);
+                    let (f3, t3) = (
+                        Vector::new(from.x, from.y, 0.0),
+                        Vector::new(to.x, to.y, 0.0),
+                    );
+                    assert!((ours.mul_vec3(f3) - t3).norm() < 8.0 * TOL, "{from} {to}");
+                    if from.dot(to) > -0.99 || from == -to {
+                        assert!(
+                            gap(ours, theirs) < 8.0 * TOL,
+                            "{from} {to}: {ours} {theirs:?}"
+                        );
+                    }
+                    // Non-unit input counts by its direction; arrays are accepted too. (Up
+                    // to the sign: opposite vectors scaled apart round to a turn by just
+                    // under or over pi.)
+                    let scaled = Rotor::from_rotation_arc_2d(from * 3.0, [to.x * 0.5, to.y * 0.5]);
+                    assert!(gap(scaled, ours.into()) < 8.0 * TOL, "{from} {to}");
+                }
+                assert_eq!(
+                    Rotor::from_rotation_arc_2d($vec2::X, $vec2::ZERO),
+                    Rotor::ZERO
+                );
+            }
+
             #[test]
             fn default_rotor_is_the_algebras_zero_and_identity_is_named() {
                 // Deliberately different from glam (docs/glam.md): `Rotor` is the algebra's
@@ -504,8 +802,30 @@ macro_rules! vocabulary_tests {
     };
 }
 
-vocabulary_tests!(f32_vocabulary, f32, Vec3, Quat, Mat3, Mat4, 2e-7);
-vocabulary_tests!(f64_vocabulary, f64, DVec3, DQuat, DMat3, DMat4, 4e-16);
+vocabulary_tests!(
+    f32_vocabulary,
+    f32,
+    Vec2,
+    Vec3,
+    Vec4,
+    Quat,
+    Mat3,
+    Mat4,
+    Affine3,
+    2e-7
+);
+vocabulary_tests!(
+    f64_vocabulary,
+    f64,
+    DVec2,
+    DVec3,
+    DVec4,
+    DQuat,
+    DMat3,
+    DMat4,
+    DAffine3,
+    4e-16
+);
 
 #[test]
 fn small_angle_series_of_from_scaled_axis_has_the_right_sign() {
@@ -530,5 +850,144 @@ fn small_angle_series_of_from_scaled_axis_has_the_right_sign() {
                 "{angle}: {ours} vs {reference}"
             );
         }
+    }
+}
+
+#[test]
+fn simd_aligned_f32_inputs_match_glam() {
+    use ga_core::f32::g3::*;
+    use ga_core::glam::{Affine3A, Mat3A, Quat, Vec3, Vec3A};
+    let mut rng = Rng(26);
+    for _ in 0..100 {
+        let axis = Vector::new(
+            rng.next() as f32,
+            rng.next() as f32,
+            rng.next() as f32 + 2.0,
+        );
+        let r = Rotor::from_axis_angle(axis.normalize(), rng.next() as f32 * 3.1);
+        let q = Quat::from(r);
+        let v = Vec3A::new(rng.next() as f32, rng.next() as f32, rng.next() as f32);
+        assert!(r.mul_vec3a(v).abs_diff_eq(q.mul_vec3a(v), 1e-6));
+        assert!((-r).mul_vec3a(v).abs_diff_eq(q * v, 1e-6));
+        assert_eq!(Vec3A::from(Vector::from(v)), v);
+        let m = Mat3A::from_quat(q);
+        let gap = |a: Rotor, b: Quat| (a - Rotor::from(b)).norm().min((a + Rotor::from(b)).norm());
+        assert!(gap(Rotor::from_mat3a(&m), Quat::from_mat3a(&m)) < 1e-6);
+        assert!(gap(Rotor::from_matrix(m).unwrap(), q) < 1e-6);
+        let affine = Affine3A::from_rotation_translation(q, Vec3::new(4.0, 5.0, 6.0));
+        assert!(gap(Rotor::from_affine3a(&affine), Quat::from_affine3a(&affine)) < 1e-6);
+        let wide = r.as_dquat();
+        assert!((wide.as_quat() - r).norm() == 0.0);
+        assert_eq!(Vector::from(v).as_dvec3().as_vec3(), Vector::from(v));
+    }
+}
+
+/// Typical engine code written once against glam's `Quat`/`Vec3` names. Each module below
+/// brings in glam's types or ga-core's under those names; the only other change is the
+/// documented one, passed in as `$look_unwrap`: ga-core's `look_at_rh` returns `Option`.
+/// Rotations are written `mul_vec3` (glam's name for `q * v`): in ga-core `*` is the
+/// geometric product (docs/glam.md).
+macro_rules! engine_code {
+    ($s:ident, $($look_unwrap:tt)*) => {
+        pub struct Frame {
+            pub rotations: Vec<Quat>,
+            pub vectors: Vec<Vec3>,
+            pub scalars: Vec<$s>,
+        }
+
+        pub fn run(eye: Vec3, target: Vec3, spin: $s) -> Frame {
+            let mut rotations = Vec::new();
+            let mut vectors = Vec::new();
+            let mut scalars = Vec::new();
+
+            // A camera looking at a target, and where the view sends the target.
+            let view = Quat::look_at_rh(eye, target, Vec3::Y) $($look_unwrap)*;
+            let forward = view.mul_vec3((target - eye).normalize());
+            rotations.push(view);
+            vectors.push(forward);
+
+            // An object spun about a tilted axis, then turned by the arc between two directions.
+            let axis = Vec3::new(1.0, 2.0, -0.5).normalize();
+            let spun = Quat::from_axis_angle(axis, spin);
+            let arc = Quat::from_rotation_arc(Vec3::Z, (target - eye).normalize());
+            let combined = arc * spun;
+            rotations.push(combined.normalize());
+            vectors.push(combined.mul_vec3(Vec3::X));
+
+            // Interpolated orientations, and the angle between them.
+            let start = Quat::from_rotation_y(0.3);
+            for t in [0.0, 0.25, 0.5, 1.0] {
+                rotations.push(start.slerp(combined, t));
+                rotations.push(start.lerp(combined, t));
+            }
+            scalars.push(start.angle_between(combined));
+            let (euler_axis, angle) = Quat::from_scaled_axis(axis * 0.5).to_axis_angle();
+            vectors.push(euler_axis);
+            scalars.push(angle);
+
+            // Field access, component arithmetic and vector helpers.
+            let mut velocity = Vec3::new(eye.x, target.y, 0.5);
+            velocity.z += 1.0;
+            velocity.x = -velocity.x;
+            let position = eye.lerp(target, 0.25) + velocity * 0.1;
+            vectors.push(position);
+            vectors.push(velocity.cross(Vec3::Y).normalize_or_zero());
+            vectors.push(Vec3::ZERO.normalize_or_zero());
+            vectors.push(position.min(Vec3::ONE).max(Vec3::NEG_Z).abs());
+            vectors.push(velocity.project_onto(Vec3::X));
+            vectors.push(axis.any_orthonormal_vector());
+            scalars.push(velocity.angle_between(Vec3::NEG_Z));
+            scalars.push(eye.distance(target));
+            scalars.push(position.max_element() + position.length() + velocity.dot(axis));
+            scalars.push(Vec3::splat(2.0).length_squared());
+            scalars.push(combined.xyz().length() + view.conjugate().length_recip());
+            Frame { rotations, vectors, scalars }
+        }
+    };
+}
+
+mod engine_with_glam {
+    use ga_core::glam::{Quat, Vec3};
+    engine_code!(f32,);
+}
+
+mod engine_with_ga_core {
+    use ga_core::f32::g3::{Rotor as Quat, Vector as Vec3};
+    engine_code!(f32, .unwrap());
+}
+
+#[test]
+fn glam_engine_code_renamed_to_rotor_and_vector_gives_glams_results() {
+    use ga_core::f32::g3::{Rotor, Vector};
+    let mut rng = Rng(27);
+    for _ in 0..100 {
+        let eye = Vector::new(rng.next() as f32, rng.next() as f32, rng.next() as f32) * 5.0;
+        let target = Vector::new(
+            rng.next() as f32,
+            rng.next() as f32,
+            rng.next() as f32 - 2.0,
+        );
+        let spin = rng.next() as f32 * 3.0;
+        let ours = engine_with_ga_core::run(eye, target, spin);
+        let theirs = engine_with_glam::run(eye.into(), target.into(), spin);
+        for (a, b) in ours.rotations.iter().zip(&theirs.rotations) {
+            let b = Rotor::from(*b);
+            assert!((*a - b).norm().min((*a + b).norm()) < 1e-5, "{a} {b}");
+        }
+        for (a, b) in ours.vectors.iter().zip(&theirs.vectors) {
+            assert!(
+                (*a - Vector::from(*b)).norm() < 1e-5 * (1.0 + b.length()),
+                "{a} {b}"
+            );
+        }
+        for (a, b) in ours.scalars.iter().zip(&theirs.scalars) {
+            // glam's f32 angles come from a polynomial acos: a few 1e-5 rad.
+            assert!((a - b).abs() < 1e-4 * (1.0 + b.abs()), "{a} {b}");
+        }
+        let counts = |f: &engine_with_ga_core::Frame| (f.rotations.len(), f.vectors.len());
+        assert_eq!(
+            counts(&ours),
+            (theirs.rotations.len(), theirs.vectors.len())
+        );
     }
 }
