@@ -64,6 +64,9 @@ mod euler;
 mod glam_interop;
 #[cfg(feature = "g3")]
 mod glam_vocabulary;
+/// glam's `x`, `y`, `z` view of G3's `Vector` (`v.x` reads and writes `v.e1`).
+#[cfg(all(feature = "g3", any(feature = "f32", feature = "f64")))]
+pub use glam_vocabulary::Xyz;
 // The slice kernels ask the CPU what it has, which needs the standard library.
 #[cfg(all(feature = "std", feature = "g3", any(feature = "f32", feature = "f64")))]
 pub mod kernels;
