@@ -32,9 +32,6 @@ pub struct LieDop853 {
     next_step: Option<f64>,
 }
 
-/// The stage rates: `(du/dt, dOmega_B/dt)`.
-type Rates<Al> = [[<Al as Algebra>::Bivector; 2]; S];
-
 /// One step's result: the Lie-algebra increment, the new `Omega_B` and the error norm.
 struct Trial<Al: Algebra> {
     u: Al::Bivector,

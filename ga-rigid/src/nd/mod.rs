@@ -29,6 +29,8 @@ mod lie_dopri5;
 mod lie_rk4;
 mod midpoint;
 mod rk4;
+pub mod run;
+pub mod scene;
 mod splitting;
 mod state;
 mod torque;
