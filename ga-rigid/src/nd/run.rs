@@ -303,8 +303,8 @@ fn planar_closed_form(scene: &BodyScene<G2>) -> Option<ClosedForm<G2>> {
 fn symmetric_closed_form(scene: &BodyScene<G4>) -> Result<ClosedForm<G4>, Error> {
     if scene.body.has_torque() {
         return Err(Error::invalid(
-            "method",
-            "closed-form in 4D is for a free body; this scene has a torque",
+            "torque",
+            "closed-form in 4D is for a free body: leave out [torque] or choose another method",
         ));
     }
     let closed = SymmetricBody4::new(&scene.body, 1e-12).map_err(|e| e.within("body"))?;
