@@ -61,6 +61,8 @@ pub(crate) fn only_3d(table: &toml::Table) -> Result<(), Error> {
 }
 
 /// A validated 2D or 4D scene.
+// One scene is loaded per run: a boxed variant would save nothing worth the indirection.
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug)]
 pub enum NdScene {
     /// A body turning in the plane.
