@@ -19,6 +19,7 @@ mod progress;
 pub mod report;
 mod report_cmd;
 mod simulate;
+mod simulate_nd;
 
 use std::ffi::OsString;
 use std::io::Write as _;
@@ -174,6 +175,10 @@ fn in_flags(e: LibError) -> Error {
 /// the CSV, its sidecar record and the plot together (see [`output::OutputPlan`]): a
 /// failure leaves every existing file as it was.
 fn simulate(args: &SimulateArgs) -> Result<(), Error> {
+    match ga_rigid::nd::scene::dimension_of(&args.scene) {
+        3 => {}
+        dimension => return simulate_nd::simulate(args, dimension),
+    }
     let method = args.method.0;
     // Without --dt or --tol the step control comes from the scene (`limits::default_step`).
     let given = method.given_step(args.dt, args.tol).map_err(in_flags)?;
@@ -244,6 +249,10 @@ fn simulate(args: &SimulateArgs) -> Result<(), Error> {
 
 /// `inertia`: load the scene and print its body's mass properties.
 fn inertia(args: &InertiaArgs) -> Result<(), Error> {
+    if ga_rigid::nd::scene::dimension_of(&args.scene) != 3 {
+        let scene = ga_rigid::nd::scene::NdScene::load(&args.scene)?;
+        return emit_stdout(&simulate_nd::describe_inertia(&scene));
+    }
     let scene = Scene::load(&args.scene)?;
     emit_stdout(&describe_inertia(&scene))
 }

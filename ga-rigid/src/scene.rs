@@ -237,6 +237,9 @@ struct BodyFile {
     mesh: Option<PathBuf>,
     density: Option<f64>,
     allow_unphysical: Option<bool>,
+    /// 3 when given, checked on the table before serde (`nd::scene::only_3d`).
+    #[allow(dead_code)]
+    dimension: Option<i64>,
 }
 
 #[derive(Deserialize)]
@@ -312,6 +315,7 @@ impl Scene {
     pub fn parse(text: &str, path: &Path) -> Result<Scene, Error> {
         let table: toml::Table = toml::from_str(text).map_err(|e| syntax_error(&e, text, path))?;
         sections_are_tables(&table)?;
+        crate::nd::scene::only_3d(&table)?;
         let file: SceneFile = toml::Value::Table(table)
             .try_into()
             .map_err(|e: toml::de::Error| field_error(&e))?;
@@ -605,7 +609,7 @@ fn load_body(body: BodyFile, scene_path: &Path) -> Result<(BodySpec, Inertia), E
 /// Refuse a section written as something other than one table: serde would read
 /// `[[run]]` (an array of tables) as a sequence of the section's fields in order, and
 /// complain that `t_end` got a table ("invalid type: map, expected f64").
-fn sections_are_tables(table: &toml::Table) -> Result<(), Error> {
+pub(crate) fn sections_are_tables(table: &toml::Table) -> Result<(), Error> {
     // Unknown names are left to serde, which names them as unknown fields.
     for name in ["body", "initial", "run", "torque"] {
         let got = match table.get(name) {
@@ -625,7 +629,7 @@ fn sections_are_tables(table: &toml::Table) -> Result<(), Error> {
 
 /// A TOML syntax error as one line with its position; a duplicated key (which the
 /// parser reports as "duplicate key `k` in table `t`") is named as the field `t.k`.
-fn syntax_error(e: &toml::de::Error, text: &str, path: &Path) -> Error {
+pub(crate) fn syntax_error(e: &toml::de::Error, text: &str, path: &Path) -> Error {
     let (line, column) = match e.span() {
         Some(span) => {
             // Bytes, not chars: a span need not fall on a char boundary of `text`.
@@ -703,7 +707,7 @@ fn duplicated_key(message: &str, text: &str, offset: usize) -> Option<String> {
 /// toml's value deserializer appends the dotted key path as a final line "in `a.b`";
 /// serde's own messages name the field for unknown and missing fields. Combining the
 /// two gives the full path of the offending field.
-fn field_error(e: &toml::de::Error) -> Error {
+pub(crate) fn field_error(e: &toml::de::Error) -> Error {
     let message = e.message();
     let display = e.to_string();
     let path = display

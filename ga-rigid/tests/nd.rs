@@ -6,8 +6,8 @@
 use ga_core::f64::g4;
 use ga_core::f64::{g2, g3};
 use ga_rigid::nd::{
-    planar, Algebra, BodyTorque, ImplicitMidpoint, Integrator, LieDopri5, LieRk4, PlaneSplitting,
-    RigidBody, Rk4, SpaceTorque, State, SymmetricBody4, G2, G3, G4,
+    planar, Algebra, BodyTorque, ImplicitMidpoint, Integrator, LieDop853, LieDopri5, LieRk4,
+    PlaneSplitting, RigidBody, Rk4, SpaceTorque, State, SymmetricBody4, G2, G3, G4,
 };
 
 /// The 4D test body of docs/references.md: second moments and `Omega_B(0)`, `R(0) = 1`.
@@ -702,4 +702,79 @@ fn a_time_dependent_torque_on_an_isotropic_body_adds_its_integral() {
         let d = max_difference(&state.omega.to_array(), &expected);
         assert!(d < 1e-13, "{}: {d:e}", method.name());
     }
+}
+
+// ---------- lie-dop853 in four dimensions ----------
+
+#[test]
+fn lie_dop853_at_tolerance_1e_12_reaches_the_reference_state() {
+    let (body, s0) = reference_body();
+    let mut method = LieDop853::new(1e-12, 1e-12).unwrap();
+    let state = method.advance(&body, 0.0, s0, 10.0).unwrap();
+    let (dr, dw) = distance_to_reference(&state);
+    eprintln!(
+        "lie-dop853: |dR| {dr:e} |dOmega| {dw:e}, steps {:?}",
+        method.steps()
+    );
+    assert!(dr < 1e-10 && dw < 1e-10, "{dr:e} {dw:e}");
+}
+
+/// The target: at `tol 1e-12` over t = 100 both Casimirs and Manakov's integrals
+/// (k = 2, 3 at three lambdas) stay within 1e-11 of their start, relative.
+#[test]
+fn lie_dop853_keeps_casimirs_and_manakov_integrals_over_t_100() {
+    let (body, s0) = reference_body();
+    let lambdas = [-1.3, 0.4, 2.0];
+    let integrals = |m: g4::Bivector| -> Vec<f64> {
+        let (c0, c4) = casimirs(m);
+        let mut all = vec![c0, c4];
+        all.extend(
+            lambdas
+                .iter()
+                .flat_map(|&lambda| [2, 3].map(|k| manakov(m, lambda, k))),
+        );
+        all
+    };
+    let initial = integrals(body.body_momentum(s0.omega));
+    let mut method = LieDop853::new(1e-12, 1e-12).unwrap();
+    let mut state = s0;
+    let mut worst = 0.0_f64;
+    for step in 0..100 {
+        state = method.advance(&body, f64::from(step), state, 1.0).unwrap();
+        let now = integrals(body.body_momentum(state.omega));
+        for (a, b) in now.iter().zip(&initial) {
+            worst = worst.max((a - b).abs() / b.abs());
+        }
+    }
+    eprintln!(
+        "lie-dop853 over t = 100: largest relative change {worst:e}, steps {:?}",
+        method.steps()
+    );
+    assert!(worst < 1e-11, "{worst:e}");
+}
+
+#[test]
+fn lie_dop853_converges_at_order_eight_in_four_dimensions() {
+    let (body, s0) = reference_body();
+    let method = LieDop853::new(1.0, 1.0).unwrap();
+    let run = |n: u32| {
+        let h = 8.0 / f64::from(n);
+        let mut state = s0;
+        for k in 0..n {
+            state = method.step_once(&body, f64::from(k) * h, state, h);
+        }
+        state
+    };
+    let reference = run(256);
+    let error = |n: u32| {
+        let s = run(n);
+        max_difference(&s.rotor.to_array(), &reference.rotor.to_array()).max(max_difference(
+            &s.omega.to_array(),
+            &reference.omega.to_array(),
+        ))
+    };
+    let (coarse, fine) = (error(16), error(32));
+    let order = (coarse / fine).log2();
+    eprintln!("lie-dop853 fixed step: errors {coarse:e} {fine:e}, order {order:.2}");
+    assert!(order > 7.3, "{order}");
 }

@@ -54,10 +54,10 @@ use crate::error::{self, Error};
 use super::integrator::{check_finite, scaled_norm, step_limit_reached, unit, Integrator};
 
 /// The stages.
-const S: usize = 12;
+pub(crate) const S: usize = 12;
 
 /// The nodes `c_i` (`c_12 = 1`).
-const C: [f64; S] = [
+pub(crate) const C: [f64; S] = [
     0.0,
     0.526_001_519_587_677_318_785_587_544_488E-1,
     0.789_002_279_381_515_978_178_381_316_732E-1,
@@ -73,7 +73,7 @@ const C: [f64; S] = [
 ];
 
 /// The rows `a_ij`, `j < i`, of stages 2 to 12.
-const A: [&[f64]; S] = [
+pub(crate) const A: [&[f64]; S] = [
     &[],
     &[5.260_015_195_876_773_187_855_875_444_88E-2],
     &[
@@ -164,7 +164,7 @@ const A: [&[f64]; S] = [
 ];
 
 /// The weights of order eight.
-const B: [f64; S] = [
+pub(crate) const B: [f64; S] = [
     5.429_373_411_656_876_223_805_357_663_63E-2,
     0.0,
     0.0,
@@ -180,14 +180,14 @@ const B: [f64; S] = [
 ];
 
 /// The third-order weights on stages 1, 9 and 12 for the second error estimate.
-const BHH: [f64; 3] = [
+pub(crate) const BHH: [f64; 3] = [
     0.244_094_488_188_976_377_952_755_905_512,
     0.733_846_688_281_611_857_341_361_741_547,
     0.220_588_235_294_117_647_058_823_529_412E-1,
 ];
 
 /// The eighth- minus the fifth-order weights.
-const E: [f64; S] = [
+pub(crate) const E: [f64; S] = [
     0.131_200_449_941_948_807_325_010_299_6E-1,
     0.0,
     0.0,
@@ -338,13 +338,13 @@ const D: [[f64; SD]; 4] = [
     ],
 ];
 
-const SAFETY: f64 = 0.9;
+pub(crate) const SAFETY: f64 = 0.9;
 /// The step may shrink to a third and grow to six times per step (DOP853's defaults,
 /// `WORK(3) = 0.333`, `WORK(4) = 6`).
-const MIN_RATIO: f64 = 0.333;
-const MAX_RATIO: f64 = 6.0;
+pub(crate) const MIN_RATIO: f64 = 0.333;
+pub(crate) const MAX_RATIO: f64 = 6.0;
 /// DOP853 stretches a step by up to 1 % rather than leave a sliver of a last step.
-const STRETCH: f64 = 1.01;
+pub(crate) const STRETCH: f64 = 1.01;
 
 /// The Taylor coefficients of `c(x) = (1 - x cot x) / (4 x^2)` in powers of `x^2`:
 /// `2^(2n) |B_2n| / (4 (2n)!)`, `n = 1..16` (`1/12, 1/180, 1/1890, 1/18900, ...`).

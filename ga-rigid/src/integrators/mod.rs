@@ -10,7 +10,7 @@ mod dopri;
 mod exact;
 mod exact_splitting;
 mod integrator;
-mod lie_dop853;
+pub(crate) mod lie_dop853;
 mod lie_rk4;
 mod midpoint;
 mod rk4;
