@@ -91,7 +91,7 @@ macro_rules! precision_api {
             /// and world angular momentum `momentum`.
             #[must_use]
             pub fn angular_velocity(&self, orientation: $quat, momentum: $vec3) -> $vec3 {
-                let q_p = self.inertia.principal_orientation(q_in(orientation));
+                let q_p = self.inertia.principal_orientation(q_in(orientation).unit());
                 v_out(self.inertia.velocity(q_p, v_in(momentum)))
             }
 
@@ -99,14 +99,14 @@ macro_rules! precision_api {
             /// world angular velocity `velocity`.
             #[must_use]
             pub fn angular_momentum(&self, orientation: $quat, velocity: $vec3) -> $vec3 {
-                let q_p = self.inertia.principal_orientation(q_in(orientation));
+                let q_p = self.inertia.principal_orientation(q_in(orientation).unit());
                 v_out(self.inertia.momentum(q_p, v_in(velocity)))
             }
 
             /// The rotational kinetic energy `L . w / 2`.
             #[must_use]
             pub fn kinetic_energy(&self, orientation: $quat, momentum: $vec3) -> $t {
-                let q_p = self.inertia.principal_orientation(q_in(orientation));
+                let q_p = self.inertia.principal_orientation(q_in(orientation).unit());
                 self.inertia.energy(q_p, v_in(momentum))
             }
         }
@@ -115,7 +115,9 @@ macro_rules! precision_api {
         /// docs). `orientation` body to world, `momentum` and `torque` in the world
         /// frame (the torque held over the step); returns the new orientation
         /// (normalised, in the hemisphere of the old one) and momentum. Without torque
-        /// `|momentum|` is returned unchanged, bit for bit.
+        /// `|momentum|` is returned unchanged, bit for bit. `orientation` may be any
+        /// non-zero finite quaternion: it is stepped as the unit one (see "Orientations"
+        /// in the crate docs; zero or NaN gives a NaN orientation).
         #[must_use]
         #[inline]
         pub fn step(

@@ -51,6 +51,7 @@ pub(crate) fn explicit<R: Real>(
     t: V<R>,
     h: R,
 ) -> (Q<R>, V<R>) {
+    let q = q.unit();
     let q_p = inertia.principal_orientation(q);
     let wb = q_p.rotate_inv(w);
     let tb = q_p.rotate_inv(t);
@@ -69,6 +70,7 @@ pub(crate) fn implicit<R: Real>(
     t: V<R>,
     h: R,
 ) -> (Q<R>, V<R>) {
+    let q = q.unit();
     let q_p = inertia.principal_orientation(q);
     let wb = q_p.rotate_inv(w);
     let tb = q_p.rotate_inv(t);

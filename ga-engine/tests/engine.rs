@@ -387,7 +387,7 @@ fn crowd64(n: usize) -> Vec<e64::BodyState> {
             .unwrap();
             let mut d = e64::BodyState::new(
                 body,
-                s.orientation.as_dquat(),
+                s.orientation.as_dquat().normalize(),
                 s.angular_momentum.as_dvec3(),
             );
             d.torque = s.torque.as_dvec3();
@@ -525,8 +525,10 @@ fn golden_bits_of_ten_thousand_steps() {
     assert_eq!((hash32, hash64), GOLDEN);
 }
 
-/// Recorded by `golden_bits_of_ten_thousand_steps` (printed with `--nocapture`).
-const GOLDEN: (u64, u64) = (0x9dda_bfd0_1e54_4492, 0xc900_ca5d_38bb_229c);
+/// Recorded by `golden_bits_of_ten_thousand_steps` (printed with `--nocapture`). The f64
+/// crowd's orientations are the f32 crowd's widened and normalised in f64: widened alone
+/// they are 1e-7 off unit, which the steps now normalise first.
+const GOLDEN: (u64, u64) = (0x9dda_bfd0_1e54_4492, 0x4f83_425a_03eb_8c0b);
 
 #[test]
 fn step_with_a_constant_torque_is_step_and_keeps_a_heavy_tops_energy() {
@@ -626,4 +628,104 @@ fn the_registry_form_is_the_engines_step() {
         }
     }
     assert!(worst < 1e-7, "{worst:e}");
+}
+
+/// The steps take any non-zero finite orientation and work on it normalised (the docs'
+/// promise): a T-handle's orientation scaled by factors from 1e-150 to 1e150 (f64) and
+/// 1e-19 to 1e19 (f32) gives, after one step and after 600, the orientation of the unit
+/// one to rounding, which is itself the exact flow's (elliptic functions) to the
+/// method's error. Used as it was, `2 q` put the step 1.4e-2 rad off after one step and
+/// 2.4 rad after 600; `1000 q` gave a zero quaternion, `1e10 q` NaN.
+#[test]
+fn a_scaled_orientation_is_stepped_as_the_unit_one() {
+    let body = e64::Body::from_principal(DVec3::from(T_HANDLE), DQuat::IDENTITY).unwrap();
+    let q0 = DQuat::from_rotation_x(0.3) * DQuat::from_rotation_z(-0.2);
+    let l0 = DVec3::new(0.3, 2.0, 0.4);
+    let h = 1.0 / 60.0;
+    let (q_ref, _) = exact(T_HANDLE, q0, l0, 600.0 * h);
+    let run = |q: DQuat, steps: usize| {
+        let (mut q, mut l) = (q, l0);
+        for _ in 0..steps {
+            (q, l) = e64::step(&body, q, l, DVec3::ZERO, h);
+        }
+        q
+    };
+    let (one, many) = (run(q0, 1), run(q0, 600));
+    assert!(angle(many, q_ref) < 1e-2, "{}", angle(many, q_ref));
+    for s in [2.0, 1.01, 0.99, 1e3, 1e10, 1e-3, 1e-150, 1e150] {
+        let q = q0 * s;
+        let (a, b) = (run(q, 1), run(q, 600));
+        assert!((a.length() - 1.0).abs() < 1e-15, "{s}: {a}");
+        assert!(angle(a, one) < 1e-15, "{s}: {:e}", angle(a, one));
+        assert!(angle(b, many) < 1e-11, "{s}: {:e}", angle(b, many));
+        // The other forms, against the same forms on the unit orientation.
+        let t = DVec3::new(0.1, -0.2, 0.3);
+        let (a4, _) = e64::step_order4(&body, q, l0, t, h);
+        let (u4, _) = e64::step_order4(&body, q0, l0, t, h);
+        assert!(angle(a4, u4) < 1e-15, "{s}: order 4 {:e}", angle(a4, u4));
+        let gravity = |q: DQuat| (q * DVec3::Z).cross(DVec3::new(0.0, 0.0, -9.81));
+        let (aw, lw) = e64::step_with(&body, q, l0, h, gravity);
+        let (uw, luw) = e64::step_with(&body, q0, l0, h, gravity);
+        assert!(
+            angle(aw, uw) < 1e-15 && (lw - luw).length() < 1e-15,
+            "{s}: step_with"
+        );
+        let (w, w0) = (body.angular_velocity(q, l0), body.angular_velocity(q0, l0));
+        assert!((w - w0).length() < 1e-15 * w0.length(), "{s}: {w} {w0}");
+        let (e, e0) = (body.kinetic_energy(q, l0), body.kinetic_energy(q0, l0));
+        assert!((e / e0 - 1.0).abs() < 1e-15, "{s}: {e} {e0}");
+        let m = body.angular_momentum(q, w0);
+        assert!(
+            (m - body.angular_momentum(q0, w0)).length() < 1e-14,
+            "{s}: {m}"
+        );
+        for euler in [
+            e64::explicit_gyroscopic_euler,
+            e64::implicit_gyroscopic_euler,
+        ] {
+            let ((a, wa), (u, wu)) = (euler(&body, q, w0, t, h), euler(&body, q0, w0, t, h));
+            assert!(
+                angle(a, u) < 1e-15 && (wa - wu).length() < 1e-14,
+                "{s}: Euler"
+            );
+        }
+    }
+    // f32, the one-body step (its quaternion in a register on x86-64) and the slice.
+    let body32 = e32::Body::from_principal(Vec3::new(1.0, 2.0, 3.0), Quat::IDENTITY).unwrap();
+    let (q32, l32) = (q0.as_quat(), l0.as_vec3());
+    let (unit, _) = e32::step(&body32, q32, l32, Vec3::ZERO, 1.0 / 60.0);
+    let scales = [2.0, 1.01, 1e3, 1e-3, 1e19, 1e-19, 3e38 / 0.99];
+    let mut slice: Vec<_> = scales
+        .iter()
+        .map(|&s| e32::BodyState::new(body32, q32 * s, l32))
+        .collect();
+    e32::step_slice(&mut slice, 1.0 / 60.0);
+    for (&s, state) in scales.iter().zip(&slice) {
+        let (a, _) = e32::step(&body32, q32 * s, l32, Vec3::ZERO, 1.0 / 60.0);
+        let gap = angle(a.as_dquat(), unit.as_dquat());
+        assert!(
+            gap < 1e-6 && (a.length() - 1.0).abs() < 1e-6,
+            "f32 {s}: {gap:e} {a}"
+        );
+        assert_eq!(state.orientation, a, "f32 slice {s}");
+    }
+}
+
+/// A zero or non-finite orientation has no rotation to normalise: the steps return a
+/// NaN orientation (and the momentum kicked as usual), and do not panic.
+#[test]
+fn a_zero_or_non_finite_orientation_gives_nan_not_a_panic() {
+    let body = e64::Body::from_principal(DVec3::from(T_HANDLE), DQuat::IDENTITY).unwrap();
+    let l = DVec3::new(0.3, 2.0, 0.4);
+    for q in [
+        DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0),
+        DQuat::from_xyzw(f64::NAN, 0.0, 0.0, 1.0),
+        DQuat::from_xyzw(f64::INFINITY, 0.0, 0.0, 1.0),
+    ] {
+        let (a, m) = e64::step(&body, q, l, DVec3::X, 0.01);
+        assert!(a.is_nan(), "{q}: {a}");
+        assert_eq!(m, l + DVec3::X * 0.01);
+        assert!(e64::step_order4(&body, q, l, DVec3::ZERO, 0.01).0.is_nan());
+        assert!(body.kinetic_energy(q, l).is_nan());
+    }
 }
