@@ -53,11 +53,19 @@ macro_rules! precision_api {
         impl Body {
             /// From the inertia tensor in the body frame (symmetric; its symmetric part
             /// is used), diagonalised here in f64 by Jacobi rotations. A diagonal tensor
-            /// keeps its axes in the given order and costs the steps nothing extra.
+            /// keeps its axes in the given order. The step works on the principal axes
+            /// ordered from the smallest moment to the largest: where the moments do
+            /// not decrease from x to z (`diag(1, 2, 3)`, a sphere, a flat top spinning
+            /// about z) this costs the steps nothing extra; in another order
+            /// (`diag(3, 2, 1)`, a rod along z)
+            /// each step turns the orientation into that order and back, two quaternion
+            /// products (the engine bench's `step_framed`). Giving the axes in ascending
+            /// order, where a body's frame is free to choose, avoids them.
             ///
             /// # Errors
-            /// A non-finite entry, or a principal moment that is not positive (or whose
-            /// reciprocal overflows).
+            /// A non-finite entry ([`BodyError::NotFinite`]), a principal moment that is
+            /// not positive ([`BodyError::NotPositive`]) or outside the range the
+            /// precision steps ([`BodyError::OutOfRange`], which says the range).
             pub fn from_tensor(tensor: $mat3) -> Result<Self, BodyError> {
                 let c = [tensor.x_axis, tensor.y_axis, tensor.z_axis];
                 Inertia::from_tensor(c.map(|a| [a.x, a.y, a.z])).map(|inertia| Body { inertia })
@@ -65,11 +73,12 @@ macro_rules! precision_api {
 
             /// From principal moments and the principal frame: `frame` turns the
             /// principal axes into the body frame (so the tensor is
-            /// `R diag(moments) R^T`, `R` the rotation of `frame`; any non-zero
-            /// quaternion, normalised here).
+            /// `R diag(moments) R^T`, `R` the rotation of `frame`; any non-zero finite
+            /// quaternion, of any size, normalised here). The cost of the axes' order is
+            /// as in [`Body::from_tensor`].
             ///
             /// # Errors
-            /// As [`Body::from_tensor`], and a zero `frame`.
+            /// As [`Body::from_tensor`], and a zero `frame` ([`BodyError::ZeroFrame`]).
             pub fn from_principal(moments: $vec3, frame: $quat) -> Result<Self, BodyError> {
                 Inertia::from_principal([moments.x, moments.y, moments.z], q_in(frame))
                     .map(|inertia| Body { inertia })

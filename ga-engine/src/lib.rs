@@ -52,7 +52,11 @@
 //! # Errors and panics
 //! Bodies are checked once ([`BodyError`]). The steps never panic and never allocate;
 //! finite input gives finite output unless the numbers overflow (a momentum near
-//! `f32::MAX`).
+//! `f32::MAX`). A step so long that its products overflow (`dt` near `f32::MAX`; for
+//! [`f32::step_order4`], whose substeps are 1.35 `dt`, above `f32::MAX / 1.35`) still
+//! returns a finite unit orientation and the kicked momentum, but the orientation is
+//! then not the flow's, except that a body without momentum (and torque) stays put in
+//! [`f32::step`].
 //!
 //! # Orientations
 //! Every step, and [`f32::Body::angular_velocity`], [`f32::Body::angular_momentum`] and
