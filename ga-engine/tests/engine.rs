@@ -844,3 +844,163 @@ fn huge_tensors_and_frames_and_steps_are_named_for_what_they_are() {
     let (next, _) = e64::step(&body, q.as_dquat(), DVec3::ZERO, DVec3::ZERO, f64::MAX);
     assert!(angle(next, q.as_dquat()) < 1e-15, "{next}");
 }
+
+/// The implicit gyroscopic Euler step is one Newton iteration on
+/// `f(x) = J (x - w) + h x x J x` from `x = w` (Catto 2015): written here on glam, the
+/// Jacobian by central differences of `f` (exact to rounding, `f` being quadratic), on a
+/// body where every term of the Jacobian is large (three distinct moments, a body
+/// velocity with three large components, `h |w| = 0.6`, a tilted orientation and a
+/// torque). A sign flipped in the engine's Jacobian moves the result by about `h^2 |w|^2`.
+#[test]
+fn the_implicit_baseline_is_one_newton_step_with_the_residuals_own_jacobian() {
+    let i = DVec3::new(1.0, 2.0, 3.0);
+    let body = e64::Body::from_principal(i, DQuat::IDENTITY).unwrap();
+    let q = DQuat::from_rotation_y(0.5) * DQuat::from_rotation_x(-0.3);
+    let (w, t, h) = (
+        q * DVec3::new(3.0, -2.0, 4.0),
+        DVec3::new(0.5, -1.0, 0.2),
+        0.1,
+    );
+    let wb = q.inverse() * w;
+    let f = |x: DVec3| i * (x - wb) + h * x.cross(i * x);
+    let d = 1e-3;
+    let column = |e: DVec3| (f(wb + d * e) - f(wb - d * e)) / (2.0 * d);
+    let jacobian = DMat3::from_cols(column(DVec3::X), column(DVec3::Y), column(DVec3::Z));
+    let x = wb - jacobian.inverse() * f(wb) + h * (q.inverse() * t) / i;
+    let w_ref = q * x;
+    let (q1, w1) = e64::implicit_gyroscopic_euler(&body, q, w, t, h);
+    assert!((w1 - w_ref).length() < 1e-12, "{w1} {w_ref}");
+    // The orientation turned by the new velocity, first order.
+    let q_ref = (q + DQuat::from_vec4((0.5 * h * w1).extend(0.0)) * q).normalize();
+    assert!(angle(q1, q_ref) < 1e-14, "{:e}", angle(q1, q_ref));
+}
+
+/// The free flow leaves the world momentum alone, so over one step of the fourth-order
+/// method (three substeps, four kicks) a constant world torque must change `L` by
+/// exactly `h T`, to the rounding of four sums, whatever the body: f64 and f32, one body
+/// and slice. A kick with a wrong weight changes it by a fraction of `h T`.
+#[test]
+fn a_fourth_order_step_kicks_the_momentum_by_exactly_h_t() {
+    let body =
+        e64::Body::from_principal(DVec3::new(1.0, 2.0, 3.0), DQuat::from_rotation_z(0.4)).unwrap();
+    let q = DQuat::from_rotation_x(0.3);
+    let (l, t) = (DVec3::new(0.3, 2.0, 0.4), DVec3::new(0.7, -1.3, 2.1));
+    for h in [0.05, 1.0 / 60.0, 0.3] {
+        let (_, next) = e64::step_order4(&body, q, l, t, h);
+        let bound = 8.0 * f64::EPSILON * (l.length() + (h * t).length());
+        assert!(
+            (next - l - h * t).length() < bound,
+            "{h}: {}",
+            next - l - h * t
+        );
+        let b32 = e32::Body::from_principal(Vec3::new(1.0, 2.0, 3.0), Quat::IDENTITY).unwrap();
+        let (l32, t32, h32) = (l.as_vec3(), t.as_vec3(), h as f32);
+        let mut slice = vec![e32::BodyState::new(b32, q.as_quat(), l32); 9];
+        for s in &mut slice {
+            s.torque = t32;
+        }
+        e32::step_slice_order4(&mut slice, h32);
+        let (_, one) = e32::step_order4(&b32, q.as_quat(), l32, t32, h32);
+        let bound = 8.0 * f32::EPSILON * (l32.length() + (h32 * t32).length());
+        for next in slice.iter().map(|s| s.angular_momentum).chain([one]) {
+            assert!((next - l32 - h32 * t32).length() < bound, "f32 {h}: {next}");
+        }
+    }
+}
+
+/// A slice steps each body in the form its own range decides (division-free turns where
+/// `h^2 |L|^2 reach < 1` and `|L| < 1e18`, else the divided form with its clamps), not its
+/// group's first lane's: slices mixing a T-handle in range, a body of moments
+/// (1e-3, 1, 1e3) whose `reach` (1e6) puts it out of range at `|L| = 1`, and a T-handle at
+/// `|L| = 1e19`, with each kind in turn first in every group of four and of eight, give
+/// each body the bits it gets stepped alone (f32 and f64, order 2 and 4).
+#[test]
+fn a_slice_steps_each_body_by_its_own_range() {
+    let kinds32 = [
+        (Vec3::new(1.0, 2.0, 3.0), Vec3::new(0.3, 1.0, -0.4)),
+        (Vec3::new(1e-3, 1.0, 1e3), Vec3::new(0.3, 1.0, -0.4)),
+        (Vec3::new(1.0, 2.0, 3.0), Vec3::new(0.3, 1.0, -0.4) * 1e19),
+    ];
+    for lead in 0..3 {
+        let kind = |i: usize| {
+            if i % 4 == 0 {
+                lead
+            } else {
+                (lead + 1 + i % 2) % 3
+            }
+        };
+        let mut one: Vec<_> = (0..24)
+            .map(|i| {
+                let (moments, l) = kinds32[kind(i)];
+                let body = e32::Body::from_principal(moments, Quat::IDENTITY).unwrap();
+                let q = Quat::from_rotation_y(0.1 * i as f32);
+                let mut s = e32::BodyState::new(body, q, l);
+                s.torque = Vec3::new(0.1, 0.0, -0.2);
+                s
+            })
+            .collect();
+        let mut one64: Vec<_> = one
+            .iter()
+            .map(|s| {
+                let body = e64::Body::from_principal(
+                    s.body.principal_moments().as_dvec3(),
+                    DQuat::IDENTITY,
+                )
+                .unwrap();
+                e64::BodyState::new(
+                    body,
+                    s.orientation.as_dquat(),
+                    s.angular_momentum.as_dvec3(),
+                )
+            })
+            .collect();
+        let (mut many, mut many64) = (one.clone(), one64.clone());
+        for step in 0..20 {
+            let order4 = step % 4 == 3;
+            for s in &mut one {
+                let (q, l) = if order4 {
+                    e32::step_order4(
+                        &s.body,
+                        s.orientation,
+                        s.angular_momentum,
+                        s.torque,
+                        1.0 / 60.0,
+                    )
+                } else {
+                    e32::step(
+                        &s.body,
+                        s.orientation,
+                        s.angular_momentum,
+                        s.torque,
+                        1.0 / 60.0,
+                    )
+                };
+                (s.orientation, s.angular_momentum) = (q, l);
+            }
+            for s in &mut one64 {
+                if order4 {
+                    s.step_order4(1.0 / 60.0);
+                } else {
+                    s.step(1.0 / 60.0);
+                }
+            }
+            if order4 {
+                e32::step_slice_order4(&mut many, 1.0 / 60.0);
+                e64::step_slice_order4(&mut many64, 1.0 / 60.0);
+            } else {
+                e32::step_slice(&mut many, 1.0 / 60.0);
+                e64::step_slice(&mut many64, 1.0 / 60.0);
+            }
+            assert_eq!(
+                bits32(&one),
+                bits32(&many),
+                "f32, kind {lead} first, step {step}"
+            );
+            assert_eq!(
+                bits64(&one64),
+                bits64(&many64),
+                "f64, kind {lead} first, step {step}"
+            );
+        }
+    }
+}
