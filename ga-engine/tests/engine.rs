@@ -923,7 +923,7 @@ fn a_slice_steps_each_body_by_its_own_range() {
     ];
     for lead in 0..3 {
         let kind = |i: usize| {
-            if i % 4 == 0 {
+            if i.is_multiple_of(4) {
                 lead
             } else {
                 (lead + 1 + i % 2) % 3
