@@ -59,7 +59,7 @@ fn main() {
             "{:>8} {:>12} {:>12} {:>12} {:>12}",
             "h|w|", "step", "step_order4", "explicit", "implicit"
         );
-        for hw in [0.05, 0.1, 0.2, 0.5, 1.0, 2.0] {
+        for hw in [1e-4, 1e-3, 0.005, 0.01, 0.05, 0.1, 0.2, 0.5, 1.0, 2.0] {
             let [a, b, c, d] = excursions(moments, hw);
             println!("{hw:>8} {a:>12.3e} {b:>12.3e} {c:>12.3e} {d:>12.3e}");
         }
