@@ -59,6 +59,7 @@ impl Neg for F32x8 {
 
 impl Real for F32x8 {
     type Mask = Mask8;
+    const EPSILON: f64 = f32::EPSILON as f64;
     #[inline(always)]
     fn splat(x: f64) -> Self {
         // SAFETY: as for the arithmetic above.

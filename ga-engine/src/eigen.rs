@@ -3,7 +3,8 @@
 //! A port of ga-rigid's `inertia::symmetric_eigen` (its cyclic Jacobi method: Golub & Van
 //! Loan, *Matrix Computations*, 4th ed., section 8.5.2) that needs no standard library:
 //! square roots from `libm`, no sorting, and a diagonal input left exactly as it is (the
-//! frame is then the identity and the engine skips it). The eigenvector matrix is made
+//! frame is then the identity; the steps skip it where the moments also do not decrease
+//! from x to z, see `Body::from_tensor`). The eigenvector matrix is made
 //! right-handed by flipping its last column, then turned into a quaternion by
 //! Shepperd's method (Shepperd, J. Guidance and Control 1(3), 1978).
 

@@ -35,12 +35,13 @@ fn casimir_turn<R: Real, const LIMIT: bool>(rates: &Rates<R>, l: V<R>, l2: R) ->
     let limit = R::splat(MAX_HALF_ANGLE);
     let inside = w2.lt(limit * limit);
     let capped = w2.min_or(limit * limit);
-    // Outside, `limit / |L|` (0 where `|L|^2` overflowed) with the sign of `k`.
-    let outside = R::select(
-        k.lt(R::splat(0.0)),
-        -(limit / R::sqrt(l2)),
-        limit / R::sqrt(l2),
-    );
+    // Outside, `limit / |L|` (0 where `|L|^2` overflowed) with the sign of `k`; 0 where
+    // `|L|^2` is 0 too (`w^2` is NaN there for a step so long that `k^2` overflows, such
+    // as `dt = f32::MAX`: `limit / 0` times a zero `L` would be NaN, where the turn about
+    // a zero `L` is none).
+    let zero = R::splat(0.0);
+    let reach = R::select(zero.lt(l2), limit / R::sqrt(l2), zero);
+    let outside = R::select(k.lt(zero), -reach, reach);
     let f = R::select(inside, k, outside);
     let w = Q {
         x: f * l.x,

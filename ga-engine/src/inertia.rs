@@ -30,8 +30,18 @@ pub(crate) struct Inertia<R: Real> {
 /// Which given principal axis each of the split's axes is (`split::split_order`).
 pub(crate) type Order = [u8; 3];
 
+/// A tensor with an entry above this is diagonalised scaled by [`TENSOR_SCALE`].
+const TENSOR_SCALE_ABOVE: f64 = 1e300;
+/// `2^600`: brings any finite f64 below `2^424`, where the Jacobi sweeps cannot overflow.
+const TENSOR_SCALE: f64 = 4.149_515_568_880_993e180;
+
 /// The precisions a body description is built in.
 pub(crate) trait Precision: Real<Mask = bool> + PartialOrd {
+    /// The principal moments taken are `2^-MOMENT_LOG2 ..= 2^MOMENT_LOG2`
+    /// ([`BodyError::OutOfRange`]): the squares of the inverse moments (the split's
+    /// constants, `(h k)^2` in the turn about `L`) stay far from overflow, and `|L|^2` at
+    /// `|w| = 1e-3` far from the subnormals, where the step would lose its precision.
+    const MOMENT_LOG2: i32;
     /// `self` widened to f64 (exactly).
     fn wide(self) -> f64;
     /// Whether finite.
@@ -39,6 +49,7 @@ pub(crate) trait Precision: Real<Mask = bool> + PartialOrd {
 }
 
 impl Precision for f32 {
+    const MOMENT_LOG2: i32 = 50;
     fn wide(self) -> f64 {
         f64::from(self)
     }
@@ -48,6 +59,7 @@ impl Precision for f32 {
 }
 
 impl Precision for f64 {
+    const MOMENT_LOG2: i32 = 500;
     fn wide(self) -> f64 {
         self
     }
@@ -64,8 +76,20 @@ impl<R: Precision> Inertia<R> {
             return Err(BodyError::NotFinite);
         }
         let a = [0, 1, 2].map(|i| [0, 1, 2].map(|j| t[j][i].wide()));
-        let (d, p, _) = principal_axes(&a);
-        Self::checked(d.map(R::splat), p)
+        // A tensor near f64::MAX would overflow in the Jacobi sweeps: diagonalise it
+        // scaled by a power of two (exact), and scale the moments back, where one that
+        // overflows is out of range rather than "not finite".
+        let largest = a
+            .iter()
+            .flatten()
+            .fold(0.0f64, |m, x| m.max(libm::fabs(*x)));
+        let scale = if largest > TENSOR_SCALE_ABOVE {
+            TENSOR_SCALE
+        } else {
+            1.0
+        };
+        let (d, p, _) = principal_axes(&a.map(|row| row.map(|x| x / scale)));
+        Self::checked(d.map(|m| R::splat(m * scale)), p)
     }
 
     /// From principal moments and the frame `p` (any non-zero quaternion; normalised).
@@ -75,26 +99,46 @@ impl<R: Precision> Inertia<R> {
             return Err(BodyError::NotFinite);
         }
         let wide = parts.map(R::wide);
-        let n2 = wide.iter().map(|x| x * x).sum::<f64>();
-        if n2.partial_cmp(&1e-30) != Some(core::cmp::Ordering::Greater) || !n2.is_finite() {
+        let largest = wide.iter().fold(0.0f64, |m, x| m.max(libm::fabs(*x)));
+        if largest == 0.0 {
             return Err(BodyError::ZeroFrame);
         }
+        // Where the squared norm could overflow or underflow (a frame of size 1e200 or
+        // 1e-200 in f64), divided by its largest component first; elsewhere as it is.
+        let n2 = wide.iter().map(|x| x * x).sum::<f64>();
+        let wide = if (1e-200..=1e200).contains(&n2) {
+            wide
+        } else {
+            wide.map(|x| x / largest)
+        };
+        let n2 = wide.iter().map(|x| x * x).sum::<f64>();
         let inv = 1.0 / libm::sqrt(n2);
         let unit = wide.map(|x| x * inv);
         Self::checked(moments, unit)
     }
 
-    /// Checks the moments (positive, reciprocals finite), puts the axes in the split's
-    /// order and keeps both orders; `frame` is unit, `[x, y, z, w]`.
+    /// Checks the moments (positive, in the precision's range), puts the axes in the
+    /// split's order and keeps both orders; `frame` is unit, `[x, y, z, w]`.
     fn checked(moments: [R; 3], frame: [f64; 4]) -> Result<Self, BodyError> {
+        let (min, max) = (
+            libm::ldexp(1.0, -R::MOMENT_LOG2),
+            libm::ldexp(1.0, R::MOMENT_LOG2),
+        );
         for (axis, &m) in moments.iter().enumerate() {
-            if !m.finite() {
+            let m = m.wide();
+            if m.is_nan() {
                 return Err(BodyError::NotFinite);
             }
-            let inv = R::splat(1.0) / m;
-            if m.partial_cmp(&R::splat(0.0)) != Some(core::cmp::Ordering::Greater) || !inv.finite()
-            {
+            if m <= 0.0 {
                 return Err(BodyError::NotPositive { axis });
+            }
+            // An infinite moment here comes from a finite tensor that overflowed.
+            if !(min..=max).contains(&m) {
+                return Err(BodyError::OutOfRange {
+                    axis,
+                    min_log2: -R::MOMENT_LOG2,
+                    max_log2: R::MOMENT_LOG2,
+                });
             }
         }
         let order = split_order(moments.map(|m| 1.0 / m.wide()));

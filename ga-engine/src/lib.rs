@@ -52,7 +52,21 @@
 //! # Errors and panics
 //! Bodies are checked once ([`BodyError`]). The steps never panic and never allocate;
 //! finite input gives finite output unless the numbers overflow (a momentum near
-//! `f32::MAX`), and an orientation must be non-zero (it is normalised every step).
+//! `f32::MAX`). A step so long that its products overflow (`dt` near `f32::MAX`; for
+//! [`f32::step_order4`], whose substeps are 1.35 `dt`, above `f32::MAX / 1.35`) still
+//! returns a finite unit orientation and the kicked momentum, but the orientation is
+//! then not the flow's, except that a body without momentum (and torque) stays put in
+//! [`f32::step`].
+//!
+//! # Orientations
+//! Every step, and [`f32::Body::angular_velocity`], [`f32::Body::angular_momentum`] and
+//! [`f32::Body::kinetic_energy`], takes any non-zero finite quaternion and works on it
+//! normalised: a scaled orientation (`2 q`, `1e-30 q`, `1e30 q`) gives the result of the
+//! unit one to rounding (not to the bit: an orientation whose squared norm is within 16
+//! ulps of 1, as the steps return and glam's `normalize` gives, is used as it is, so a
+//! unit input keeps its bits; any other is divided by its norm first, which rounds). A
+//! zero or non-finite orientation gives a NaN orientation (and the energy and velocity
+//! NaN), never a panic; the momentum is still kicked by the torque.
 
 #![cfg_attr(not(feature = "std"), no_std)]
 

@@ -19,6 +19,8 @@ pub(crate) trait Real:
 {
     /// One truth value per lane.
     type Mask: Copy + core::fmt::Debug;
+    /// The precision's machine epsilon (the gap between 1 and the next float), in f64.
+    const EPSILON: f64;
     /// `x` rounded to this precision (constants are written in f64).
     fn splat(x: f64) -> Self;
     /// The correctly rounded square root.
@@ -55,6 +57,7 @@ macro_rules! scalar_real {
     ($t:ty, $sqrt:path, $hidden:path) => {
         impl Real for $t {
             type Mask = bool;
+            const EPSILON: f64 = <$t>::EPSILON as f64;
             #[inline(always)]
             fn splat(x: f64) -> Self {
                 x as $t
@@ -191,6 +194,7 @@ impl<T: Real, const N: usize> Neg for Lanes<T, N> {
 
 impl<T: Real<Mask = bool>, const N: usize> Real for Lanes<T, N> {
     type Mask = [bool; N];
+    const EPSILON: f64 = T::EPSILON;
     #[inline(always)]
     fn splat(x: f64) -> Self {
         Lanes([T::splat(x); N])

@@ -51,7 +51,7 @@ pub(crate) fn step2_in<R: Real, T: Turning<R>>(
 ) -> (Q<R>, V<R>) {
     let half = h * R::splat(0.5);
     let l = l.add_scaled(half, t);
-    let q_p = inertia.principal_orientation(q);
+    let q_p = inertia.principal_orientation(q.unit());
     let q_p = free_flow_normalized(inertia, T::pack(q_p), l, h).unpack();
     let l = l.add_scaled(half, t);
     (inertia.body_orientation(q_p), l)
@@ -73,7 +73,7 @@ fn step2_in_framed<R: Real, T: Turning<R>>(
     let half = h * R::splat(0.5);
     let l = l.add_scaled(half, t);
     let turned = inertia.turned;
-    let q = T::pack(q);
+    let q = T::pack(q.unit());
     let q_p = if R::any(turned) {
         T::select(turned, q.times(inertia.frame), q)
     } else {
@@ -122,6 +122,7 @@ pub(crate) fn step2_with<R: Real>(
     mut torque: impl FnMut(Q<R>) -> V<R>,
 ) -> (Q<R>, V<R>) {
     let half = h * R::splat(0.5);
+    let q = q.unit();
     let l = l.add_scaled(half, torque(q));
     let q_p = inertia.principal_orientation(q);
     let q_p = free_flow_normalized(inertia, q_p, l, h);
@@ -148,7 +149,7 @@ pub(crate) fn step4<R: Real>(
     let (h1, h0) = (h * R::splat(G1), h * R::splat(G0));
     let outer_kick = h * R::splat(0.5 * G1);
     let inner_kick = h * R::splat(0.5 * (G1 + G0));
-    let q_p = inertia.principal_orientation(q);
+    let q_p = inertia.principal_orientation(q.unit());
     let l = l.add_scaled(outer_kick, t);
     // Each free flow reads the body momentum through its starting quaternion, which must
     // be unit.
