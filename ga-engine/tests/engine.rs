@@ -284,7 +284,31 @@ fn bad_inertia_is_an_error_not_a_panic() {
         e32::Body::from_principal(Vec3::ONE, zero_frame).unwrap_err(),
         BodyError::ZeroFrame
     );
-    assert!(!BodyError::ZeroFrame.to_string().is_empty());
+    // Each error says which quantity and what is wrong with it, in one line.
+    assert_eq!(
+        BodyError::ZeroFrame.to_string(),
+        "inertia: the principal frame quaternion is zero"
+    );
+    assert_eq!(
+        BodyError::NotPositive { axis: 1 }.to_string(),
+        "inertia: principal moment 1 is not positive"
+    );
+    assert_eq!(
+        BodyError::NotFinite.to_string(),
+        "inertia: a component is not finite"
+    );
+    let range = BodyError::OutOfRange {
+        axis: 2,
+        min_log2: -50,
+        max_log2: 50,
+    }
+    .to_string();
+    assert_eq!(
+        range,
+        "inertia: principal moment 2 is outside 2^-50 ..= 2^50 \
+         (8.881784197001252e-16 to 1.125899906842624e15), the range this precision steps; \
+         change the units"
+    );
 }
 
 #[test]
@@ -568,28 +592,34 @@ fn step_with_a_constant_torque_is_step_and_keeps_a_heavy_tops_energy() {
 /// thread (see "Unoptimised builds" in the engine's `splitting.rs`).
 #[test]
 fn every_form_runs_on_a_small_thread_stack() {
-    std::thread::Builder::new()
+    // The same steps on the test's own thread give the bits the small thread must give: a
+    // small stack must change nothing. (Were the stack too small, the process would abort
+    // with a stack overflow, which fails the test binary; it cannot come back as a value.)
+    let steps = || {
+        let mut a = crowd32(19);
+        let mut b = crowd64(19);
+        e32::step_slice(&mut a, 0.02);
+        e32::step_slice_order4(&mut a, 0.02);
+        e64::step_slice(&mut b, 0.02);
+        e64::step_slice_order4(&mut b, 0.02);
+        for s in &mut a {
+            s.step(0.02);
+            s.step_order4(0.02);
+        }
+        for s in &mut b {
+            s.step(0.02);
+            s.step_order4(0.02);
+        }
+        (bits32(&a), bits64(&b))
+    };
+    let expected = steps();
+    let on_small_stack = std::thread::Builder::new()
         .stack_size(256 << 10)
-        .spawn(|| {
-            let mut a = crowd32(19);
-            let mut b = crowd64(19);
-            e32::step_slice(&mut a, 0.02);
-            e32::step_slice_order4(&mut a, 0.02);
-            e64::step_slice(&mut b, 0.02);
-            e64::step_slice_order4(&mut b, 0.02);
-            for s in &mut a {
-                s.step(0.02);
-                s.step_order4(0.02);
-            }
-            for s in &mut b {
-                s.step(0.02);
-                s.step_order4(0.02);
-            }
-            (bits32(&a), bits64(&b))
-        })
+        .spawn(steps)
         .expect("a thread")
         .join()
-        .expect("no stack overflow");
+        .expect("the steps do not panic");
+    assert_eq!(on_small_stack, expected);
 }
 
 /// The registry's `splitting-corrected` (ga-rigid) and the engine's step are the same
