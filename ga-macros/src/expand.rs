@@ -3,6 +3,7 @@
 use proc_macro2::TokenStream;
 
 use crate::emit;
+use crate::names::snake_case;
 use crate::plan::{Plan, TypeId};
 use crate::spec::{check_emitted, validate, RawAlgebra, RawDerive, Spec};
 
@@ -41,31 +42,4 @@ pub fn derive(input: syn::DeriveInput) -> syn::Result<TokenStream> {
     let spec = validate(raw.attrs, raw.vis, module_name, raw.entries)?;
     let plan = plan(&spec)?;
     Ok(emit::module(&spec, &plan))
-}
-
-/// `SpaceTime` -> `space_time`: the derive form's module name.
-pub fn snake_case(name: &str) -> String {
-    let mut out = String::new();
-    for (i, c) in name.chars().enumerate() {
-        if c.is_uppercase() {
-            if i > 0 {
-                out.push('_');
-            }
-            out.extend(c.to_lowercase());
-        } else {
-            out.push(c);
-        }
-    }
-    out
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn snake_case_splits_words() {
-        assert_eq!(snake_case("SpaceTime"), "space_time");
-        assert_eq!(snake_case("G3"), "g3");
-    }
 }

@@ -24,6 +24,7 @@ mod algebra;
 mod emit;
 mod expand;
 mod fallback;
+mod names;
 mod plan;
 mod spec;
 
@@ -50,7 +51,7 @@ pub fn algebra(input: TokenStream) -> TokenStream {
 pub fn derive_algebra(input: TokenStream) -> TokenStream {
     let input = syn::parse_macro_input!(input as syn::DeriveInput);
     let module = syn::Ident::new(
-        &expand::snake_case(&input.ident.to_string()),
+        &names::snake_case(&input.ident.to_string()),
         input.ident.span(),
     );
     let vis = input.vis.clone();

@@ -9,7 +9,6 @@ use quote::quote;
 use super::expr::{
     field_ident, one, output_type, quadratic_component, scalar_type, type_tokens, Operand,
 };
-use super::products::operand_pairs;
 use crate::algebra::{blade_name, Involution, ProductKind};
 use crate::plan::{Output, Plan, TypeId};
 use crate::spec::Op;
@@ -293,7 +292,7 @@ fn reference_operators(plan: &Plan) -> TokenStream {
         operators.push((quote!(Sub), quote!(sub)));
     }
     let mut out = TokenStream::new();
-    for (a, b) in operand_pairs(plan) {
+    for (a, b) in plan.operand_pairs() {
         let (lhs, rhs) = (type_tokens(plan, a), type_tokens(plan, b));
         for (op, method) in &operators {
             out.extend(quote! {
@@ -426,7 +425,7 @@ fn division(plan: &Plan) -> TokenStream {
     }
     let one = one(plan);
     let mut out = TokenStream::new();
-    for (a, b) in operand_pairs(plan) {
+    for (a, b) in plan.operand_pairs() {
         if b == TypeId::SCALAR || !plan.has_scalar_self_product(b) {
             continue;
         }

@@ -17,7 +17,6 @@ mod types;
 mod unary;
 mod versor;
 mod wgsl;
-mod wgsl_exp_log;
 
 #[cfg(test)]
 pub use wgsl::wgsl_source;
@@ -90,8 +89,11 @@ pub fn module_items(spec: &Spec, plan: &Plan) -> TokenStream {
     items.extend(integrations::emit_integrations(spec, plan));
     items.extend(wgsl::emit_wgsl(spec, plan));
     if plan.lanes.is_none() {
+        // The batch modules are this emitter run again on a batch plan.
         for &lanes in &spec.lanes {
-            items.extend(batch::emit_batch_module(spec, plan, lanes));
+            let batch = plan.batch(lanes);
+            let batch_items = module_items(spec, &batch);
+            items.extend(batch::emit_batch_module(&batch, lanes, batch_items));
         }
     }
     items

@@ -17,7 +17,7 @@ pub fn module_uses_lanes(plan: &Plan) -> bool {
         return false;
     }
     let products = plan.products.iter().any(|&kind| {
-        super::products::operand_pairs(plan)
+        plan.operand_pairs()
             .into_iter()
             .any(|(a, b)| plan.lane_form(kind, a, b).is_some())
     });

@@ -1,5 +1,5 @@
 //! `exp_bivector` and `log_even` in WGSL: the closed forms of `Bivector::exp` and
-//! `Even::log` (emit/exp_log.rs) with the same case split per dimension and metric, the
+//! `Even::log` (`emit/exp_log.rs`) with the same case split per dimension and metric, the
 //! same squares (the planner's quadratic forms) and the same scalar weights, ported to
 //! WGSL's built-ins. The scalar weights are `ga_*` functions emitted once beside them;
 //! they are helpers, not API (docs/generated-api.md).
@@ -11,11 +11,11 @@
 use proc_macro2::TokenStream;
 use quote::quote;
 
-use super::expr::{construct_in, float, quadratic_component, Operand, Syntax};
-use super::products::product_value_in;
-use super::unary::norm_squared_expr;
-use super::wgsl::text;
+use super::text::text;
 use crate::algebra::{Blade, Involution, ProductKind};
+use crate::emit::expr::{construct_in, float, quadratic_component, Operand, Syntax};
+use crate::emit::products::product_value_in;
+use crate::emit::unary::norm_squared_expr;
 use crate::plan::{Output, Plan, TypeId};
 
 /// Which closed form a dimension and metric take (the same split as the Rust emitter).
@@ -314,7 +314,7 @@ fn channels(plan: &Plan, of: &str) -> Vec<String> {
     );
     let half = |op: TokenStream| {
         value(plan, bivector, |blade| {
-            let f = super::expr::field_ident(blade);
+            let f = crate::emit::expr::field_ident(blade);
             let o: TokenStream = of.parse().unwrap_or_default();
             Some(quote!((#o.#f #op dual.#f) * 0.5))
         })
@@ -366,7 +366,7 @@ fn exp_bivector(plan: &Plan, form: Form) -> String {
                 if blade == pseudoscalar {
                     return Some(quote!((wp.x - wm.x) * 0.5));
                 }
-                let f = super::expr::field_ident(blade);
+                let f = crate::emit::expr::field_ident(blade);
                 Some(quote!(wp.y * plus.#f + wm.y * minus.#f))
             });
             function(signature, &lets, &result)
@@ -462,7 +462,7 @@ fn log_even(plan: &Plan, form: Form) -> String {
             lets.push(format!("    {fail}"));
             lets.push("}".to_owned());
             value(plan, bivector, |blade| {
-                let f = super::expr::field_ident(blade);
+                let f = crate::emit::expr::field_ident(blade);
                 Some(if Some(blade) == turn {
                     quote!(w.x * p.#f + w.y)
                 } else {
@@ -519,7 +519,7 @@ fn log_even(plan: &Plan, form: Form) -> String {
                 None => Vec::new(),
             };
             value(plan, bivector, |blade| {
-                let f = super::expr::field_ident(blade);
+                let f = crate::emit::expr::field_ident(blade);
                 let mut term = quote!(wp.x * plus.#f + wm.x * minus.#f);
                 if let Some(&(_, tp, tm)) = turns.iter().find(|(b, _, _)| *b == blade) {
                     let (tp, tm) = (float(tp), float(tm));
@@ -545,7 +545,7 @@ fn log_even(plan: &Plan, form: Form) -> String {
             lets.push("let unit = Quadvector(1.0);".to_owned());
             lets.push(format!("let p_unit = {};", text(&p_unit)));
             value(plan, bivector, |blade| {
-                let f = super::expr::field_ident(blade);
+                let f = crate::emit::expr::field_ident(blade);
                 Some(quote!(g.x * p.#f + g.y * p_unit.#f))
             })
         }
