@@ -6,7 +6,7 @@ use quote::quote;
 use super::expr::{construct, field_ident, float, scalar_type, Operand};
 use super::products::product_value;
 use crate::algebra::{Blade, Involution, ProductKind};
-use crate::plan::{Output, Plan, TypeId};
+use crate::plan::{ExpLogForm, Output, Plan, TypeId};
 
 /// The grade-`blade` part of `A A`.
 fn self_square_component(plan: &Plan, operand: &Operand, blade: Blade) -> TokenStream {
@@ -17,109 +17,112 @@ fn grade_blades(plan: &Plan, k: usize) -> Vec<Blade> {
     plan.types.get(TypeId::grade(k)).blades.clone()
 }
 
-/// `Bivector::exp`.
-pub fn emit_exp(plan: &Plan) -> TokenStream {
+/// `Bivector::exp` in the plan's form.
+pub fn emit_exp(plan: &Plan, form: ExpLogForm) -> TokenStream {
     let n = plan.metric.dimension();
     let s = scalar_type(plan);
     let b = Operand::new(quote!(self), TypeId::grade(2));
     let even = Output::Type(TypeId::even(n));
     let square = self_square_component(plan, &b, 0);
-    let body = if n <= 3 {
-        // B^2 is a scalar x: exp(B) = cosh(sqrt x) + B sinh(sqrt x)/sqrt x.
-        let value = construct(plan, even, |blade| {
-            if blade == 0 {
-                return Some(quote!(even));
+    let body = match form {
+        ExpLogForm::Plane => {
+            // B^2 is a scalar x: exp(B) = cosh(sqrt x) + B sinh(sqrt x)/sqrt x.
+            let value = construct(plan, even, |blade| {
+                if blade == 0 {
+                    return Some(quote!(even));
+                }
+                b.blade(plan, blade).map(|c| quote!(weight * #c))
+            });
+            quote! {
+                let x: #s = #square;
+                let [even, weight] = if x.abs() <= SERIES_MAX {
+                    cosh_sinhc_series(x)
+                } else {
+                    let [x, root] = square_and_root(self);
+                    cosh_sinhc(x, root)
+                };
+                #value
             }
-            b.blade(plan, blade).map(|c| quote!(weight * #c))
-        });
-        quote! {
-            let x: #s = #square;
-            let [even, weight] = if x.abs() <= SERIES_MAX {
-                cosh_sinhc_series(x)
-            } else {
-                let [x, root] = square_and_root(self);
-                cosh_sinhc(x, root)
+        }
+        ExpLogForm::Channels => four_dimensional_exp(plan),
+        ExpLogForm::Quartic => {
+            // B^2 = s + Q with Q = B ^ B commuting with B and Q^2 = t a scalar: functions of
+            // B^2 act on the two-dimensional commutative algebra {1, Q}.
+            let quad = grade_blades(plan, 4);
+            let q_fields: Vec<_> = quad.iter().map(|&bl| field_ident(bl)).collect();
+            let q_values: Vec<_> = quad
+                .iter()
+                .map(|&bl| self_square_component(plan, &b, bl))
+                .collect();
+            let q = Operand::new(quote!(q), TypeId::grade(4));
+            let t = self_square_component(plan, &q, 0);
+            let (bq, bq_output) = product_value(plan, ProductKind::Geometric, &b, &q);
+            let bq_operand = match bq_output {
+                Output::Type(id) => Some(Operand::new(quote!(bq), id)),
+                Output::Zero => None,
             };
-            #value
+            let value = construct(plan, even, |blade| {
+                let mut parts = Vec::new();
+                if blade == 0 {
+                    parts.push(quote!(c0));
+                }
+                if let Some(c) = b.blade(plan, blade) {
+                    parts.push(quote!(s0 * #c));
+                }
+                if let Some(c) = q.blade(plan, blade) {
+                    parts.push(quote!(c4 * #c));
+                }
+                if let Some(c) = bq_operand.as_ref().and_then(|o| o.blade(plan, blade)) {
+                    parts.push(quote!(s4 * #c));
+                }
+                (!parts.is_empty()).then(|| quote!(#(#parts)+*))
+            });
+            quote! {
+                let s: #s = #square;
+                let q = Quadvector { #(#q_fields: #q_values),* };
+                let t: #s = #t;
+                let [c0, c4, s0, s4] = exp_weights(s, t);
+                let bq = #bq;
+                #value
+            }
         }
-    } else if n == 4 && plan.metric.pseudoscalar_square() > 0 {
-        four_dimensional_exp(plan)
-    } else if n <= 5 {
-        // B^2 = s + Q with Q = B ^ B commuting with B and Q^2 = t a scalar: functions of
-        // B^2 act on the two-dimensional commutative algebra {1, Q}.
-        let quad = grade_blades(plan, 4);
-        let q_fields: Vec<_> = quad.iter().map(|&bl| field_ident(bl)).collect();
-        let q_values: Vec<_> = quad
-            .iter()
-            .map(|&bl| self_square_component(plan, &b, bl))
-            .collect();
-        let q = Operand::new(quote!(q), TypeId::grade(4));
-        let t = self_square_component(plan, &q, 0);
-        let (bq, bq_output) = product_value(plan, ProductKind::Geometric, &b, &q);
-        let bq_operand = match bq_output {
-            Output::Type(id) => Some(Operand::new(quote!(bq), id)),
-            Output::Zero => None,
-        };
-        let value = construct(plan, even, |blade| {
-            let mut parts = Vec::new();
-            if blade == 0 {
-                parts.push(quote!(c0));
+        ExpLogForm::Series => {
+            // No closed form is emitted above five dimensions: scaling and squaring of the
+            // Taylor series, in the even subalgebra.
+            let bivector_fields: Vec<_> = grade_blades(plan, 2)
+                .iter()
+                .map(|&bl| field_ident(bl))
+                .collect();
+            let even_blades = plan.types.get(TypeId::even(n)).blades.clone();
+            let acc = Operand::new(quote!(acc), TypeId::even(n));
+            let x = Operand::new(quote!(x), TypeId::grade(2));
+            let (x_acc, _) = product_value(plan, ProductKind::Geometric, &x, &acc);
+            let (acc_acc, _) = product_value(plan, ProductKind::Geometric, &acc, &acc);
+            let even_fields: Vec<_> = even_blades.iter().map(|&bl| field_ident(bl)).collect();
+            quote! {
+                let size: #s = math::sqrt(#(self.#bivector_fields * self.#bivector_fields)+*);
+                let mut halvings = 0;
+                let mut scale: #s = 1.0;
+                while size * scale > 0.25 && halvings < 2000 {
+                    scale *= 0.5;
+                    halvings += 1;
+                }
+                let x = self * scale;
+                let mut acc = Even::ONE;
+                for degree in (1..=18).rev() {
+                    let next: Even = #x_acc;
+                    let inverse_degree = 1.0 / (degree as #s);
+                    acc = Even { #(#even_fields: next.#even_fields * inverse_degree),* };
+                    acc.s += 1.0;
+                }
+                for _ in 0..halvings {
+                    acc = #acc_acc;
+                }
+                acc
             }
-            if let Some(c) = b.blade(plan, blade) {
-                parts.push(quote!(s0 * #c));
-            }
-            if let Some(c) = q.blade(plan, blade) {
-                parts.push(quote!(c4 * #c));
-            }
-            if let Some(c) = bq_operand.as_ref().and_then(|o| o.blade(plan, blade)) {
-                parts.push(quote!(s4 * #c));
-            }
-            (!parts.is_empty()).then(|| quote!(#(#parts)+*))
-        });
-        quote! {
-            let s: #s = #square;
-            let q = Quadvector { #(#q_fields: #q_values),* };
-            let t: #s = #t;
-            let [c0, c4, s0, s4] = exp_weights(s, t);
-            let bq = #bq;
-            #value
-        }
-    } else {
-        // No closed form is emitted above five dimensions: scaling and squaring of the
-        // Taylor series, in the even subalgebra.
-        let bivector_fields: Vec<_> = grade_blades(plan, 2)
-            .iter()
-            .map(|&bl| field_ident(bl))
-            .collect();
-        let even_blades = plan.types.get(TypeId::even(n)).blades.clone();
-        let acc = Operand::new(quote!(acc), TypeId::even(n));
-        let x = Operand::new(quote!(x), TypeId::grade(2));
-        let (x_acc, _) = product_value(plan, ProductKind::Geometric, &x, &acc);
-        let (acc_acc, _) = product_value(plan, ProductKind::Geometric, &acc, &acc);
-        let even_fields: Vec<_> = even_blades.iter().map(|&bl| field_ident(bl)).collect();
-        quote! {
-            let size: #s = math::sqrt(#(self.#bivector_fields * self.#bivector_fields)+*);
-            let mut halvings = 0;
-            let mut scale: #s = 1.0;
-            while size * scale > 0.25 && halvings < 2000 {
-                scale *= 0.5;
-                halvings += 1;
-            }
-            let x = self * scale;
-            let mut acc = Even::ONE;
-            for degree in (1..=18).rev() {
-                let next: Even = #x_acc;
-                let inverse_degree = 1.0 / (degree as #s);
-                acc = Even { #(#even_fields: next.#even_fields * inverse_degree),* };
-                acc.s += 1.0;
-            }
-            for _ in 0..halvings {
-                acc = #acc_acc;
-            }
-            acc
         }
     };
-    let doc = if n <= 5 {
+    let doc = if form != ExpLogForm::Series {
         "`exp(B)` in closed form for every bivector and every metric: cos/sin, cosh/sinh or \
          1 + B per invariant plane (see docs/derivations/exp-log.md). Angles are reduced \
          modulo 2 pi by `sin`/`cos` themselves, and `B` is scaled before squaring, so a \
@@ -199,8 +202,8 @@ fn full_turn_plane(plan: &Plan) -> Option<crate::algebra::Blade> {
         .find(|&bl| plan.metric.geometric(bl, bl).0 < 0)
 }
 
-/// `Even::log`, for dimensions 2 to 4.
-pub fn emit_log(plan: &Plan) -> TokenStream {
+/// `Even::log` in the plan's form (dimensions 2 to 4: never [`ExpLogForm::Series`]).
+pub fn emit_log(plan: &Plan, form: ExpLogForm) -> TokenStream {
     let n = plan.metric.dimension();
     let s = scalar_type(plan);
     let r = Operand::new(quote!(self), TypeId::even(n));
@@ -219,95 +222,100 @@ pub fn emit_log(plan: &Plan) -> TokenStream {
     };
     let turn = full_turn_plane(plan);
     let pseudoscalar = plan.metric.pseudoscalar();
-    let body = if n <= 3 {
-        let turn_term = |blade| {
-            if Some(blade) == turn {
-                quote!(+ turn)
-            } else {
-                quote!()
-            }
-        };
-        let terms = grade_blades(plan, 2).into_iter().map(|bl| {
-            let f = field_ident(bl);
-            let t = turn_term(bl);
-            quote!(#f: weight * p.#f #t)
-        });
-        // Without a plane that squares to -1, -1 is no exponential: no logarithm.
-        let no_plane = turn.is_none().then(|| {
+    let body = match form {
+        ExpLogForm::Plane => {
+            let turn_term = |blade| {
+                if Some(blade) == turn {
+                    quote!(+ turn)
+                } else {
+                    quote!()
+                }
+            };
+            let terms = grade_blades(plan, 2).into_iter().map(|bl| {
+                let f = field_ident(bl);
+                let t = turn_term(bl);
+                quote!(#f: weight * p.#f #t)
+            });
+            // Without a plane that squares to -1, -1 is no exponential: no logarithm.
+            let no_plane = turn.is_none().then(|| {
+                quote! {
+                    if turn != 0.0 {
+                        return None;
+                    }
+                }
+            });
             quote! {
-                if turn != 0.0 {
+                let p = Bivector { #(#p_fields: self.#p_fields),* };
+                let [x, root] = square_and_root(p);
+                let [weight, turn] = log_weight(self.s, x, root, p == Bivector::ZERO);
+                #no_plane
+                Bivector { #(#terms),* }
+            }
+        }
+        ExpLogForm::Channels => {
+            let split = channels(plan, &Operand::new(quote!(p), bivector));
+            let c4 = r.blade(plan, pseudoscalar).unwrap_or_else(|| quote!(0.0));
+            // The turn of each channel: pi (D +- D I) / 2, a unit angle in that channel.
+            let (turn_plus, turn_minus) = match turn {
+                Some(d) => {
+                    let (sign, di) = plan.metric.geometric(d, pseudoscalar);
+                    let half = float(0.5);
+                    let signed = float(0.5 * f64::from(sign));
+                    let plus = [(d, quote!(#half)), (di, quote!(#signed))];
+                    let minus = [(d, quote!(#half)), (di, quote!(-#signed))];
+                    (plus.to_vec(), minus.to_vec())
+                }
+                None => (Vec::new(), Vec::new()),
+            };
+            let terms = grade_blades(plan, 2).into_iter().map(|bl| {
+                let f = field_ident(bl);
+                let extra = |list: &[(crate::algebra::Blade, TokenStream)], name: TokenStream| {
+                    list.iter()
+                        .find(|(b, _)| *b == bl)
+                        .map(|(_, c)| quote!(+ #c * #name))
+                        .unwrap_or_default()
+                };
+                let tp = extra(&turn_plus, quote!(turn_plus));
+                let tm = extra(&turn_minus, quote!(turn_minus));
+                quote!(#f: wp * plus.#f + wm * minus.#f #tp #tm)
+            });
+            quote! {
+                let p = Bivector { #(#p_fields: self.#p_fields),* };
+                #split
+                let (cp, cm) = (self.s + #c4, self.s - #c4);
+                let [xp, rp] = square_and_root(plus);
+                let [xm, rm] = square_and_root(minus);
+                let (mp, mm) = (::core::#s::consts::SQRT_2 * rp, ::core::#s::consts::SQRT_2 * rm);
+                // R ~R = 1 is each channel's c^2 - sign(x) m^2 = 1.
+                let np = cp * cp - xp.signum() * mp * mp;
+                let nm = cm * cm - xm.signum() * mm * mm;
+                if !((np - 1.0).abs() <= #tolerance && (nm - 1.0).abs() <= #tolerance) {
                     return None;
                 }
+                let [wp, turn_plus] = log_weight(cp, xp, mp, plus == Bivector::ZERO);
+                let [wm, turn_minus] = log_weight(cm, xm, mm, minus == Bivector::ZERO);
+                Bivector { #(#terms),* }
             }
-        });
-        quote! {
-            let p = Bivector { #(#p_fields: self.#p_fields),* };
-            let [x, root] = square_and_root(p);
-            let [weight, turn] = log_weight(self.s, x, root, p == Bivector::ZERO);
-            #no_plane
-            Bivector { #(#terms),* }
         }
-    } else if n == 4 && plan.metric.pseudoscalar_square() > 0 {
-        let split = channels(plan, &Operand::new(quote!(p), bivector));
-        let c4 = r.blade(plan, pseudoscalar).unwrap_or_else(|| quote!(0.0));
-        // The turn of each channel: pi (D +- D I) / 2, a unit angle in that channel.
-        let (turn_plus, turn_minus) = match turn {
-            Some(d) => {
-                let (sign, di) = plan.metric.geometric(d, pseudoscalar);
-                let half = float(0.5);
-                let signed = float(0.5 * f64::from(sign));
-                let plus = [(d, quote!(#half)), (di, quote!(#signed))];
-                let minus = [(d, quote!(#half)), (di, quote!(-#signed))];
-                (plus.to_vec(), minus.to_vec())
+        ExpLogForm::Quartic => {
+            let p_square = self_square_component(plan, &p, 0);
+            let p4 = self_square_component(plan, &p, pseudoscalar);
+            let c4 = r.blade(plan, pseudoscalar).unwrap_or_else(|| quote!(0.0));
+            let iota = float(plan.metric.pseudoscalar_square() as f64);
+            let unit = Operand::new(quote!(unit), TypeId::grade(4));
+            let (p_unit, _) = product_value(plan, ProductKind::Geometric, &p, &unit);
+            let unit_field = field_ident(pseudoscalar);
+            quote! {
+                let p = Bivector { #(#p_fields: self.#p_fields),* };
+                let p0: #s = #p_square;
+                let p4: #s = #p4;
+                let [g0, g4] = log_weights_4d(self.s, #c4, p0, p4, #iota);
+                let unit = Quadvector { #unit_field: 1.0 };
+                let p_unit: Bivector = #p_unit;
+                Bivector { #(#p_fields: g0 * p.#p_fields + g4 * p_unit.#p_fields),* }
             }
-            None => (Vec::new(), Vec::new()),
-        };
-        let terms = grade_blades(plan, 2).into_iter().map(|bl| {
-            let f = field_ident(bl);
-            let extra = |list: &[(crate::algebra::Blade, TokenStream)], name: TokenStream| {
-                list.iter()
-                    .find(|(b, _)| *b == bl)
-                    .map(|(_, c)| quote!(+ #c * #name))
-                    .unwrap_or_default()
-            };
-            let tp = extra(&turn_plus, quote!(turn_plus));
-            let tm = extra(&turn_minus, quote!(turn_minus));
-            quote!(#f: wp * plus.#f + wm * minus.#f #tp #tm)
-        });
-        quote! {
-            let p = Bivector { #(#p_fields: self.#p_fields),* };
-            #split
-            let (cp, cm) = (self.s + #c4, self.s - #c4);
-            let [xp, rp] = square_and_root(plus);
-            let [xm, rm] = square_and_root(minus);
-            let (mp, mm) = (::core::#s::consts::SQRT_2 * rp, ::core::#s::consts::SQRT_2 * rm);
-            // R ~R = 1 is each channel's c^2 - sign(x) m^2 = 1.
-            let np = cp * cp - xp.signum() * mp * mp;
-            let nm = cm * cm - xm.signum() * mm * mm;
-            if !((np - 1.0).abs() <= #tolerance && (nm - 1.0).abs() <= #tolerance) {
-                return None;
-            }
-            let [wp, turn_plus] = log_weight(cp, xp, mp, plus == Bivector::ZERO);
-            let [wm, turn_minus] = log_weight(cm, xm, mm, minus == Bivector::ZERO);
-            Bivector { #(#terms),* }
         }
-    } else {
-        let p_square = self_square_component(plan, &p, 0);
-        let p4 = self_square_component(plan, &p, pseudoscalar);
-        let c4 = r.blade(plan, pseudoscalar).unwrap_or_else(|| quote!(0.0));
-        let iota = float(plan.metric.pseudoscalar_square() as f64);
-        let unit = Operand::new(quote!(unit), TypeId::grade(4));
-        let (p_unit, _) = product_value(plan, ProductKind::Geometric, &p, &unit);
-        let unit_field = field_ident(pseudoscalar);
-        quote! {
-            let p = Bivector { #(#p_fields: self.#p_fields),* };
-            let p0: #s = #p_square;
-            let p4: #s = #p4;
-            let [g0, g4] = log_weights_4d(self.s, #c4, p0, p4, #iota);
-            let unit = Quadvector { #unit_field: 1.0 };
-            let p_unit: Bivector = #p_unit;
-            Bivector { #(#p_fields: g0 * p.#p_fields + g4 * p_unit.#p_fields),* }
-        }
+        ExpLogForm::Series => unreachable!("the plan has no log above four dimensions"),
     };
     quote! {
         impl Even {

@@ -73,17 +73,14 @@ pub fn module_items(spec: &Spec, plan: &Plan) -> TokenStream {
         items.extend(unary::emit_multivector_inverse(plan));
         items.extend(versor::emit_multivector_helpers(plan));
     }
-    let bivector = TypeId::grade(2);
-    let has_exp = n >= 2 && plan.has(Op::Exp) && plan.emitted.contains(&bivector);
-    let has_log =
-        (2..=4).contains(&n) && plan.has(Op::Log) && plan.emitted.contains(&TypeId::even(n));
-    if has_exp {
-        items.extend(exp_log::emit_exp(plan));
+    let (exp, log) = (plan.exp_form(), plan.log_form());
+    if let Some(form) = exp {
+        items.extend(exp_log::emit_exp(plan, form));
     }
-    if has_log {
-        items.extend(exp_log::emit_log(plan));
+    if let Some(form) = log {
+        items.extend(exp_log::emit_log(plan, form));
     }
-    if has_exp || has_log {
+    if exp.is_some() || log.is_some() {
         items.extend(exp_log::emit_scalar_functions(plan));
     }
     items.extend(integrations::emit_integrations(spec, plan));

@@ -3,11 +3,13 @@
 
 pub mod collected;
 pub mod cost;
+mod exp_log_form;
 pub mod lanes;
 pub mod sandwich_form;
 mod terms;
 mod types;
 
+pub use exp_log_form::ExpLogForm;
 pub use lanes::{LaneProduct, Side};
 pub use sandwich_form::{PairColumns, SandwichForm};
 pub use terms::{bilinear, quadratic_self, sandwich, Quadratic};
