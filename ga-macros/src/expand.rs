@@ -29,7 +29,7 @@ pub fn algebra(input: RawAlgebra) -> syn::Result<TokenStream> {
 }
 
 /// The validated spec of an `algebra!` input (for the WGSL snapshot test).
-#[cfg(test)]
+#[cfg(all(test, feature = "wgsl"))]
 pub fn spec_of(input: RawAlgebra) -> syn::Result<Spec> {
     validate(input.attrs, input.vis, input.name, input.entries)
 }

@@ -68,3 +68,6 @@ mod restriction_tests;
 
 #[cfg(test)]
 mod fuzz_tests;
+
+#[cfg(test)]
+mod feature_tests;

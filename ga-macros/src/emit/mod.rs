@@ -5,6 +5,7 @@ mod batch;
 mod conveniences;
 mod exp_log;
 mod expr;
+#[cfg(feature = "generic")]
 mod generic;
 mod integrations;
 mod math;
@@ -16,9 +17,10 @@ mod sin_cos;
 mod types;
 mod unary;
 mod versor;
+#[cfg(feature = "wgsl")]
 mod wgsl;
 
-#[cfg(test)]
+#[cfg(all(test, feature = "wgsl"))]
 pub use wgsl::wgsl_source;
 
 use proc_macro2::TokenStream;
@@ -32,8 +34,12 @@ pub fn module_items(spec: &Spec, plan: &Plan) -> TokenStream {
     let n = plan.metric.dimension();
     let mut items = types::emit_support_items(plan);
     if spec.generic_scalar.is_some() {
-        items.extend(generic::emit_math());
-        items.extend(generic::emit_defaults(plan));
+        // Without the `generic` feature validation refuses a generic scalar.
+        #[cfg(feature = "generic")]
+        {
+            items.extend(generic::emit_math());
+            items.extend(generic::emit_defaults(plan));
+        }
     } else if plan.lanes.is_none() {
         items.extend(math::emit_math(plan, &spec.math));
     }
@@ -84,6 +90,7 @@ pub fn module_items(spec: &Spec, plan: &Plan) -> TokenStream {
         items.extend(exp_log::emit_scalar_functions(plan));
     }
     items.extend(integrations::emit_integrations(spec, plan));
+    #[cfg(feature = "wgsl")]
     items.extend(wgsl::emit_wgsl(spec, plan));
     if plan.lanes.is_none() {
         // The batch modules are this emitter run again on a batch plan.
@@ -98,10 +105,12 @@ pub fn module_items(spec: &Spec, plan: &Plan) -> TokenStream {
 
 /// The whole module: the user's attributes and visibility around the items.
 pub fn module(spec: &Spec, plan: &Plan) -> TokenStream {
-    let mut items = module_items(spec, plan);
-    if let Some(path) = &spec.generic_scalar {
-        items = generic::rewrite(items, path);
-    }
+    let items = module_items(spec, plan);
+    #[cfg(feature = "generic")]
+    let items = match &spec.generic_scalar {
+        Some(path) => generic::rewrite(items, path),
+        None => items,
+    };
     let (attrs, vis, name) = (&spec.attrs, &spec.vis, &spec.name);
     // Generated code follows the sign table term by term (`a.s * b.s - a.e12 * b.e12`,
     // constructors with one argument per component), which clippy's style lints would
