@@ -29,6 +29,7 @@ mod plan;
 mod spec;
 
 use proc_macro::TokenStream;
+use quote::ToTokens;
 
 /// Generates a geometric algebra module: `algebra! { pub mod g3 { metric: [1, 1, 1], scalar: f64 } }`.
 ///
@@ -38,7 +39,7 @@ use proc_macro::TokenStream;
 #[proc_macro]
 pub fn algebra(input: TokenStream) -> TokenStream {
     let raw = syn::parse_macro_input!(input as spec::RawAlgebra);
-    let stand_in = (raw.vis.clone(), raw.name.clone());
+    let stand_in = (raw.vis.to_token_stream(), raw.name.clone());
     expand::algebra(raw)
         .unwrap_or_else(|e| fallback::with_errors(e, Some((&stand_in.0, &stand_in.1))))
         .into()
@@ -54,7 +55,7 @@ pub fn derive_algebra(input: TokenStream) -> TokenStream {
         &names::snake_case(&input.ident.to_string()),
         input.ident.span(),
     );
-    let vis = input.vis.clone();
+    let vis = input.vis.to_token_stream();
     expand::derive(input)
         .unwrap_or_else(|e| fallback::with_errors(e, Some((&vis, &module))))
         .into()

@@ -368,205 +368,219 @@ pub fn emit_scalar_functions(plan: &Plan) -> TokenStream {
             }
         }
     });
-    quote! {
-        #even_series
+    super::template::fill(
+        SCALAR_FUNCTIONS,
+        &[
+            ("even_series", &even_series),
+            ("s", &s),
+            ("square", &square),
+            ("largest", &largest),
+            ("descaled", &descaled),
+            ("unit_square", &unit_square),
+            ("channel_series", &channel_series),
+        ],
+    )
+}
 
-        /// `[x, sqrt |x|]` for `x = <B B>_0`, the root right to a few ulps at every
-        /// magnitude: when the squares could overflow or underflow, `B` is first divided
-        /// by its largest component, and `x` then carries only the sign of `<B B>_0`.
-        #[allow(dead_code)]
-        #[inline]
-        fn square_and_root(b: Bivector) -> [#s; 2] {
-            let x: #s = #square;
-            if x.abs() >= SQUARE_MIN && x.abs() <= SQUARE_MAX {
-                return [x, math::sqrt(x.abs())];
-            }
-            let largest: #s = #largest;
-            if !(largest > 0.0 && largest < #s::INFINITY) {
-                return [x, math::sqrt(x.abs())];
-            }
-            let u = #descaled;
-            let x: #s = #unit_square;
-            [x, math::sqrt(x.abs()) * largest]
-        }
+/// The scalar functions behind exp and log (`#s` the scalar type), emitted once per algebra.
+const SCALAR_FUNCTIONS: &str = r#"
+#even_series
 
-        /// `[cosh, sinhc]` of a four-dimensional channel's angle, `sqrt 2` times the root
-        /// of its square: in `f64` by the series where that is small, else by the root.
-        #[allow(dead_code)]
-        #[inline]
-        fn channel_cosh_sinhc(channel: Bivector) -> [#s; 2] {
-            #channel_series
-            let [x, root] = square_and_root(channel);
-            cosh_sinhc(x, ::core::#s::consts::SQRT_2 * root)
-        }
+/// `[x, sqrt |x|]` for `x = <B B>_0`, the root right to a few ulps at every
+/// magnitude: when the squares could overflow or underflow, `B` is first divided
+/// by its largest component, and `x` then carries only the sign of `<B B>_0`.
+#[allow(dead_code)]
+#[inline]
+fn square_and_root(b: Bivector) -> [#s; 2] {
+    let x: #s = #square;
+    if x.abs() >= SQUARE_MIN && x.abs() <= SQUARE_MAX {
+        return [x, math::sqrt(x.abs())];
+    }
+    let largest: #s = #largest;
+    if !(largest > 0.0 && largest < #s::INFINITY) {
+        return [x, math::sqrt(x.abs())];
+    }
+    let u = #descaled;
+    let x: #s = #unit_square;
+    [x, math::sqrt(x.abs()) * largest]
+}
 
-        /// cosh(sqrt x) for x >= 0 and cos(sqrt -x) for x < 0: entire in x.
-        #[allow(dead_code)]
-        #[inline]
-        fn cosh_sqrt(x: #s) -> #s {
-            if x >= 0.0 { math::cosh(math::sqrt(x)) } else { math::cos(math::sqrt(-x)) }
-        }
+/// `[cosh, sinhc]` of a four-dimensional channel's angle, `sqrt 2` times the root
+/// of its square: in `f64` by the series where that is small, else by the root.
+#[allow(dead_code)]
+#[inline]
+fn channel_cosh_sinhc(channel: Bivector) -> [#s; 2] {
+    #channel_series
+    let [x, root] = square_and_root(channel);
+    cosh_sinhc(x, ::core::#s::consts::SQRT_2 * root)
+}
 
-        /// `[cosh r, sinh(r)/r]` for `x > 0` and `[cos r, sin(r)/r]` for `x < 0`, where
-        /// `r = sqrt |x|` is given (only the sign of `x` is read); the ratio by its series
-        /// where `r` is tiny. `sin_cos` reduces any finite angle modulo 2 pi exactly. The
-        /// reciprocal of `r` is taken before the sine, so that the division runs beside
-        /// the series rather than after them. A NaN `x` (a bivector holding NaN) fails
-        /// both comparisons; `1 + x` keeps it NaN instead of the identity's `[1, 1]`.
-        #[allow(dead_code)]
-        #[inline]
-        fn cosh_sinhc(x: #s, r: #s) -> [#s; 2] {
-            if x < 0.0 {
-                let inverse = 1.0 / r;
-                let (sin, cos) = math::sin_cos(r);
-                [cos, if r < 1e-4 { 1.0 - r * r / 6.0 } else { sin * inverse }]
-            } else if x > 0.0 {
-                [math::cosh(r), if r < 1e-4 { 1.0 + r * r / 6.0 } else { math::sinh(r) / r }]
-            } else {
-                [1.0 + x, 1.0 + x]
-            }
-        }
+/// cosh(sqrt x) for x >= 0 and cos(sqrt -x) for x < 0: entire in x.
+#[allow(dead_code)]
+#[inline]
+fn cosh_sqrt(x: #s) -> #s {
+    if x >= 0.0 { math::cosh(math::sqrt(x)) } else { math::cos(math::sqrt(-x)) }
+}
 
-        /// sinh(sqrt x)/sqrt x (sin(sqrt -x)/sqrt -x for x < 0), by its series near 0.
-        #[allow(dead_code)]
-        #[inline]
-        fn sinhc_sqrt(x: #s) -> #s {
-            if x.abs() < 1e-3 {
-                1.0 + x * (1.0 / 6.0 + x * (1.0 / 120.0 + x * (1.0 / 5040.0)))
-            } else if x > 0.0 {
-                let r = math::sqrt(x);
-                math::sinh(r) / r
-            } else {
-                let r = math::sqrt(-x);
-                math::sin(r) / r
-            }
-        }
-
-        /// The derivative of `sinhc_sqrt`, (cosh_sqrt - sinhc_sqrt) / 2x, by its series near 0.
-        #[allow(dead_code)]
-        fn sinhc_sqrt_derivative(x: #s) -> #s {
-            if x.abs() < 1e-2 {
-                1.0 / 6.0 + x * (1.0 / 60.0 + x * (1.0 / 1680.0 + x * (1.0 / 90720.0)))
-            } else {
-                (cosh_sqrt(x) - sinhc_sqrt(x)) / (2.0 * x)
-            }
-        }
-
-        /// cosh(sqrt z) and sinh(sqrt z)/sqrt z for complex z = (re, im).
-        #[allow(dead_code)]
-        fn complex_cosh_sinhc_sqrt(re: #s, im: #s) -> [#s; 4] {
-            let modulus = math::hypot(re, im);
-            if modulus < 1e-3 {
-                // 1 + z/2 + z^2/24 and 1 + z/6 + z^2/120.
-                let (z2r, z2i) = (re * re - im * im, 2.0 * re * im);
-                return [
-                    1.0 + re / 2.0 + z2r / 24.0,
-                    im / 2.0 + z2i / 24.0,
-                    1.0 + re / 6.0 + z2r / 120.0,
-                    im / 6.0 + z2i / 120.0,
-                ];
-            }
-            // Principal square root a + ib of re + i im.
-            let a = math::sqrt((modulus + re) / 2.0);
-            let b = math::sqrt((modulus - re) / 2.0).copysign(im);
-            let (ch, sh) = (math::cosh(a), math::sinh(a));
-            let (s, c) = math::sin_cos(b);
-            let (cosh_r, cosh_i) = (ch * c, sh * s);
-            let (sinh_r, sinh_i) = (sh * c, ch * s);
-            let d = a * a + b * b;
-            [cosh_r, cosh_i, (sinh_r * a + sinh_i * b) / d, (sinh_i * a - sinh_r * b) / d]
-        }
-
-        /// For B^2 = s + Q with Q^2 = t: the weights (c0, c4, s0, s4) with
-        /// cosh(B) = c0 + c4 Q and sinh(B)/B = s0 + s4 Q.
-        #[allow(dead_code)]
-        fn exp_weights(s: #s, t: #s) -> [#s; 4] {
-            if t > 0.0 {
-                let r = math::sqrt(t);
-                let (cp, cm) = (cosh_sqrt(s + r), cosh_sqrt(s - r));
-                let (sp, sm) = (sinhc_sqrt(s + r), sinhc_sqrt(s - r));
-                [(cp + cm) / 2.0, (cp - cm) / (2.0 * r), (sp + sm) / 2.0, (sp - sm) / (2.0 * r)]
-            } else if t < 0.0 {
-                let r = math::sqrt(-t);
-                let [cr, ci, sr, si] = complex_cosh_sinhc_sqrt(s, r);
-                [cr, ci / r, sr, si / r]
-            } else {
-                let weight = sinhc_sqrt(s);
-                [cosh_sqrt(s), weight / 2.0, weight, sinhc_sqrt_derivative(s)]
-            }
-        }
-
-        /// `[w, turn]` with `log(c + P) = w P + turn D`, where `P^2` has the sign of `x`,
-        /// `m = sqrt |P^2|` and `c^2 - P^2 = 1`; `turn` is pi for `c + P = -1` (`P` zero)
-        /// and `D` the plane chosen for it. NaN where no real logarithm exists (`c < 0`
-        /// with `P^2 >= 0` and `P` not zero).
-        #[allow(dead_code)]
-        fn log_weight(c: #s, x: #s, m: #s, p_is_zero: bool) -> [#s; 2] {
-            if p_is_zero && c < 0.0 {
-                [0.0, ::core::#s::consts::PI]
-            } else if x < 0.0 {
-                [math::atan2(m, c) / m, 0.0]
-            } else if c < 0.0 {
-                [#s::NAN, 0.0]
-            } else if x > 0.0 {
-                [if m < 1e-4 { 1.0 - m * m / 6.0 } else { math::asinh(m) / m }, 0.0]
-            } else {
-                [1.0 / c, 0.0]
-            }
-        }
-
-        /// The weight w with log(c + P) = w P, where P^2 = p2 is a scalar and c^2 - p2 = 1.
-        #[allow(dead_code)]
-        fn log_weight_of_square(c: #s, p2: #s) -> #s {
-            if p2 < 0.0 {
-                let m = math::sqrt(-p2);
-                math::atan2(m, c) / m
-            } else if p2 > 0.0 {
-                let m = math::sqrt(p2);
-                if m < 1e-4 { 1.0 - p2 / 6.0 } else { math::asinh(m) / m }
-            } else {
-                1.0 / c
-            }
-        }
-
-        /// For a four-dimensional rotor c0 + P + c4 I with P^2 = p0 + p4 I and I^2 = iota
-        /// (-1 or 0; +1 is taken by channels in `Even::log`): the weights (g0, g4) with
-        /// log = g0 P + g4 P I.
-        #[allow(dead_code)]
-        fn log_weights_4d(c0: #s, c4: #s, p0: #s, p4: #s, iota: #s) -> [#s; 2] {
-            if iota < 0.0 {
-                // One complex channel, I -> i: g = y / sinh y with cosh y = c, sinh^2 y = p;
-                // y = log1p(u) with u = c - 1 + sqrt p and c - 1 = p / (c + 1).
-                let modulus = math::hypot(p0, p4);
-                if modulus == 0.0 {
-                    return [1.0, 0.0];
-                }
-                let sr = math::sqrt((modulus + p0) / 2.0);
-                let si = math::sqrt((modulus - p0) / 2.0).copysign(p4);
-                let (dr, di) = (c0 + 1.0, c4);
-                let dd = dr * dr + di * di;
-                let (qr, qi) = ((p0 * dr + p4 * di) / dd, (p4 * dr - p0 * di) / dd);
-                let (ur, ui) = (qr + sr, qi + si);
-                let yr = 0.5 * math::ln_1p(2.0 * ur + ur * ur + ui * ui);
-                let yi = math::atan2(ui, 1.0 + ur);
-                let ss = sr * sr + si * si;
-                [(yr * sr + yi * si) / ss, (yi * sr - yr * si) / ss]
-            } else {
-                // Dual numbers, I^2 = 0: g4 = c4 (sinh y - y cosh y) / sinh^3 y.
-                let g0 = log_weight_of_square(c0, p0);
-                let h = if p0.abs() < 1e-12 {
-                    -1.0 / 3.0
-                } else if p0 < 0.0 {
-                    let m = math::sqrt(-p0);
-                    let theta = math::atan2(m, c0);
-                    (theta * c0 - m) / (m * m * m)
-                } else {
-                    let m = math::sqrt(p0);
-                    let y = math::asinh(m);
-                    (m - y * c0) / (m * m * m)
-                };
-                [g0, c4 * h]
-            }
-        }
+/// `[cosh r, sinh(r)/r]` for `x > 0` and `[cos r, sin(r)/r]` for `x < 0`, where
+/// `r = sqrt |x|` is given (only the sign of `x` is read); the ratio by its series
+/// where `r` is tiny. `sin_cos` reduces any finite angle modulo 2 pi exactly. The
+/// reciprocal of `r` is taken before the sine, so that the division runs beside
+/// the series rather than after them. A NaN `x` (a bivector holding NaN) fails
+/// both comparisons; `1 + x` keeps it NaN instead of the identity's `[1, 1]`.
+#[allow(dead_code)]
+#[inline]
+fn cosh_sinhc(x: #s, r: #s) -> [#s; 2] {
+    if x < 0.0 {
+        let inverse = 1.0 / r;
+        let (sin, cos) = math::sin_cos(r);
+        [cos, if r < 1e-4 { 1.0 - r * r / 6.0 } else { sin * inverse }]
+    } else if x > 0.0 {
+        [math::cosh(r), if r < 1e-4 { 1.0 + r * r / 6.0 } else { math::sinh(r) / r }]
+    } else {
+        [1.0 + x, 1.0 + x]
     }
 }
+
+/// sinh(sqrt x)/sqrt x (sin(sqrt -x)/sqrt -x for x < 0), by its series near 0.
+#[allow(dead_code)]
+#[inline]
+fn sinhc_sqrt(x: #s) -> #s {
+    if x.abs() < 1e-3 {
+        1.0 + x * (1.0 / 6.0 + x * (1.0 / 120.0 + x * (1.0 / 5040.0)))
+    } else if x > 0.0 {
+        let r = math::sqrt(x);
+        math::sinh(r) / r
+    } else {
+        let r = math::sqrt(-x);
+        math::sin(r) / r
+    }
+}
+
+/// The derivative of `sinhc_sqrt`, (cosh_sqrt - sinhc_sqrt) / 2x, by its series near 0.
+#[allow(dead_code)]
+fn sinhc_sqrt_derivative(x: #s) -> #s {
+    if x.abs() < 1e-2 {
+        1.0 / 6.0 + x * (1.0 / 60.0 + x * (1.0 / 1680.0 + x * (1.0 / 90720.0)))
+    } else {
+        (cosh_sqrt(x) - sinhc_sqrt(x)) / (2.0 * x)
+    }
+}
+
+/// cosh(sqrt z) and sinh(sqrt z)/sqrt z for complex z = (re, im).
+#[allow(dead_code)]
+fn complex_cosh_sinhc_sqrt(re: #s, im: #s) -> [#s; 4] {
+    let modulus = math::hypot(re, im);
+    if modulus < 1e-3 {
+        // 1 + z/2 + z^2/24 and 1 + z/6 + z^2/120.
+        let (z2r, z2i) = (re * re - im * im, 2.0 * re * im);
+        return [
+            1.0 + re / 2.0 + z2r / 24.0,
+            im / 2.0 + z2i / 24.0,
+            1.0 + re / 6.0 + z2r / 120.0,
+            im / 6.0 + z2i / 120.0,
+        ];
+    }
+    // Principal square root a + ib of re + i im.
+    let a = math::sqrt((modulus + re) / 2.0);
+    let b = math::sqrt((modulus - re) / 2.0).copysign(im);
+    let (ch, sh) = (math::cosh(a), math::sinh(a));
+    let (s, c) = math::sin_cos(b);
+    let (cosh_r, cosh_i) = (ch * c, sh * s);
+    let (sinh_r, sinh_i) = (sh * c, ch * s);
+    let d = a * a + b * b;
+    [cosh_r, cosh_i, (sinh_r * a + sinh_i * b) / d, (sinh_i * a - sinh_r * b) / d]
+}
+
+/// For B^2 = s + Q with Q^2 = t: the weights (c0, c4, s0, s4) with
+/// cosh(B) = c0 + c4 Q and sinh(B)/B = s0 + s4 Q.
+#[allow(dead_code)]
+fn exp_weights(s: #s, t: #s) -> [#s; 4] {
+    if t > 0.0 {
+        let r = math::sqrt(t);
+        let (cp, cm) = (cosh_sqrt(s + r), cosh_sqrt(s - r));
+        let (sp, sm) = (sinhc_sqrt(s + r), sinhc_sqrt(s - r));
+        [(cp + cm) / 2.0, (cp - cm) / (2.0 * r), (sp + sm) / 2.0, (sp - sm) / (2.0 * r)]
+    } else if t < 0.0 {
+        let r = math::sqrt(-t);
+        let [cr, ci, sr, si] = complex_cosh_sinhc_sqrt(s, r);
+        [cr, ci / r, sr, si / r]
+    } else {
+        let weight = sinhc_sqrt(s);
+        [cosh_sqrt(s), weight / 2.0, weight, sinhc_sqrt_derivative(s)]
+    }
+}
+
+/// `[w, turn]` with `log(c + P) = w P + turn D`, where `P^2` has the sign of `x`,
+/// `m = sqrt |P^2|` and `c^2 - P^2 = 1`; `turn` is pi for `c + P = -1` (`P` zero)
+/// and `D` the plane chosen for it. NaN where no real logarithm exists (`c < 0`
+/// with `P^2 >= 0` and `P` not zero).
+#[allow(dead_code)]
+fn log_weight(c: #s, x: #s, m: #s, p_is_zero: bool) -> [#s; 2] {
+    if p_is_zero && c < 0.0 {
+        [0.0, ::core::#s::consts::PI]
+    } else if x < 0.0 {
+        [math::atan2(m, c) / m, 0.0]
+    } else if c < 0.0 {
+        [#s::NAN, 0.0]
+    } else if x > 0.0 {
+        [if m < 1e-4 { 1.0 - m * m / 6.0 } else { math::asinh(m) / m }, 0.0]
+    } else {
+        [1.0 / c, 0.0]
+    }
+}
+
+/// The weight w with log(c + P) = w P, where P^2 = p2 is a scalar and c^2 - p2 = 1.
+#[allow(dead_code)]
+fn log_weight_of_square(c: #s, p2: #s) -> #s {
+    if p2 < 0.0 {
+        let m = math::sqrt(-p2);
+        math::atan2(m, c) / m
+    } else if p2 > 0.0 {
+        let m = math::sqrt(p2);
+        if m < 1e-4 { 1.0 - p2 / 6.0 } else { math::asinh(m) / m }
+    } else {
+        1.0 / c
+    }
+}
+
+/// For a four-dimensional rotor c0 + P + c4 I with P^2 = p0 + p4 I and I^2 = iota
+/// (-1 or 0; +1 is taken by channels in `Even::log`): the weights (g0, g4) with
+/// log = g0 P + g4 P I.
+#[allow(dead_code)]
+fn log_weights_4d(c0: #s, c4: #s, p0: #s, p4: #s, iota: #s) -> [#s; 2] {
+    if iota < 0.0 {
+        // One complex channel, I -> i: g = y / sinh y with cosh y = c, sinh^2 y = p;
+        // y = log1p(u) with u = c - 1 + sqrt p and c - 1 = p / (c + 1).
+        let modulus = math::hypot(p0, p4);
+        if modulus == 0.0 {
+            return [1.0, 0.0];
+        }
+        let sr = math::sqrt((modulus + p0) / 2.0);
+        let si = math::sqrt((modulus - p0) / 2.0).copysign(p4);
+        let (dr, di) = (c0 + 1.0, c4);
+        let dd = dr * dr + di * di;
+        let (qr, qi) = ((p0 * dr + p4 * di) / dd, (p4 * dr - p0 * di) / dd);
+        let (ur, ui) = (qr + sr, qi + si);
+        let yr = 0.5 * math::ln_1p(2.0 * ur + ur * ur + ui * ui);
+        let yi = math::atan2(ui, 1.0 + ur);
+        let ss = sr * sr + si * si;
+        [(yr * sr + yi * si) / ss, (yi * sr - yr * si) / ss]
+    } else {
+        // Dual numbers, I^2 = 0: g4 = c4 (sinh y - y cosh y) / sinh^3 y.
+        let g0 = log_weight_of_square(c0, p0);
+        let h = if p0.abs() < 1e-12 {
+            -1.0 / 3.0
+        } else if p0 < 0.0 {
+            let m = math::sqrt(-p0);
+            let theta = math::atan2(m, c0);
+            (theta * c0 - m) / (m * m * m)
+        } else {
+            let m = math::sqrt(p0);
+            let y = math::asinh(m);
+            (m - y * c0) / (m * m * m)
+        };
+        [g0, c4 * h]
+    }
+}
+"#;

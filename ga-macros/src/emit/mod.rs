@@ -14,6 +14,7 @@ mod products;
 mod projective;
 mod simd;
 mod sin_cos;
+mod template;
 mod types;
 mod unary;
 mod versor;

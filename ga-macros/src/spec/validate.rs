@@ -75,7 +75,6 @@ const GENERIC_MISSING: &str = "a scalar type other than f32/f64 needs ga-macros'
      ga-macros is a direct dependency)";
 
 /// The floating-point backend of the emitted `math` module (`math: ...`).
-#[derive(Clone)]
 pub enum Math {
     /// `std`'s inherent methods (the default).
     Std,
