@@ -3,6 +3,7 @@
 use proc_macro2::TokenStream;
 
 use crate::emit;
+use crate::names::snake_case;
 use crate::plan::{Plan, TypeId};
 use crate::spec::{check_emitted, validate, RawAlgebra, RawDerive, Spec};
 
@@ -28,7 +29,7 @@ pub fn algebra(input: RawAlgebra) -> syn::Result<TokenStream> {
 }
 
 /// The validated spec of an `algebra!` input (for the WGSL snapshot test).
-#[cfg(test)]
+#[cfg(all(test, feature = "wgsl"))]
 pub fn spec_of(input: RawAlgebra) -> syn::Result<Spec> {
     validate(input.attrs, input.vis, input.name, input.entries)
 }
@@ -41,31 +42,4 @@ pub fn derive(input: syn::DeriveInput) -> syn::Result<TokenStream> {
     let spec = validate(raw.attrs, raw.vis, module_name, raw.entries)?;
     let plan = plan(&spec)?;
     Ok(emit::module(&spec, &plan))
-}
-
-/// `SpaceTime` -> `space_time`: the derive form's module name.
-pub fn snake_case(name: &str) -> String {
-    let mut out = String::new();
-    for (i, c) in name.chars().enumerate() {
-        if c.is_uppercase() {
-            if i > 0 {
-                out.push('_');
-            }
-            out.extend(c.to_lowercase());
-        } else {
-            out.push(c);
-        }
-    }
-    out
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn snake_case_splits_words() {
-        assert_eq!(snake_case("SpaceTime"), "space_time");
-        assert_eq!(snake_case("G3"), "g3");
-    }
 }

@@ -4,10 +4,11 @@
 use proc_macro2::TokenStream;
 use quote::quote;
 
-/// The compile errors and, when the module's name is known, an empty stand-in.
+/// The compile errors and, when the module's name is known, an empty stand-in with the
+/// given visibility (as tokens: syn's types are built without `Clone`, to compile less).
 pub fn with_errors(
     error: syn::Error,
-    stand_in: Option<(&syn::Visibility, &syn::Ident)>,
+    stand_in: Option<(&TokenStream, &syn::Ident)>,
 ) -> TokenStream {
     let errors = error.into_compile_error();
     match stand_in {

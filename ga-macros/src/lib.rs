@@ -24,10 +24,12 @@ mod algebra;
 mod emit;
 mod expand;
 mod fallback;
+mod names;
 mod plan;
 mod spec;
 
 use proc_macro::TokenStream;
+use quote::ToTokens;
 
 /// Generates a geometric algebra module: `algebra! { pub mod g3 { metric: [1, 1, 1], scalar: f64 } }`.
 ///
@@ -37,7 +39,7 @@ use proc_macro::TokenStream;
 #[proc_macro]
 pub fn algebra(input: TokenStream) -> TokenStream {
     let raw = syn::parse_macro_input!(input as spec::RawAlgebra);
-    let stand_in = (raw.vis.clone(), raw.name.clone());
+    let stand_in = (raw.vis.to_token_stream(), raw.name.clone());
     expand::algebra(raw)
         .unwrap_or_else(|e| fallback::with_errors(e, Some((&stand_in.0, &stand_in.1))))
         .into()
@@ -50,10 +52,10 @@ pub fn algebra(input: TokenStream) -> TokenStream {
 pub fn derive_algebra(input: TokenStream) -> TokenStream {
     let input = syn::parse_macro_input!(input as syn::DeriveInput);
     let module = syn::Ident::new(
-        &expand::snake_case(&input.ident.to_string()),
+        &names::snake_case(&input.ident.to_string()),
         input.ident.span(),
     );
-    let vis = input.vis.clone();
+    let vis = input.vis.to_token_stream();
     expand::derive(input)
         .unwrap_or_else(|e| fallback::with_errors(e, Some((&vis, &module))))
         .into()
@@ -67,3 +69,6 @@ mod restriction_tests;
 
 #[cfg(test)]
 mod fuzz_tests;
+
+#[cfg(test)]
+mod feature_tests;

@@ -56,6 +56,7 @@ fn g3_f32_expansion_matches_snapshot() {
 }
 
 /// G3's WGSL (`shaders: [wgsl]`), committed as `snapshots/g3.wgsl` like the Rust.
+#[cfg(feature = "wgsl")]
 #[test]
 fn g3_wgsl_matches_snapshot() {
     let input = "pub mod g3 { metric: [1, 1, 1], scalar: f32, shaders: [wgsl] }";
@@ -75,6 +76,7 @@ fn g3_wgsl_matches_snapshot() {
     );
 }
 
+#[cfg(feature = "wgsl")]
 #[test]
 fn only_an_algebra_with_the_shaders_key_gets_a_wgsl_constant() {
     let without = expansion("pub mod g2 { metric: [1, 1], scalar: f32 }");
@@ -84,6 +86,7 @@ fn only_an_algebra_with_the_shaders_key_gets_a_wgsl_constant() {
 }
 
 /// G3 over a generic scalar (`num_dual::Dual64`): the f64 code rewritten for the type.
+#[cfg(feature = "generic")]
 #[test]
 fn g3_dual_expansion_matches_snapshot() {
     check(

@@ -6,19 +6,17 @@ use quote::{format_ident, quote};
 
 use super::expr::{field_ident, item_scalar_type, scalar_type, type_tokens};
 use crate::plan::{Plan, TypeId};
-use crate::spec::Spec;
 
-/// `pub mod x{lanes} { ... }` inside the algebra module.
-pub fn emit_batch_module(spec: &Spec, plan: &Plan, lanes: usize) -> TokenStream {
-    let batch = plan.batch(lanes);
-    let items = super::module_items(spec, &batch);
+/// `pub mod x{lanes} { ... }` inside the algebra module: the `items` written from the
+/// batch plan `batch`, and the conversions from and to the one-item types.
+pub fn emit_batch_module(batch: &Plan, lanes: usize, items: TokenStream) -> TokenStream {
     let conversions: TokenStream = batch
         .emitted
         .iter()
-        .map(|&t| item_conversions(&batch, t, lanes))
+        .map(|&t| item_conversions(batch, t, lanes))
         .collect();
     let name = format_ident!("x{lanes}");
-    let lane = scalar_type(&batch);
+    let lane = scalar_type(batch);
     let doc = format!(
         "The same types with `{lane}` components: {lanes} items at once, structure of \
          arrays, for the straight-line operations (products, sums, involutions, duals, \

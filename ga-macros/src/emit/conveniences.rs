@@ -9,7 +9,6 @@ use quote::quote;
 use super::expr::{
     field_ident, one, output_type, quadratic_component, scalar_type, type_tokens, Operand,
 };
-use super::products::operand_pairs;
 use crate::algebra::{blade_name, Involution, ProductKind};
 use crate::plan::{Output, Plan, TypeId};
 use crate::spec::Op;
@@ -46,68 +45,71 @@ fn closed_under_geometric(plan: &Plan, t: TypeId) -> bool {
 
 fn display_helper(plan: &Plan) -> TokenStream {
     let s = scalar_type(plan);
-    quote! {
-        /// Writes `1 + 2 e1 - 0.5 e12`: each non-zero component, a space, its blade (the
-        /// scalar without one; the space keeps `1 e12` apart from ten to the twelfth),
-        /// honouring the formatter's precision; at a precision `p`, terms that would print
-        /// as zero are left out. Magnitudes below `1e-5` or from `1e16` print in exponent
-        /// form (`5e-324`, not 324 digits), except below `1e-5` at a precision, where the
-        /// fixed form shows what rounds away. Zero prints as `0`.
-        fn display_terms(
-            f: &mut ::core::fmt::Formatter<'_>,
-            terms: &[(#s, &str)],
-        ) -> ::core::fmt::Result {
-            /// Notes whether a non-zero digit is written: a term "prints as zero" exactly
-            /// when the formatter's own rounding leaves none (no buffer, so `no_std`).
-            struct NonZeroDigit(bool);
-            impl ::core::fmt::Write for NonZeroDigit {
-                fn write_str(&mut self, s: &str) -> ::core::fmt::Result {
-                    self.0 |= s.bytes().any(|b| (b'1'..=b'9').contains(&b));
-                    Ok(())
-                }
-            }
-            let mut first = true;
-            for &(value, blade) in terms {
-                let magnitude = value.abs();
-                if magnitude == 0.0 {
-                    continue;
-                }
-                // NaN and infinities print as they are, in the plain form.
-                let large = magnitude >= 1e16 && magnitude.is_finite();
-                let small = magnitude < 1e-5;
-                let exponent = large || (small && f.precision().is_none());
-                if let (Some(p), false) = (f.precision(), exponent || !magnitude.is_finite()) {
-                    let mut digits = NonZeroDigit(false);
-                    ::core::fmt::write(&mut digits, format_args!("{:.*}", p, magnitude))?;
-                    if !digits.0 {
-                        continue;
-                    }
-                }
-                let negative = value.is_sign_negative() && !value.is_nan();
-                match (first, negative) {
-                    (true, true) => f.write_str("-")?,
-                    (true, false) => {}
-                    (false, true) => f.write_str(" - ")?,
-                    (false, false) => f.write_str(" + ")?,
-                }
-                match (f.precision(), exponent) {
-                    (Some(p), true) => write!(f, "{:.*e}", p, magnitude)?,
-                    (Some(p), false) => write!(f, "{:.*}", p, magnitude)?,
-                    (None, true) => write!(f, "{:e}", magnitude)?,
-                    (None, false) => write!(f, "{}", magnitude)?,
-                }
-                if !blade.is_empty() {
-                    write!(f, " {}", blade)?;
-                }
-                first = false;
-            }
-            if first {
-                f.write_str("0")?;
-            }
+    super::template::fill(DISPLAY_HELPER, &[("s", &s)])
+}
+
+/// The `Display` helper (`#s` the scalar type).
+const DISPLAY_HELPER: &str = r#"
+/// Writes `1 + 2 e1 - 0.5 e12`: each non-zero component, a space, its blade (the
+/// scalar without one; the space keeps `1 e12` apart from ten to the twelfth),
+/// honouring the formatter's precision; at a precision `p`, terms that would print
+/// as zero are left out. Magnitudes below `1e-5` or from `1e16` print in exponent
+/// form (`5e-324`, not 324 digits), except below `1e-5` at a precision, where the
+/// fixed form shows what rounds away. Zero prints as `0`.
+fn display_terms(
+    f: &mut ::core::fmt::Formatter<'_>,
+    terms: &[(#s, &str)],
+) -> ::core::fmt::Result {
+    /// Notes whether a non-zero digit is written: a term "prints as zero" exactly
+    /// when the formatter's own rounding leaves none (no buffer, so `no_std`).
+    struct NonZeroDigit(bool);
+    impl ::core::fmt::Write for NonZeroDigit {
+        fn write_str(&mut self, s: &str) -> ::core::fmt::Result {
+            self.0 |= s.bytes().any(|b| (b'1'..=b'9').contains(&b));
             Ok(())
         }
     }
+    let mut first = true;
+    for &(value, blade) in terms {
+        let magnitude = value.abs();
+        if magnitude == 0.0 {
+            continue;
+        }
+        // NaN and infinities print as they are, in the plain form.
+        let large = magnitude >= 1e16 && magnitude.is_finite();
+        let small = magnitude < 1e-5;
+        let exponent = large || (small && f.precision().is_none());
+        if let (Some(p), false) = (f.precision(), exponent || !magnitude.is_finite()) {
+            let mut digits = NonZeroDigit(false);
+            ::core::fmt::write(&mut digits, format_args!("{:.*}", p, magnitude))?;
+            if !digits.0 {
+                continue;
+            }
+        }
+        let negative = value.is_sign_negative() && !value.is_nan();
+        match (first, negative) {
+            (true, true) => f.write_str("-")?,
+            (true, false) => {}
+            (false, true) => f.write_str(" - ")?,
+            (false, false) => f.write_str(" + ")?,
+        }
+        match (f.precision(), exponent) {
+            (Some(p), true) => write!(f, "{:.*e}", p, magnitude)?,
+            (Some(p), false) => write!(f, "{:.*}", p, magnitude)?,
+            (None, true) => write!(f, "{:e}", magnitude)?,
+            (None, false) => write!(f, "{}", magnitude)?,
+        }
+        if !blade.is_empty() {
+            write!(f, " {}", blade)?;
+        }
+        first = false;
+    }
+    if first {
+        f.write_str("0")?;
+    }
+    Ok(())
 }
+"#;
 
 fn display(plan: &Plan, t: TypeId) -> TokenStream {
     let name = type_tokens(plan, t);
@@ -293,7 +295,7 @@ fn reference_operators(plan: &Plan) -> TokenStream {
         operators.push((quote!(Sub), quote!(sub)));
     }
     let mut out = TokenStream::new();
-    for (a, b) in operand_pairs(plan) {
+    for (a, b) in plan.operand_pairs() {
         let (lhs, rhs) = (type_tokens(plan, a), type_tokens(plan, b));
         for (op, method) in &operators {
             out.extend(quote! {
@@ -426,7 +428,7 @@ fn division(plan: &Plan) -> TokenStream {
     }
     let one = one(plan);
     let mut out = TokenStream::new();
-    for (a, b) in operand_pairs(plan) {
+    for (a, b) in plan.operand_pairs() {
         if b == TypeId::SCALAR || !plan.has_scalar_self_product(b) {
             continue;
         }

@@ -111,105 +111,112 @@ fn serde(plan: &Plan) -> TokenStream {
             }
         }
     });
-    quote! {
-        /// Reads the components of one type, by blade name or in canonical order.
-        struct __GaBlades<const N: usize> {
-            name: &'static str,
-            fields: &'static [&'static str],
-        }
+    let impls: TokenStream = impls.collect();
+    super::template::fill(
+        SERDE_VISITOR,
+        &[("s", &s), ("zero", &zero), ("impls", &impls)],
+    )
+}
 
-        impl<'de, const N: usize> __ga_serde::de::Visitor<'de> for __GaBlades<N> {
-            type Value = [#s; N];
+/// The visitor that reads a type by blade names or in canonical order, and each type's impls (`#impls`).
+const SERDE_VISITOR: &str = r#"
+/// Reads the components of one type, by blade name or in canonical order.
+struct __GaBlades<const N: usize> {
+    name: &'static str,
+    fields: &'static [&'static str],
+}
 
-            fn expecting(&self, f: &mut ::core::fmt::Formatter) -> ::core::fmt::Result {
-                ::core::write!(f, "struct {} with blades {:?}", self.name, self.fields)
-            }
+impl<'de, const N: usize> __ga_serde::de::Visitor<'de> for __GaBlades<N> {
+    type Value = [#s; N];
 
-            fn visit_seq<A: __ga_serde::de::SeqAccess<'de>>(
-                self,
-                mut seq: A,
-            ) -> ::core::result::Result<[#s; N], A::Error> {
-                let mut out = [#zero; N];
-                for (i, slot) in out.iter_mut().enumerate() {
-                    *slot = match seq.next_element()? {
-                        ::core::option::Option::Some(value) => value,
-                        ::core::option::Option::None => {
-                            return ::core::result::Result::Err(
-                                <A::Error as __ga_serde::de::Error>::invalid_length(i, &self),
-                            )
-                        }
-                    };
+    fn expecting(&self, f: &mut ::core::fmt::Formatter) -> ::core::fmt::Result {
+        ::core::write!(f, "struct {} with blades {:?}", self.name, self.fields)
+    }
+
+    fn visit_seq<A: __ga_serde::de::SeqAccess<'de>>(
+        self,
+        mut seq: A,
+    ) -> ::core::result::Result<[#s; N], A::Error> {
+        let mut out = [#zero; N];
+        for (i, slot) in out.iter_mut().enumerate() {
+            *slot = match seq.next_element()? {
+                ::core::option::Option::Some(value) => value,
+                ::core::option::Option::None => {
+                    return ::core::result::Result::Err(
+                        <A::Error as __ga_serde::de::Error>::invalid_length(i, &self),
+                    )
                 }
-                ::core::result::Result::Ok(out)
-            }
+            };
+        }
+        ::core::result::Result::Ok(out)
+    }
 
-            fn visit_map<A: __ga_serde::de::MapAccess<'de>>(
-                self,
-                mut map: A,
-            ) -> ::core::result::Result<[#s; N], A::Error> {
-                let mut found: [::core::option::Option<#s>; N] = [::core::option::Option::None; N];
-                while let ::core::option::Option::Some(i) =
-                    map.next_key_seed(__GaBladeName { fields: self.fields })?
-                {
-                    if found[i].is_some() {
-                        return ::core::result::Result::Err(
-                            <A::Error as __ga_serde::de::Error>::duplicate_field(self.fields[i]),
-                        );
-                    }
-                    found[i] = ::core::option::Option::Some(map.next_value()?);
+    fn visit_map<A: __ga_serde::de::MapAccess<'de>>(
+        self,
+        mut map: A,
+    ) -> ::core::result::Result<[#s; N], A::Error> {
+        let mut found: [::core::option::Option<#s>; N] = [::core::option::Option::None; N];
+        while let ::core::option::Option::Some(i) =
+            map.next_key_seed(__GaBladeName { fields: self.fields })?
+        {
+            if found[i].is_some() {
+                return ::core::result::Result::Err(
+                    <A::Error as __ga_serde::de::Error>::duplicate_field(self.fields[i]),
+                );
+            }
+            found[i] = ::core::option::Option::Some(map.next_value()?);
+        }
+        let mut out = [#zero; N];
+        for (i, slot) in out.iter_mut().enumerate() {
+            *slot = match found[i] {
+                ::core::option::Option::Some(value) => value,
+                ::core::option::Option::None => {
+                    return ::core::result::Result::Err(
+                        <A::Error as __ga_serde::de::Error>::missing_field(self.fields[i]),
+                    )
                 }
-                let mut out = [#zero; N];
-                for (i, slot) in out.iter_mut().enumerate() {
-                    *slot = match found[i] {
-                        ::core::option::Option::Some(value) => value,
-                        ::core::option::Option::None => {
-                            return ::core::result::Result::Err(
-                                <A::Error as __ga_serde::de::Error>::missing_field(self.fields[i]),
-                            )
-                        }
-                    };
-                }
-                ::core::result::Result::Ok(out)
-            }
+            };
         }
-
-        /// A blade name read as the index of its field.
-        struct __GaBladeName {
-            fields: &'static [&'static str],
-        }
-
-        impl<'de> __ga_serde::de::DeserializeSeed<'de> for __GaBladeName {
-            type Value = usize;
-
-            fn deserialize<De: __ga_serde::Deserializer<'de>>(
-                self,
-                deserializer: De,
-            ) -> ::core::result::Result<usize, De::Error> {
-                deserializer.deserialize_identifier(self)
-            }
-        }
-
-        impl<'de> __ga_serde::de::Visitor<'de> for __GaBladeName {
-            type Value = usize;
-
-            fn expecting(&self, f: &mut ::core::fmt::Formatter) -> ::core::fmt::Result {
-                ::core::write!(f, "one of the blades {:?}", self.fields)
-            }
-
-            fn visit_str<E: __ga_serde::de::Error>(
-                self,
-                value: &str,
-            ) -> ::core::result::Result<usize, E> {
-                self.fields
-                    .iter()
-                    .position(|f| *f == value)
-                    .ok_or_else(|| E::unknown_field(value, self.fields))
-            }
-        }
-
-        #(#impls)*
+        ::core::result::Result::Ok(out)
     }
 }
+
+/// A blade name read as the index of its field.
+struct __GaBladeName {
+    fields: &'static [&'static str],
+}
+
+impl<'de> __ga_serde::de::DeserializeSeed<'de> for __GaBladeName {
+    type Value = usize;
+
+    fn deserialize<De: __ga_serde::Deserializer<'de>>(
+        self,
+        deserializer: De,
+    ) -> ::core::result::Result<usize, De::Error> {
+        deserializer.deserialize_identifier(self)
+    }
+}
+
+impl<'de> __ga_serde::de::Visitor<'de> for __GaBladeName {
+    type Value = usize;
+
+    fn expecting(&self, f: &mut ::core::fmt::Formatter) -> ::core::fmt::Result {
+        ::core::write!(f, "one of the blades {:?}", self.fields)
+    }
+
+    fn visit_str<E: __ga_serde::de::Error>(
+        self,
+        value: &str,
+    ) -> ::core::result::Result<usize, E> {
+        self.fields
+            .iter()
+            .position(|f| *f == value)
+            .ok_or_else(|| E::unknown_field(value, self.fields))
+    }
+}
+
+#impls
+"#;
 
 /// `Pod` and `Zeroable`: every type is `#[repr(C)]` with fields of one float type only,
 /// so it has no padding, and every bit pattern (zero included) is a valid value.
@@ -315,51 +322,57 @@ fn mint(plan: &Plan) -> TokenStream {
     if plan.emitted.contains(&even) {
         let name = type_tokens(plan, even);
         let (one, two) = (float(1.0), float(2.0));
-        out.extend(quote! {
-            impl ::core::convert::From<__ga_mint::Quaternion<#s>> for #name {
-                #[inline]
-                fn from(q: __ga_mint::Quaternion<#s>) -> Self {
-                    Self::new(q.s, -q.v.z, q.v.y, -q.v.x)
-                }
-            }
-
-            impl ::core::convert::From<#name> for __ga_mint::Quaternion<#s> {
-                #[inline]
-                fn from(r: #name) -> Self {
-                    __ga_mint::Quaternion {
-                        v: __ga_mint::Vector3 { x: -r.e23, y: r.e13, z: -r.e12 },
-                        s: r.s,
-                    }
-                }
-            }
-
-            impl ::core::convert::From<#name> for __ga_mint::ColumnMatrix3<#s> {
-                /// The matrix of `x -> R x ~R` for a unit rotor: columns the images of
-                /// e1, e2, e3 (the unit quaternion's matrix under the mapping above).
-                #[inline]
-                fn from(r: #name) -> Self {
-                    let (w, x, y, z) = (r.s, -r.e23, r.e13, -r.e12);
-                    let column = |x, y, z| __ga_mint::Vector3 { x, y, z };
-                    __ga_mint::ColumnMatrix3 {
-                        x: column(
-                            #one - #two * (y * y + z * z),
-                            #two * (x * y + w * z),
-                            #two * (x * z - w * y),
-                        ),
-                        y: column(
-                            #two * (x * y - w * z),
-                            #one - #two * (x * x + z * z),
-                            #two * (y * z + w * x),
-                        ),
-                        z: column(
-                            #two * (x * z + w * y),
-                            #two * (y * z - w * x),
-                            #one - #two * (x * x + y * y),
-                        ),
-                    }
-                }
-            }
-        });
+        out.extend(super::template::fill(
+            MINT_EVEN,
+            &[("s", &s), ("name", &name), ("one", &one), ("two", &two)],
+        ));
     }
     out
 }
+
+/// `From` between `Even` and mint's quaternion and matrix (`#name` the type).
+const MINT_EVEN: &str = r#"
+impl ::core::convert::From<__ga_mint::Quaternion<#s>> for #name {
+    #[inline]
+    fn from(q: __ga_mint::Quaternion<#s>) -> Self {
+        Self::new(q.s, -q.v.z, q.v.y, -q.v.x)
+    }
+}
+
+impl ::core::convert::From<#name> for __ga_mint::Quaternion<#s> {
+    #[inline]
+    fn from(r: #name) -> Self {
+        __ga_mint::Quaternion {
+            v: __ga_mint::Vector3 { x: -r.e23, y: r.e13, z: -r.e12 },
+            s: r.s,
+        }
+    }
+}
+
+impl ::core::convert::From<#name> for __ga_mint::ColumnMatrix3<#s> {
+    /// The matrix of `x -> R x ~R` for a unit rotor: columns the images of
+    /// e1, e2, e3 (the unit quaternion's matrix under the mapping above).
+    #[inline]
+    fn from(r: #name) -> Self {
+        let (w, x, y, z) = (r.s, -r.e23, r.e13, -r.e12);
+        let column = |x, y, z| __ga_mint::Vector3 { x, y, z };
+        __ga_mint::ColumnMatrix3 {
+            x: column(
+                #one - #two * (y * y + z * z),
+                #two * (x * y + w * z),
+                #two * (x * z - w * y),
+            ),
+            y: column(
+                #two * (x * y - w * z),
+                #one - #two * (x * x + z * z),
+                #two * (y * z + w * x),
+            ),
+            z: column(
+                #two * (x * z + w * y),
+                #two * (y * z - w * x),
+                #one - #two * (x * x + y * y),
+            ),
+        }
+    }
+}
+"#;

@@ -5,6 +5,7 @@ mod batch;
 mod conveniences;
 mod exp_log;
 mod expr;
+#[cfg(feature = "generic")]
 mod generic;
 mod integrations;
 mod math;
@@ -13,13 +14,14 @@ mod products;
 mod projective;
 mod simd;
 mod sin_cos;
+mod template;
 mod types;
 mod unary;
 mod versor;
+#[cfg(feature = "wgsl")]
 mod wgsl;
-mod wgsl_exp_log;
 
-#[cfg(test)]
+#[cfg(all(test, feature = "wgsl"))]
 pub use wgsl::wgsl_source;
 
 use proc_macro2::TokenStream;
@@ -33,8 +35,12 @@ pub fn module_items(spec: &Spec, plan: &Plan) -> TokenStream {
     let n = plan.metric.dimension();
     let mut items = types::emit_support_items(plan);
     if spec.generic_scalar.is_some() {
-        items.extend(generic::emit_math());
-        items.extend(generic::emit_defaults(plan));
+        // Without the `generic` feature validation refuses a generic scalar.
+        #[cfg(feature = "generic")]
+        {
+            items.extend(generic::emit_math());
+            items.extend(generic::emit_defaults(plan));
+        }
     } else if plan.lanes.is_none() {
         items.extend(math::emit_math(plan, &spec.math));
     }
@@ -74,24 +80,25 @@ pub fn module_items(spec: &Spec, plan: &Plan) -> TokenStream {
         items.extend(unary::emit_multivector_inverse(plan));
         items.extend(versor::emit_multivector_helpers(plan));
     }
-    let bivector = TypeId::grade(2);
-    let has_exp = n >= 2 && plan.has(Op::Exp) && plan.emitted.contains(&bivector);
-    let has_log =
-        (2..=4).contains(&n) && plan.has(Op::Log) && plan.emitted.contains(&TypeId::even(n));
-    if has_exp {
-        items.extend(exp_log::emit_exp(plan));
+    let (exp, log) = (plan.exp_form(), plan.log_form());
+    if let Some(form) = exp {
+        items.extend(exp_log::emit_exp(plan, form));
     }
-    if has_log {
-        items.extend(exp_log::emit_log(plan));
+    if let Some(form) = log {
+        items.extend(exp_log::emit_log(plan, form));
     }
-    if has_exp || has_log {
+    if exp.is_some() || log.is_some() {
         items.extend(exp_log::emit_scalar_functions(plan));
     }
     items.extend(integrations::emit_integrations(spec, plan));
+    #[cfg(feature = "wgsl")]
     items.extend(wgsl::emit_wgsl(spec, plan));
     if plan.lanes.is_none() {
+        // The batch modules are this emitter run again on a batch plan.
         for &lanes in &spec.lanes {
-            items.extend(batch::emit_batch_module(spec, plan, lanes));
+            let batch = plan.batch(lanes);
+            let batch_items = module_items(spec, &batch);
+            items.extend(batch::emit_batch_module(&batch, lanes, batch_items));
         }
     }
     items
@@ -99,10 +106,12 @@ pub fn module_items(spec: &Spec, plan: &Plan) -> TokenStream {
 
 /// The whole module: the user's attributes and visibility around the items.
 pub fn module(spec: &Spec, plan: &Plan) -> TokenStream {
-    let mut items = module_items(spec, plan);
-    if let Some(path) = &spec.generic_scalar {
-        items = generic::rewrite(items, path);
-    }
+    let items = module_items(spec, plan);
+    #[cfg(feature = "generic")]
+    let items = match &spec.generic_scalar {
+        Some(path) => generic::rewrite(items, path),
+        None => items,
+    };
     let (attrs, vis, name) = (&spec.attrs, &spec.vis, &spec.name);
     // Generated code follows the sign table term by term (`a.s * b.s - a.e12 * b.e12`,
     // constructors with one argument per component), which clippy's style lints would

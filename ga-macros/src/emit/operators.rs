@@ -4,13 +4,12 @@ use proc_macro2::TokenStream;
 use quote::quote;
 
 use super::expr::{construct, output_type, scalar_type, type_tokens, Operand};
-use super::products::operand_pairs;
 use crate::plan::{Output, Plan, TypeId};
 
 /// Sums and differences of every pair, negation and scalar division of every type.
 pub fn emit_operators(plan: &Plan) -> TokenStream {
     let mut out = TokenStream::new();
-    for (a, b) in operand_pairs(plan) {
+    for (a, b) in plan.operand_pairs() {
         out.extend(sum_impl(plan, a, b, false));
         out.extend(sum_impl(plan, a, b, true));
     }

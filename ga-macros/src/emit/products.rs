@@ -105,28 +105,12 @@ pub fn term_count(plan: &Plan, kind: ProductKind, lhs: TypeId, rhs: TypeId) -> u
     .sum()
 }
 
-/// The operand pairs that get products: the scalar and every paired type, both ways.
-pub fn operand_pairs(plan: &Plan) -> Vec<(TypeId, TypeId)> {
-    let operands: Vec<TypeId> = std::iter::once(TypeId::SCALAR)
-        .chain(plan.paired.iter().copied())
-        .collect();
-    let mut pairs = Vec::new();
-    for &a in &operands {
-        for &b in &operands {
-            if !(a == TypeId::SCALAR && b == TypeId::SCALAR) {
-                pairs.push((a, b));
-            }
-        }
-    }
-    pairs
-}
-
 /// The trait impls of every product, and the `TERM_COUNTS` table.
 pub fn emit_products(plan: &Plan) -> TokenStream {
     let mut impls = TokenStream::new();
     let mut counts = Vec::new();
     for &kind in &plan.products {
-        for (a, b) in operand_pairs(plan) {
+        for (a, b) in plan.operand_pairs() {
             impls.extend(product_impl(plan, kind, a, b));
             let (kind_name, a_name, b_name) = (
                 kind.name(),

@@ -17,7 +17,7 @@ pub fn module_uses_lanes(plan: &Plan) -> bool {
         return false;
     }
     let products = plan.products.iter().any(|&kind| {
-        super::products::operand_pairs(plan)
+        plan.operand_pairs()
             .into_iter()
             .any(|(a, b)| plan.lane_form(kind, a, b).is_some())
     });
@@ -53,121 +53,124 @@ pub fn target_arms(simd: TokenStream, scalar: TokenStream) -> TokenStream {
 /// broadcast, a swizzle, a sign flip and a lane mask. Every `unsafe` block of the
 /// generated code is here.
 pub fn emit_lane_helpers() -> TokenStream {
-    quote! {
-        /// Four `f32` lanes in one SSE register: the form that products of types with at
-        /// most four components take on x86-64 (see `plan/lanes.rs` in ga-macros).
-        ///
-        /// Every intrinsic used here is SSE or SSE2, which every x86-64 CPU has (they are
-        /// part of the architecture's baseline, enabled for every x86-64 target), so each
-        /// `unsafe` block below only asserts that the instruction exists.
-        #[cfg(target_arch = "x86_64")]
-        mod simd {
-            use ::core::arch::x86_64::{
-                __m128, _mm_add_ps, _mm_and_ps, _mm_castsi128_ps, _mm_mul_ps, _mm_set1_ps,
-                _mm_set_epi32, _mm_set_ps, _mm_shuffle_ps, _mm_sub_ps, _mm_xor_ps,
-            };
+    super::template::fill(LANE_HELPERS, &[])
+}
 
-            /// Four `f32` lanes.
-            #[derive(Clone, Copy)]
-            pub(super) struct F32x4(__m128);
+/// The `simd` module (no placeholders).
+const LANE_HELPERS: &str = r#"
+/// Four `f32` lanes in one SSE register: the form that products of types with at
+/// most four components take on x86-64 (see `plan/lanes.rs` in ga-macros).
+///
+/// Every intrinsic used here is SSE or SSE2, which every x86-64 CPU has (they are
+/// part of the architecture's baseline, enabled for every x86-64 target), so each
+/// `unsafe` block below only asserts that the instruction exists.
+#[cfg(target_arch = "x86_64")]
+mod simd {
+    use ::core::arch::x86_64::{
+        __m128, _mm_add_ps, _mm_and_ps, _mm_castsi128_ps, _mm_mul_ps, _mm_set1_ps,
+        _mm_set_epi32, _mm_set_ps, _mm_shuffle_ps, _mm_sub_ps, _mm_xor_ps,
+    };
 
-            /// The immediate of `_mm_shuffle_ps` that puts lane `order[i]` in lane `i`.
-            pub(super) const fn order(l0: i32, l1: i32, l2: i32, l3: i32) -> i32 {
-                l0 | (l1 << 2) | (l2 << 4) | (l3 << 6)
-            }
+    /// Four `f32` lanes.
+    #[derive(Clone, Copy)]
+    pub(super) struct F32x4(__m128);
 
-            impl F32x4 {
-                /// The lanes of an array, lane 0 first.
-                #[inline(always)]
-                pub(super) fn new(lanes: [f32; 4]) -> Self {
-                    // SAFETY: `[f32; 4]` and `__m128` are both 16 bytes, and every bit
-                    // pattern is a valid value of either.
-                    F32x4(unsafe { ::core::mem::transmute::<[f32; 4], __m128>(lanes) })
-                }
+    /// The immediate of `_mm_shuffle_ps` that puts lane `order[i]` in lane `i`.
+    pub(super) const fn order(l0: i32, l1: i32, l2: i32, l3: i32) -> i32 {
+        l0 | (l1 << 2) | (l2 << 4) | (l3 << 6)
+    }
 
-                /// The lanes as an array, lane 0 first.
-                #[inline(always)]
-                pub(super) fn to_array(self) -> [f32; 4] {
-                    // SAFETY: as in `new`.
-                    unsafe { ::core::mem::transmute::<__m128, [f32; 4]>(self.0) }
-                }
+    impl F32x4 {
+        /// The lanes of an array, lane 0 first.
+        #[inline(always)]
+        pub(super) fn new(lanes: [f32; 4]) -> Self {
+            // SAFETY: `[f32; 4]` and `__m128` are both 16 bytes, and every bit
+            // pattern is a valid value of either.
+            F32x4(unsafe { ::core::mem::transmute::<[f32; 4], __m128>(lanes) })
+        }
 
-                /// `x` in every lane.
-                #[inline(always)]
-                pub(super) fn splat(x: f32) -> Self {
-                    // SAFETY: SSE is in the x86-64 baseline.
-                    F32x4(unsafe { _mm_set1_ps(x) })
-                }
+        /// The lanes as an array, lane 0 first.
+        #[inline(always)]
+        pub(super) fn to_array(self) -> [f32; 4] {
+            // SAFETY: as in `new`.
+            unsafe { ::core::mem::transmute::<__m128, [f32; 4]>(self.0) }
+        }
 
-                /// Lane `i` of the result is lane `order[i]` of `self`; `ORDER` is
-                /// [`order`]'s immediate.
-                #[inline(always)]
-                pub(super) fn swizzle<const ORDER: i32>(self) -> Self {
-                    // SAFETY: SSE is in the x86-64 baseline.
-                    F32x4(unsafe { _mm_shuffle_ps::<ORDER>(self.0, self.0) })
-                }
+        /// `x` in every lane.
+        #[inline(always)]
+        pub(super) fn splat(x: f32) -> Self {
+            // SAFETY: SSE is in the x86-64 baseline.
+            F32x4(unsafe { _mm_set1_ps(x) })
+        }
 
-                /// Flips the sign of the lanes marked `true` (one xor with a constant).
-                #[inline(always)]
-                pub(super) fn negate(self, lanes: [bool; 4]) -> Self {
-                    let sign = |flip: bool| if flip { -0.0 } else { 0.0 };
-                    // SAFETY: SSE is in the x86-64 baseline.
-                    F32x4(unsafe {
-                        _mm_xor_ps(
-                            self.0,
-                            _mm_set_ps(sign(lanes[3]), sign(lanes[2]), sign(lanes[1]), sign(lanes[0])),
-                        )
-                    })
-                }
+        /// Lane `i` of the result is lane `order[i]` of `self`; `ORDER` is
+        /// [`order`]'s immediate.
+        #[inline(always)]
+        pub(super) fn swizzle<const ORDER: i32>(self) -> Self {
+            // SAFETY: SSE is in the x86-64 baseline.
+            F32x4(unsafe { _mm_shuffle_ps::<ORDER>(self.0, self.0) })
+        }
 
-                /// Clears the lanes marked `false` (one and with a constant).
-                #[inline(always)]
-                pub(super) fn keep(self, lanes: [bool; 4]) -> Self {
-                    let bits = |keep: bool| if keep { -1 } else { 0 };
-                    // SAFETY: SSE and SSE2 are in the x86-64 baseline.
-                    F32x4(unsafe {
-                        _mm_and_ps(
-                            self.0,
-                            _mm_castsi128_ps(_mm_set_epi32(
-                                bits(lanes[3]),
-                                bits(lanes[2]),
-                                bits(lanes[1]),
-                                bits(lanes[0]),
-                            )),
-                        )
-                    })
-                }
-            }
+        /// Flips the sign of the lanes marked `true` (one xor with a constant).
+        #[inline(always)]
+        pub(super) fn negate(self, lanes: [bool; 4]) -> Self {
+            let sign = |flip: bool| if flip { -0.0 } else { 0.0 };
+            // SAFETY: SSE is in the x86-64 baseline.
+            F32x4(unsafe {
+                _mm_xor_ps(
+                    self.0,
+                    _mm_set_ps(sign(lanes[3]), sign(lanes[2]), sign(lanes[1]), sign(lanes[0])),
+                )
+            })
+        }
 
-            impl ::core::ops::Add for F32x4 {
-                type Output = F32x4;
-                #[inline(always)]
-                fn add(self, rhs: F32x4) -> F32x4 {
-                    // SAFETY: SSE is in the x86-64 baseline.
-                    F32x4(unsafe { _mm_add_ps(self.0, rhs.0) })
-                }
-            }
+        /// Clears the lanes marked `false` (one and with a constant).
+        #[inline(always)]
+        pub(super) fn keep(self, lanes: [bool; 4]) -> Self {
+            let bits = |keep: bool| if keep { -1 } else { 0 };
+            // SAFETY: SSE and SSE2 are in the x86-64 baseline.
+            F32x4(unsafe {
+                _mm_and_ps(
+                    self.0,
+                    _mm_castsi128_ps(_mm_set_epi32(
+                        bits(lanes[3]),
+                        bits(lanes[2]),
+                        bits(lanes[1]),
+                        bits(lanes[0]),
+                    )),
+                )
+            })
+        }
+    }
 
-            impl ::core::ops::Sub for F32x4 {
-                type Output = F32x4;
-                #[inline(always)]
-                fn sub(self, rhs: F32x4) -> F32x4 {
-                    // SAFETY: SSE is in the x86-64 baseline.
-                    F32x4(unsafe { _mm_sub_ps(self.0, rhs.0) })
-                }
-            }
+    impl ::core::ops::Add for F32x4 {
+        type Output = F32x4;
+        #[inline(always)]
+        fn add(self, rhs: F32x4) -> F32x4 {
+            // SAFETY: SSE is in the x86-64 baseline.
+            F32x4(unsafe { _mm_add_ps(self.0, rhs.0) })
+        }
+    }
 
-            impl ::core::ops::Mul for F32x4 {
-                type Output = F32x4;
-                #[inline(always)]
-                fn mul(self, rhs: F32x4) -> F32x4 {
-                    // SAFETY: SSE is in the x86-64 baseline.
-                    F32x4(unsafe { _mm_mul_ps(self.0, rhs.0) })
-                }
-            }
+    impl ::core::ops::Sub for F32x4 {
+        type Output = F32x4;
+        #[inline(always)]
+        fn sub(self, rhs: F32x4) -> F32x4 {
+            // SAFETY: SSE is in the x86-64 baseline.
+            F32x4(unsafe { _mm_sub_ps(self.0, rhs.0) })
+        }
+    }
+
+    impl ::core::ops::Mul for F32x4 {
+        type Output = F32x4;
+        #[inline(always)]
+        fn mul(self, rhs: F32x4) -> F32x4 {
+            // SAFETY: SSE is in the x86-64 baseline.
+            F32x4(unsafe { _mm_mul_ps(self.0, rhs.0) })
         }
     }
 }
+"#;
 
 /// The body of a product in lane form: pack the gathered operand, one column per
 /// broadcast component, a balanced sum of the columns, unpack into the output type.

@@ -163,44 +163,57 @@ pub fn emit_sin_cos(scalar: Scalar) -> TokenStream {
     let pio2_2 = readable(PIO2_2);
     let pio2_3 = readable(PIO2_3);
     let reduced_max = Literal::f64_unsuffixed(REDUCED_MAX);
-    quote! {
-        /// `(sin x, cos x)` by one reduction to `|r| <= pi/4` and two polynomials, for
-        /// `|x| <= 2^19`; beyond that, and for NaN and infinities, the library's.
-        #[inline]
-        pub(super) fn sin_cos(x: f64) -> (f64, f64) {
-            if !(x.abs() <= #reduced_max) {
-                return sin_cos_any(x);
-            }
-            // The nearest integer to x 2/pi: adding and removing 1.5 * 2^52 rounds it.
-            let n = (x * ::core::f64::consts::FRAC_2_PI + 6755399441055744.0) - 6755399441055744.0;
-            let r = ((x - n * #pio2_1) - n * #pio2_2) - n * #pio2_3;
-            let z = r * r;
-            let z2 = z * z;
-            let z4 = z2 * z2;
-            let sin = r + r * z * #sin_series;
-            // 1 - z/2 rounded, and what that rounding lost added back.
-            let half = 0.5 * z;
-            let w = 1.0 - half;
-            let cos = w + (((1.0 - w) - half) + z2 * #cos_series);
-            quadrant(sin, cos, n as i64 as u64)
-        }
-
-        /// `(sin, cos)` of `r + q pi/2` from those of `r`: odd quadrants swap the two, and
-        /// the signs follow the quadrant, by bit operations rather than branches that
-        /// random angles would mispredict.
-        #[inline]
-        fn quadrant(sin: f64, cos: f64, q: u64) -> (f64, f64) {
-            let swap = (q & 1).wrapping_neg();
-            let (s, c) = (sin.to_bits(), cos.to_bits());
-            let first = (s & !swap) | (c & swap);
-            let second = (c & !swap) | (s & swap);
-            (
-                f64::from_bits(first ^ ((q & 2) << 62)),
-                f64::from_bits(second ^ ((q.wrapping_add(1) & 2) << 62)),
-            )
-        }
-    }
+    super::template::fill(
+        SIN_COS,
+        &[
+            ("reduced_max", &reduced_max),
+            ("pio2_1", &pio2_1),
+            ("pio2_2", &pio2_2),
+            ("pio2_3", &pio2_3),
+            ("sin_series", &sin_series),
+            ("cos_series", &cos_series),
+        ],
+    )
 }
+
+/// `sin_cos` by one reduction and two polynomials (the series and constants filled in).
+const SIN_COS: &str = r#"
+/// `(sin x, cos x)` by one reduction to `|r| <= pi/4` and two polynomials, for
+/// `|x| <= 2^19`; beyond that, and for NaN and infinities, the library's.
+#[inline]
+pub(super) fn sin_cos(x: f64) -> (f64, f64) {
+    if !(x.abs() <= #reduced_max) {
+        return sin_cos_any(x);
+    }
+    // The nearest integer to x 2/pi: adding and removing 1.5 * 2^52 rounds it.
+    let n = (x * ::core::f64::consts::FRAC_2_PI + 6755399441055744.0) - 6755399441055744.0;
+    let r = ((x - n * #pio2_1) - n * #pio2_2) - n * #pio2_3;
+    let z = r * r;
+    let z2 = z * z;
+    let z4 = z2 * z2;
+    let sin = r + r * z * #sin_series;
+    // 1 - z/2 rounded, and what that rounding lost added back.
+    let half = 0.5 * z;
+    let w = 1.0 - half;
+    let cos = w + (((1.0 - w) - half) + z2 * #cos_series);
+    quadrant(sin, cos, n as i64 as u64)
+}
+
+/// `(sin, cos)` of `r + q pi/2` from those of `r`: odd quadrants swap the two, and
+/// the signs follow the quadrant, by bit operations rather than branches that
+/// random angles would mispredict.
+#[inline]
+fn quadrant(sin: f64, cos: f64, q: u64) -> (f64, f64) {
+    let swap = (q & 1).wrapping_neg();
+    let (s, c) = (sin.to_bits(), cos.to_bits());
+    let first = (s & !swap) | (c & swap);
+    let second = (c & !swap) | (s & swap);
+    (
+        f64::from_bits(first ^ ((q & 2) << 62)),
+        f64::from_bits(second ^ ((q.wrapping_add(1) & 2) << 62)),
+    )
+}
+"#;
 
 #[cfg(test)]
 mod tests {

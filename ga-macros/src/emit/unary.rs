@@ -166,66 +166,77 @@ fn norms(plan: &Plan, t: TypeId) -> TokenStream {
     let indices = nondegenerate(plan, t);
     let largest = largest_abs(plan, &this, &indices);
     let descaled = descaled(plan, &this, &quote!(largest));
-    quote! {
-        /// `<A ~A>_0`: the squared norm (negative or zero for some elements of
-        /// non-Euclidean metrics). Computed as it stands, so it overflows once a component
-        /// passes the square root of the largest float; `norm` does not.
-        #[inline]
-        #[must_use]
-        pub fn norm_squared(self) -> #s {
-            #sum
-        }
+    super::template::fill(
+        NORMS,
+        &[
+            ("s", &s),
+            ("sum", &sum),
+            ("largest", &largest),
+            ("descaled", &descaled),
+        ],
+    )
+}
 
-        /// `sqrt(|<A ~A>_0|)`, right to a few ulps for every finite `A` whose norm is
-        /// finite: when the squares could have overflowed or underflowed, the components
-        /// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
-        #[inline]
-        #[must_use]
-        pub fn norm(self) -> #s {
-            let squared = self.norm_squared().abs();
-            // The common case costs one comparison: the unscaled sum is exact enough.
-            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
-                return math::sqrt(squared);
-            }
-            let largest: #s = #largest;
-            if !(largest > 0.0 && largest < #s::INFINITY) {
-                // Zero, NaN or infinite components: the unscaled value is the answer.
-                return if largest == #s::INFINITY { largest } else { math::sqrt(squared) };
-            }
-            let descaled = #descaled;
-            math::sqrt(descaled.norm_squared().abs()) * largest
-        }
+/// `norm_squared`, `norm` and `normalized` of one type (`#s` the scalar type).
+const NORMS: &str = r#"
+/// `<A ~A>_0`: the squared norm (negative or zero for some elements of
+/// non-Euclidean metrics). Computed as it stands, so it overflows once a component
+/// passes the square root of the largest float; `norm` does not.
+#[inline]
+#[must_use]
+pub fn norm_squared(self) -> #s {
+    #sum
+}
 
-        /// `self / self.norm()`, scaled like `norm` so that it is a unit value for every
-        /// finite non-null `A`; non-finite when the norm is zero or not finite (see
-        /// `try_normalized`).
-        #[inline]
-        #[must_use]
-        pub fn normalized(self) -> Self {
-            let squared = self.norm_squared().abs();
-            // Here 1 / sqrt(squared) is a normal number: one multiply per component.
-            if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
-                return self * (1.0 / math::sqrt(squared));
-            }
-            let largest: #s = #largest;
-            let descaled = #descaled;
-            descaled * (1.0 / math::sqrt(descaled.norm_squared().abs()))
-        }
+/// `sqrt(|<A ~A>_0|)`, right to a few ulps for every finite `A` whose norm is
+/// finite: when the squares could have overflowed or underflowed, the components
+/// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
+#[inline]
+#[must_use]
+pub fn norm(self) -> #s {
+    let squared = self.norm_squared().abs();
+    // The common case costs one comparison: the unscaled sum is exact enough.
+    if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+        return math::sqrt(squared);
+    }
+    let largest: #s = #largest;
+    if !(largest > 0.0 && largest < #s::INFINITY) {
+        // Zero, NaN or infinite components: the unscaled value is the answer.
+        return if largest == #s::INFINITY { largest } else { math::sqrt(squared) };
+    }
+    let descaled = #descaled;
+    math::sqrt(descaled.norm_squared().abs()) * largest
+}
 
-        /// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
-        /// not finite.
-        #[inline]
-        #[must_use]
-        pub fn try_normalized(self) -> Option<Self> {
-            let normalized = self.normalized();
-            if normalized.to_array().iter().all(|c| c.is_finite()) {
-                Some(normalized)
-            } else {
-                None
-            }
-        }
+/// `self / self.norm()`, scaled like `norm` so that it is a unit value for every
+/// finite non-null `A`; non-finite when the norm is zero or not finite (see
+/// `try_normalized`).
+#[inline]
+#[must_use]
+pub fn normalized(self) -> Self {
+    let squared = self.norm_squared().abs();
+    // Here 1 / sqrt(squared) is a normal number: one multiply per component.
+    if squared >= SQUARE_MIN && squared <= SQUARE_MAX {
+        return self * (1.0 / math::sqrt(squared));
+    }
+    let largest: #s = #largest;
+    let descaled = #descaled;
+    descaled * (1.0 / math::sqrt(descaled.norm_squared().abs()))
+}
+
+/// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
+/// not finite.
+#[inline]
+#[must_use]
+pub fn try_normalized(self) -> Option<Self> {
+    let normalized = self.normalized();
+    if normalized.to_array().iter().all(|c| c.is_finite()) {
+        Some(normalized)
+    } else {
+        None
     }
 }
+"#;
 
 fn inverse(plan: &Plan, t: TypeId) -> TokenStream {
     let output = plan.inverse_output(t);
@@ -376,146 +387,158 @@ pub fn emit_multivector_inverse(plan: &Plan) -> TokenStream {
         });
         quote!([#(#entries),*])
     });
+    let rows = quote!([#(#rows),*]);
     let bound_doc = inverse_bound_doc(plan);
-    quote! {
-        /// `LEFT[i][j] = (k, sign)`: `e_i e_j = sign e_k` by component index. Used only by
-        /// the general inverse, never by a product.
-        #[allow(dead_code)]
-        const LEFT: [[(usize, i8); #len]; #len] = [#(#rows),*];
+    super::template::fill(
+        INVERSE_SOLVER,
+        &[
+            ("len", &len),
+            ("rows", &rows),
+            ("bound_doc", &bound_doc),
+            ("to_f64_and_back", &to_f64_and_back),
+        ],
+    )
+}
 
-        /// The relative error (summing absolute values) that a general inverse's `f64`
-        /// solution is certified to before it is returned: 2^-26, half the digits.
-        #[allow(dead_code)]
-        const INVERSE_TOLERANCE: f64 = 1.0 / 67_108_864.0;
+/// The general inverse in `f64`: the product table `LEFT`, the tolerance, and the solve with its one refinement.
+const INVERSE_SOLVER: &str = r#"
+/// `LEFT[i][j] = (k, sign)`: `e_i e_j = sign e_k` by component index. Used only by
+/// the general inverse, never by a product.
+#[allow(dead_code)]
+const LEFT: [[(usize, i8); #len]; #len] = #rows;
 
-        /// `a b` in `f64` through `LEFT`: the residual's product, each component a sum of
-        /// `len` signed products of one component of each.
-        #[allow(dead_code)]
-        fn left_product(a: &[f64; #len], b: &[f64; #len]) -> [f64; #len] {
-            let mut out = [0.0f64; #len];
-            for (i, &ai) in a.iter().enumerate() {
-                for (j, &(k, sign)) in LEFT[i].iter().enumerate() {
-                    if sign != 0 {
-                        out[k] += f64::from(sign) * (ai * b[j]);
-                    }
-                }
-            }
-            out
-        }
+/// The relative error (summing absolute values) that a general inverse's `f64`
+/// solution is certified to before it is returned: 2^-26, half the digits.
+#[allow(dead_code)]
+const INVERSE_TOLERANCE: f64 = 1.0 / 67_108_864.0;
 
-        /// Solves `A X = 1` by Gaussian elimination with partial pivoting on `A` divided by
-        /// its largest component, refines `X` once by the residual, and returns it only when
-        /// the residual certifies it. `None` when a pivot vanishes relative to the largest
-        /// entry (1), or when the certificate fails: the matrix is singular or too
-        /// ill-conditioned for the tolerance (a condition number, summing absolute
-        /// values, beyond about `2^-27 / ((len + 2) f64::EPSILON)`: 3e6 for 8 components).
-        ///
-        /// The certificate: with `r = A X - 1`, `X - A^-1 = A^-1 r`, and the sum of absolute
-        /// values `|.|` is submultiplicative for a metric of squares 1, -1 and 0, so
-        /// `|X - A^-1| <= |A^-1| |r|`. The computed residual is off by at most
-        /// `(len + 1) u |A| |X|` plus the underflow of `len^2` products; `|r|`, with those
-        /// added twice over, must be at most half of `INVERSE_TOLERANCE`.
-        #[allow(dead_code)]
-        fn inverse_f64(a: [f64; #len]) -> Option<[f64; #len]> {
-            let largest = a.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-            if !(largest > 0.0) || !largest.is_finite() {
-                return None;
-            }
-            // Solve for A / largest, whose entries are at most 1, so that the elimination
-            // neither overflows nor underflows; then X = (A / largest)^-1 / largest.
-            let scaled = a.map(|v| v / largest);
-            let mut m = [[0.0f64; #len]; #len];
-            for (i, &ai) in scaled.iter().enumerate() {
-                for (j, &(k, sign)) in LEFT[i].iter().enumerate() {
-                    m[k][j] += f64::from(sign) * ai;
-                }
-            }
-            // LU in place: U above the diagonal, the multipliers of L below it, and the
-            // row order in `order`.
-            let mut order = [0usize; #len];
-            for (i, slot) in order.iter_mut().enumerate() {
-                *slot = i;
-            }
-            let tolerance = f64::EPSILON * (#len as f64);
-            for col in 0..#len {
-                let mut pivot = col;
-                for row in col + 1..#len {
-                    if m[row][col].abs() > m[pivot][col].abs() {
-                        pivot = row;
-                    }
-                }
-                if !(m[pivot][col].abs() > tolerance) {
-                    return None;
-                }
-                m.swap(col, pivot);
-                order.swap(col, pivot);
-                for row in col + 1..#len {
-                    let factor = m[row][col] / m[col][col];
-                    m[row][col] = factor;
-                    if factor != 0.0 {
-                        for c in col + 1..#len {
-                            m[row][c] -= factor * m[col][c];
-                        }
-                    }
-                }
-            }
-            let solve = |rhs: &[f64; #len]| {
-                let mut y = [0.0f64; #len];
-                for row in 0..#len {
-                    let mut sum = rhs[order[row]];
-                    for c in 0..row {
-                        sum -= m[row][c] * y[c];
-                    }
-                    y[row] = sum;
-                }
-                for row in (0..#len).rev() {
-                    let mut sum = y[row];
-                    for c in row + 1..#len {
-                        sum -= m[row][c] * y[c];
-                    }
-                    y[row] = sum / m[row][row];
-                }
-                y
-            };
-            let mut one = [0.0f64; #len];
-            one[0] = 1.0;
-            let mut x = solve(&one);
-            // One step of refinement: x += (A / largest)^-1 (1 - (A / largest) x).
-            let mut residual = left_product(&scaled, &x);
-            for (k, r) in residual.iter_mut().enumerate() {
-                *r = one[k] - *r;
-            }
-            let correction = solve(&residual);
-            for (v, d) in x.iter_mut().zip(correction) {
-                *v += d;
-            }
-            let x = x.map(|v| v / largest);
-            // The certificate, on the value returned and the input as given.
-            let mut residual = left_product(&a, &x);
-            residual[0] -= 1.0;
-            let residual_sum = residual.iter().fold(0.0f64, |sum, r| sum + r.abs());
-            let a_sum = a.iter().fold(0.0f64, |sum, v| sum + (v / largest).abs());
-            let x_sum = x.iter().fold(0.0f64, |sum, v| sum + (v * largest).abs());
-            let bound = residual_sum
-                + (#len as f64 + 2.0) * f64::EPSILON * (a_sum * x_sum)
-                + (#len as f64 * #len as f64) * (f64::MIN_POSITIVE * f64::EPSILON);
-            if bound <= 0.5 * INVERSE_TOLERANCE && x.iter().all(|v| v.is_finite()) {
-                Some(x)
-            } else {
-                None
-            }
-        }
-
-        /// The inverse of any multivector, or `None`. See `inverse_f64` for the method.
-        #[doc = #bound_doc]
-        #[allow(dead_code)]
-        fn multivector_inverse(a: Multivector) -> Option<Multivector> {
-            #to_f64_and_back
-            if x.iter().all(|v| v.is_finite()) {
-                Some(Multivector::from_array(x))
-            } else {
-                None
+/// `a b` in `f64` through `LEFT`: the residual's product, each component a sum of
+/// `len` signed products of one component of each.
+#[allow(dead_code)]
+fn left_product(a: &[f64; #len], b: &[f64; #len]) -> [f64; #len] {
+    let mut out = [0.0f64; #len];
+    for (i, &ai) in a.iter().enumerate() {
+        for (j, &(k, sign)) in LEFT[i].iter().enumerate() {
+            if sign != 0 {
+                out[k] += f64::from(sign) * (ai * b[j]);
             }
         }
     }
+    out
 }
+
+/// Solves `A X = 1` by Gaussian elimination with partial pivoting on `A` divided by
+/// its largest component, refines `X` once by the residual, and returns it only when
+/// the residual certifies it. `None` when a pivot vanishes relative to the largest
+/// entry (1), or when the certificate fails: the matrix is singular or too
+/// ill-conditioned for the tolerance (a condition number, summing absolute
+/// values, beyond about `2^-27 / ((len + 2) f64::EPSILON)`: 3e6 for 8 components).
+///
+/// The certificate: with `r = A X - 1`, `X - A^-1 = A^-1 r`, and the sum of absolute
+/// values `|.|` is submultiplicative for a metric of squares 1, -1 and 0, so
+/// `|X - A^-1| <= |A^-1| |r|`. The computed residual is off by at most
+/// `(len + 1) u |A| |X|` plus the underflow of `len^2` products; `|r|`, with those
+/// added twice over, must be at most half of `INVERSE_TOLERANCE`.
+#[allow(dead_code)]
+fn inverse_f64(a: [f64; #len]) -> Option<[f64; #len]> {
+    let largest = a.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    if !(largest > 0.0) || !largest.is_finite() {
+        return None;
+    }
+    // Solve for A / largest, whose entries are at most 1, so that the elimination
+    // neither overflows nor underflows; then X = (A / largest)^-1 / largest.
+    let scaled = a.map(|v| v / largest);
+    let mut m = [[0.0f64; #len]; #len];
+    for (i, &ai) in scaled.iter().enumerate() {
+        for (j, &(k, sign)) in LEFT[i].iter().enumerate() {
+            m[k][j] += f64::from(sign) * ai;
+        }
+    }
+    // LU in place: U above the diagonal, the multipliers of L below it, and the
+    // row order in `order`.
+    let mut order = [0usize; #len];
+    for (i, slot) in order.iter_mut().enumerate() {
+        *slot = i;
+    }
+    let tolerance = f64::EPSILON * (#len as f64);
+    for col in 0..#len {
+        let mut pivot = col;
+        for row in col + 1..#len {
+            if m[row][col].abs() > m[pivot][col].abs() {
+                pivot = row;
+            }
+        }
+        if !(m[pivot][col].abs() > tolerance) {
+            return None;
+        }
+        m.swap(col, pivot);
+        order.swap(col, pivot);
+        for row in col + 1..#len {
+            let factor = m[row][col] / m[col][col];
+            m[row][col] = factor;
+            if factor != 0.0 {
+                for c in col + 1..#len {
+                    m[row][c] -= factor * m[col][c];
+                }
+            }
+        }
+    }
+    let solve = |rhs: &[f64; #len]| {
+        let mut y = [0.0f64; #len];
+        for row in 0..#len {
+            let mut sum = rhs[order[row]];
+            for c in 0..row {
+                sum -= m[row][c] * y[c];
+            }
+            y[row] = sum;
+        }
+        for row in (0..#len).rev() {
+            let mut sum = y[row];
+            for c in row + 1..#len {
+                sum -= m[row][c] * y[c];
+            }
+            y[row] = sum / m[row][row];
+        }
+        y
+    };
+    let mut one = [0.0f64; #len];
+    one[0] = 1.0;
+    let mut x = solve(&one);
+    // One step of refinement: x += (A / largest)^-1 (1 - (A / largest) x).
+    let mut residual = left_product(&scaled, &x);
+    for (k, r) in residual.iter_mut().enumerate() {
+        *r = one[k] - *r;
+    }
+    let correction = solve(&residual);
+    for (v, d) in x.iter_mut().zip(correction) {
+        *v += d;
+    }
+    let x = x.map(|v| v / largest);
+    // The certificate, on the value returned and the input as given.
+    let mut residual = left_product(&a, &x);
+    residual[0] -= 1.0;
+    let residual_sum = residual.iter().fold(0.0f64, |sum, r| sum + r.abs());
+    let a_sum = a.iter().fold(0.0f64, |sum, v| sum + (v / largest).abs());
+    let x_sum = x.iter().fold(0.0f64, |sum, v| sum + (v * largest).abs());
+    let bound = residual_sum
+        + (#len as f64 + 2.0) * f64::EPSILON * (a_sum * x_sum)
+        + (#len as f64 * #len as f64) * (f64::MIN_POSITIVE * f64::EPSILON);
+    if bound <= 0.5 * INVERSE_TOLERANCE && x.iter().all(|v| v.is_finite()) {
+        Some(x)
+    } else {
+        None
+    }
+}
+
+/// The inverse of any multivector, or `None`. See `inverse_f64` for the method.
+#[doc = #bound_doc]
+#[allow(dead_code)]
+fn multivector_inverse(a: Multivector) -> Option<Multivector> {
+    #to_f64_and_back
+    if x.iter().all(|v| v.is_finite()) {
+        Some(Multivector::from_array(x))
+    } else {
+        None
+    }
+}
+"#;

@@ -3,11 +3,13 @@
 
 pub mod collected;
 pub mod cost;
+mod exp_log_form;
 pub mod lanes;
 pub mod sandwich_form;
 mod terms;
 mod types;
 
+pub use exp_log_form::ExpLogForm;
 pub use lanes::{LaneProduct, Side};
 pub use sandwich_form::{PairColumns, SandwichForm};
 pub use terms::{bilinear, quadratic_self, sandwich, Quadratic};
@@ -119,23 +121,15 @@ impl Plan {
     /// The paired types closed under what their products and operations return.
     fn needed_types(&self) -> Vec<TypeId> {
         let mut needed: BTreeSet<TypeId> = self.paired.iter().copied().collect();
-        let operands: Vec<TypeId> = std::iter::once(TypeId::SCALAR)
-            .chain(self.paired.iter().copied())
-            .collect();
-        for &a in &operands {
-            for &b in &operands {
-                if a == TypeId::SCALAR && b == TypeId::SCALAR {
-                    continue;
+        for (a, b) in self.operand_pairs() {
+            for &kind in &self.products {
+                if let Output::Type(t) = self.product_output(kind, a, b) {
+                    needed.insert(t);
                 }
-                for &kind in &self.products {
-                    if let Output::Type(t) = self.product_output(kind, a, b) {
-                        needed.insert(t);
-                    }
-                }
-                if self.has(Op::Add) {
-                    if let Output::Type(t) = self.sum_output(a, b) {
-                        needed.insert(t);
-                    }
+            }
+            if self.has(Op::Add) {
+                if let Output::Type(t) = self.sum_output(a, b) {
+                    needed.insert(t);
                 }
             }
         }
@@ -147,6 +141,23 @@ impl Plan {
         }
         needed.remove(&TypeId::SCALAR);
         needed.into_iter().collect()
+    }
+
+    /// The operand pairs that get products and sums: the scalar and every paired type,
+    /// both ways, in the order the emitters write them (scalar with scalar left out).
+    pub fn operand_pairs(&self) -> Vec<(TypeId, TypeId)> {
+        let operands: Vec<TypeId> = std::iter::once(TypeId::SCALAR)
+            .chain(self.paired.iter().copied())
+            .collect();
+        let mut pairs = Vec::new();
+        for &a in &operands {
+            for &b in &operands {
+                if !(a == TypeId::SCALAR && b == TypeId::SCALAR) {
+                    pairs.push((a, b));
+                }
+            }
+        }
+        pairs
     }
 
     /// Types that the unary operations of `t` return or use internally.

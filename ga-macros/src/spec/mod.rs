@@ -10,3 +10,5 @@ pub use validate::{
     check_emitted, grade_type_name, validate, Integration, IntegrationKind, Math, Op, Scalar, Spec,
     TypeRequest,
 };
+#[cfg(test)]
+pub use validate::{validate_for, BackEnds};

@@ -39,11 +39,42 @@ pub struct Spec {
     pub integrations: Vec<Integration>,
     /// Shader modules to emit beside the Rust (`shaders: [wgsl]`): the `#[cfg(..)]`
     /// attributes of each `wgsl` entry (one entry at most).
+    // Without the `wgsl` feature nothing reads it: validation refuses a `wgsl` entry then.
+    #[cfg_attr(not(feature = "wgsl"), allow(dead_code))]
     pub wgsl: Option<Vec<Attribute>>,
 }
 
+/// The optional back ends a build of ga-macros carries, one cargo feature each, so that a
+/// user compiles only what their specs use; a spec that needs one that is off gets one
+/// error at its token naming the feature, not code.
+#[derive(Clone, Copy)]
+pub struct BackEnds {
+    /// `shaders: [wgsl]` (`emit/wgsl/`, feature `wgsl`).
+    pub wgsl: bool,
+    /// A scalar type other than `f32`/`f64` (`emit/generic.rs`, feature `generic`).
+    pub generic_scalar: bool,
+}
+
+impl BackEnds {
+    /// The back ends compiled into this build.
+    pub const COMPILED: BackEnds = BackEnds {
+        wgsl: cfg!(feature = "wgsl"),
+        generic_scalar: cfg!(feature = "generic"),
+    };
+}
+
+// How to turn on a missing back end: through ga-core, which most users depend on, or on
+// ga-macros itself.
+/// The error for `shaders: [wgsl]` without the `wgsl` feature.
+const WGSL_MISSING: &str = "`shaders: [wgsl]` needs ga-macros' `wgsl` feature: enable \
+     ga-core's `wgsl` feature (or ga-macros' `wgsl` feature where ga-macros is a direct \
+     dependency)";
+/// The error for a generic scalar without the `generic` feature.
+const GENERIC_MISSING: &str = "a scalar type other than f32/f64 needs ga-macros' `generic` \
+     feature: enable ga-core's `dual` feature (or ga-macros' `generic` feature where \
+     ga-macros is a direct dependency)";
+
 /// The floating-point backend of the emitted `math` module (`math: ...`).
-#[derive(Clone)]
 pub enum Math {
     /// `std`'s inherent methods (the default).
     Std,
@@ -234,6 +265,17 @@ pub fn validate(
     name: Ident,
     entries: Vec<RawEntry>,
 ) -> syn::Result<Spec> {
+    validate_for(BackEnds::COMPILED, attrs, vis, name, entries)
+}
+
+/// [`validate`] for a build with the given back ends (the tests try both settings).
+pub fn validate_for(
+    back_ends: BackEnds,
+    attrs: Vec<Attribute>,
+    vis: Visibility,
+    name: Ident,
+    entries: Vec<RawEntry>,
+) -> syn::Result<Spec> {
     let mut cx = Ctxt::default();
     let mut seen: Vec<Ident> = Vec::new();
     let (mut metric, mut signature, mut scalar, mut types, mut ops) =
@@ -278,6 +320,9 @@ pub fn validate(
                     // (not another primitive: those have no derivative parts to carry and
                     // no `ga_core::Scalar`).
                     Ok(path) if !is_primitive(&path) => {
+                        if !back_ends.generic_scalar {
+                            cx.error_spanned_by(&path, GENERIC_MISSING);
+                        }
                         scalar = Some(Scalar::F64);
                         generic_scalar = Some(path);
                     }
@@ -356,7 +401,7 @@ pub fn validate(
     let integrations = integrations
         .map(|raw| check_integrations(&mut cx, squares.as_deref(), raw))
         .unwrap_or_default();
-    let wgsl = shaders.and_then(|raw| check_shaders(&mut cx, raw));
+    let wgsl = shaders.and_then(|raw| check_shaders(&mut cx, back_ends, raw));
     if let Some(path) = &generic_scalar {
         // The generic path is the scalar code: no batch lanes, no SIMD, no other crates'
         // traits (their impls assume a float).
@@ -395,7 +440,11 @@ pub fn validate(
 }
 
 /// `shaders: [wgsl]` (optionally `#[cfg(..)] wgsl`): the `cfg`s of the one `wgsl` entry.
-fn check_shaders(cx: &mut Ctxt, raw: RawIntegrations) -> Option<Vec<Attribute>> {
+fn check_shaders(
+    cx: &mut Ctxt,
+    back_ends: BackEnds,
+    raw: RawIntegrations,
+) -> Option<Vec<Attribute>> {
     let mut wgsl = None;
     for entry in raw.0 {
         if entry.name != "wgsl" || entry.path.is_some() {
@@ -418,6 +467,9 @@ fn check_shaders(cx: &mut Ctxt, raw: RawIntegrations) -> Option<Vec<Attribute>> 
                 "only `#[cfg(..)]` may gate a shader entry, e.g. `#[cfg(feature = \"wgsl\")] wgsl`",
             );
             continue;
+        }
+        if !back_ends.wgsl {
+            cx.error_spanned_by(&entry.name, WGSL_MISSING);
         }
         wgsl = Some(entry.attrs);
     }

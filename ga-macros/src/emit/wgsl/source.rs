@@ -8,14 +8,16 @@
 //! WGSL has no overloading, so every function's name carries its operand types
 //! (`geometric_even_vector`); the names and their order are in docs/generated-api.md.
 
-use proc_macro2::{Delimiter, TokenStream, TokenTree};
+use proc_macro2::TokenStream;
 use quote::quote;
 
-use super::expr::{construct_in, Operand, Syntax};
-use super::products::{operand_pairs, product_value_in};
-use super::unary::norm_squared_expr;
-use super::versor::{chained_body_in, fused_body_in, is_odd};
+use super::text::text;
 use crate::algebra::{blade_name, Involution};
+use crate::emit::expr::{construct_in, Operand, Syntax};
+use crate::emit::products::product_value_in;
+use crate::emit::unary::norm_squared_expr;
+use crate::emit::versor::{chained_body_in, fused_body_in, is_odd};
+use crate::names::snake_case;
 use crate::plan::{Output, Plan, SandwichForm, TypeId};
 use crate::spec::{Op, Spec};
 
@@ -57,7 +59,7 @@ pub fn wgsl_source(plan: &Plan) -> String {
         out.push_str("alias Rotor = Even;\n\n");
     }
     for &kind in &plan.products {
-        for (a, b) in operand_pairs(plan) {
+        for (a, b) in plan.operand_pairs() {
             let lhs = Operand::new(quote!(a), a);
             let rhs = Operand::new(quote!(b), b);
             let (value, output) = product_value_in(Syntax::Wgsl, plan, kind, &lhs, &rhs);
@@ -77,7 +79,7 @@ pub fn wgsl_source(plan: &Plan) -> String {
         }
     }
     if plan.has(Op::Add) {
-        for (a, b) in operand_pairs(plan) {
+        for (a, b) in plan.operand_pairs() {
             for (word, op) in [("add", quote!(+)), ("sub", quote!(-))] {
                 let output = plan.sum_output(a, b);
                 let (lhs, rhs) = (Operand::new(quote!(a), a), Operand::new(quote!(b), b));
@@ -113,7 +115,7 @@ pub fn wgsl_source(plan: &Plan) -> String {
             }
         }
     }
-    super::wgsl_exp_log::emit(&mut out, plan);
+    super::exp_log::emit(&mut out, plan);
     out
 }
 
@@ -122,7 +124,7 @@ fn snake(plan: &Plan, t: TypeId) -> String {
     if t == TypeId::SCALAR {
         "scalar".to_owned()
     } else {
-        crate::expand::snake_case(&plan.types.get(t).name)
+        snake_case(&plan.types.get(t).name)
     }
 }
 
@@ -339,88 +341,4 @@ fn sandwich(out: &mut String, plan: &Plan, v: TypeId, x: TypeId) {
         Some(&lets),
         &value,
     );
-}
-
-/// WGSL text of expression tokens: spaces around operators, none around `.` or inside
-/// parentheses, and `self` (reserved in WGSL) read as `v`, the versor's parameter.
-pub(super) fn text(tokens: &TokenStream) -> String {
-    let mut out = String::new();
-    write_tokens(tokens.clone(), &mut out);
-    out.trim().to_owned()
-}
-
-fn write_tokens(tokens: TokenStream, out: &mut String) {
-    let word_end = |out: &String| {
-        out.chars()
-            .last()
-            .is_some_and(|c| c.is_alphanumeric() || c == '_' || c == ')')
-    };
-    for token in tokens {
-        match token {
-            TokenTree::Group(group) => {
-                let (open, close) = match group.delimiter() {
-                    Delimiter::Parenthesis => ("(", ")"),
-                    Delimiter::Bracket => ("[", "]"),
-                    Delimiter::Brace => ("{", "}"),
-                    Delimiter::None => ("", ""),
-                };
-                out.push_str(open);
-                write_tokens(group.stream(), out);
-                let trimmed = out.trim_end().len();
-                out.truncate(trimmed);
-                out.push_str(close);
-            }
-            TokenTree::Ident(ident) => {
-                if word_end(out) {
-                    out.push(' ');
-                }
-                if ident == "self" {
-                    out.push('v');
-                } else {
-                    out.push_str(&ident.to_string());
-                }
-            }
-            TokenTree::Literal(literal) => {
-                if word_end(out) {
-                    out.push(' ');
-                }
-                out.push_str(&literal.to_string());
-            }
-            TokenTree::Punct(punct) => match punct.as_char() {
-                '.' => out.push('.'),
-                ',' => out.push_str(", "),
-                ';' => out.push_str("; "),
-                c => {
-                    if !out.is_empty() && !out.ends_with([' ', '(']) {
-                        out.push(' ');
-                    }
-                    out.push(c);
-                    // A unary minus binds to what follows; a binary operator is spaced.
-                    let unary = out.len() == 1
-                        || out[..out.len() - 1]
-                            .trim_end()
-                            .ends_with(['(', ',', '=', '-', '+', '*', '/']);
-                    if !(c == '-' && unary) {
-                        out.push(' ');
-                    }
-                }
-            },
-        }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn tokens_print_as_wgsl_expressions() {
-        let tokens = quote!((self.s * b.e1 + -a.e12 * b.e2) - 2.0 * (x.e1));
-        assert_eq!(text(&tokens), "(v.s * b.e1 + -a.e12 * b.e2) - 2.0 * (x.e1)");
-        assert_eq!(text(&quote!(-a.s)), "-a.s");
-        assert_eq!(
-            text(&quote!(Even(a.s, -(a.e1 - b.e1)))),
-            "Even(a.s, -(a.e1 - b.e1))"
-        );
-    }
 }

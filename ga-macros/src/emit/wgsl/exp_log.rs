@@ -1,6 +1,6 @@
 //! `exp_bivector` and `log_even` in WGSL: the closed forms of `Bivector::exp` and
-//! `Even::log` (emit/exp_log.rs) with the same case split per dimension and metric, the
-//! same squares (the planner's quadratic forms) and the same scalar weights, ported to
+//! `Even::log` (`emit/exp_log.rs`) in the plan's form ([`ExpLogForm`], the one the Rust
+//! takes), the same squares (the planner's quadratic forms) and the same scalar weights, ported to
 //! WGSL's built-ins. The scalar weights are `ga_*` functions emitted once beside them;
 //! they are helpers, not API (docs/generated-api.md).
 //!
@@ -11,82 +11,44 @@
 use proc_macro2::TokenStream;
 use quote::quote;
 
-use super::expr::{construct_in, float, quadratic_component, Operand, Syntax};
-use super::products::product_value_in;
-use super::unary::norm_squared_expr;
-use super::wgsl::text;
+use super::text::text;
 use crate::algebra::{Blade, Involution, ProductKind};
-use crate::plan::{Output, Plan, TypeId};
+use crate::emit::expr::{construct_in, float, quadratic_component, Operand, Syntax};
+use crate::emit::products::product_value_in;
+use crate::emit::unary::norm_squared_expr;
+use crate::plan::{ExpLogForm, Output, Plan, TypeId};
 
-/// Which closed form a dimension and metric take (the same split as the Rust emitter).
-#[derive(Clone, Copy, PartialEq, Eq)]
-enum Form {
-    /// `n <= 3`: `B B` is a scalar.
-    Plane,
-    /// `n = 4` with `I I = +1`: two commuting channels `(B +- B I) / 2`.
-    Channels,
-    /// `n = 4` with `I I` of -1 or 0, and `n = 5`: the algebra `{1, Q}`, `Q = B ^ B`.
-    Quartic,
-}
-
-fn form(plan: &Plan) -> Option<Form> {
-    let n = plan.metric.dimension();
-    match n {
-        2 | 3 => Some(Form::Plane),
-        4 if plan.metric.pseudoscalar_square() > 0 => Some(Form::Channels),
-        4 | 5 => Some(Form::Quartic),
-        _ => None,
-    }
-}
-
-/// Whether the WGSL has `exp_bivector` (dimensions 2 to 5, as the Rust's closed forms; the
-/// Rust's Taylor series above five dimensions has no shader form).
-pub fn has_exp(plan: &Plan) -> bool {
-    use crate::spec::Op;
-    form(plan).is_some() && plan.has(Op::Exp) && plan.emitted.contains(&TypeId::grade(2))
-}
-
-/// Whether the WGSL has `log_even` (dimensions 2 to 4, where the Rust has `Even::log`).
-pub fn has_log(plan: &Plan) -> bool {
-    use crate::spec::Op;
-    let n = plan.metric.dimension();
-    (2..=4).contains(&n) && plan.has(Op::Log) && plan.emitted.contains(&TypeId::even(n))
-}
-
-/// The helpers, `exp_bivector` and `log_even` where the module has them.
+/// The helpers, `exp_bivector` and `log_even` where the module has them: in the plan's
+/// closed forms (the Rust's Taylor series above five dimensions has no shader form).
 pub fn emit(out: &mut String, plan: &Plan) {
-    let (exp, log) = (has_exp(plan), has_log(plan));
-    let Some(form) = form(plan) else {
-        return;
-    };
-    if !exp && !log {
+    let exp = plan.exp_form().filter(|&form| form != ExpLogForm::Series);
+    let log = plan.log_form();
+    if exp.is_none() && log.is_none() {
         return;
     }
-    out.push_str(&helpers(form, exp, log));
-    if exp {
+    out.push_str(&helpers(exp, log));
+    if let Some(form) = exp {
         out.push_str(&exp_bivector(plan, form));
     }
-    if log {
+    if let Some(form) = log {
         out.push_str(&log_even(plan, form));
     }
 }
 
 /// The `ga_*` scalar functions the module's forms call, each once.
-fn helpers(form: Form, exp: bool, log: bool) -> String {
+fn helpers(exp: Option<ExpLogForm>, log: Option<ExpLogForm>) -> String {
     let mut out = String::from(
         "// Helpers of exp_bivector and log_even (not API: their names may change).\n\n",
     );
-    if exp && form != Form::Quartic {
-        out.push_str(COSH_SINHC);
+    match exp {
+        Some(ExpLogForm::Quartic) => out.push_str(EXP_WEIGHTS),
+        Some(_) => out.push_str(COSH_SINHC),
+        None => {}
     }
-    if exp && form == Form::Quartic {
-        out.push_str(EXP_WEIGHTS);
-    }
-    if log && form != Form::Quartic {
-        out.push_str(LOG_WEIGHT);
-    }
-    if log && form == Form::Quartic {
-        out.push_str(LOG_WEIGHTS_4D);
+    match log {
+        Some(ExpLogForm::Quartic) => out.push_str(LOG_WEIGHTS_4D),
+        Some(_) => out.push_str(LOG_WEIGHT),
+        None => {}
     }
     out
 }
@@ -314,7 +276,7 @@ fn channels(plan: &Plan, of: &str) -> Vec<String> {
     );
     let half = |op: TokenStream| {
         value(plan, bivector, |blade| {
-            let f = super::expr::field_ident(blade);
+            let f = crate::emit::expr::field_ident(blade);
             let o: TokenStream = of.parse().unwrap_or_default();
             Some(quote!((#o.#f #op dual.#f) * 0.5))
         })
@@ -328,14 +290,14 @@ fn channels(plan: &Plan, of: &str) -> Vec<String> {
 }
 
 /// `exp_bivector(a: Bivector) -> Even`.
-fn exp_bivector(plan: &Plan, form: Form) -> String {
+fn exp_bivector(plan: &Plan, form: ExpLogForm) -> String {
     let n = plan.metric.dimension();
     let even = TypeId::even(n);
     let bivector = TypeId::grade(2);
     let b = Operand::new(quote!(a), bivector);
     let signature = "fn exp_bivector(a: Bivector) -> Even";
     match form {
-        Form::Plane => {
+        ExpLogForm::Plane => {
             // B B = x, a scalar: exp(B) = cosh(sqrt x) + B sinh(sqrt x) / sqrt x.
             let result = value(plan, even, |blade| {
                 if blade == 0 {
@@ -349,7 +311,7 @@ fn exp_bivector(plan: &Plan, form: Form) -> String {
             ];
             function(signature, &lets, &result)
         }
-        Form::Channels => {
+        ExpLogForm::Channels => {
             let pseudoscalar = plan.metric.pseudoscalar();
             let plus = Operand::new(quote!(plus), bivector);
             let minus = Operand::new(quote!(minus), bivector);
@@ -366,12 +328,12 @@ fn exp_bivector(plan: &Plan, form: Form) -> String {
                 if blade == pseudoscalar {
                     return Some(quote!((wp.x - wm.x) * 0.5));
                 }
-                let f = super::expr::field_ident(blade);
+                let f = crate::emit::expr::field_ident(blade);
                 Some(quote!(wp.y * plus.#f + wm.y * minus.#f))
             });
             function(signature, &lets, &result)
         }
-        Form::Quartic => {
+        ExpLogForm::Quartic => {
             // B B = s + Q, Q = B ^ B commuting with B and Q Q = t a scalar.
             let q = Operand::new(quote!(q), TypeId::grade(4));
             let q_value = value(plan, TypeId::grade(4), |blade| {
@@ -410,6 +372,7 @@ fn exp_bivector(plan: &Plan, form: Form) -> String {
             });
             function(signature, &lets, &result)
         }
+        ExpLogForm::Series => unreachable!("WGSL has no series form of exp"),
     }
 }
 
@@ -422,7 +385,7 @@ fn full_turn_plane(plan: &Plan) -> Option<Blade> {
 }
 
 /// `struct Logarithm` and `log_even(a: Even) -> Logarithm`.
-fn log_even(plan: &Plan, form: Form) -> String {
+fn log_even(plan: &Plan, form: ExpLogForm) -> String {
     let n = plan.metric.dimension();
     let r = Operand::new(quote!(a), TypeId::even(n));
     let bivector = TypeId::grade(2);
@@ -446,7 +409,7 @@ fn log_even(plan: &Plan, form: Form) -> String {
     let turn = full_turn_plane(plan);
     let pseudoscalar = plan.metric.pseudoscalar();
     let log = match form {
-        Form::Plane => {
+        ExpLogForm::Plane => {
             lets.push(format!("let x = {};", self_square(plan, &p, 0)));
             lets.push(format!(
                 "let w = ga_log_weight(a.s, x, sqrt(abs(x)), {});",
@@ -462,7 +425,7 @@ fn log_even(plan: &Plan, form: Form) -> String {
             lets.push(format!("    {fail}"));
             lets.push("}".to_owned());
             value(plan, bivector, |blade| {
-                let f = super::expr::field_ident(blade);
+                let f = crate::emit::expr::field_ident(blade);
                 Some(if Some(blade) == turn {
                     quote!(w.x * p.#f + w.y)
                 } else {
@@ -470,7 +433,7 @@ fn log_even(plan: &Plan, form: Form) -> String {
                 })
             })
         }
-        Form::Channels => {
+        ExpLogForm::Channels => {
             let c4 = r
                 .blade(plan, pseudoscalar)
                 .map_or("0.0".to_owned(), |c| text(&c));
@@ -519,7 +482,7 @@ fn log_even(plan: &Plan, form: Form) -> String {
                 None => Vec::new(),
             };
             value(plan, bivector, |blade| {
-                let f = super::expr::field_ident(blade);
+                let f = crate::emit::expr::field_ident(blade);
                 let mut term = quote!(wp.x * plus.#f + wm.x * minus.#f);
                 if let Some(&(_, tp, tm)) = turns.iter().find(|(b, _, _)| *b == blade) {
                     let (tp, tm) = (float(tp), float(tm));
@@ -528,7 +491,7 @@ fn log_even(plan: &Plan, form: Form) -> String {
                 Some(term)
             })
         }
-        Form::Quartic => {
+        ExpLogForm::Quartic => {
             let c4 = r
                 .blade(plan, pseudoscalar)
                 .map_or("0.0".to_owned(), |c| text(&c));
@@ -545,10 +508,11 @@ fn log_even(plan: &Plan, form: Form) -> String {
             lets.push("let unit = Quadvector(1.0);".to_owned());
             lets.push(format!("let p_unit = {};", text(&p_unit)));
             value(plan, bivector, |blade| {
-                let f = super::expr::field_ident(blade);
+                let f = crate::emit::expr::field_ident(blade);
                 Some(quote!(g.x * p.#f + g.y * p_unit.#f))
             })
         }
+        ExpLogForm::Series => unreachable!("the plan has no log above four dimensions"),
     };
     lets.push(format!("let log = {log};"));
     // The Rust's finiteness check; a driver that assumes no infinities or NaNs may drop it.

@@ -1,0 +1,9 @@
+//! `shaders: [wgsl]`: the module as WGSL source, one more back end on the same plan.
+
+mod exp_log;
+mod source;
+mod text;
+
+pub use source::emit_wgsl;
+#[cfg(test)]
+pub use source::wgsl_source;
