@@ -36,6 +36,10 @@ use quote::ToTokens;
 /// Keys: `metric: [..]` (the squares of e1..en, each 1, -1 or 0; n from 1 to 6) or
 /// `signature: (p, q, r)`; `scalar: f32 | f64` (default f64); optional `types: [..]`
 /// (built-in names and `Name = [e12, e13]`) and `ops: [..]` to emit only part of it.
+///
+/// The whole reference follows (also `docs/generated-api.md` in the repository).
+///
+#[doc = include_str!("../../docs/generated-api.md")]
 #[proc_macro]
 pub fn algebra(input: TokenStream) -> TokenStream {
     let raw = syn::parse_macro_input!(input as spec::RawAlgebra);
