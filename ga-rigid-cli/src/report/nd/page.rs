@@ -23,7 +23,10 @@ pub fn nd_section(out: &mut String, scenes: &[NdSceneResult]) {
          two angles θ<sub>1</sub>, θ<sub>2</sub> in two orthogonal planes, and the error is \
          <code>sqrt(θ1² + θ2²)</code> with each in [-π, π], which is <code>2 |log(±~R_ref R)|</code> \
          for the shorter logarithm and the 3D angle for a simple rotation. <b>Energy drift</b>: \
-         the largest <code>|E(t) - E(0)| / E(0)</code> of the run over the samples. Rows in \
+         the largest <code>|E(t) - E(0)| / E(0)</code> of the run over the samples. The adaptive \
+         methods of the n-dimensional body have no dense output, so a run stops at each of the \
+         samples: at loose tolerances the sample spacing, not the tolerance, sets their steps. \
+         Rows in \
          <a href=\"nd_results.csv\">nd_results.csv</a>. Colours and markers are these plots' \
          own: ",
     );

@@ -42,9 +42,11 @@ pub fn nd_marker(method: NdMethod) -> Marker {
     }
 }
 
-/// The file name of four-dimensional scene `index`'s diagram: `4d-NN-name.svg`.
+/// The file name of four-dimensional scene `index`'s diagram: `4d-NN-name.svg`, the
+/// name without its leading "4D".
 #[must_use]
 pub fn nd_svg_name(index: usize, name: &str) -> String {
+    let name = name.strip_prefix("4D ").unwrap_or(name);
     format!("4d-{}", crate::report::svg_name(index, name))
 }
 
