@@ -251,3 +251,39 @@ fn the_page_has_a_four_dimensions_section() {
     assert_eq!(page.matches("<b>Instability:</b>").count(), 1);
     assert_eq!(page.matches("<th>observed order</th>").count(), 3);
 }
+
+/// The command checks the 4D files with the others before any run: a directory where
+/// `nd_results.csv` or a 4D diagram goes is refused with status 2, and nothing is written.
+#[test]
+fn the_command_refuses_an_obstacle_at_a_4d_file_before_the_suite() {
+    let base = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("ga-rigid-nd-obstacle");
+    let _ = std::fs::remove_dir_all(&base);
+    let dir = base.join("r");
+    std::fs::create_dir_all(&dir).unwrap();
+    let diagram = ga_rigid_cli::report::nd::nd_svg_name(0, &nd_scenes().unwrap()[0].name);
+    for name in ["nd_results.csv", diagram.as_str()] {
+        std::fs::create_dir(dir.join(name)).unwrap();
+        let started = std::time::Instant::now();
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_ga-rigid"))
+            .args(["report", "--quick", "--out", "r"])
+            .current_dir(&base)
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{stderr}");
+        assert!(
+            stderr.contains(&format!("r/{name} is a directory")),
+            "{stderr}"
+        );
+        assert!(
+            started.elapsed().as_secs() < 20,
+            "refused only after the suite"
+        );
+        let names: Vec<_> = std::fs::read_dir(&dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        assert_eq!(names, [name], "files written before the refusal");
+        std::fs::remove_dir(dir.join(name)).unwrap();
+    }
+}
