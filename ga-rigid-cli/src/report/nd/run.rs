@@ -88,7 +88,7 @@ pub struct NdSceneResult {
     pub elapsed: Duration,
 }
 
-/// The number of runs [`run`] makes, for a progress bar.
+/// The number of runs [`run_nd`] makes, for a progress bar.
 pub fn nd_job_count(size: Size) -> Result<u64, Error> {
     Ok(nd_scenes()?
         .iter()

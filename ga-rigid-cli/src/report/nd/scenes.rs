@@ -163,7 +163,7 @@ fn reference_body() -> Result<NdTestScene, Error> {
     })
 }
 
-/// The perturbation of [`unstable_double_rotation`] in each of the four other planes.
+/// The perturbation of the unstable double rotation in each of the four other planes.
 pub const PERTURBATION: f64 = 1e-3;
 
 /// The 4D cousin of the Dzhanibekov flip: a steady double rotation in the two
