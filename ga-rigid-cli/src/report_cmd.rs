@@ -1,5 +1,6 @@
-//! `report`: run the suite (with the user's scenes), write `results.csv`, one SVG per
-//! scene and `index.html` into `--out DIR`, and print a short summary.
+//! `report`: run the suite (with the user's scenes) and the four-dimensional scenes, write
+//! `results.csv`, `nd_results.csv`, one SVG per scene and `index.html` into `--out DIR`,
+//! and print a short summary.
 //!
 //! Everything that can refuse the run does so before the suite starts, with exit status
 //! 2: `--out` that is not a directory or whose parent is missing, a file of the report in
@@ -40,11 +41,18 @@ pub fn run(args: &ReportArgs) -> Result<(), Error> {
         .map(|(i, s)| report::svg_name(i, &s.name))
         .collect();
     let plots = names.len();
+    let nd_names: Vec<String> = report::nd::nd_scenes()?
+        .iter()
+        .enumerate()
+        .map(|(i, s)| report::nd::nd_svg_name(i, &s.name))
+        .collect();
+    names.extend(nd_names.iter().cloned());
     names.extend(
         [
             "results.csv",
             "long_runs.csv",
             "engine_runs.csv",
+            "nd_results.csv",
             "index.html",
         ]
         .map(String::from),
@@ -92,21 +100,44 @@ pub fn run(args: &ReportArgs) -> Result<(), Error> {
     }
     report.long_runs = result?;
     report.engine_runs = report::engine_runs(size, &mut |_| {})?;
+    let nd_total = report::nd::nd_job_count(size)?;
+    let bar = terminal.then(|| new_bar(nd_total));
+    let mut done = 0;
+    let result = report::nd::run_nd(size, &mut |scene, method| {
+        done += 1;
+        match &bar {
+            Some(bar) => {
+                bar.set_message(format!("{scene}: {method}"));
+                bar.inc(1);
+            }
+            None => ticker.tick(done, nd_total, &format!("{scene}: {method}")),
+        }
+    });
+    if let Some(bar) = &bar {
+        bar.finish_and_clear();
+    }
+    report.nd_scenes = result?;
 
     let mut texts = Vec::with_capacity(names.len());
     for scene in &report.scenes {
         texts.push(report::svg(scene)?);
     }
+    for scene in &report.nd_scenes {
+        texts.push(report::nd::nd_svg(scene)?);
+    }
     texts.push(report::csv(&report));
     texts.push(report::long_runs_csv(&report.long_runs));
     texts.push(report::engine_runs_csv(&report.engine_runs));
+    texts.push(report::nd::nd_csv(&report.nd_scenes));
     texts.push(report::html(&report, &names[..plots]));
     write_files(&args.out, exists, &names, &inputs, &texts)?;
 
     let mut summary = report::summary(&report);
     summary.push_str(&format!(
-        "wrote {} (results.csv, long_runs.csv, engine_runs.csv, {plots} plots, index.html)\n",
+        "wrote {} (results.csv, long_runs.csv, engine_runs.csv, nd_results.csv, {} plots, \
+         index.html)\n",
         args.out.display(),
+        plots + nd_names.len(),
     ));
     let mut stdout = std::io::stdout().lock();
     stdout

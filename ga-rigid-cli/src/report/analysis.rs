@@ -70,7 +70,13 @@ pub enum Order {
 /// are at least [`MIN_ORDER_POINTS`] of them.
 #[must_use]
 pub fn order(scene: &SceneResult, method: Method) -> Order {
-    let points = order_points(scene, method);
+    fit_order(&order_points(scene, method))
+}
+
+/// The least-squares slope of `(log step, log error)` points, when there are at least
+/// [`MIN_ORDER_POINTS`] of them: the fit of [`order`], for any runs.
+#[must_use]
+pub fn fit_order(points: &[(f64, f64)]) -> Order {
     if points.len() < MIN_ORDER_POINTS {
         return Order::TooFewPoints(points.len());
     }

@@ -237,7 +237,14 @@ pub fn timed_run(
     method: Method,
     setting: f64,
 ) -> (Result<Run, Error>, Option<Timing>) {
-    let first = run_once(scene, method, setting);
+    timed(|| run_once(scene, method, setting))
+}
+
+/// The timing rule of every measured run, for any run: once to warm up (the result is
+/// kept), then, if that succeeded, again until the timed runs add up to
+/// [`MIN_TOTAL_TIME`] and number at least [`MIN_REPEATS`]; the median and the fastest.
+pub fn timed<T>(mut run: impl FnMut() -> Result<T, Error>) -> (Result<T, Error>, Option<Timing>) {
+    let first = run();
     if first.is_err() {
         return (first, None);
     }
@@ -245,7 +252,7 @@ pub fn timed_run(
     let mut total = Duration::ZERO;
     while times.len() < MIN_REPEATS || total < MIN_TOTAL_TIME {
         let start = Instant::now();
-        let result = run_once(scene, method, setting);
+        let result = run();
         let elapsed = start.elapsed();
         std::hint::black_box(&result);
         times.push(elapsed);

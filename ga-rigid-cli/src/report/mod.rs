@@ -10,6 +10,7 @@ mod engine_steps;
 mod estimate;
 mod invariants;
 mod measure;
+pub mod nd;
 mod page;
 mod plot;
 mod results;
@@ -17,8 +18,8 @@ mod scenes;
 pub mod style;
 
 pub use analysis::{
-    cost_per_step_ns, error_floor, fastest_at, fastest_over, observed_order, order, scene_kind,
-    verdict, Order, Pick, SceneKind, ERROR_LEVELS, MIN_ORDER_POINTS,
+    cost_per_step_ns, error_floor, fastest_at, fastest_over, fit_order, observed_order, order,
+    scene_kind, verdict, Order, Pick, SceneKind, ERROR_LEVELS, MIN_ORDER_POINTS,
 };
 pub use engine_steps::{
     engine_run, engine_runs, engine_runs_csv, engine_verdicts, exact_flip_period, EngineRun,
@@ -30,7 +31,7 @@ pub use invariants::{
     ENERGY_GROWTH, LONG_RUNS_CSV_HEADER, MOMENTUM_BOUND, PERIODS, UNIT_DEFECT_BOUND, UNIT_STEPS,
 };
 pub use measure::{
-    attitude_error, errors, references, sample_times, timed_run, Errors, Reference, Timing,
+    attitude_error, errors, references, sample_times, timed, timed_run, Errors, Reference, Timing,
     MIN_REPEATS, MIN_TOTAL_TIME, TIGHTEST_TOL,
 };
 pub use page::{html, svg_name};
@@ -147,6 +148,9 @@ pub struct Report {
     /// The runs at engine step sizes of [`engine_runs`], when they were run (the command
     /// runs them after the long runs; [`run`] leaves this empty).
     pub engine_runs: Vec<EngineRun>,
+    /// The four-dimensional scenes of [`nd::run_nd`], when they were run (the command runs
+    /// them after the engine runs; [`run`] leaves this empty).
+    pub nd_scenes: Vec<nd::NdSceneResult>,
 }
 
 /// The CPU model from `/proc/cpuinfo`, or a plain statement that it is unknown.
@@ -222,6 +226,7 @@ pub fn run_methods(
         scenes: results,
         long_runs: Vec::new(),
         engine_runs: Vec::new(),
+        nd_scenes: Vec::new(),
     })
 }
 
@@ -338,6 +343,30 @@ pub fn summary(report: &Report) -> String {
                 row.method.name(),
                 row.label(),
                 row.time_us().unwrap_or(f64::NAN)
+            ),
+            None => "no method reached 1e-6 rad".to_string(),
+        };
+        let _ = writeln!(
+            out,
+            "- {}: reference check {:.1e} rad; {fastest} ({:.1} s)",
+            scene.name,
+            scene.check.errors.attitude_max,
+            scene.elapsed.as_secs_f64()
+        );
+    }
+    for scene in &report.nd_scenes {
+        let fastest = scene
+            .rows
+            .iter()
+            .filter(|r| r.errors.is_some_and(|e| e.attitude_max <= 1e-6))
+            .filter_map(|r| Some((r, r.time_us()?)))
+            .min_by(|a, b| a.1.total_cmp(&b.1));
+        let fastest = match fastest {
+            Some((row, us)) => format!(
+                "fastest to 1e-6 rad: {} ({} {:.1e}) {us:.1} us",
+                row.method.name(),
+                row.param_kind(),
+                row.param
             ),
             None => "no method reached 1e-6 rad".to_string(),
         };

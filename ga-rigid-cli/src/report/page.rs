@@ -28,7 +28,7 @@ pub fn svg_name(index: usize, name: &str) -> String {
 }
 
 /// Text made safe for HTML.
-fn esc(text: &str) -> String {
+pub(crate) fn esc(text: &str) -> String {
     text.replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")
@@ -102,6 +102,9 @@ pub fn html(report: &Report, svg_names: &[String]) -> String {
             esc(&scene.name)
         );
     }
+    if !report.nd_scenes.is_empty() {
+        out.push_str(" · <a href=\"#four-dimensions\">Four dimensions</a>");
+    }
     out.push_str("</p>\n");
     for (i, scene) in report.scenes.iter().enumerate() {
         let name = svg_names.get(i).map_or("", String::as_str);
@@ -112,6 +115,9 @@ pub fn html(report: &Report, svg_names: &[String]) -> String {
     }
     if !report.engine_runs.is_empty() {
         engine_runs_section(&mut out, &report.engine_runs);
+    }
+    if !report.nd_scenes.is_empty() {
+        super::nd::nd_section(&mut out, &report.nd_scenes);
     }
     out.push_str("</body></html>\n");
     out

@@ -187,7 +187,7 @@ fn draw(scene: &SceneResult, text: &mut String) -> DrawResult {
 }
 
 /// A marker centred on its point.
-fn marker<DB: DrawingBackend>(
+pub(crate) fn marker<DB: DrawingBackend>(
     shape: Marker,
     colour: RGBColor,
 ) -> DynElement<'static, DB, (i32, i32)> {

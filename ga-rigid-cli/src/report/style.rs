@@ -94,7 +94,7 @@ pub struct Style {
 
 /// Okabe and Ito's eight colours (Color Universal Design, 2002), with their yellow
 /// darkened so that it reads on white.
-const PALETTE: [RGBColor; 8] = [
+pub(crate) const PALETTE: [RGBColor; 8] = [
     RGBColor(0, 0, 0),       // black
     RGBColor(230, 159, 0),   // orange
     RGBColor(86, 180, 233),  // sky blue
