@@ -5,7 +5,7 @@ use numpy::{
     PyReadonlyArray1, PyReadonlyArray2, PyReadwriteArray1, PyReadwriteArray2, PyUntypedArrayMethods,
 };
 use pyo3::exceptions::PyValueError;
-use pyo3::PyResult;
+use pyo3::{PyErr, PyResult};
 
 /// Above this many items a call releases the GIL while it computes.
 pub const DETACH_ITEMS: usize = 4096;
@@ -23,9 +23,11 @@ pub fn items<'a, S: numpy::Element + bytemuck::Pod, T: bytemuck::Pod>(
             shape[1]
         )));
     }
-    let slice = array
-        .as_slice()
-        .map_err(|_| PyValueError::new_err(format!("{name}: the array is not C-contiguous")))?;
+    // `as_slice` takes Fortran order too, which would read the components wrongly.
+    if !array.is_c_contiguous() {
+        return Err(not_c_contiguous(name));
+    }
+    let slice = array.as_slice().map_err(|_| not_c_contiguous(name))?;
     cast(slice, name)
 }
 
@@ -34,9 +36,7 @@ pub fn scalars<'a, S: numpy::Element>(
     array: &'a PyReadonlyArray1<'_, S>,
     name: &str,
 ) -> PyResult<&'a [S]> {
-    array
-        .as_slice()
-        .map_err(|_| PyValueError::new_err(format!("{name}: the array is not C-contiguous")))
+    array.as_slice().map_err(|_| not_c_contiguous(name))
 }
 
 /// The rows of a writable C-contiguous `(n, k)` array as items of `T`.
@@ -52,9 +52,10 @@ pub fn items_mut<'a, S: numpy::Element + bytemuck::Pod, T: bytemuck::Pod>(
             shape[1]
         )));
     }
-    let slice = array
-        .as_slice_mut()
-        .map_err(|_| PyValueError::new_err(format!("{name}: the array is not C-contiguous")))?;
+    if !array.is_c_contiguous() {
+        return Err(not_c_contiguous(name));
+    }
+    let slice = array.as_slice_mut().map_err(|_| not_c_contiguous(name))?;
     bytemuck::try_cast_slice_mut(slice)
         .map_err(|e| PyValueError::new_err(format!("{name}: cannot view the data ({e})")))
 }
@@ -64,9 +65,11 @@ pub fn scalars_mut<'a, S: numpy::Element>(
     array: &'a mut PyReadwriteArray1<'_, S>,
     name: &str,
 ) -> PyResult<&'a mut [S]> {
-    array
-        .as_slice_mut()
-        .map_err(|_| PyValueError::new_err(format!("{name}: the array is not C-contiguous")))
+    array.as_slice_mut().map_err(|_| not_c_contiguous(name))
+}
+
+fn not_c_contiguous(name: &str) -> PyErr {
+    PyValueError::new_err(format!("{name}: the array is not C-contiguous"))
 }
 
 fn cast<'a, S: bytemuck::Pod, T: bytemuck::Pod>(slice: &'a [S], name: &str) -> PyResult<&'a [T]> {
