@@ -400,13 +400,15 @@ impl PyRotor {
     }
 
     /// The row-major rotation matrix: `M @ v` is `R v ~R`.
-    fn to_matrix<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    #[pyo3(name = "to_matrix")]
+    fn matrix<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<f64>>> {
         let rows = self.0.sandwich_matrix();
         Ok(PyArray2::from_vec2(py, &rows.map(|r| r.to_vec()))?)
     }
 
     /// `[s, e12, e13, e23]` as a float64 array.
-    fn to_array<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+    #[pyo3(name = "to_array")]
+    fn components<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
         array(py, &self.0.to_array())
     }
 
@@ -459,7 +461,8 @@ impl PyVector {
     }
 
     /// `[e1, e2, e3]` as a float64 array.
-    fn to_array<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+    #[pyo3(name = "to_array")]
+    fn components<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
         array(py, &self.0.to_array())
     }
 
@@ -501,7 +504,8 @@ impl PyBivector {
     }
 
     /// `[e12, e13, e23]` as a float64 array.
-    fn to_array<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+    #[pyo3(name = "to_array")]
+    fn components<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
         array(py, &self.0.to_array())
     }
 
