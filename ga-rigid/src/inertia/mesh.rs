@@ -542,7 +542,7 @@ impl Inertia {
                 format!(
                     "the enclosed volume must be positive, got {} (faces must wind \
                      counter-clockwise seen from outside)",
-                    moments.volume
+                    crate::error::num_short(moments.volume)
                 ),
             ));
         }
@@ -564,6 +564,21 @@ impl Inertia {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The fuzz run's find: a vertex at 1e308 made the volume -1.7e307, printed in full as
+    /// a 310-digit number; a message stays one short line.
+    #[test]
+    fn a_huge_negative_volume_is_reported_in_a_short_number() {
+        let obj = "v 0 0 0\nv 0 0 1\nv 0 1 1e308\nv 0 1 1\nv 1 0 0\nv 1 0 1\nv 1 1 0\n\
+                   v 1 1 1\nf 1 2 4 3\nf 5 7 8 6\nf 1 5 6 2\nf 3 4 8 7\nf 1 3 7 5\nf 2 6 8 4\n";
+        let mesh = Mesh::parse_obj(obj, Path::new("body.obj")).unwrap();
+        let e = Inertia::from_mesh(&mesh, 1.0).unwrap_err().to_string();
+        assert!(
+            e.starts_with("mesh: the enclosed volume must be positive, got -1.66667e307 "),
+            "{e}"
+        );
+        assert!(e.len() < 200, "{e}");
+    }
 
     #[test]
     fn a_polygon_past_the_triangle_limit_is_refused_before_it_is_built() {
