@@ -555,7 +555,14 @@ macro_rules! exact_flow_over {
             fn qexp(v: [S; 3], t: S) -> Quat {
                 let size = v[0].hypot(v[1]).hypot(v[2]);
                 if size == k(0.0) {
-                    return [k(1.0), k(0.0), k(0.0), k(0.0)];
+                    if v.iter().all(|x| x.is_exact_zero()) {
+                        return [k(1.0), k(0.0), k(0.0), k(0.0)];
+                    }
+                    // |v| is zero but its derivative part is not (hypot's is meaningless
+                    // there): `exp(v t / 2) = 1 + v t / 2 + O(|v|^2)`, and the square of a
+                    // pure derivative part vanishes.
+                    let half = k(0.5) * t;
+                    return [k(1.0), half * v[0], half * v[1], half * v[2]];
                 }
                 let (s, c) = (k(0.5) * size * t).sin_cos();
                 let f = s / size;
@@ -629,7 +636,20 @@ macro_rules! exact_flow_over {
                 };
                 let to_rotor = |q: Quat| [q[0], -q[3], q[2], -q[1]];
                 let size = m0[0].hypot(m0[1]).hypot(m0[2]);
-                if size == k(0.0) || t == k(0.0) {
+                if size == k(0.0) {
+                    if m0.iter().all(|x| x.is_exact_zero()) {
+                        return (to_rotor(q0), m0);
+                    }
+                    // m(0) is zero with a derivative part: to first order the momentum
+                    // stays m(0) (its rate `m x w` is quadratic) and the body turns at
+                    // `w = J^-1 m(0)`, which `qexp` expands to first order.
+                    let w = [0, 1, 2].map(|j| m0[j] / moments[j]);
+                    return (to_rotor(qmul(q0, qexp(w, t))), m0);
+                }
+                // Only an exact zero: a time whose real part is 0 but whose derivative part
+                // is not takes the flow below, which is valid at 0, for the rate
+                // `dR/dt = -1/2 R Omega`, `dm/dt = m x w`.
+                if t.is_exact_zero() {
                     return (to_rotor(q0), m0);
                 }
                 let scale = moments[0].max(moments[1]).max(moments[2]);
