@@ -499,13 +499,92 @@ macro_rules! exact_flow_over {
 
             fn unit_flow(i: [S; 3], u0: [S; 3], q0: Quat, t: S) -> (Quat, [S; 3]) {
                 match classify(i, u0) {
-                    Body::Sphere | Body::Stationary => {
+                    Body::Sphere => {
                         let w = [0, 1, 2].map(|j| u0[j] / i[j]);
                         (qmul(q0, qexp(w, t)), u0)
                     }
+                    Body::Stationary => stationary_flow(i, u0, q0, t),
                     Body::Symmetric(axis) => symmetric_flow(i, u0, q0, t, axis),
                     Body::General(frame) => general_flow(&frame, q0, t),
                 }
+            }
+
+            /// The steady rotation about the principal axis that carries `u0`'s real part.
+            ///
+            /// The components of `u0` off that axis have real part 0; where their
+            /// derivative parts are not 0, the momentum leaves the axis, and the derivative
+            /// is that of the flow linearised about the steady rotation (a formula valid on
+            /// both sides, unlike the constant angular velocity). With `k` the axis,
+            /// `(a, b)` the other two in cyclic order, `M = u_k` and `W = M / i_k`, the
+            /// first-order momentum `(x_a, x_b)` and attitude `q(t) (1 + eta)` (`eta`
+            /// pure, in the body frame) obey
+            /// `x_a' = M (1/i_k - 1/i_b) x_b`, `x_b' = M (1/i_a - 1/i_k) x_a`,
+            /// `eta_a' = W eta_b + x_a / (2 i_a)`, `eta_b' = -W eta_a + x_b / (2 i_b)`
+            /// (from `m' = m x w` and `q' = q w / 2`: `eta' = eta x w + dw / 2`), with
+            /// `eta(0) = 0`. Its matrix exponential is taken on real parts, where it is
+            /// all the first order needs (a product of two derivative parts vanishes);
+            /// no closed form, which would divide by the difference of the nutation and
+            /// spin rates (0 for moments (1, 2, 3)).
+            fn stationary_flow(i: [S; 3], u0: [S; 3], q0: Quat, t: S) -> (Quat, [S; 3]) {
+                let axis = (0..3).find(|&j| u0[j] != k(0.0)).unwrap_or(0);
+                let (a, b) = ((axis + 1) % 3, (axis + 2) % 3);
+                let mut w = [k(0.0); 3];
+                w[axis] = u0[axis] / i[axis];
+                let q = qmul(q0, qexp(w, t));
+                if u0[a].is_exact_zero() && u0[b].is_exact_zero() {
+                    return (q, u0);
+                }
+                let (ia, ib, ik) = (i[a].re(), i[b].re(), i[axis].re());
+                let big_m = u0[axis].re();
+                let spin = big_m / ik;
+                let l = [
+                    [0.0, big_m * (1.0 / ik - 1.0 / ib), 0.0, 0.0],
+                    [big_m * (1.0 / ia - 1.0 / ik), 0.0, 0.0, 0.0],
+                    [0.5 / ia, 0.0, 0.0, spin],
+                    [0.0, 0.5 / ib, -spin, 0.0],
+                ];
+                let e = expm4(l, t.re());
+                let x = [0, 1, 2, 3].map(|r| k(e[r][0]) * u0[a] + k(e[r][1]) * u0[b]);
+                let mut u = u0;
+                u[a] = x[0];
+                u[b] = x[1];
+                let mut eta = [k(1.0), k(0.0), k(0.0), k(0.0)];
+                eta[1 + a] = x[2];
+                eta[1 + b] = x[3];
+                (qmul(q, eta), u)
+            }
+
+            /// `exp(l t)` for a real 4x4 matrix: scaling and squaring of the Taylor series.
+            fn expm4(l: [[f64; 4]; 4], t: f64) -> [[f64; 4]; 4] {
+                type M4 = [[f64; 4]; 4];
+                let mul = |x: &M4, y: &M4| -> M4 {
+                    ::core::array::from_fn(|r| {
+                        ::core::array::from_fn(|c| (0..4).map(|j| x[r][j] * y[j][c]).sum())
+                    })
+                };
+                let norm = l.iter().map(|row| row.iter().map(|x| x.abs()).sum::<f64>()).fold(0.0, f64::max)
+                    * t.abs();
+                let mut squarings = 0;
+                let mut scale = t;
+                while norm * (scale / t).abs() > 0.25 && squarings < 1100 {
+                    scale *= 0.5;
+                    squarings += 1;
+                }
+                let a: M4 = l.map(|row| row.map(|x| x * scale));
+                let identity: M4 = ::core::array::from_fn(|r| ::core::array::from_fn(|c| if r == c { 1.0 } else { 0.0 }));
+                let (mut sum, mut term) = (identity, identity);
+                for n in 1..=20 {
+                    term = mul(&term, &a).map(|row| row.map(|x| x / n as f64));
+                    for r in 0..4 {
+                        for c in 0..4 {
+                            sum[r][c] += term[r][c];
+                        }
+                    }
+                }
+                for _ in 0..squarings {
+                    sum = mul(&sum, &sum);
+                }
+                sum
             }
 
             fn symmetric_flow(i: [S; 3], u0: [S; 3], q0: Quat, t: S, axis: usize) -> (Quat, [S; 3]) {

@@ -54,11 +54,19 @@ fn dual(p: Point, d: &Direction) -> ([f64; 7], [f64; 7]) {
 }
 
 /// Richardson's extrapolation of central differences of `exact_flow` along `d` with steps
-/// `h` and `2 h`, points on both sides of `p`.
+/// `h` and `2 h`, points on both sides of `p`, rotors on the sheet of `p`'s.
 fn difference(p: Point, d: &Direction, h: f64) -> [f64; 7] {
+    let reference = flat(exact_free_body(p.moments, p.m0, p.r0, p.t));
+    // R and -R are the same attitude, and `exact_flow` may change sheets across a branch
+    // point (it does across u2 = 0 near the axis of the smallest moment): each neighbour
+    // is taken on the reference's sheet.
     let at = |s: f64| {
         let q = p.moved(d, s);
-        flat(exact_free_body(q.moments, q.m0, q.r0, q.t))
+        let mut out = flat(exact_free_body(q.moments, q.m0, q.r0, q.t));
+        if (0..4).map(|j| out[j] * reference[j]).sum::<f64>() < 0.0 {
+            out[..4].iter_mut().for_each(|x| *x = -*x);
+        }
+        out
     };
     let (p1, m1, p2, m2) = (at(h), at(-h), at(2.0 * h), at(-2.0 * h));
     std::array::from_fn(|j| (8.0 * (p1[j] - m1[j]) - (p2[j] - m2[j])) / (12.0 * h))
@@ -135,4 +143,54 @@ fn derivatives_at_zero_momentum_include_the_first_order_rotation() {
         t: 2.0,
     };
     check("m0 = 0", p, &[[0.0, 0.0, 0.0, 0.6, -0.3, 0.2, 0.0]]);
+}
+
+#[test]
+fn derivatives_on_a_principal_axis_follow_the_linearised_motion() {
+    let base = Point {
+        moments: [1.0, 2.0, 3.0],
+        m0: [0.0, 0.0, 1.5],
+        r0: R0,
+        t: 2.0,
+    };
+    let tilt = [0.0, 0.0, 0.0, 0.7, -0.4, 0.2, 0.3];
+    // The stable axes (largest and smallest moment), the unstable middle one, a negative
+    // component, and a longer time.
+    check("m0 on axis 3", base, &[tilt]);
+    check(
+        "m0 on axis 1",
+        Point {
+            m0: [1.5, 0.0, 0.0],
+            ..base
+        },
+        &[tilt],
+    );
+    check(
+        "m0 on axis 2 (unstable)",
+        Point {
+            m0: [0.0, 1.5, 0.0],
+            ..base
+        },
+        &[tilt],
+    );
+    check(
+        "m0 on -axis 3, t = 9",
+        Point {
+            m0: [0.0, 0.0, -1.5],
+            t: 9.0,
+            ..base
+        },
+        &[tilt],
+    );
+    // The derivative of m(t) along m0's first component is the linearised solution
+    // (cos(t/2), 2 sin(t/2), 0) at moments (1, 2, 3), m0 = (0, 0, 1.5).
+    let (_, d) = dual(base, &[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0]);
+    let truth = [1.0_f64.cos(), 2.0 * 1.0_f64.sin(), 0.0];
+    for j in 0..3 {
+        assert!(
+            (d[4 + j] - truth[j]).abs() <= 1e-13,
+            "{:?} against {truth:?}",
+            &d[4..]
+        );
+    }
 }
