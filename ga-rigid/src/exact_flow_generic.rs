@@ -130,7 +130,13 @@ macro_rules! exact_flow_over {
                 }
                 if m == k(0.0) {
                     let (s, c) = u.sin_cos();
-                    return (s, c, k(1.0));
+                    if m.is_exact_zero() {
+                        return (s, c, k(1.0));
+                    }
+                    // m is 0 in value only (a symmetric body's moments moved apart): the
+                    // first order in m (Abramowitz & Stegun 16.13.1-3), valid for every u.
+                    let shift = k(0.25) * m * (u - s * c);
+                    return (s - shift * c, c + shift * s, k(1.0) - k(0.5) * m * s * s);
                 }
                 if m1 == k(0.0) {
                     let sech = k(1.0) / u.cosh();
@@ -199,6 +205,13 @@ macro_rules! exact_flow_over {
                     return (u + extra) / (k(1.0) - n);
                 }
                 if m == k(0.0) {
+                    if n == k(0.0) && !(m.is_exact_zero() && n.is_exact_zero()) {
+                        // m and n are 0 in value only (a symmetric body's moments moved
+                        // apart): `Pi = int_0^u dv / (1 - n sn^2 v)` is `u` for n = 0 and
+                        // any m, and its n-derivative at m = 0 is `int_0^u sin^2`.
+                        let (s, c) = u.sin_cos();
+                        return u + k(0.5) * n * (u - s * c);
+                    }
                     return <S as Scalar>::NAN;
                 }
                 let agm = Agm::new(m, m1);
@@ -372,6 +385,8 @@ macro_rules! exact_flow_over {
             enum Body {
                 Sphere,
                 Symmetric(usize),
+                /// Two moments equal in value but not in derivative, about the third.
+                Breaking(usize),
                 Stationary,
                 General(WorkFrame),
             }
@@ -386,21 +401,40 @@ macro_rules! exact_flow_over {
                 d2: S,
             }
 
+            /// Equal moments take the closed forms only when they are equal in every part
+            /// (for `f64`, equal): moments equal in value but with different derivative
+            /// parts leave the symmetric body, and the derivative is the general flow's.
             fn classify(i: [S; 3], u: [S; 3]) -> Body {
+                let same = |a: usize, b: usize| (i[a] - i[b]).is_exact_zero();
+                if same(0, 1) && same(1, 2) {
+                    return Body::Sphere;
+                }
+                if same(0, 1) {
+                    return Body::Symmetric(2);
+                }
+                if same(1, 2) {
+                    return Body::Symmetric(0);
+                }
+                if same(0, 2) {
+                    return Body::Symmetric(1);
+                }
+                // Three moments equal in value only: `exact_free_body` splits the
+                // derivative into one moment at a time, each with an exact pair, before
+                // it gets here; this keeps the sphere's value for any other caller.
                 if i[0] == i[1] && i[1] == i[2] {
                     return Body::Sphere;
                 }
-                if i[0] == i[1] {
-                    return Body::Symmetric(2);
-                }
-                if i[1] == i[2] {
-                    return Body::Symmetric(0);
-                }
-                if i[0] == i[2] {
-                    return Body::Symmetric(1);
-                }
                 if u.iter().filter(|&&x| x == k(0.0)).count() == 2 {
                     return Body::Stationary;
+                }
+                if i[0] == i[1] {
+                    return Body::Breaking(2);
+                }
+                if i[1] == i[2] {
+                    return Body::Breaking(0);
+                }
+                if i[0] == i[2] {
+                    return Body::Breaking(1);
                 }
                 let mut order = [0, 1, 2];
                 order.sort_by(|&a, &b| i[a].re().total_cmp(&i[b].re()));
@@ -505,8 +539,50 @@ macro_rules! exact_flow_over {
                     }
                     Body::Stationary => stationary_flow(i, u0, q0, t),
                     Body::Symmetric(axis) => symmetric_flow(i, u0, q0, t, axis),
+                    Body::Breaking(axis) => breaking_flow(i, u0, q0, t, axis),
                     Body::General(frame) => general_flow(&frame, q0, t),
                 }
+            }
+
+            /// `q` or `-q` (the same attitude), whichever is on `reference`'s sheet.
+            fn on_sheet(reference: Quat, q: Quat) -> Quat {
+                let dot: f64 = (0..4).map(|j| reference[j].re() * q[j].re()).sum();
+                if dot < 0.0 {
+                    q.map(|x| -x)
+                } else {
+                    q
+                }
+            }
+
+            /// `value`'s real part with `slope`'s derivative parts.
+            fn with_slope(value: S, slope: S) -> S {
+                k(value.re()) + (slope - k(slope.re()))
+            }
+
+            /// Two moments equal in value, apart in derivative: the symmetric top's value,
+            /// the derivative of the general flow in the work frame whose axis 3 is the
+            /// symmetry axis `s`. There the gap `j21` between the pair is 0 in value, so
+            /// `m = j21 d3 / (j32 d1)` and `n = -i3 j21 / (i1 j32)` are too, and the general
+            /// solution is analytic in them through 0 (`m < 0` on one side: the Jacobi
+            /// functions continue analytically), so its derivative is the limit from
+            /// either side; `jacobi` and `ellip_pi_jacobi` give the first order in `m`
+            /// and `n` at 0. With `u_s = 0` in value that frame degenerates (`d1 = 0`)
+            /// and the derivative along the gap is not carried (see the module).
+            fn breaking_flow(i: [S; 3], u0: [S; 3], q0: Quat, t: S, axis: usize) -> (Quat, [S; 3]) {
+                let (q, u) = symmetric_flow(i, u0, q0, t, axis);
+                if u0[axis] == k(0.0) {
+                    return (q, u);
+                }
+                let (a, b) = ((axis + 1) % 3, (axis + 2) % 3);
+                let d2 = u0[a] * u0[a] * ((i[b] - i[a]) / i[a])
+                    - u0[axis] * u0[axis] * ((i[axis] - i[b]) / i[axis]);
+                let frame = WorkFrame::new(i, u0, [a, b, axis], d2);
+                let (qg, ug) = general_flow(&frame, q0, t);
+                let qg = on_sheet(q, qg);
+                (
+                    [0, 1, 2, 3].map(|j| with_slope(q[j], qg[j])),
+                    [0, 1, 2].map(|j| with_slope(u[j], ug[j])),
+                )
             }
 
             /// The steady rotation about the principal axis that carries `u0`'s real part.
@@ -714,6 +790,28 @@ macro_rules! exact_flow_over {
                     return nans;
                 };
                 let to_rotor = |q: Quat| [q[0], -q[3], q[2], -q[1]];
+                let value = |x: S| k(x.re());
+                let same = |a: usize, b: usize| (moments[a] - moments[b]).is_exact_zero();
+                let tied = moments[0] == moments[1] && moments[1] == moments[2];
+                if tied && !same(0, 1) && !same(1, 2) && !same(0, 2) {
+                    // A sphere in value whose moments move apart in three different ways:
+                    // no closed form covers that direction, but a first derivative is
+                    // linear in it, so it is the sum of the sphere's derivative along
+                    // everything but the moments and one derivative per moment moved alone
+                    // (the other two stay exactly equal, a symmetric top in
+                    // `classify`). Each part is a run with only its own derivative parts.
+                    let (mut r, mut m) = exact_free_body(moments.map(value), m0, r0, t);
+                    for j in 0..3 {
+                        let mut alone = moments.map(value);
+                        alone[j] = moments[j];
+                        let (rj, mj) =
+                            exact_free_body(alone, m0.map(value), r0.map(value), value(t));
+                        let rj = on_sheet(r, rj);
+                        r = [0, 1, 2, 3].map(|c| r[c] + (rj[c] - value(rj[c])));
+                        m = [0, 1, 2].map(|c| m[c] + (mj[c] - value(mj[c])));
+                    }
+                    return (r, m);
+                }
                 let size = m0[0].hypot(m0[1]).hypot(m0[2]);
                 if size == k(0.0) {
                     if m0.iter().all(|x| x.is_exact_zero()) {

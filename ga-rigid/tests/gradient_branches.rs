@@ -194,3 +194,66 @@ fn derivatives_on_a_principal_axis_follow_the_linearised_motion() {
         );
     }
 }
+
+#[test]
+fn derivatives_of_a_symmetric_body_include_breaking_the_symmetry() {
+    let p = Point {
+        moments: [2.0, 2.0, 1.0],
+        m0: [0.3, 0.8, -0.5],
+        r0: R0,
+        t: 3.0,
+    };
+    let both = [0.5, -1.0, 0.3, 0.1, 0.0, -0.2, 0.4];
+    check("i1 = i2 = 2, i3 = 1", p, &[both]);
+    check(
+        "i1 = i2 = 2, i3 = 3",
+        Point {
+            moments: [2.0, 2.0, 3.0],
+            ..p
+        },
+        &[both],
+    );
+    check(
+        "i2 = i3 = 2, i1 = 3",
+        Point {
+            moments: [3.0, 2.0, 2.0],
+            ..p
+        },
+        &[both],
+    );
+    check(
+        "i1 = i3 = 2, i2 = 1",
+        Point {
+            moments: [2.0, 1.0, 2.0],
+            ..p
+        },
+        &[both],
+    );
+    let (_, d) = dual(p, &[0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0]);
+    let truth = [0.0417, 0.0744, -0.259, 0.140];
+    for j in 0..4 {
+        assert!(
+            (d[j] - truth[j]).abs() <= 1e-3,
+            "dR/di2 {:?} against {truth:?}",
+            &d[..4]
+        );
+    }
+}
+
+#[test]
+fn derivatives_of_a_sphere_include_every_moment() {
+    let p = Point {
+        moments: [2.0; 3],
+        m0: [0.3, 0.8, -0.5],
+        r0: R0,
+        t: 3.0,
+    };
+    check(
+        "sphere",
+        p,
+        &[
+            [1.0, -0.5, 0.3, 0.2, 0.1, -0.3, 0.5],
+            [1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+        ],
+    );
+}
