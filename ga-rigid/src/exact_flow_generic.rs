@@ -140,7 +140,19 @@ macro_rules! exact_flow_over {
                 }
                 if m1 == k(0.0) {
                     let sech = k(1.0) / u.cosh();
-                    return (tanh(u), sech, sech);
+                    let th = tanh(u);
+                    if m1.is_exact_zero() {
+                        return (th, sech, sech);
+                    }
+                    // On the separatrix in value only: the first order in m1 (Abramowitz &
+                    // Stegun 16.15.1-3), valid for every u.
+                    let sc = u.sinh() * u.cosh();
+                    let q = k(0.25) * m1 * sech;
+                    return (
+                        th + q * (sc - u) * sech,
+                        sech - q * (sc - u) * th,
+                        sech + q * (sc + u) * th,
+                    );
                 }
                 if !u.is_finite() {
                     return (nan, nan, nan);
@@ -202,7 +214,31 @@ macro_rules! exact_flow_over {
                         let r = n.sqrt();
                         -r * atanh(r * th)
                     };
-                    return (u + extra) / (k(1.0) - n);
+                    let g = (u + extra) / (k(1.0) - n);
+                    if m1.is_exact_zero() {
+                        return g;
+                    }
+                    // On the separatrix in value only: g + m1 dG/dm1, from
+                    // `dG/dm1 = int_0^u 2 n sn dsn/dm1 / (1 - n sn^2)^2` with A&S 16.15.1,
+                    // integrated by parts and by partial fractions in T = tanh:
+                    // `1/4 [n (u sech^2 u - T) / ((1 - n T^2)(1 - n)) + 2n/(1-n)^2 (u - P)]`,
+                    // `P = int_0^T dx / (1 - n x^2)`, arranged so that no term grows with u
+                    // faster than the result.
+                    let p = if n < k(0.0) {
+                        let r = (-n).sqrt();
+                        atan(r * th) / r
+                    } else if n > k(0.0) {
+                        let r = n.sqrt();
+                        atanh(r * th) / r
+                    } else {
+                        th
+                    };
+                    let sech = k(1.0) / u.cosh();
+                    let one_n = k(1.0) - n;
+                    let slope = k(0.25)
+                        * (n * (u * sech * sech - th) / ((k(1.0) - n * th * th) * one_n)
+                            + k(2.0) * n / (one_n * one_n) * (u - p));
+                    return g + m1 * slope;
                 }
                 if m == k(0.0) {
                     if n == k(0.0) && !(m.is_exact_zero() && n.is_exact_zero()) {
@@ -497,6 +533,9 @@ macro_rules! exact_flow_over {
                     let d3 = u1 * u1 * (j31 / i1) + u2 * u2 * (j32 / i2);
                     let k2 = clamp_unit((j21 / j32) * (d3 / d1));
                     let kc2 = clamp_unit(-(j31 / j32) * (f.d2 / d1));
+                    // On the separatrix in value only, m's derivative must be -m1's (the
+                    // clamp above may drop it where the quotient rounds above 1).
+                    let k2 = if kc2 == k(0.0) && !kc2.is_exact_zero() { k(1.0) - kc2 } else { k2 };
                     let omega = ((j32 / i2) * (d1 / (i1 * i3))).abs().sqrt() * j31.signum();
                     let rho = [(i1 / j31).abs().sqrt(), (i2 / j32).abs().sqrt()];
                     let sd3 = d3.abs().sqrt();
@@ -514,7 +553,15 @@ macro_rules! exact_flow_over {
                         if c == k(0.0) {
                             return None;
                         }
-                        (s / c).asinh()
+                        let tau = (s / c).asinh();
+                        if self.kc2.is_exact_zero() {
+                            tau
+                        } else {
+                            // On the separatrix in value only: the value of the closed
+                            // form, the derivative of Carlson's form (valid at m = 1).
+                            let c2 = c * c;
+                            with_slope(tau, s * carlson_rf(c2, mul_add(self.k2, c2, self.kc2), k(1.0)))
+                        }
                     } else {
                         let c2 = c * c;
                         s * carlson_rf(c2, mul_add(self.k2, c2, self.kc2), k(1.0))

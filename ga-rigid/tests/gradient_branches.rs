@@ -257,3 +257,25 @@ fn derivatives_of_a_sphere_include_every_moment() {
         ],
     );
 }
+
+#[test]
+fn derivatives_exactly_on_the_separatrix_are_its_limit() {
+    // Moments (15, 21, 35) scale to (3/7, 3/5, 1), where (i2 - i1)/i1 and (i3 - i2)/i3 are
+    // the same double, so m0 = (x, y, x) lies exactly on the separatrix.
+    let p = Point {
+        moments: [15.0, 21.0, 35.0],
+        m0: [10.0, 4.0, 10.0],
+        r0: R0,
+        t: 3.0,
+    };
+    check("separatrix", p, &[[0.2, -0.1, 0.3, 0.5, 0.4, -0.2, 0.1]]);
+    check(
+        "separatrix, t = -2",
+        Point {
+            t: -2.0,
+            m0: [-10.0, 4.0, 10.0],
+            ..p
+        },
+        &[],
+    );
+}
