@@ -5,6 +5,19 @@
 //! `dual`, for `num_dual::Dual64`. Every branch and every iteration count is decided on
 //! real parts; the derivative parts follow them.
 //!
+//! A branch taken on an exact equality (t = 0, m(0) = 0, m(0) on a principal axis, equal
+//! moments, the separatrix, `m = 0` or `m1 = 0` in the elliptic functions) is a point
+//! where the flow stays smooth but one formula stops covering it. There the shortcut is
+//! taken only when the quantity is zero in every part (`Scalar::is_exact_zero`; for `f64`
+//! that is the old test, and the `f64` instantiation returns the same bits); a quantity
+//! zero in value but not in derivative gets the derivative of the flow through the point:
+//! the general formula where it is valid at the point, a first-order expansion where it is
+//! not (each at its branch says which). Those expansions are first order: right for
+//! `Dual64`, not for second derivatives. Not covered: a symmetric body whose momentum is
+//! perpendicular to the symmetry axis, along a derivative that makes the pair of equal
+//! moments unequal (the general frame degenerates there; the symmetric top's derivative
+//! is returned).
+//!
 //! `exact_flow.rs` and `special/elliptic.rs` keep their own `f64` code, untouched (the
 //! registry's `exact` and the reference runs use them at full speed). Differences from
 //! them: `mul_add` is an unfused multiply-add and `hypot` `ga_core::Scalar`'s (both change
