@@ -5,6 +5,19 @@
 //! `dual`, for `num_dual::Dual64`. Every branch and every iteration count is decided on
 //! real parts; the derivative parts follow them.
 //!
+//! A branch taken on an exact equality (t = 0, m(0) = 0, m(0) on a principal axis, equal
+//! moments, the separatrix, `m = 0` or `m1 = 0` in the elliptic functions) is a point
+//! where the flow stays smooth but one formula stops covering it. There the shortcut is
+//! taken only when the quantity is zero in every part (`Scalar::is_exact_zero`; for `f64`
+//! that is the old test, and the `f64` instantiation returns the same bits); a quantity
+//! zero in value but not in derivative gets the derivative of the flow through the point:
+//! the general formula where it is valid at the point, a first-order expansion where it is
+//! not (each at its branch says which). Those expansions are first order: right for
+//! `Dual64`, not for second derivatives. Not covered: a symmetric body whose momentum is
+//! perpendicular to the symmetry axis, along a derivative that makes the pair of equal
+//! moments unequal (the general frame degenerates there; the symmetric top's derivative
+//! is returned).
+//!
 //! `exact_flow.rs` and `special/elliptic.rs` keep their own `f64` code, untouched (the
 //! registry's `exact` and the reference runs use them at full speed). Differences from
 //! them: `mul_add` is an unfused multiply-add and `hypot` `ga_core::Scalar`'s (both change
@@ -130,11 +143,29 @@ macro_rules! exact_flow_over {
                 }
                 if m == k(0.0) {
                     let (s, c) = u.sin_cos();
-                    return (s, c, k(1.0));
+                    if m.is_exact_zero() {
+                        return (s, c, k(1.0));
+                    }
+                    // m is 0 in value only (a symmetric body's moments moved apart): the
+                    // first order in m (Abramowitz & Stegun 16.13.1-3), valid for every u.
+                    let shift = k(0.25) * m * (u - s * c);
+                    return (s - shift * c, c + shift * s, k(1.0) - k(0.5) * m * s * s);
                 }
                 if m1 == k(0.0) {
                     let sech = k(1.0) / u.cosh();
-                    return (tanh(u), sech, sech);
+                    let th = tanh(u);
+                    if m1.is_exact_zero() {
+                        return (th, sech, sech);
+                    }
+                    // On the separatrix in value only: the first order in m1 (Abramowitz &
+                    // Stegun 16.15.1-3), valid for every u.
+                    let sc = u.sinh() * u.cosh();
+                    let q = k(0.25) * m1 * sech;
+                    return (
+                        th + q * (sc - u) * sech,
+                        sech - q * (sc - u) * th,
+                        sech + q * (sc + u) * th,
+                    );
                 }
                 if !u.is_finite() {
                     return (nan, nan, nan);
@@ -196,9 +227,40 @@ macro_rules! exact_flow_over {
                         let r = n.sqrt();
                         -r * atanh(r * th)
                     };
-                    return (u + extra) / (k(1.0) - n);
+                    let g = (u + extra) / (k(1.0) - n);
+                    if m1.is_exact_zero() {
+                        return g;
+                    }
+                    // On the separatrix in value only: g + m1 dG/dm1, from
+                    // `dG/dm1 = int_0^u 2 n sn dsn/dm1 / (1 - n sn^2)^2` with A&S 16.15.1,
+                    // integrated by parts and by partial fractions in T = tanh:
+                    // `1/4 [n (u sech^2 u - T) / ((1 - n T^2)(1 - n)) + 2n/(1-n)^2 (u - P)]`,
+                    // `P = int_0^T dx / (1 - n x^2)`, arranged so that no term grows with u
+                    // faster than the result.
+                    let p = if n < k(0.0) {
+                        let r = (-n).sqrt();
+                        atan(r * th) / r
+                    } else if n > k(0.0) {
+                        let r = n.sqrt();
+                        atanh(r * th) / r
+                    } else {
+                        th
+                    };
+                    let sech = k(1.0) / u.cosh();
+                    let one_n = k(1.0) - n;
+                    let slope = k(0.25)
+                        * (n * (u * sech * sech - th) / ((k(1.0) - n * th * th) * one_n)
+                            + k(2.0) * n / (one_n * one_n) * (u - p));
+                    return g + m1 * slope;
                 }
                 if m == k(0.0) {
+                    if n == k(0.0) && !(m.is_exact_zero() && n.is_exact_zero()) {
+                        // m and n are 0 in value only (a symmetric body's moments moved
+                        // apart): `Pi = int_0^u dv / (1 - n sn^2 v)` is `u` for n = 0 and
+                        // any m, and its n-derivative at m = 0 is `int_0^u sin^2`.
+                        let (s, c) = u.sin_cos();
+                        return u + k(0.5) * n * (u - s * c);
+                    }
                     return <S as Scalar>::NAN;
                 }
                 let agm = Agm::new(m, m1);
@@ -372,6 +434,8 @@ macro_rules! exact_flow_over {
             enum Body {
                 Sphere,
                 Symmetric(usize),
+                /// Two moments equal in value but not in derivative, about the third.
+                Breaking(usize),
                 Stationary,
                 General(WorkFrame),
             }
@@ -386,21 +450,40 @@ macro_rules! exact_flow_over {
                 d2: S,
             }
 
+            /// Equal moments take the closed forms only when they are equal in every part
+            /// (for `f64`, equal): moments equal in value but with different derivative
+            /// parts leave the symmetric body, and the derivative is the general flow's.
             fn classify(i: [S; 3], u: [S; 3]) -> Body {
+                let same = |a: usize, b: usize| (i[a] - i[b]).is_exact_zero();
+                if same(0, 1) && same(1, 2) {
+                    return Body::Sphere;
+                }
+                if same(0, 1) {
+                    return Body::Symmetric(2);
+                }
+                if same(1, 2) {
+                    return Body::Symmetric(0);
+                }
+                if same(0, 2) {
+                    return Body::Symmetric(1);
+                }
+                // Three moments equal in value only: `exact_free_body` splits the
+                // derivative into one moment at a time, each with an exact pair, before
+                // it gets here; this keeps the sphere's value for any other caller.
                 if i[0] == i[1] && i[1] == i[2] {
                     return Body::Sphere;
                 }
-                if i[0] == i[1] {
-                    return Body::Symmetric(2);
-                }
-                if i[1] == i[2] {
-                    return Body::Symmetric(0);
-                }
-                if i[0] == i[2] {
-                    return Body::Symmetric(1);
-                }
                 if u.iter().filter(|&&x| x == k(0.0)).count() == 2 {
                     return Body::Stationary;
+                }
+                if i[0] == i[1] {
+                    return Body::Breaking(2);
+                }
+                if i[1] == i[2] {
+                    return Body::Breaking(0);
+                }
+                if i[0] == i[2] {
+                    return Body::Breaking(1);
                 }
                 let mut order = [0, 1, 2];
                 order.sort_by(|&a, &b| i[a].re().total_cmp(&i[b].re()));
@@ -463,6 +546,9 @@ macro_rules! exact_flow_over {
                     let d3 = u1 * u1 * (j31 / i1) + u2 * u2 * (j32 / i2);
                     let k2 = clamp_unit((j21 / j32) * (d3 / d1));
                     let kc2 = clamp_unit(-(j31 / j32) * (f.d2 / d1));
+                    // On the separatrix in value only, m's derivative must be -m1's (the
+                    // clamp above may drop it where the quotient rounds above 1).
+                    let k2 = if kc2 == k(0.0) && !kc2.is_exact_zero() { k(1.0) - kc2 } else { k2 };
                     let omega = ((j32 / i2) * (d1 / (i1 * i3))).abs().sqrt() * j31.signum();
                     let rho = [(i1 / j31).abs().sqrt(), (i2 / j32).abs().sqrt()];
                     let sd3 = d3.abs().sqrt();
@@ -480,7 +566,15 @@ macro_rules! exact_flow_over {
                         if c == k(0.0) {
                             return None;
                         }
-                        (s / c).asinh()
+                        let tau = (s / c).asinh();
+                        if self.kc2.is_exact_zero() {
+                            tau
+                        } else {
+                            // On the separatrix in value only: the value of the closed
+                            // form, the derivative of Carlson's form (valid at m = 1).
+                            let c2 = c * c;
+                            with_slope(tau, s * carlson_rf(c2, mul_add(self.k2, c2, self.kc2), k(1.0)))
+                        }
                     } else {
                         let c2 = c * c;
                         s * carlson_rf(c2, mul_add(self.k2, c2, self.kc2), k(1.0))
@@ -499,13 +593,134 @@ macro_rules! exact_flow_over {
 
             fn unit_flow(i: [S; 3], u0: [S; 3], q0: Quat, t: S) -> (Quat, [S; 3]) {
                 match classify(i, u0) {
-                    Body::Sphere | Body::Stationary => {
+                    Body::Sphere => {
                         let w = [0, 1, 2].map(|j| u0[j] / i[j]);
                         (qmul(q0, qexp(w, t)), u0)
                     }
+                    Body::Stationary => stationary_flow(i, u0, q0, t),
                     Body::Symmetric(axis) => symmetric_flow(i, u0, q0, t, axis),
+                    Body::Breaking(axis) => breaking_flow(i, u0, q0, t, axis),
                     Body::General(frame) => general_flow(&frame, q0, t),
                 }
+            }
+
+            /// `q` or `-q` (the same attitude), whichever is on `reference`'s sheet.
+            fn on_sheet(reference: Quat, q: Quat) -> Quat {
+                let dot: f64 = (0..4).map(|j| reference[j].re() * q[j].re()).sum();
+                if dot < 0.0 {
+                    q.map(|x| -x)
+                } else {
+                    q
+                }
+            }
+
+            /// `value`'s real part with `slope`'s derivative parts.
+            fn with_slope(value: S, slope: S) -> S {
+                k(value.re()) + (slope - k(slope.re()))
+            }
+
+            /// Two moments equal in value, apart in derivative: the symmetric top's value,
+            /// the derivative of the general flow in the work frame whose axis 3 is the
+            /// symmetry axis `s`. There the gap `j21` between the pair is 0 in value, so
+            /// `m = j21 d3 / (j32 d1)` and `n = -i3 j21 / (i1 j32)` are too, and the general
+            /// solution is analytic in them through 0 (`m < 0` on one side: the Jacobi
+            /// functions continue analytically), so its derivative is the limit from
+            /// either side; `jacobi` and `ellip_pi_jacobi` give the first order in `m`
+            /// and `n` at 0. With `u_s = 0` in value that frame degenerates (`d1 = 0`)
+            /// and the derivative along the gap is not carried (see the module).
+            fn breaking_flow(i: [S; 3], u0: [S; 3], q0: Quat, t: S, axis: usize) -> (Quat, [S; 3]) {
+                let (q, u) = symmetric_flow(i, u0, q0, t, axis);
+                if u0[axis] == k(0.0) {
+                    return (q, u);
+                }
+                let (a, b) = ((axis + 1) % 3, (axis + 2) % 3);
+                let d2 = u0[a] * u0[a] * ((i[b] - i[a]) / i[a])
+                    - u0[axis] * u0[axis] * ((i[axis] - i[b]) / i[axis]);
+                let frame = WorkFrame::new(i, u0, [a, b, axis], d2);
+                let (qg, ug) = general_flow(&frame, q0, t);
+                let qg = on_sheet(q, qg);
+                (
+                    [0, 1, 2, 3].map(|j| with_slope(q[j], qg[j])),
+                    [0, 1, 2].map(|j| with_slope(u[j], ug[j])),
+                )
+            }
+
+            /// The steady rotation about the principal axis that carries `u0`'s real part.
+            ///
+            /// The components of `u0` off that axis have real part 0; where their
+            /// derivative parts are not 0, the momentum leaves the axis, and the derivative
+            /// is that of the flow linearised about the steady rotation (a formula valid on
+            /// both sides, unlike the constant angular velocity). With `k` the axis,
+            /// `(a, b)` the other two in cyclic order, `M = u_k` and `W = M / i_k`, the
+            /// first-order momentum `(x_a, x_b)` and attitude `q(t) (1 + eta)` (`eta`
+            /// pure, in the body frame) obey
+            /// `x_a' = M (1/i_k - 1/i_b) x_b`, `x_b' = M (1/i_a - 1/i_k) x_a`,
+            /// `eta_a' = W eta_b + x_a / (2 i_a)`, `eta_b' = -W eta_a + x_b / (2 i_b)`
+            /// (from `m' = m x w` and `q' = q w / 2`: `eta' = eta x w + dw / 2`), with
+            /// `eta(0) = 0`. Its matrix exponential is taken on real parts, where it is
+            /// all the first order needs (a product of two derivative parts vanishes);
+            /// no closed form, which would divide by the difference of the nutation and
+            /// spin rates (0 for moments (1, 2, 3)).
+            fn stationary_flow(i: [S; 3], u0: [S; 3], q0: Quat, t: S) -> (Quat, [S; 3]) {
+                let axis = (0..3).find(|&j| u0[j] != k(0.0)).unwrap_or(0);
+                let (a, b) = ((axis + 1) % 3, (axis + 2) % 3);
+                let mut w = [k(0.0); 3];
+                w[axis] = u0[axis] / i[axis];
+                let q = qmul(q0, qexp(w, t));
+                if u0[a].is_exact_zero() && u0[b].is_exact_zero() {
+                    return (q, u0);
+                }
+                let (ia, ib, ik) = (i[a].re(), i[b].re(), i[axis].re());
+                let big_m = u0[axis].re();
+                let spin = big_m / ik;
+                let l = [
+                    [0.0, big_m * (1.0 / ik - 1.0 / ib), 0.0, 0.0],
+                    [big_m * (1.0 / ia - 1.0 / ik), 0.0, 0.0, 0.0],
+                    [0.5 / ia, 0.0, 0.0, spin],
+                    [0.0, 0.5 / ib, -spin, 0.0],
+                ];
+                let e = expm4(l, t.re());
+                let x = [0, 1, 2, 3].map(|r| k(e[r][0]) * u0[a] + k(e[r][1]) * u0[b]);
+                let mut u = u0;
+                u[a] = x[0];
+                u[b] = x[1];
+                let mut eta = [k(1.0), k(0.0), k(0.0), k(0.0)];
+                eta[1 + a] = x[2];
+                eta[1 + b] = x[3];
+                (qmul(q, eta), u)
+            }
+
+            /// `exp(l t)` for a real 4x4 matrix: scaling and squaring of the Taylor series.
+            fn expm4(l: [[f64; 4]; 4], t: f64) -> [[f64; 4]; 4] {
+                type M4 = [[f64; 4]; 4];
+                let mul = |x: &M4, y: &M4| -> M4 {
+                    ::core::array::from_fn(|r| {
+                        ::core::array::from_fn(|c| (0..4).map(|j| x[r][j] * y[j][c]).sum())
+                    })
+                };
+                let norm = l.iter().map(|row| row.iter().map(|x| x.abs()).sum::<f64>()).fold(0.0, f64::max)
+                    * t.abs();
+                let mut squarings = 0;
+                let mut scale = t;
+                while norm * (scale / t).abs() > 0.25 && squarings < 1100 {
+                    scale *= 0.5;
+                    squarings += 1;
+                }
+                let a: M4 = l.map(|row| row.map(|x| x * scale));
+                let identity: M4 = ::core::array::from_fn(|r| ::core::array::from_fn(|c| if r == c { 1.0 } else { 0.0 }));
+                let (mut sum, mut term) = (identity, identity);
+                for n in 1..=20 {
+                    term = mul(&term, &a).map(|row| row.map(|x| x / n as f64));
+                    for r in 0..4 {
+                        for c in 0..4 {
+                            sum[r][c] += term[r][c];
+                        }
+                    }
+                }
+                for _ in 0..squarings {
+                    sum = mul(&sum, &sum);
+                }
+                sum
             }
 
             fn symmetric_flow(i: [S; 3], u0: [S; 3], q0: Quat, t: S, axis: usize) -> (Quat, [S; 3]) {
@@ -555,7 +770,14 @@ macro_rules! exact_flow_over {
             fn qexp(v: [S; 3], t: S) -> Quat {
                 let size = v[0].hypot(v[1]).hypot(v[2]);
                 if size == k(0.0) {
-                    return [k(1.0), k(0.0), k(0.0), k(0.0)];
+                    if v.iter().all(|x| x.is_exact_zero()) {
+                        return [k(1.0), k(0.0), k(0.0), k(0.0)];
+                    }
+                    // |v| is zero but its derivative part is not (hypot's is meaningless
+                    // there): `exp(v t / 2) = 1 + v t / 2 + O(|v|^2)`, and the square of a
+                    // pure derivative part vanishes.
+                    let half = k(0.5) * t;
+                    return [k(1.0), half * v[0], half * v[1], half * v[2]];
                 }
                 let (s, c) = (k(0.5) * size * t).sin_cos();
                 let f = s / size;
@@ -628,8 +850,43 @@ macro_rules! exact_flow_over {
                     return nans;
                 };
                 let to_rotor = |q: Quat| [q[0], -q[3], q[2], -q[1]];
+                let value = |x: S| k(x.re());
+                let same = |a: usize, b: usize| (moments[a] - moments[b]).is_exact_zero();
+                let tied = moments[0] == moments[1] && moments[1] == moments[2];
+                if tied && !same(0, 1) && !same(1, 2) && !same(0, 2) {
+                    // A sphere in value whose moments move apart in three different ways:
+                    // no closed form covers that direction, but a first derivative is
+                    // linear in it, so it is the sum of the sphere's derivative along
+                    // everything but the moments and one derivative per moment moved alone
+                    // (the other two stay exactly equal, a symmetric top in
+                    // `classify`). Each part is a run with only its own derivative parts.
+                    let (mut r, mut m) = exact_free_body(moments.map(value), m0, r0, t);
+                    for j in 0..3 {
+                        let mut alone = moments.map(value);
+                        alone[j] = moments[j];
+                        let (rj, mj) =
+                            exact_free_body(alone, m0.map(value), r0.map(value), value(t));
+                        let rj = on_sheet(r, rj);
+                        r = [0, 1, 2, 3].map(|c| r[c] + (rj[c] - value(rj[c])));
+                        m = [0, 1, 2].map(|c| m[c] + (mj[c] - value(mj[c])));
+                    }
+                    return (r, m);
+                }
                 let size = m0[0].hypot(m0[1]).hypot(m0[2]);
-                if size == k(0.0) || t == k(0.0) {
+                if size == k(0.0) {
+                    if m0.iter().all(|x| x.is_exact_zero()) {
+                        return (to_rotor(q0), m0);
+                    }
+                    // m(0) is zero with a derivative part: to first order the momentum
+                    // stays m(0) (its rate `m x w` is quadratic) and the body turns at
+                    // `w = J^-1 m(0)`, which `qexp` expands to first order.
+                    let w = [0, 1, 2].map(|j| m0[j] / moments[j]);
+                    return (to_rotor(qmul(q0, qexp(w, t))), m0);
+                }
+                // Only an exact zero: a time whose real part is 0 but whose derivative part
+                // is not takes the flow below, which is valid at 0, for the rate
+                // `dR/dt = -1/2 R Omega`, `dm/dt = m x w`.
+                if t.is_exact_zero() {
                     return (to_rotor(q0), m0);
                 }
                 let scale = moments[0].max(moments[1]).max(moments[2]);
