@@ -1,7 +1,7 @@
 use std::collections::BTreeSet;
 
-use proc_macro2::{Span, TokenStream};
-use syn::{Attribute, Expr, ExprLit, ExprUnary, Ident, Lit, UnOp, Visibility};
+use proc_macro2::{Span, TokenStream, TokenTree};
+use syn::{Attribute, Ident, Visibility};
 
 use super::ctxt::Ctxt;
 use super::parse::{
@@ -560,18 +560,23 @@ fn is_metric_key(key: &Ident) -> bool {
     key == "metric" || key == "signature"
 }
 
-fn metric_entry(expr: &Expr) -> Option<i64> {
-    match expr {
-        Expr::Lit(ExprLit {
-            lit: Lit::Int(lit), ..
-        }) => lit.base10_parse().ok(),
-        Expr::Unary(ExprUnary {
-            op: UnOp::Neg(_),
-            expr,
-            ..
-        }) => metric_entry(expr).map(|v| -v),
-        _ => None,
-    }
+/// The value of a metric entry written as `1`, `-1` or `0` (a plain decimal literal, with
+/// no suffix, no radix and one sign at most); `None` for anything else.
+fn metric_entry(entry: &TokenStream) -> Option<i8> {
+    let tokens: Vec<TokenTree> = entry.clone().into_iter().collect();
+    let (negative, literal) = match tokens.as_slice() {
+        [TokenTree::Literal(lit)] => (false, lit),
+        [TokenTree::Punct(minus), TokenTree::Literal(lit)] if minus.as_char() == '-' => {
+            (true, lit)
+        }
+        _ => return None,
+    };
+    let value: i8 = match literal.to_string().as_str() {
+        "0" => 0,
+        "1" => 1,
+        _ => return None,
+    };
+    Some(if negative { -value } else { value })
 }
 
 fn check_dimension(cx: &mut Ctxt, span: Span, dimension: usize, counted_as: &str) -> bool {
@@ -590,14 +595,24 @@ fn check_metric(cx: &mut Ctxt, raw: RawMetric) -> Option<Vec<i8>> {
     let mut ok = true;
     for entry in &raw.entries {
         match metric_entry(entry) {
-            Some(v @ (-1..=1)) => squares.push(v as i8),
-            _ => {
+            Some(v) => squares.push(v),
+            None => {
                 ok = false;
+                // `[1, 1 1]`: a good entry with more after it lacks a comma.
+                let tokens: Vec<TokenTree> = entry.clone().into_iter().collect();
+                if let Some(extra) = (1..tokens.len()).find(|&i| {
+                    metric_entry(&tokens[..i].iter().cloned().collect()).is_some()
+                }) {
+                    cx.error_spanned_by(&tokens[extra], "expected `,`");
+                    continue;
+                }
+                // As written: `TokenStream`'s `Display` would space `--1` as `- - 1`.
+                let written: String = tokens.iter().map(ToString::to_string).collect();
                 cx.error_spanned_by(
                     entry,
                     format!(
-                        "metric entry `{}` must be 1, -1 or 0 (the square of its generator)",
-                        quote::quote!(#entry)
+                        "metric entry `{written}` must be written 1, -1 or 0 (the square of \
+                         its generator)"
                     ),
                 );
             }
@@ -626,6 +641,13 @@ fn check_signature(cx: &mut Ctxt, raw: RawSignature) -> Option<Vec<i8>> {
     }
     let mut counts = [0usize; 3];
     for (count, lit) in counts.iter_mut().zip(&raw.counts) {
+        if !lit.to_string().bytes().all(|b| b.is_ascii_digit()) {
+            cx.error_spanned_by(
+                lit,
+                format!("signature count `{lit}` must be a plain decimal count, e.g. `3`"),
+            );
+            return None;
+        }
         match lit.base10_parse() {
             Ok(v) => *count = v,
             Err(e) => {
