@@ -667,6 +667,64 @@ fn check_signature(cx: &mut Ctxt, raw: RawSignature) -> Option<Vec<i8>> {
     Some(squares)
 }
 
+/// Names a new type may not take, with why: a struct of one of these names would clash
+/// with an item the module defines or shadow a name its code uses unqualified, and give
+/// hundreds of errors inside the generated code instead of one here.
+const RESERVED_TYPE_NAMES: [(&[&str], &str); 5] = [
+    (
+        &[
+            "Sandwich",
+            "SandwichUnit",
+            "ScalarProduct",
+            "LeftContraction",
+            "RightContraction",
+            "Regressive",
+            "Commutator",
+            "math",
+            "simd",
+        ],
+        "an item the generated module defines",
+    ),
+    (
+        &["Scalar"],
+        "the name of the scalar operand in `TERM_COUNTS` and of `ga_core::Scalar`, which \
+         modules over a generic scalar use",
+    ),
+    (
+        &[
+            "f16", "f32", "f64", "f128", "i8", "i16", "i32", "i64", "i128", "isize", "u8",
+            "u16", "u32", "u64", "u128", "usize", "bool", "char", "str",
+        ],
+        "a primitive type, which the generated code names",
+    ),
+    (
+        &[
+            "Option", "Some", "None", "Result", "Ok", "Err", "Default", "Clone", "Copy", "Send",
+            "Sync", "Sized", "PartialEq", "Eq", "PartialOrd", "Ord", "Iterator", "IntoIterator",
+            "Extend", "From", "Into", "TryFrom", "TryInto", "AsRef", "AsMut", "Drop", "Fn",
+            "FnMut", "FnOnce", "Box", "Vec", "String", "ToString", "ToOwned",
+        ],
+        "a name of Rust's prelude, which the generated code uses unqualified",
+    ),
+    (&["core", "std", "alloc", "ga_core"], "a crate the generated code names"),
+];
+
+/// Names a new type may not take in a module with `shaders: [wgsl]`: the struct the WGSL
+/// `log_even` returns, and WGSL's predeclared types that Rust does not have (one namespace
+/// holds a WGSL module's types and functions).
+const WGSL_RESERVED_TYPE_NAMES: [&str; 12] = [
+    "Logarithm", "vec2", "vec3", "vec4", "mat2x2", "mat3x3", "mat4x4", "array", "atomic", "ptr",
+    "sampler", "texture_2d",
+];
+
+/// Why `name` may not name a new type, if it may not.
+fn reserved_type_name(name: &str) -> Option<&'static str> {
+    RESERVED_TYPE_NAMES
+        .iter()
+        .find(|(names, _)| names.contains(&name))
+        .map(|&(_, why)| why)
+}
+
 fn builtin(name: &str, dimension: usize) -> Option<TypeRequest> {
     match name {
         "Even" | "Rotor" => Some(TypeRequest::Even),
@@ -695,6 +753,21 @@ fn check_types(cx: &mut Ctxt, dimension: usize, raw: RawTypes) -> Vec<TypeReques
         names.push(name.clone());
         match request.blades {
             None => match builtin(&name, dimension) {
+                // `Rotor` is `Even`, and `Pseudoscalar` the top grade, under another name.
+                Some(t) if requests.contains(&t) => {
+                    let earlier = names
+                        .iter()
+                        .find(|n| builtin(n, dimension).as_ref() == Some(&t))
+                        .cloned()
+                        .unwrap_or_default();
+                    cx.error_spanned_by(
+                        &request.name,
+                        format!(
+                            "`{name}` is `{earlier}` under another name, and `types` lists \
+                             `{earlier}` already: list it once"
+                        ),
+                    );
+                }
                 Some(t) => requests.push(t),
                 None if GRADE_NAMES.contains(&name.as_str()) => cx.error_spanned_by(
                     &request.name,
@@ -718,6 +791,13 @@ fn check_types(cx: &mut Ctxt, dimension: usize, raw: RawTypes) -> Vec<TypeReques
                     cx.error_spanned_by(
                         &request.name,
                         format!("`{name}` is a built-in type: give the new type another name"),
+                    );
+                    continue;
+                }
+                if let Some(why) = reserved_type_name(&name) {
+                    cx.error_spanned_by(
+                        &request.name,
+                        format!("`{name}` is {why}: give the new type another name"),
                     );
                     continue;
                 }
