@@ -23,6 +23,8 @@ mod wgsl;
 
 #[cfg(all(test, feature = "wgsl"))]
 pub use wgsl::wgsl_source;
+#[cfg(feature = "wgsl")]
+pub use wgsl::colliding_functions;
 
 use proc_macro2::TokenStream;
 use quote::quote;

@@ -35,6 +35,11 @@ pub struct Spec {
     pub math: Math,
     /// The `ops` entries as written, to point at one whose method cannot be emitted.
     pub op_idents: Vec<Ident>,
+    /// The names of the new types (`Name = [e12]`) as written, in order, to point at one
+    /// whose WGSL names collide with another's.
+    // Without the `wgsl` feature nothing reads it.
+    #[cfg_attr(not(feature = "wgsl"), allow(dead_code))]
+    pub type_idents: Vec<Ident>,
     /// Trait impls for other crates' traits (`derive: [serde, bytemuck, approx, mint]`).
     pub integrations: Vec<Integration>,
     /// Shader modules to emit beside the Rust (`shaders: [wgsl]`): the `#[cfg(..)]`
@@ -388,8 +393,14 @@ pub fn validate_for(
             None
         }
     };
+    let mut type_idents = Vec::new();
     let types = match (&squares, types) {
-        (Some(squares), Some(raw)) => Some(check_types(&mut cx, squares.len(), raw)),
+        (Some(squares), Some(raw)) => Some(check_types(
+            &mut cx,
+            squares.len(),
+            raw,
+            &mut type_idents,
+        )),
         _ => None,
     };
     let op_idents: Vec<Ident> = ops.as_ref().map(|raw| raw.0.clone()).unwrap_or_default();
@@ -402,6 +413,21 @@ pub fn validate_for(
         .map(|raw| check_integrations(&mut cx, squares.as_deref(), raw))
         .unwrap_or_default();
     let wgsl = shaders.and_then(|raw| check_shaders(&mut cx, back_ends, raw));
+    if wgsl.is_some() {
+        for ident in &type_idents {
+            let name = ident.to_string();
+            if WGSL_RESERVED_TYPE_NAMES.contains(&name.as_str()) {
+                cx.error_spanned_by(
+                    ident,
+                    format!(
+                        "`{name}` is a name the WGSL module defines or WGSL predeclares \
+                         (`Logarithm` is what `log_even` returns): give the new type another \
+                         name"
+                    ),
+                );
+            }
+        }
+    }
     if let Some(path) = &generic_scalar {
         // The generic path is the scalar code: no batch lanes, no SIMD, no other crates'
         // traits (their impls assume a float).
@@ -434,6 +460,7 @@ pub fn validate_for(
         simd,
         math,
         op_idents,
+        type_idents,
         integrations,
         wgsl,
     })
@@ -514,6 +541,45 @@ pub fn check_emitted(spec: &Spec, has_bivector: bool, has_even: bool) -> syn::Re
                 );
             }
         }
+    }
+    cx.check()
+}
+
+/// `shaders: [wgsl]`: refuses a new type whose WGSL function names are another's (WGSL
+/// has no overloading, and its names carry the operand types in snake case, so `X` with
+/// `SquaredX` both give `norm_squared_x`, and `PlaneA` with `Plane_a` every function).
+/// `collisions` holds each such name with the parameter types of each function taking it;
+/// the error is at the last-listed new type that only some of them take, once per type.
+#[cfg(feature = "wgsl")]
+pub fn check_wgsl_names(spec: &Spec, collisions: &[(String, Vec<Vec<String>>)]) -> syn::Result<()> {
+    let mut cx = Ctxt::default();
+    let mut blamed: Vec<&Ident> = Vec::new();
+    for (function, overloads) in collisions {
+        let in_all = |ty: &str| overloads.iter().all(|o| o.iter().any(|t| t == ty));
+        let culprit = spec.type_idents.iter().rev().find(|ident| {
+            let name = ident.to_string();
+            overloads.iter().any(|o| o.contains(&name)) && !in_all(&name)
+        });
+        let Some(culprit) = culprit else {
+            continue;
+        };
+        if blamed.contains(&culprit) {
+            continue;
+        }
+        blamed.push(culprit);
+        let signatures = overloads
+            .iter()
+            .map(|o| format!("`{function}({})`", o.join(", ")))
+            .collect::<Vec<_>>()
+            .join(" and ");
+        cx.error_spanned_by(
+            culprit,
+            format!(
+                "with `shaders: [wgsl]`, `{culprit}` gives the WGSL function name \
+                 `{function}` to two functions ({signatures}), and WGSL has no overloading: \
+                 rename the type"
+            ),
+        );
     }
     cx.check()
 }
@@ -738,7 +804,12 @@ fn builtin(name: &str, dimension: usize) -> Option<TypeRequest> {
     }
 }
 
-fn check_types(cx: &mut Ctxt, dimension: usize, raw: RawTypes) -> Vec<TypeRequest> {
+fn check_types(
+    cx: &mut Ctxt,
+    dimension: usize,
+    raw: RawTypes,
+    user_idents: &mut Vec<Ident>,
+) -> Vec<TypeRequest> {
     let mut requests: Vec<TypeRequest> = Vec::new();
     let mut names: Vec<String> = Vec::new();
     for request in raw.0 {
@@ -823,6 +894,7 @@ fn check_types(cx: &mut Ctxt, dimension: usize, raw: RawTypes) -> Vec<TypeReques
                         ),
                     );
                 }
+                user_idents.push(request.name.clone());
                 requests.push(TypeRequest::User { name, blades });
             }
         }
