@@ -21,10 +21,10 @@ mod versor;
 #[cfg(feature = "wgsl")]
 mod wgsl;
 
-#[cfg(all(test, feature = "wgsl"))]
-pub use wgsl::wgsl_source;
 #[cfg(feature = "wgsl")]
 pub use wgsl::colliding_functions;
+#[cfg(all(test, feature = "wgsl"))]
+pub use wgsl::wgsl_source;
 
 use proc_macro2::TokenStream;
 use quote::quote;

@@ -395,12 +395,9 @@ pub fn validate_for(
     };
     let mut type_idents = Vec::new();
     let types = match (&squares, types) {
-        (Some(squares), Some(raw)) => Some(check_types(
-            &mut cx,
-            squares.len(),
-            raw,
-            &mut type_idents,
-        )),
+        (Some(squares), Some(raw)) => {
+            Some(check_types(&mut cx, squares.len(), raw, &mut type_idents))
+        }
         _ => None,
     };
     let op_idents: Vec<Ident> = ops.as_ref().map(|raw| raw.0.clone()).unwrap_or_default();
@@ -632,9 +629,7 @@ fn metric_entry(entry: &TokenStream) -> Option<i8> {
     let tokens: Vec<TokenTree> = entry.clone().into_iter().collect();
     let (negative, literal) = match tokens.as_slice() {
         [TokenTree::Literal(lit)] => (false, lit),
-        [TokenTree::Punct(minus), TokenTree::Literal(lit)] if minus.as_char() == '-' => {
-            (true, lit)
-        }
+        [TokenTree::Punct(minus), TokenTree::Literal(lit)] if minus.as_char() == '-' => (true, lit),
         _ => return None,
     };
     let value: i8 = match literal.to_string().as_str() {
@@ -666,9 +661,9 @@ fn check_metric(cx: &mut Ctxt, raw: RawMetric) -> Option<Vec<i8>> {
                 ok = false;
                 // `[1, 1 1]`: a good entry with more after it lacks a comma.
                 let tokens: Vec<TokenTree> = entry.clone().into_iter().collect();
-                if let Some(extra) = (1..tokens.len()).find(|&i| {
-                    metric_entry(&tokens[..i].iter().cloned().collect()).is_some()
-                }) {
+                if let Some(extra) = (1..tokens.len())
+                    .find(|&i| metric_entry(&tokens[..i].iter().cloned().collect()).is_some())
+                {
                     cx.error_spanned_by(&tokens[extra], "expected `,`");
                     continue;
                 }
@@ -758,29 +753,72 @@ const RESERVED_TYPE_NAMES: [(&[&str], &str); 5] = [
     ),
     (
         &[
-            "f16", "f32", "f64", "f128", "i8", "i16", "i32", "i64", "i128", "isize", "u8",
-            "u16", "u32", "u64", "u128", "usize", "bool", "char", "str",
+            "f16", "f32", "f64", "f128", "i8", "i16", "i32", "i64", "i128", "isize", "u8", "u16",
+            "u32", "u64", "u128", "usize", "bool", "char", "str",
         ],
         "a primitive type, which the generated code names",
     ),
     (
         &[
-            "Option", "Some", "None", "Result", "Ok", "Err", "Default", "Clone", "Copy", "Send",
-            "Sync", "Sized", "PartialEq", "Eq", "PartialOrd", "Ord", "Iterator", "IntoIterator",
-            "Extend", "From", "Into", "TryFrom", "TryInto", "AsRef", "AsMut", "Drop", "Fn",
-            "FnMut", "FnOnce", "Box", "Vec", "String", "ToString", "ToOwned",
+            "Option",
+            "Some",
+            "None",
+            "Result",
+            "Ok",
+            "Err",
+            "Default",
+            "Clone",
+            "Copy",
+            "Send",
+            "Sync",
+            "Sized",
+            "PartialEq",
+            "Eq",
+            "PartialOrd",
+            "Ord",
+            "Iterator",
+            "IntoIterator",
+            "Extend",
+            "From",
+            "Into",
+            "TryFrom",
+            "TryInto",
+            "AsRef",
+            "AsMut",
+            "Drop",
+            "Fn",
+            "FnMut",
+            "FnOnce",
+            "Box",
+            "Vec",
+            "String",
+            "ToString",
+            "ToOwned",
         ],
         "a name of Rust's prelude, which the generated code uses unqualified",
     ),
-    (&["core", "std", "alloc", "ga_core"], "a crate the generated code names"),
+    (
+        &["core", "std", "alloc", "ga_core"],
+        "a crate the generated code names",
+    ),
 ];
 
 /// Names a new type may not take in a module with `shaders: [wgsl]`: the struct the WGSL
 /// `log_even` returns, and WGSL's predeclared types that Rust does not have (one namespace
 /// holds a WGSL module's types and functions).
 const WGSL_RESERVED_TYPE_NAMES: [&str; 12] = [
-    "Logarithm", "vec2", "vec3", "vec4", "mat2x2", "mat3x3", "mat4x4", "array", "atomic", "ptr",
-    "sampler", "texture_2d",
+    "Logarithm",
+    "vec2",
+    "vec3",
+    "vec4",
+    "mat2x2",
+    "mat3x3",
+    "mat4x4",
+    "array",
+    "atomic",
+    "ptr",
+    "sampler",
+    "texture_2d",
 ];
 
 /// Why `name` may not name a new type, if it may not.
