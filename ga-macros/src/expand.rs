@@ -18,6 +18,10 @@ fn plan(spec: &Spec) -> syn::Result<Plan> {
         n >= 2 && emits(TypeId::grade(2)),
         emits(TypeId::even(n)),
     )?;
+    #[cfg(feature = "wgsl")]
+    if spec.wgsl.is_some() {
+        crate::spec::check_wgsl_names(spec, &emit::colliding_functions(&plan))?;
+    }
     Ok(plan)
 }
 

@@ -303,7 +303,11 @@ pub fn emit_log(plan: &Plan, form: ExpLogForm) -> TokenStream {
             let c4 = r.blade(plan, pseudoscalar).unwrap_or_else(|| quote!(0.0));
             let iota = float(plan.metric.pseudoscalar_square() as f64);
             let unit = Operand::new(quote!(unit), TypeId::grade(4));
-            let (p_unit, _) = product_value(plan, ProductKind::Geometric, &p, &unit);
+            // With a null pseudoscalar (`signature: (0, 1, 3)`) `p I` is zero.
+            let p_unit = match product_value(plan, ProductKind::Geometric, &p, &unit) {
+                (_, Output::Zero) => quote!(Bivector::ZERO),
+                (value, Output::Type(_)) => value,
+            };
             let unit_field = field_ident(pseudoscalar);
             quote! {
                 let p = Bivector { #(#p_fields: self.#p_fields),* };

@@ -21,6 +21,8 @@ mod versor;
 #[cfg(feature = "wgsl")]
 mod wgsl;
 
+#[cfg(feature = "wgsl")]
+pub use wgsl::colliding_functions;
 #[cfg(all(test, feature = "wgsl"))]
 pub use wgsl::wgsl_source;
 

@@ -636,6 +636,15 @@ pub fn emit_blades(plan: &Plan, t: TypeId) -> TokenStream {
     let zero = float(0.0);
     let candidate_square =
         super::unary::norm_squared_expr(plan, &Operand::new(quote!(candidate), TypeId::grade(1)));
+    // Where every generator squares to 0 the metric square is the literal `0.0`, whose
+    // float type nothing would fix: no candidate is invertible, and `factor` of a grade
+    // above one returns `None`.
+    let vectors = &plan.types.get(TypeId::grade(1)).blades;
+    let candidate_size = if vectors.iter().all(|&b| plan.metric.geometric(b, b).0 == 0) {
+        quote!(let candidate_size: #s = #zero;)
+    } else {
+        quote!(let candidate_size = (#candidate_square).abs();)
+    };
     let descaled_self =
         super::unary::descaled(plan, &Operand::new(quote!(self), t), &quote!(largest));
     methods.extend(quote! {
@@ -666,7 +675,7 @@ pub fn emit_blades(plan: &Plan, t: TypeId) -> TokenStream {
                     let candidate = Vector { #(#fields: projected.#fields),* };
                     // The metric square, not the Euclidean size: in a Minkowski metric the
                     // largest projection can be nearly null, and its inverse ill-conditioned.
-                    let candidate_size = (#candidate_square).abs();
+                    #candidate_size
                     if candidate_size > best_size {
                         best = candidate;
                         best_size = candidate_size;

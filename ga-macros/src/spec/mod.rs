@@ -6,6 +6,8 @@ mod parse;
 mod validate;
 
 pub use parse::{RawAlgebra, RawDerive};
+#[cfg(feature = "wgsl")]
+pub use validate::check_wgsl_names;
 pub use validate::{
     check_emitted, grade_type_name, validate, Integration, IntegrationKind, Math, Op, Scalar, Spec,
     TypeRequest,

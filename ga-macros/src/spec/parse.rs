@@ -1,7 +1,7 @@
 use proc_macro2::TokenStream;
 use syn::parse::{Parse, ParseStream};
 use syn::punctuated::Punctuated;
-use syn::{bracketed, parenthesized, Attribute, Expr, Ident, LitInt, Token, Visibility};
+use syn::{bracketed, parenthesized, Attribute, Ident, LitInt, Token, Visibility};
 
 /// The function-like form as written: `#[attrs] vis mod name { key: value, ... }`.
 pub struct RawAlgebra {
@@ -26,10 +26,12 @@ pub struct RawEntry {
     pub value: TokenStream,
 }
 
-/// `metric: [1, -1, 0]`: each entry as written (so a wrong one can be pointed at).
+/// `metric: [1, -1, 0]`: each entry as the tokens written between the commas (not as an
+/// expression: syn without its `full` feature cannot parse `+1` or `[1]`, and an
+/// expression would let `--1` or `0x1` through), so that a wrong one can be pointed at.
 pub struct RawMetric {
     pub bracket: proc_macro2::Span,
-    pub entries: Vec<Expr>,
+    pub entries: Vec<TokenStream>,
 }
 
 /// `signature: (p, q, r)`.
@@ -74,6 +76,18 @@ impl Parse for RawAlgebra {
 impl RawDerive {
     /// Reads the marker type of `#[derive(Algebra)]` and its `#[algebra(...)]` attribute.
     pub fn from_derive(input: syn::DeriveInput) -> syn::Result<Self> {
+        let not_a_struct = match &input.data {
+            syn::Data::Struct(_) => None,
+            syn::Data::Enum(data) => Some(data.enum_token.span),
+            syn::Data::Union(data) => Some(data.union_token.span),
+        };
+        if let Some(span) = not_a_struct {
+            return Err(syn::Error::new(
+                span,
+                "`#[derive(Algebra)]` goes on a marker struct, e.g. `struct G3;`: write \
+                 `struct` here",
+            ));
+        }
         let mut entries = Vec::new();
         let mut found = false;
         for attr in &input.attrs {
@@ -169,10 +183,23 @@ impl Parse for RawMetric {
     fn parse(input: ParseStream) -> syn::Result<Self> {
         let content;
         let bracket = bracketed!(content in input);
-        let entries = Punctuated::<Expr, Token![,]>::parse_terminated(&content)?;
+        let mut entries = Vec::new();
+        while !content.is_empty() {
+            let mut entry = TokenStream::new();
+            while !content.is_empty() && !content.peek(Token![,]) {
+                entry.extend([content.parse::<proc_macro2::TokenTree>()?]);
+            }
+            if entry.is_empty() {
+                return Err(content.error("expected a metric entry (1, -1 or 0) before `,`"));
+            }
+            entries.push(entry);
+            if !content.is_empty() {
+                content.parse::<Token![,]>()?;
+            }
+        }
         Ok(RawMetric {
             bracket: bracket.span.join(),
-            entries: entries.into_iter().collect(),
+            entries,
         })
     }
 }

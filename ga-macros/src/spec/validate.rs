@@ -1,7 +1,7 @@
 use std::collections::BTreeSet;
 
-use proc_macro2::{Span, TokenStream};
-use syn::{Attribute, Expr, ExprLit, ExprUnary, Ident, Lit, UnOp, Visibility};
+use proc_macro2::{Span, TokenStream, TokenTree};
+use syn::{Attribute, Ident, Visibility};
 
 use super::ctxt::Ctxt;
 use super::parse::{
@@ -35,6 +35,11 @@ pub struct Spec {
     pub math: Math,
     /// The `ops` entries as written, to point at one whose method cannot be emitted.
     pub op_idents: Vec<Ident>,
+    /// The names of the new types (`Name = [e12]`) as written, in order, to point at one
+    /// whose WGSL names collide with another's.
+    // Without the `wgsl` feature nothing reads it.
+    #[cfg_attr(not(feature = "wgsl"), allow(dead_code))]
+    pub type_idents: Vec<Ident>,
     /// Trait impls for other crates' traits (`derive: [serde, bytemuck, approx, mint]`).
     pub integrations: Vec<Integration>,
     /// Shader modules to emit beside the Rust (`shaders: [wgsl]`): the `#[cfg(..)]`
@@ -388,8 +393,11 @@ pub fn validate_for(
             None
         }
     };
+    let mut type_idents = Vec::new();
     let types = match (&squares, types) {
-        (Some(squares), Some(raw)) => Some(check_types(&mut cx, squares.len(), raw)),
+        (Some(squares), Some(raw)) => {
+            Some(check_types(&mut cx, squares.len(), raw, &mut type_idents))
+        }
         _ => None,
     };
     let op_idents: Vec<Ident> = ops.as_ref().map(|raw| raw.0.clone()).unwrap_or_default();
@@ -402,6 +410,21 @@ pub fn validate_for(
         .map(|raw| check_integrations(&mut cx, squares.as_deref(), raw))
         .unwrap_or_default();
     let wgsl = shaders.and_then(|raw| check_shaders(&mut cx, back_ends, raw));
+    if wgsl.is_some() {
+        for ident in &type_idents {
+            let name = ident.to_string();
+            if WGSL_RESERVED_TYPE_NAMES.contains(&name.as_str()) {
+                cx.error_spanned_by(
+                    ident,
+                    format!(
+                        "`{name}` is a name the WGSL module defines or WGSL predeclares \
+                         (`Logarithm` is what `log_even` returns): give the new type another \
+                         name"
+                    ),
+                );
+            }
+        }
+    }
     if let Some(path) = &generic_scalar {
         // The generic path is the scalar code: no batch lanes, no SIMD, no other crates'
         // traits (their impls assume a float).
@@ -434,6 +457,7 @@ pub fn validate_for(
         simd,
         math,
         op_idents,
+        type_idents,
         integrations,
         wgsl,
     })
@@ -518,6 +542,45 @@ pub fn check_emitted(spec: &Spec, has_bivector: bool, has_even: bool) -> syn::Re
     cx.check()
 }
 
+/// `shaders: [wgsl]`: refuses a new type whose WGSL function names are another's (WGSL
+/// has no overloading, and its names carry the operand types in snake case, so `X` with
+/// `SquaredX` both give `norm_squared_x`, and `PlaneA` with `Plane_a` every function).
+/// `collisions` holds each such name with the parameter types of each function taking it;
+/// the error is at the last-listed new type that only some of them take, once per type.
+#[cfg(feature = "wgsl")]
+pub fn check_wgsl_names(spec: &Spec, collisions: &[(String, Vec<Vec<String>>)]) -> syn::Result<()> {
+    let mut cx = Ctxt::default();
+    let mut blamed: Vec<&Ident> = Vec::new();
+    for (function, overloads) in collisions {
+        let in_all = |ty: &str| overloads.iter().all(|o| o.iter().any(|t| t == ty));
+        let culprit = spec.type_idents.iter().rev().find(|ident| {
+            let name = ident.to_string();
+            overloads.iter().any(|o| o.contains(&name)) && !in_all(&name)
+        });
+        let Some(culprit) = culprit else {
+            continue;
+        };
+        if blamed.contains(&culprit) {
+            continue;
+        }
+        blamed.push(culprit);
+        let signatures = overloads
+            .iter()
+            .map(|o| format!("`{function}({})`", o.join(", ")))
+            .collect::<Vec<_>>()
+            .join(" and ");
+        cx.error_spanned_by(
+            culprit,
+            format!(
+                "with `shaders: [wgsl]`, `{culprit}` gives the WGSL function name \
+                 `{function}` to two functions ({signatures}), and WGSL has no overloading: \
+                 rename the type"
+            ),
+        );
+    }
+    cx.check()
+}
+
 /// `math: std`, `math: libm`, `math: libm(path)` or `math: auto(path)`.
 fn check_math(value: proc_macro2::TokenStream) -> syn::Result<Math> {
     use syn::parse::Parser;
@@ -560,18 +623,21 @@ fn is_metric_key(key: &Ident) -> bool {
     key == "metric" || key == "signature"
 }
 
-fn metric_entry(expr: &Expr) -> Option<i64> {
-    match expr {
-        Expr::Lit(ExprLit {
-            lit: Lit::Int(lit), ..
-        }) => lit.base10_parse().ok(),
-        Expr::Unary(ExprUnary {
-            op: UnOp::Neg(_),
-            expr,
-            ..
-        }) => metric_entry(expr).map(|v| -v),
-        _ => None,
-    }
+/// The value of a metric entry written as `1`, `-1` or `0` (a plain decimal literal, with
+/// no suffix, no radix and one sign at most); `None` for anything else.
+fn metric_entry(entry: &TokenStream) -> Option<i8> {
+    let tokens: Vec<TokenTree> = entry.clone().into_iter().collect();
+    let (negative, literal) = match tokens.as_slice() {
+        [TokenTree::Literal(lit)] => (false, lit),
+        [TokenTree::Punct(minus), TokenTree::Literal(lit)] if minus.as_char() == '-' => (true, lit),
+        _ => return None,
+    };
+    let value: i8 = match literal.to_string().as_str() {
+        "0" => 0,
+        "1" => 1,
+        _ => return None,
+    };
+    Some(if negative { -value } else { value })
 }
 
 fn check_dimension(cx: &mut Ctxt, span: Span, dimension: usize, counted_as: &str) -> bool {
@@ -590,14 +656,24 @@ fn check_metric(cx: &mut Ctxt, raw: RawMetric) -> Option<Vec<i8>> {
     let mut ok = true;
     for entry in &raw.entries {
         match metric_entry(entry) {
-            Some(v @ (-1..=1)) => squares.push(v as i8),
-            _ => {
+            Some(v) => squares.push(v),
+            None => {
                 ok = false;
+                // `[1, 1 1]`: a good entry with more after it lacks a comma.
+                let tokens: Vec<TokenTree> = entry.clone().into_iter().collect();
+                if let Some(extra) = (1..tokens.len())
+                    .find(|&i| metric_entry(&tokens[..i].iter().cloned().collect()).is_some())
+                {
+                    cx.error_spanned_by(&tokens[extra], "expected `,`");
+                    continue;
+                }
+                // As written: `TokenStream`'s `Display` would space `--1` as `- - 1`.
+                let written: String = tokens.iter().map(ToString::to_string).collect();
                 cx.error_spanned_by(
                     entry,
                     format!(
-                        "metric entry `{}` must be 1, -1 or 0 (the square of its generator)",
-                        quote::quote!(#entry)
+                        "metric entry `{written}` must be written 1, -1 or 0 (the square of \
+                         its generator)"
                     ),
                 );
             }
@@ -626,6 +702,13 @@ fn check_signature(cx: &mut Ctxt, raw: RawSignature) -> Option<Vec<i8>> {
     }
     let mut counts = [0usize; 3];
     for (count, lit) in counts.iter_mut().zip(&raw.counts) {
+        if !lit.to_string().bytes().all(|b| b.is_ascii_digit()) {
+            cx.error_spanned_by(
+                lit,
+                format!("signature count `{lit}` must be a plain decimal count, e.g. `3`"),
+            );
+            return None;
+        }
         match lit.base10_parse() {
             Ok(v) => *count = v,
             Err(e) => {
@@ -645,6 +728,107 @@ fn check_signature(cx: &mut Ctxt, raw: RawSignature) -> Option<Vec<i8>> {
     Some(squares)
 }
 
+/// Names a new type may not take, with why: a struct of one of these names would clash
+/// with an item the module defines or shadow a name its code uses unqualified, and give
+/// hundreds of errors inside the generated code instead of one here.
+const RESERVED_TYPE_NAMES: [(&[&str], &str); 5] = [
+    (
+        &[
+            "Sandwich",
+            "SandwichUnit",
+            "ScalarProduct",
+            "LeftContraction",
+            "RightContraction",
+            "Regressive",
+            "Commutator",
+            "math",
+            "simd",
+        ],
+        "an item the generated module defines",
+    ),
+    (
+        &["Scalar"],
+        "the name of the scalar operand in `TERM_COUNTS` and of `ga_core::Scalar`, which \
+         modules over a generic scalar use",
+    ),
+    (
+        &[
+            "f16", "f32", "f64", "f128", "i8", "i16", "i32", "i64", "i128", "isize", "u8", "u16",
+            "u32", "u64", "u128", "usize", "bool", "char", "str",
+        ],
+        "a primitive type, which the generated code names",
+    ),
+    (
+        &[
+            "Option",
+            "Some",
+            "None",
+            "Result",
+            "Ok",
+            "Err",
+            "Default",
+            "Clone",
+            "Copy",
+            "Send",
+            "Sync",
+            "Sized",
+            "PartialEq",
+            "Eq",
+            "PartialOrd",
+            "Ord",
+            "Iterator",
+            "IntoIterator",
+            "Extend",
+            "From",
+            "Into",
+            "TryFrom",
+            "TryInto",
+            "AsRef",
+            "AsMut",
+            "Drop",
+            "Fn",
+            "FnMut",
+            "FnOnce",
+            "Box",
+            "Vec",
+            "String",
+            "ToString",
+            "ToOwned",
+        ],
+        "a name of Rust's prelude, which the generated code uses unqualified",
+    ),
+    (
+        &["core", "std", "alloc", "ga_core"],
+        "a crate the generated code names",
+    ),
+];
+
+/// Names a new type may not take in a module with `shaders: [wgsl]`: the struct the WGSL
+/// `log_even` returns, and WGSL's predeclared types that Rust does not have (one namespace
+/// holds a WGSL module's types and functions).
+const WGSL_RESERVED_TYPE_NAMES: [&str; 12] = [
+    "Logarithm",
+    "vec2",
+    "vec3",
+    "vec4",
+    "mat2x2",
+    "mat3x3",
+    "mat4x4",
+    "array",
+    "atomic",
+    "ptr",
+    "sampler",
+    "texture_2d",
+];
+
+/// Why `name` may not name a new type, if it may not.
+fn reserved_type_name(name: &str) -> Option<&'static str> {
+    RESERVED_TYPE_NAMES
+        .iter()
+        .find(|(names, _)| names.contains(&name))
+        .map(|&(_, why)| why)
+}
+
 fn builtin(name: &str, dimension: usize) -> Option<TypeRequest> {
     match name {
         "Even" | "Rotor" => Some(TypeRequest::Even),
@@ -658,7 +842,12 @@ fn builtin(name: &str, dimension: usize) -> Option<TypeRequest> {
     }
 }
 
-fn check_types(cx: &mut Ctxt, dimension: usize, raw: RawTypes) -> Vec<TypeRequest> {
+fn check_types(
+    cx: &mut Ctxt,
+    dimension: usize,
+    raw: RawTypes,
+    user_idents: &mut Vec<Ident>,
+) -> Vec<TypeRequest> {
     let mut requests: Vec<TypeRequest> = Vec::new();
     let mut names: Vec<String> = Vec::new();
     for request in raw.0 {
@@ -673,6 +862,21 @@ fn check_types(cx: &mut Ctxt, dimension: usize, raw: RawTypes) -> Vec<TypeReques
         names.push(name.clone());
         match request.blades {
             None => match builtin(&name, dimension) {
+                // `Rotor` is `Even`, and `Pseudoscalar` the top grade, under another name.
+                Some(t) if requests.contains(&t) => {
+                    let earlier = names
+                        .iter()
+                        .find(|n| builtin(n, dimension).as_ref() == Some(&t))
+                        .cloned()
+                        .unwrap_or_default();
+                    cx.error_spanned_by(
+                        &request.name,
+                        format!(
+                            "`{name}` is `{earlier}` under another name, and `types` lists \
+                             `{earlier}` already: list it once"
+                        ),
+                    );
+                }
                 Some(t) => requests.push(t),
                 None if GRADE_NAMES.contains(&name.as_str()) => cx.error_spanned_by(
                     &request.name,
@@ -699,6 +903,13 @@ fn check_types(cx: &mut Ctxt, dimension: usize, raw: RawTypes) -> Vec<TypeReques
                     );
                     continue;
                 }
+                if let Some(why) = reserved_type_name(&name) {
+                    cx.error_spanned_by(
+                        &request.name,
+                        format!("`{name}` is {why}: give the new type another name"),
+                    );
+                    continue;
+                }
                 let mut blades = Vec::new();
                 for ident in &blade_idents {
                     match parse_blade(&ident.to_string(), dimension) {
@@ -721,6 +932,7 @@ fn check_types(cx: &mut Ctxt, dimension: usize, raw: RawTypes) -> Vec<TypeReques
                         ),
                     );
                 }
+                user_idents.push(request.name.clone());
                 requests.push(TypeRequest::User { name, blades });
             }
         }

@@ -4,6 +4,6 @@ mod exp_log;
 mod source;
 mod text;
 
-pub use source::emit_wgsl;
 #[cfg(test)]
 pub use source::wgsl_source;
+pub use source::{colliding_functions, emit_wgsl};

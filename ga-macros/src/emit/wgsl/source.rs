@@ -40,6 +40,32 @@ pub fn emit_wgsl(spec: &Spec, plan: &Plan) -> TokenStream {
     }
 }
 
+/// Each WGSL function name that more than one function of the module would take, with
+/// the parameter types of every function of that name (WGSL has no overloading: the names
+/// carry the operand types in snake case, and `X` with `SquaredX` both give
+/// `norm_squared_x`), in the order of the source.
+pub fn colliding_functions(plan: &Plan) -> Vec<(String, Vec<Vec<String>>)> {
+    let source = wgsl_source(plan);
+    let mut functions: Vec<(String, Vec<Vec<String>>)> = Vec::new();
+    for signature in source.lines().filter_map(|line| line.strip_prefix("fn ")) {
+        let Some((name, rest)) = signature.split_once('(') else {
+            continue;
+        };
+        let params = rest.split_once(')').map_or("", |(params, _)| params);
+        let types = params
+            .split(',')
+            .filter_map(|param| param.split_once(':'))
+            .map(|(_, ty)| ty.trim().to_owned())
+            .collect();
+        match functions.iter_mut().find(|(n, _)| n == name) {
+            Some((_, overloads)) => overloads.push(types),
+            None => functions.push((name.to_owned(), vec![types])),
+        }
+    }
+    functions.retain(|(_, overloads)| overloads.len() > 1);
+    functions
+}
+
 /// The whole WGSL module.
 pub fn wgsl_source(plan: &Plan) -> String {
     let mut out = String::from(

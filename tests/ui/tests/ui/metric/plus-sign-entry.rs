@@ -1,0 +1,7 @@
+ga_macros::algebra! {
+    pub mod g3 {
+        metric: [+1, 1, 1],
+    }
+}
+
+fn main() {}
