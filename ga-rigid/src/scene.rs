@@ -237,7 +237,7 @@ struct BodyFile {
     mesh: Option<PathBuf>,
     density: Option<f64>,
     allow_unphysical: Option<bool>,
-    /// 3 when given, checked on the table before serde (`nd::scene::only_3d`).
+    /// 3 when given, checked on the table before serde (`only_3d`).
     #[allow(dead_code)]
     dimension: Option<i64>,
 }
@@ -315,7 +315,7 @@ impl Scene {
     pub fn parse(text: &str, path: &Path) -> Result<Scene, Error> {
         let table: toml::Table = toml::from_str(text).map_err(|e| syntax_error(&e, text, path))?;
         sections_are_tables(&table)?;
-        crate::nd::scene::only_3d(&table)?;
+        only_3d(&table)?;
         let file: SceneFile = toml::Value::Table(table)
             .try_into()
             .map_err(|e: toml::de::Error| field_error(&e))?;
@@ -798,6 +798,31 @@ fn one_line(message: &str) -> String {
         return format!("{head}...");
     }
     out
+}
+
+/// `body.dimension` where it is an integer.
+pub(crate) fn declared_dimension(table: &toml::Table) -> Option<i64> {
+    table
+        .get("body")
+        .and_then(toml::Value::as_table)
+        .and_then(|body| body.get("dimension"))
+        .and_then(toml::Value::as_integer)
+}
+
+/// The 3D loader's check of `body.dimension`, before serde reads the other fields for 3D:
+/// absent or 3 (a value of another type is left to serde's message).
+pub(crate) fn only_3d(table: &toml::Table) -> Result<(), Error> {
+    match declared_dimension(table) {
+        None | Some(3) => Ok(()),
+        Some(d @ (2 | 4)) => Err(Error::invalid(
+            "body.dimension",
+            format!("a {d}D scene: load it with nd::scene::NdScene, not the 3D Scene"),
+        )),
+        Some(d) => Err(Error::invalid(
+            "body.dimension",
+            format!("the dimension must be 2, 3 or 4, got {d}"),
+        )),
+    }
 }
 
 #[cfg(test)]

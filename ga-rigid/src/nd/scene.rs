@@ -15,7 +15,9 @@ use super::body::{PrincipalFrame, RigidBody};
 use super::state::State;
 use super::torque::{BodyTorque, SpaceTorque};
 use crate::error::{self, Error};
-use crate::scene::{field_error, sections_are_tables, syntax_error, Run, MAX_SAMPLES};
+use crate::scene::{
+    declared_dimension, field_error, sections_are_tables, syntax_error, Run, MAX_SAMPLES,
+};
 
 /// The dimension a scene file declares in `[body] dimension`: 2 or 4 where it says so, 3
 /// otherwise, also where the file cannot be read or parsed (the 3D loader then says why,
@@ -32,31 +34,6 @@ pub fn dimension_of(path: &Path) -> usize {
         Some(2) => 2,
         Some(4) => 4,
         _ => 3,
-    }
-}
-
-/// `body.dimension` where it is an integer.
-fn declared_dimension(table: &toml::Table) -> Option<i64> {
-    table
-        .get("body")
-        .and_then(toml::Value::as_table)
-        .and_then(|body| body.get("dimension"))
-        .and_then(toml::Value::as_integer)
-}
-
-/// The 3D loader's check of `body.dimension`, before serde reads the other fields for 3D:
-/// absent or 3 (a value of another type is left to serde's message).
-pub(crate) fn only_3d(table: &toml::Table) -> Result<(), Error> {
-    match declared_dimension(table) {
-        None | Some(3) => Ok(()),
-        Some(d @ (2 | 4)) => Err(Error::invalid(
-            "body.dimension",
-            format!("a {d}D scene: load it with nd::scene::NdScene, not the 3D Scene"),
-        )),
-        Some(d) => Err(Error::invalid(
-            "body.dimension",
-            format!("the dimension must be 2, 3 or 4, got {d}"),
-        )),
     }
 }
 
