@@ -1,9 +1,6 @@
-//! `simulate`: a scene, a method, rows of CSV.
-//!
-//! The equations run in the body's principal frame; a scene's `rotor` and `omega` describe
-//! its own (mesh or point-cloud) frame, related by the principal rotor `P` (principal to
-//! scene frame): the principal attitude is `R P`, the principal angular velocity
-//! `~P Omega P`, and rows are turned back into the scene frame.
+//! `simulate`'s record of a run: the JSON sidecar of `--out FILE` and the note on the step
+//! control. The run itself, in the body's principal frame and back, is
+//! [`ga_rigid::run`].
 
 use ga_rigid::limits::StepSource;
 use ga_rigid::registry::{Method, Step};
