@@ -20,7 +20,7 @@ version = "0.0.0"
 edition = "2021"
 [workspace]
 [dependencies]
-ga-core = { path = "$root/ga-core", default-features = false, features = ["g3", "f64"] }
+ga-core = { path = "$root/ga-core", default-features = false, features = ["std", "g3", "f64"] }
 TOML
 cat > "$work/ga/src/main.rs" <<'RS'
 use ga_core::f64::g3::*;

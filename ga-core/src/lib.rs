@@ -24,9 +24,35 @@
 #![deny(missing_docs)]
 #![cfg_attr(not(feature = "std"), no_std)]
 
-/// The `libm` this crate calls without its `std` feature: a `no_std` crate can name it in
-/// its own algebras with `math: libm(::ga_core::libm)`.
+/// The `libm` this crate calls without its `std` feature (feature `libm`): a `no_std`
+/// crate can name it in its own algebras with `math: libm(::ga_core::libm)`.
+#[cfg(feature = "libm")]
 pub use libm;
+
+#[cfg(not(any(feature = "std", feature = "libm")))]
+compile_error!(
+    "ga-core needs its feature `std` or, in a `no_std` crate, its feature `libm`: \
+     square roots and the trigonometric functions come from one of them"
+);
+
+/// Stands in for libm when neither `std` nor `libm` is on, so that the build stops at the
+/// one `compile_error!` above rather than at every call of a float function.
+#[cfg(not(any(feature = "std", feature = "libm")))]
+#[doc(hidden)]
+pub mod libm {
+    macro_rules! stand_ins {
+        ($($unary:ident)*; $($binary:ident)*; $($pair:ident)*) => {
+            $(pub fn $unary<T>(x: T) -> T { x })*
+            $(pub fn $binary<T>(x: T, _: T) -> T { x })*
+            $(pub fn $pair<T: Copy>(x: T) -> (T, T) { (x, x) })*
+        };
+    }
+    stand_ins!(
+        sqrt sin cos cosh sinh asinh log1p acos sqrtf sinf cosf coshf sinhf asinhf log1pf acosf;
+        atan2 hypot atan2f hypotf;
+        sincos sincosf
+    );
+}
 
 // The generated modules name `::ga_core::Scalar`; this lets ga-core's own do so too.
 extern crate self as ga_core;
@@ -148,7 +174,7 @@ macro_rules! algebra {
                 metric: $metric,
                 scalar: $scalar,
                 $($keys)*
-                math: auto,
+                math: auto(crate::libm),
                 derive: [
                     #[cfg(feature = "serde")] serde,
                     #[cfg(feature = "bytemuck")] bytemuck,

@@ -107,31 +107,31 @@ pub(crate) mod no_std_math {
 
     impl Real for f64 {
         fn sqrt(self) -> f64 {
-            libm::sqrt(self)
+            crate::libm::sqrt(self)
         }
         fn sin_cos(self) -> (f64, f64) {
-            libm::sincos(self)
+            crate::libm::sincos(self)
         }
         fn atan2(self, other: f64) -> f64 {
-            libm::atan2(self, other)
+            crate::libm::atan2(self, other)
         }
         fn acos(self) -> f64 {
-            libm::acos(self)
+            crate::libm::acos(self)
         }
     }
 
     impl Real for f32 {
         fn sqrt(self) -> f32 {
-            libm::sqrtf(self)
+            crate::libm::sqrtf(self)
         }
         fn sin_cos(self) -> (f32, f32) {
-            libm::sincosf(self)
+            crate::libm::sincosf(self)
         }
         fn atan2(self, other: f32) -> f32 {
-            libm::atan2f(self, other)
+            crate::libm::atan2f(self, other)
         }
         fn acos(self) -> f32 {
-            libm::acosf(self)
+            crate::libm::acosf(self)
         }
     }
 }

@@ -216,7 +216,7 @@ macro_rules! libm_or_std {
         }
         #[cfg(not(feature = "std"))]
         {
-            libm::$l($x $(, $y)?)
+            crate::libm::$l($x $(, $y)?)
         }
     }};
 }
