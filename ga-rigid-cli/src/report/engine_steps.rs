@@ -98,28 +98,38 @@ impl EngineRun {
 }
 
 /// Per engine step size, one line for the page: the fastest of our runs and of the peers'
-/// that meet [`ENGINE_BOUNDS`] (by the run's own time), and the peers that do not.
+/// that meet [`ENGINE_BOUNDS`] (by the run's own time), ours that meet them with the
+/// smallest energy error, and the peers that do not meet them.
+///
+/// Both of ours are named because they answer different questions: the fastest within the
+/// bounds is what the table shows here, the most accurate within them is why `ga_engine`
+/// steps with `splitting-corrected` (its energy error is several times smaller than the
+/// plain Casimir split's at a similar cost in the engine's own code).
 #[must_use]
 pub fn engine_verdicts(rows: &[EngineRun]) -> Vec<String> {
-    let fastest = |rate: f64, peer: bool| {
+    let within = |rate: f64, peer: bool| {
         rows.iter()
-            .filter(|r| r.rate == rate && r.method.info().peer.is_some() == peer)
+            .filter(move |r| r.rate == rate && r.method.info().peer.is_some() == peer)
             .filter(|r| r.meets_engine_bounds())
-            .min_by(|a, b| a.elapsed.cmp(&b.elapsed))
     };
     let describe = |r: &EngineRun| {
         format!(
-            "{} ({:.1} ms, flip {:+.2}%)",
+            "{} ({:.1} ms, energy {:.1e}, flip {:+.2}%)",
             r.method.name(),
             r.elapsed.as_secs_f64() * 1e3,
+            r.energy_max,
             100.0 * r.flip_error().unwrap_or(f64::NAN)
         )
     };
     ENGINE_RATES
         .iter()
         .map(|&rate| {
-            let ours = fastest(rate, false).map_or("none of ours".to_string(), describe);
-            let peer = fastest(rate, true).map_or("no peer".to_string(), describe);
+            let fastest = |peer| within(rate, peer).min_by(|a, b| a.elapsed.cmp(&b.elapsed));
+            let ours = fastest(false).map_or("none of ours".to_string(), describe);
+            let accurate = within(rate, false)
+                .min_by(|a, b| a.energy_max.total_cmp(&b.energy_max))
+                .map_or("none".to_string(), describe);
+            let peer = fastest(true).map_or("no peer".to_string(), describe);
             let missing: Vec<&str> = rows
                 .iter()
                 .filter(|r| r.rate == rate && r.method.info().peer.is_some())
@@ -127,8 +137,8 @@ pub fn engine_verdicts(rows: &[EngineRun]) -> Vec<String> {
                 .map(|r| r.method.name())
                 .collect();
             format!(
-                "h |w| = {rate}: fastest of ours {ours}; fastest peer {peer}; peers outside the \
-                 bounds: {}",
+                "h |w| = {rate}: fastest of ours {ours}; smallest energy error of ours \
+                 {accurate}; fastest peer {peer}; peers outside the bounds: {}",
                 if missing.is_empty() {
                     "none".to_string()
                 } else {
@@ -298,8 +308,43 @@ mod tests {
             .find(|v| v.starts_with("h |w| = 0.5"))
             .unwrap();
         assert!(at_half.contains("ours splitting-casimir"), "{at_half}");
+        // The only one of ours within the bounds is also the most accurate of ours.
+        assert!(
+            at_half.contains("smallest energy error of ours splitting-casimir"),
+            "{at_half}"
+        );
         assert!(at_half.contains("fastest peer no peer"), "{at_half}");
         assert!(at_half.ends_with("euler-gyro-implicit"), "{at_half}");
+    }
+
+    /// Within the bounds, the fastest and the most accurate are picked separately: with the
+    /// corrected split given the larger time, the fastest is the Casimir split and the most
+    /// accurate the corrected one (its energy error is the smaller, checked here first).
+    #[test]
+    fn the_verdict_names_the_fastest_and_the_most_accurate_within_the_bounds() {
+        let steps = 20_000;
+        let mut casimir = engine_run(Method::SplittingCasimir, 0.5, steps).unwrap();
+        let mut corrected = engine_run(Method::SplittingCorrected, 0.5, steps).unwrap();
+        assert!(casimir.meets_engine_bounds() && corrected.meets_engine_bounds());
+        assert!(
+            corrected.energy_max < casimir.energy_max,
+            "{corrected:?} {casimir:?}"
+        );
+        casimir.elapsed = Duration::from_millis(1);
+        corrected.elapsed = Duration::from_millis(2);
+        let verdicts = engine_verdicts(&[casimir, corrected]);
+        let at_half = verdicts
+            .iter()
+            .find(|v| v.starts_with("h |w| = 0.5"))
+            .unwrap();
+        assert!(
+            at_half.contains("fastest of ours splitting-casimir (1.0 ms"),
+            "{at_half}"
+        );
+        assert!(
+            at_half.contains("smallest energy error of ours splitting-corrected (2.0 ms"),
+            "{at_half}"
+        );
     }
 
     #[test]

@@ -470,13 +470,18 @@ fn engine_runs_section(out: &mut String, rows: &[super::EngineRun]) {
         super::ENGINE_RATES[super::ENGINE_RATES.len() - 1],
     );
     out.push_str(
-        "<table><tr><th>method</th><th>h|w|</th><th>energy error</th><th>|L| error</th>\
-         <th>flips</th><th>flip period error</th><th>status</th></tr>\n",
+        "<table><tr><th>method</th><th>h|w|</th><th>energy error, largest \
+         |E - E0| / E0</th><th>momentum error, largest |L - L0| / |L0| (L the space \
+         angular momentum, a vector)</th><th>flips</th><th>flip period error</th>\
+         <th>status</th></tr>\n",
     );
     for r in rows {
-        let flip = match r.flip_error() {
-            Some(e) => format!("{:+.2} %", 100.0 * e),
-            None => "fewer than two flips".to_string(),
+        // A run that stopped has no flip statistics worth reading: its flips happened while
+        // it was already leaving the solution.
+        let (flips, flip) = match (&r.failure, r.flip_error()) {
+            (Some(_), _) => ("-".to_string(), "- (stopped)".to_string()),
+            (None, Some(e)) => (r.flips.to_string(), format!("{:+.2} %", 100.0 * e)),
+            (None, None) => (r.flips.to_string(), "fewer than two flips".to_string()),
         };
         let status = match &r.failure {
             Some(why) => format!("stopped: {why}"),
@@ -485,8 +490,8 @@ fn engine_runs_section(out: &mut String, rows: &[super::EngineRun]) {
         let _ = writeln!(
             out,
             "<tr><td>{}{}</td><td class=\"num\">{}</td><td class=\"num\">{:.1e}</td>\
-             <td class=\"num\">{:.1e}</td><td class=\"num\">{}</td><td class=\"num\">{flip}</td>\
-             <td>{}</td></tr>",
+             <td class=\"num\">{:.1e}</td><td class=\"num\">{flips}</td>\
+             <td class=\"num\">{flip}</td><td>{}</td></tr>",
             r.method.name(),
             if r.method.info().peer.is_some() {
                 " (peer)"
@@ -496,7 +501,6 @@ fn engine_runs_section(out: &mut String, rows: &[super::EngineRun]) {
             r.rate,
             r.energy_max,
             r.momentum_max,
-            r.flips,
             esc(&status),
         );
     }
@@ -505,7 +509,9 @@ fn engine_runs_section(out: &mut String, rows: &[super::EngineRun]) {
         out,
         "</table>\n<p>The fastest runs that keep <code>|L|</code> to {momentum:e}, the energy \
          to {energy:e} and the flip period within {}% (times of the runs above, each 10^5 \
-         steps or the quick size):</p>\n<ul>",
+         steps or the quick size, in this harness's generic stepping, not the engine's own \
+         code). ga_engine steps with splitting-corrected: of the second-order steps within the \
+         bounds, the one with the smallest energy error here.</p>\n<ul>",
         100.0 * flip
     );
     for line in super::engine_verdicts(rows) {
