@@ -169,8 +169,8 @@ fn a_3d_only_method_is_refused_in_4d_and_2d_with_one_line() {
         "3d-only",
         FOUR,
         &["--method", "euler-gyro-explicit"],
-        "--method: euler-gyro-explicit is 3D-only; dimension 4 takes rk4, lie-rk4, midpoint, \
-         splitting, lie-dop853, closed-form",
+        "--method: euler-gyro-explicit is 3D-only; dimension 4 takes closed-form, rk4, lie-rk4, \
+         midpoint, splitting, lie-dop853",
     );
     let two = FOUR
         .replace("dimension = 4", "dimension = 2")

@@ -176,6 +176,20 @@ pub struct MethodInfo {
     /// For a method people use today rather than one of ours (a peer in the report), where
     /// it comes from.
     pub peer: Option<&'static str>,
+    /// The dimensions it runs in: the 3D-only methods are written on G3's vectors
+    /// (quaternion forms, the elliptic exact flow, Euler-equation peers); the rest run on
+    /// any algebra through `nd`.
+    pub dimensions: Dimensions,
+}
+
+/// The dimensions a method runs in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Dimensions {
+    /// Only in 3D.
+    Three,
+    /// In 2D, 3D and 4D (`closed-form` where the body has one: a planar body, the
+    /// symmetric top, the 4D body with second moments `(a, a, b, b)`).
+    Any,
 }
 
 /// The engines' explicit step's stability limit `h |w|max` (see [`StepLimit`]).
@@ -205,6 +219,7 @@ pub const METHODS: [MethodInfo; 26] = [
         summary: "the closed-form solution (torque-free symmetric top)",
         step_limit: StepLimit::None,
         peer: None,
+        dimensions: Dimensions::Any,
     },
     MethodInfo {
         method: Method::Exact,
@@ -216,6 +231,7 @@ pub const METHODS: [MethodInfo; 26] = [
         summary: "the exact flow of the free body (Jacobi elliptic functions)",
         step_limit: StepLimit::None,
         peer: None,
+        dimensions: Dimensions::Three,
     },
     MethodInfo {
         method: Method::Rk4,
@@ -227,6 +243,7 @@ pub const METHODS: [MethodInfo; 26] = [
         summary: "classical fourth-order Runge-Kutta, rotor renormalised",
         step_limit: StepLimit::Rate(2.0),
         peer: None,
+        dimensions: Dimensions::Any,
     },
     MethodInfo {
         method: Method::LieRk4,
@@ -238,6 +255,7 @@ pub const METHODS: [MethodInfo; 26] = [
         summary: "fourth-order Runge-Kutta-Munthe-Kaas on the rotor group",
         step_limit: StepLimit::Rate(2.0),
         peer: None,
+        dimensions: Dimensions::Any,
     },
     MethodInfo {
         method: Method::Midpoint,
@@ -249,6 +267,7 @@ pub const METHODS: [MethodInfo; 26] = [
         summary: "the implicit midpoint rule (symplectic, order two)",
         step_limit: StepLimit::Rate(2.5),
         peer: None,
+        dimensions: Dimensions::Any,
     },
     MethodInfo {
         method: Method::Splitting,
@@ -260,6 +279,7 @@ pub const METHODS: [MethodInfo; 26] = [
         summary: "splitting into exact axis rotations (Dullweber-Leimkuhler-McLachlan)",
         step_limit: StepLimit::Rate(3.0),
         peer: None,
+        dimensions: Dimensions::Any,
     },
     MethodInfo {
         method: Method::SplittingCayley,
@@ -271,6 +291,7 @@ pub const METHODS: [MethodInfo; 26] = [
         summary: "the same splitting with rational (Cayley) axis turns, no sine",
         step_limit: StepLimit::Rate(3.0),
         peer: None,
+        dimensions: Dimensions::Three,
     },
     MethodInfo {
         method: Method::SplittingCasimir,
@@ -282,6 +303,7 @@ pub const METHODS: [MethodInfo; 26] = [
         summary: "the free body split around its Casimir |m|^2, rational turns, order two",
         step_limit: StepLimit::Rate(3.0),
         peer: None,
+        dimensions: Dimensions::Three,
     },
     MethodInfo {
         method: Method::SplittingCorrected,
@@ -294,6 +316,7 @@ pub const METHODS: [MethodInfo; 26] = [
             "the Casimir split with turns corrected to cancel its one-axis h^2 error: engine's step",
         step_limit: StepLimit::Rate(3.0),
         peer: None,
+        dimensions: Dimensions::Three,
     },
     MethodInfo {
         method: Method::Dopri,
@@ -305,6 +328,7 @@ pub const METHODS: [MethodInfo; 26] = [
         summary: "adaptive Dormand-Prince 5(4)",
         step_limit: StepLimit::None,
         peer: None,
+        dimensions: Dimensions::Three,
     },
     MethodInfo {
         method: Method::ExactSplitting,
@@ -316,6 +340,7 @@ pub const METHODS: [MethodInfo; 26] = [
         summary: "torque kick, exact free flow, torque kick (Celledoni et al. 2008), order two",
         step_limit: StepLimit::RateUnderTorque(30.0),
         peer: None,
+        dimensions: Dimensions::Three,
     },
     MethodInfo {
         method: Method::ExactSplitting4,
@@ -327,6 +352,7 @@ pub const METHODS: [MethodInfo; 26] = [
         summary: "the exact-flow splitting raised to order four (Blanes-Moan SRKN_6^b)",
         step_limit: StepLimit::RateUnderTorque(30.0),
         peer: None,
+        dimensions: Dimensions::Three,
     },
     MethodInfo {
         method: Method::ExactSplitting6,
@@ -338,6 +364,7 @@ pub const METHODS: [MethodInfo; 26] = [
         summary: "the exact-flow splitting raised to order six (Blanes-Moan SRKN_11^b)",
         step_limit: StepLimit::RateUnderTorque(30.0),
         peer: None,
+        dimensions: Dimensions::Three,
     },
     MethodInfo {
         method: Method::ExactSplitting8,
@@ -349,6 +376,7 @@ pub const METHODS: [MethodInfo; 26] = [
         summary: "the exact-flow splitting composed to order eight (Kahan-Li)",
         step_limit: StepLimit::RateUnderTorque(30.0),
         peer: None,
+        dimensions: Dimensions::Three,
     },
     MethodInfo {
         method: Method::Splitting4,
@@ -360,6 +388,7 @@ pub const METHODS: [MethodInfo; 26] = [
         summary: "the axis-rotation splitting composed to order four (Suzuki)",
         step_limit: StepLimit::Rate(4.0),
         peer: None,
+        dimensions: Dimensions::Three,
     },
     MethodInfo {
         method: Method::Splitting6,
@@ -371,6 +400,7 @@ pub const METHODS: [MethodInfo; 26] = [
         summary: "the axis-rotation splitting composed to order six (Kahan-Li)",
         step_limit: StepLimit::Rate(4.0),
         peer: None,
+        dimensions: Dimensions::Three,
     },
     MethodInfo {
         method: Method::Splitting8,
@@ -382,6 +412,7 @@ pub const METHODS: [MethodInfo; 26] = [
         summary: "the axis-rotation splitting composed to order eight (Kahan-Li)",
         step_limit: StepLimit::Rate(4.0),
         peer: None,
+        dimensions: Dimensions::Three,
     },
     MethodInfo {
         method: Method::LieDop853,
@@ -393,6 +424,7 @@ pub const METHODS: [MethodInfo; 26] = [
         summary: "adaptive order-8 Runge-Kutta-Munthe-Kaas on the rotor group (DOP853 pair)",
         step_limit: StepLimit::None,
         peer: None,
+        dimensions: Dimensions::Any,
     },
     MethodInfo {
         method: Method::LieDop853Cayley,
@@ -404,6 +436,7 @@ pub const METHODS: [MethodInfo; 26] = [
         summary: "lie-dop853 in Cayley coordinates: the same pair, no exponentials in the stages",
         step_limit: StepLimit::None,
         peer: None,
+        dimensions: Dimensions::Three,
     },
     MethodInfo {
         method: Method::Dop853Quaternion,
@@ -415,6 +448,7 @@ pub const METHODS: [MethodInfo; 26] = [
         summary: "peer: ode_solvers' Dop853 on body momentum and a unit quaternion",
         step_limit: StepLimit::None,
         peer: Some("ode_solvers 0.6 Dop853 (Hairer's DOP853), 7-unknown quaternion form"),
+        dimensions: Dimensions::Three,
     },
     MethodInfo {
         method: Method::Dopri5Quaternion,
@@ -426,6 +460,7 @@ pub const METHODS: [MethodInfo; 26] = [
         summary: "peer: ode_solvers' Dopri5 on body momentum and a unit quaternion",
         step_limit: StepLimit::None,
         peer: Some("ode_solvers 0.6 Dopri5 (Hairer's DOPRI5), 7-unknown quaternion form"),
+        dimensions: Dimensions::Three,
     },
     MethodInfo {
         method: Method::EulerGyroExplicit,
@@ -437,6 +472,7 @@ pub const METHODS: [MethodInfo; 26] = [
         summary: "peer: game engines' explicit gyroscopic Euler step",
         step_limit: StepLimit::Rate(STEP_LIMIT_EULER_EXPLICIT),
         peer: Some("engines' explicit gyroscopic Euler (Catto, GDC 2015)"),
+        dimensions: Dimensions::Three,
     },
     MethodInfo {
         method: Method::EulerGyroImplicit,
@@ -448,6 +484,7 @@ pub const METHODS: [MethodInfo; 26] = [
         summary: "peer: Bullet's and Jolt's implicit gyroscopic Euler step (one Newton iteration)",
         step_limit: StepLimit::Rate(STEP_LIMIT_EULER_IMPLICIT),
         peer: Some("Bullet computeGyroscopicImpulseImplicit_Body, Jolt (Catto, GDC 2015)"),
+        dimensions: Dimensions::Three,
     },
     MethodInfo {
         method: Method::Buss2,
@@ -459,6 +496,7 @@ pub const METHODS: [MethodInfo; 26] = [
         summary: "peer: Buss's augmented second-order rotation update",
         step_limit: StepLimit::Rate(STEP_LIMIT_BUSS),
         peer: Some("Buss, J. Comput. Phys. 164 (2000), augmented second-order method"),
+        dimensions: Dimensions::Three,
     },
     MethodInfo {
         method: Method::MidpointQuaternion,
@@ -470,6 +508,7 @@ pub const METHODS: [MethodInfo; 26] = [
         summary: "peer: implicit midpoint on body momentum and a quaternion, Newton-solved",
         step_limit: StepLimit::Rate(STEP_LIMIT_MIDPOINT_QUATERNION),
         peer: Some("implicit midpoint, 7-unknown quaternion form (Hairer-Lubich-Wanner IV.2)"),
+        dimensions: Dimensions::Three,
     },
     MethodInfo {
         method: Method::MoserVeselov,
@@ -481,6 +520,7 @@ pub const METHODS: [MethodInfo; 26] = [
         summary: "peer: discrete Moser-Veselov step (RATTLE), torque kicks around it",
         step_limit: StepLimit::Rate(STEP_LIMIT_MOSER_VESELOV),
         peer: Some("Moser-Veselov, Comm. Math. Phys. 139 (1991); McLachlan-Zanna 2005"),
+        dimensions: Dimensions::Three,
     },
 ];
 

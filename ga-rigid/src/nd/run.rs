@@ -12,7 +12,9 @@ use super::state::State;
 use super::{ImplicitMidpoint, LieDop853, LieRk4, PlaneSplitting, Rk4};
 use crate::error::{num, num_short, Error};
 use crate::limits::{Limits, StepSource, DEFAULT_STEPS_PER_PERIOD, DEFAULT_TOLERANCE};
-use crate::registry::{Method, Step, StepKind, DOPRI_ABSOLUTE_TOLERANCE_RATIO};
+use crate::registry::{
+    Dimensions, Method, Step, StepKind, DOPRI_ABSOLUTE_TOLERANCE_RATIO, METHODS,
+};
 
 /// The CSV header of a 2D run, without the line break.
 pub const HEADER_2D: &str = "t,r_s,r_e12,w_e12,energy,l_e12";
@@ -23,15 +25,14 @@ pub const HEADER_4D: &str = "t,r_s,r_e12,r_e13,r_e14,r_e23,r_e24,r_e34,r_e1234,\
 w_e12,w_e13,w_e14,w_e23,w_e24,w_e34,energy,\
 l_e12,l_e13,l_e14,l_e23,l_e24,l_e34";
 
-/// The methods a 2D or 4D scene runs with, in the order messages list them.
-pub const METHODS: [Method; 6] = [
-    Method::Rk4,
-    Method::LieRk4,
-    Method::Midpoint,
-    Method::Splitting,
-    Method::LieDop853,
-    Method::ClosedForm,
-];
+/// The methods a 2D or 4D scene runs with: those of the registry's table that run in any
+/// dimension, in the table's order.
+pub fn methods() -> impl Iterator<Item = Method> {
+    METHODS
+        .iter()
+        .filter(|info| info.dimensions == Dimensions::Any)
+        .map(|info| info.method)
+}
 
 /// The header of a run in `dimension` (2 or 4).
 #[must_use]
@@ -45,10 +46,10 @@ pub fn header(dimension: usize) -> &'static str {
 
 /// Refuse a method the n-dimensional body does not have, naming it and the dimension.
 pub fn check_method(method: Method, dimension: usize) -> Result<(), Error> {
-    if METHODS.contains(&method) {
+    if method.info().dimensions == Dimensions::Any {
         return Ok(());
     }
-    let names: Vec<&str> = METHODS.iter().map(|m| m.name()).collect();
+    let names: Vec<&str> = methods().map(Method::name).collect();
     Err(Error::invalid(
         "method",
         format!(
@@ -450,8 +451,34 @@ mod tests {
         let e = check_method(Method::EulerGyroExplicit, 4).unwrap_err();
         assert_eq!(
             e.to_string(),
-            "method: euler-gyro-explicit is 3D-only; dimension 4 takes rk4, lie-rk4, midpoint, \
-             splitting, lie-dop853, closed-form"
+            "method: euler-gyro-explicit is 3D-only; dimension 4 takes closed-form, rk4, \
+             lie-rk4, midpoint, splitting, lie-dop853"
         );
+    }
+
+    /// The registry's table and this module's integrators say the same: every method the
+    /// table marks as running in any dimension has an n-dimensional integrator (or is the
+    /// closed form), and every other is refused.
+    #[test]
+    fn the_table_s_dimensions_match_the_n_dimensional_integrators() {
+        for info in &METHODS {
+            let step = match info.kind {
+                StepKind::Fixed => Step::Fixed(0.01),
+                StepKind::Adaptive => Step::Tolerance(1e-8),
+                StepKind::AtSamples => Step::AtSamples,
+            };
+            let has_integrator = integrator::<G4>(info.method, step).is_ok();
+            let runs_here = check_method(info.method, 4).is_ok();
+            assert_eq!(
+                runs_here,
+                info.dimensions == Dimensions::Any,
+                "{}",
+                info.name
+            );
+            if info.method != Method::ClosedForm {
+                assert_eq!(has_integrator, runs_here, "{}", info.name);
+            }
+        }
+        assert_eq!(methods().count(), 6);
     }
 }
