@@ -8,6 +8,9 @@
 //! measurements (flip period, drifts, cost) are plain functions here so that the binary
 //! prints them and the tests check them.
 //!
+//! The velocity handed to rapier undoes rapier's linearised substep rotation
+//! ([`landing_velocity`]; derived in `docs/derivations/rapier-landing.md`).
+//!
 //! rapier 0.36 does its maths on glam 0.33 (through glamx) and ga-engine on glam 0.32: the
 //! two are converted at the boundary, component by component (`to_engine`, `to_rapier`).
 
