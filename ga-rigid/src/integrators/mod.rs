@@ -28,7 +28,11 @@ pub(crate) use integrator::check_finite;
 /// The sub-step rule of the fixed-step methods, for `gradients`' second instantiation.
 pub(crate) use integrator::substeps;
 pub use integrator::Integrator;
-pub(crate) use integrator::{check_step, fixed_steps, step_limit_reached};
+pub(crate) use integrator::{check_step, fixed_steps};
+// Re-exported only for the quaternion-form peers (feature `peers`); without them a
+// `default-features = false` user (the rapier example) warned of an unused import.
+#[cfg(feature = "peers")]
+pub(crate) use integrator::step_limit_reached;
 pub use lie_dop853::{DenseStep, LieDop853, LieDop853Stats};
 pub use lie_rk4::LieRk4;
 pub use midpoint::ImplicitMidpoint;
