@@ -164,7 +164,7 @@ fn top() {
         for _ in 0..STEPS {
             (q, l) = match method {
                 Some(m) => m.step(&body, q, l, &mut w, torque(q)),
-                None => step_with(&body, q, l, DT, torque),
+                None => step_with(&body, q, l, torque, DT),
             };
             vertical.push(f64::from(l.z));
             spin.push(f64::from(l.dot(q * Vec3::Z)));
@@ -172,7 +172,7 @@ fn top() {
         }
         println!(
             "  {:<27} L_z drift {:+.2e} (max {:.2e})  spin L.e3 drift {:+.2e} (max {:.2e})  energy drift {:+.2e} (max {:.2e})",
-            method.map_or("engine::step_with (order 2)", Method::name),
+            method.map_or("engine::step_with (the call for it)", Method::name),
             vertical.end(),
             vertical.worst,
             spin.end(),

@@ -146,19 +146,21 @@ macro_rules! precision_api {
             (q_out(q), v_out(l))
         }
 
-        /// As [`step`] for a torque that depends on the orientation (gravity on a top,
-        /// a spring to a fixed direction): `torque(q)` is read at the start and at the
-        /// end of the step, half a kick each (Strang's splitting), which keeps the
-        /// energy of a torque from a potential from drifting; holding the start's torque
-        /// over the step, as [`step`] with `torque(q)` would, lets it drift.
+        /// As [`step`] for a torque that depends on the orientation (gravity on a body
+        /// turning about a pivot, a spring to a fixed direction): the arguments in
+        /// [`step`]'s order, the torque given as `torque(q)`, read at the start and at
+        /// the end of the step, half a kick each (Strang's splitting), which keeps the
+        /// energy of a torque from a potential from drifting. Holding the start's torque
+        /// over the step, as [`step`] with `torque(q)` would, lets it drift (the
+        /// repository's `examples/t_handle.rs` shows both on a heavy top).
         #[must_use]
         #[inline]
         pub fn step_with(
             body: &Body,
             orientation: $quat,
             momentum: $vec3,
-            dt: $t,
             mut torque: impl FnMut($quat) -> $vec3,
+            dt: $t,
         ) -> ($quat, $vec3) {
             let (q, l) = crate::splitting::step2_with(
                 &body.inertia,
@@ -262,7 +264,7 @@ macro_rules! precision_api {
         }
 
         impl BodyState {
-            /// At rest, no torque.
+            /// From the world angular momentum, no torque.
             #[must_use]
             pub fn new(body: Body, orientation: $quat, angular_momentum: $vec3) -> Self {
                 BodyState {
@@ -271,6 +273,33 @@ macro_rules! precision_api {
                     angular_momentum,
                     torque: $vec3::ZERO,
                 }
+            }
+
+            /// From the world angular velocity, for an engine that stores the velocity:
+            /// converted to the momentum once, here, and kept as the momentum from then
+            /// on (see "Engines that store the angular velocity" in the crate docs).
+            #[must_use]
+            pub fn from_angular_velocity(body: Body, orientation: $quat, velocity: $vec3) -> Self {
+                let angular_momentum = body.angular_momentum(orientation, velocity);
+                BodyState::new(body, orientation, angular_momentum)
+            }
+
+            /// Adds a world angular impulse (a contact's `r x J`, a solver's correction
+            /// times the inertia) to the momentum: exact, with no conversion through the
+            /// velocity.
+            #[inline]
+            pub fn apply_angular_impulse(&mut self, impulse: $vec3) {
+                self.angular_momentum += impulse;
+            }
+
+            /// Sets the world angular velocity, for a solver that writes velocities: the
+            /// momentum becomes `I(q) w`, which rounds once. Call it only where the engine
+            /// really changed the velocity; a momentum read back from an unchanged
+            /// velocity each frame would round every frame and lose the free body's
+            /// `|L|`.
+            #[inline]
+            pub fn set_angular_velocity(&mut self, velocity: $vec3) {
+                self.angular_momentum = self.body.angular_momentum(self.orientation, velocity);
             }
 
             /// [`step`] in place.

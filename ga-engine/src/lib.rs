@@ -31,6 +31,31 @@
 //!   [`f32::Body::angular_momentum`] convert for engines that store the velocity (each
 //!   conversion rounds, so storing the momentum is better).
 //!
+//! # Torques: which call
+//! Every step takes `(body, orientation, momentum, torque, dt)` in that order.
+//! - A torque that depends on the orientation (gravity on a body turning about a pivot,
+//!   a spring or a magnet pulling an axis toward a direction): [`f32::step_with`] with
+//!   the torque as a function of the orientation, read at both ends of the step. This
+//!   keeps the energy of such a torque bounded; passing its value at the step's start
+//!   to [`f32::step`] holds it over the step and lets the energy drift (the heavy top in
+//!   the repository's `ga-engine/examples/t_handle.rs` shows both).
+//! - A torque that is given for the frame (a motor, a player's push, a damper the engine
+//!   computed): [`f32::step`], which holds it over the step.
+//! - Gravity on a free body acts at its centre of mass and gives no torque: the engine's
+//!   linear step handles it, and the rotation step takes `torque = 0`.
+//!
+//! # Engines that store the angular velocity
+//! The steps keep the world angular momentum, because that is what a free body keeps:
+//! converting to the velocity and back every frame rounds twice a frame and loses the
+//! bit-for-bit `|L|`. An engine whose bodies store the velocity keeps a
+//! [`f32::BodyState`] beside each body instead, made once from the velocity
+//! ([`f32::BodyState::from_angular_velocity`]), steps it ([`f32::BodyState::step`] or
+//! [`f32::step_slice`]), reads the velocity where its solver needs one
+//! ([`f32::BodyState::angular_velocity`]), and hands contact and joint impulses back as
+//! momentum ([`f32::BodyState::apply_angular_impulse`], exact) or, where its solver writes
+//! velocities, as a changed velocity ([`f32::BodyState::set_angular_velocity`], one
+//! rounding, only when the velocity really changed).
+//!
 //! # The same bits everywhere: what is promised
 //! The steps use only IEEE-754 `+ - * /` and `sqrt` (each correctly rounded), in a fixed
 //! order: no fused multiply-add (Rust never contracts `a * b + c`, with or without

@@ -379,7 +379,7 @@ impl Run {
                     Scene::THandle | Scene::SpinningFree => {
                         step(&self.body, q, e.momentum, Vec3::ZERO, DT)
                     }
-                    Scene::Top => step_with(&self.body, q, e.momentum, DT, top::torque),
+                    Scene::Top => step_with(&self.body, q, e.momentum, top::torque, DT),
                 };
                 e.momentum = l1;
                 rb.set_angvel(vec_to_rapier(landing_velocity(q, q1, DT, substeps)), true);
