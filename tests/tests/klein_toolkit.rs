@@ -148,7 +148,12 @@ impl Stream {
     fn motor(&mut self, translation: f64) -> Even {
         let mut c = [0.0; 8];
         for (k, value) in c.iter_mut().enumerate() {
-            *value = self.next() * if (1..=3).contains(&k) { translation } else { 1.0 };
+            *value = self.next()
+                * if (1..=3).contains(&k) {
+                    translation
+                } else {
+                    1.0
+                };
         }
         Even::from_array(c)
     }
@@ -192,7 +197,11 @@ fn study_normalisation_keeps_the_motion_and_makes_x_rev_x_one() {
         let l = Bivector::from_array(std::array::from_fn(|k| {
             stream.next() * if k < 3 { 5.0 } else { 1.0 }
         }));
-        assert_close!(times_reverse(l.normalized_study()), alg.scalar(1.0), rel = 1e-14);
+        assert_close!(
+            times_reverse(l.normalized_study()),
+            alg.scalar(1.0),
+            rel = 1e-14
+        );
     }
 }
 
@@ -205,7 +214,10 @@ fn study_normalisation_is_scaled_at_extreme_magnitudes_and_reports_ideal_element
         assert_close!(big.to_array(), unit.to_array(), rel = 1e-15);
     }
     // A pure translation direction (klein's ideal line) has no Euclidean part.
-    assert_eq!(line(1.0, 2.0, 3.0, 0.0, 0.0, 0.0).try_normalized_study(), None);
+    assert_eq!(
+        line(1.0, 2.0, 3.0, 0.0, 0.0, 0.0).try_normalized_study(),
+        None
+    );
     assert!(unit.try_normalized_study().is_some());
 }
 
@@ -269,7 +281,10 @@ fn klein_constrain() {
     let m1 = motor(1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0);
     assert_eq!(m1.constrained(), m1);
     assert_eq!((-m1).constrained(), m1);
-    assert_eq!(klein_of((-m1).constrained()), [1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0]);
+    assert_eq!(
+        klein_of((-m1).constrained()),
+        [1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0]
+    );
 }
 
 // ---- division -----------------------------------------------------------------------
@@ -278,9 +293,19 @@ fn klein_constrain() {
 #[test]
 fn klein_line_and_motor_division() {
     let l = line(1.0, -2.0, 2.0, -3.0, 3.0, -4.0);
-    assert_close!((l / l).to_array(), Even::ONE.to_array(), scale = 1.0, rel = 1e-15);
+    assert_close!(
+        (l / l).to_array(),
+        Even::ONE.to_array(),
+        scale = 1.0,
+        rel = 1e-15
+    );
     let m = motor(2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0);
-    assert_close!((m / m).to_array(), Even::ONE.to_array(), scale = 1.0, rel = 1e-15);
+    assert_close!(
+        (m / m).to_array(),
+        Even::ONE.to_array(),
+        scale = 1.0,
+        rel = 1e-15
+    );
     // klein "plane*plane": `sqrt(p1 / p2)` carries `p2` to `p1`; the quotient of two
     // planes is a motor, and dividing by it is division by an `Even`.
     let (p1, p2) = (
@@ -290,8 +315,17 @@ fn klein_line_and_motor_division() {
     let q = p1 / p2;
     let carried = q.sqrt().sandwich(p2);
     let ratio = carried.to_array()[1] / p1.to_array()[1];
-    assert_close!((carried * (1.0 / ratio)).to_array(), p1.to_array(), rel = 1e-14);
-    assert_close!((Even::from(q) / q).to_array(), Even::ONE.to_array(), scale = 1.0, rel = 1e-14);
+    assert_close!(
+        (carried * (1.0 / ratio)).to_array(),
+        p1.to_array(),
+        rel = 1e-14
+    );
+    assert_close!(
+        (Even::from(q) / q).to_array(),
+        Even::ONE.to_array(),
+        scale = 1.0,
+        rel = 1e-14
+    );
 }
 
 /// `a / b = a b^-1` with the reference's inverse (a linear solve on the dense
@@ -348,9 +382,18 @@ fn klein_rotor_and_motor_on_a_point() {
     let r = rotor(std::f64::consts::FRAC_PI_2, 0.0, 0.0, 1.0);
     let t = translator(1.0, 0.0, 0.0, 1.0);
     let p = Trivector::point(1.0, 0.0, 0.0);
-    let expected = [[0.0, -1.0, 0.0, 1.0], [0.0, -1.0, 1.0, 1.0], [0.0, -1.0, 1.0, 1.0]];
+    let expected = [
+        [0.0, -1.0, 0.0, 1.0],
+        [0.0, -1.0, 1.0, 1.0],
+        [0.0, -1.0, 1.0, 1.0],
+    ];
     for (m, expected) in [r, r * t, t * r].into_iter().zip(expected) {
-        assert_close!(coordinates(m.sandwich(p)), expected, scale = 1.0, rel = 1e-15);
+        assert_close!(
+            coordinates(m.sandwich(p)),
+            expected,
+            scale = 1.0,
+            rel = 1e-15
+        );
         let moved = apply(m.to_matrix4x4(), [1.0, 0.0, 0.0, 1.0]);
         assert_close!(moved, expected, scale = 1.0, rel = 1e-15);
     }
@@ -390,7 +433,12 @@ fn matrix_is_the_sandwich_with_the_null_generator_last() {
             origin,
         ]
         .map(|axis| {
-            let dot: f64 = axis.to_array().iter().zip(p.to_array()).map(|(a, b)| a * b).sum();
+            let dot: f64 = axis
+                .to_array()
+                .iter()
+                .zip(p.to_array())
+                .map(|(a, b)| a * b)
+                .sum();
             dot
         })
     };
@@ -427,7 +475,12 @@ fn klein_euler_angles_precision() {
     let pi = std::f64::consts::PI;
     let r = Even::from_euler_angles(0.2 * pi, 0.2 * pi, 0.0);
     let (roll, pitch, yaw) = r.to_euler_angles();
-    assert_close!([roll, pitch, yaw], [0.2 * pi, 0.2 * pi, 0.0], scale = 1.0, rel = 1e-15);
+    assert_close!(
+        [roll, pitch, yaw],
+        [0.2 * pi, 0.2 * pi, 0.0],
+        scale = 1.0,
+        rel = 1e-15
+    );
 }
 
 /// The 3x3 rotation of `Rx(-roll) Ry(-pitch) Rz(-yaw)` (right-handed elementary
@@ -460,9 +513,19 @@ fn euler_angles_match_textbook_matrices_and_invert() {
     let pi = std::f64::consts::PI;
     let mut stream = Stream(0xe1e1_e1e1);
     let mut cases: Vec<[f64; 3]> = (0..300)
-        .map(|_| [stream.next() * pi, stream.next() * 0.5 * pi, stream.next() * pi])
+        .map(|_| {
+            [
+                stream.next() * pi,
+                stream.next() * 0.5 * pi,
+                stream.next() * pi,
+            ]
+        })
         .collect();
-    cases.extend([[0.3, 0.5 * pi, -1.2], [-2.0, -0.5 * pi, 0.7], [1.0, 0.5 * pi - 1e-9, 2.0]]);
+    cases.extend([
+        [0.3, 0.5 * pi, -1.2],
+        [-2.0, -0.5 * pi, 0.7],
+        [1.0, 0.5 * pi - 1e-9, 2.0],
+    ]);
     cases.extend([[pi, 0.1, pi], [0.0, 0.0, 0.0], [1e-20, -1e-20, 1e-20]]);
     for [roll, pitch, yaw] in cases {
         let r = Even::from_euler_angles(roll, pitch, yaw);
@@ -475,7 +538,12 @@ fn euler_angles_match_textbook_matrices_and_invert() {
         for scaled in [r, r * -3.0, r * 1e-100] {
             let (a, b, c) = scaled.to_euler_angles();
             let back = Even::from_euler_angles(a, b, c);
-            let same = back.to_array().iter().zip(r.to_array()).map(|(x, y)| x * y).sum::<f64>();
+            let same = back
+                .to_array()
+                .iter()
+                .zip(r.to_array())
+                .map(|(x, y)| x * y)
+                .sum::<f64>();
             let back = if same < 0.0 { -back } else { back };
             assert_close!(back.to_array(), r.to_array(), scale = 1.0, rel = 1e-15);
             if (pitch.abs() - 0.5 * pi).abs() > 1e-6 {
@@ -518,4 +586,66 @@ fn euler_angles_with_the_null_generator_last() {
     );
     let (r, p, y) = b.to_euler_angles();
     assert_close!([r, p, y], [roll, pitch, yaw], rel = 1e-15);
+}
+
+ga_macros::algebra! {
+    /// klein's 3D PGA in `f32`, klein's own precision.
+    pub mod pga0_f32 {
+        metric: [0, 1, 1, 1],
+        scalar: f32,
+    }
+}
+
+/// klein's cases at klein's precision (`doctest::Approx`: relative `1.19e-5`).
+#[test]
+fn klein_cases_in_f32() {
+    use pga0_f32::{Bivector, Even};
+    let m = Even {
+        s: 1.0,
+        e12: 5.0,
+        e13: 6.0,
+        e14: 7.0,
+        e23: 2.0,
+        e24: -3.0,
+        e34: 4.0,
+        e1234: 8.0,
+    };
+    let columns = m.to_matrix4x4();
+    let mut out = [0.0f32; 4];
+    for (column, x) in columns.iter().zip([-1.0f32, 1.0, 2.0, 1.0]) {
+        for (o, entry) in out.iter_mut().zip(column) {
+            *o += entry * x;
+        }
+    }
+    assert_eq!(out, [-12.0, -86.0, -86.0, 30.0]);
+    let u = m.normalized_study();
+    let unit = u * u.reverse();
+    assert!(
+        (unit.s - 1.0).abs() < 1.2e-5 && unit.e1234.abs() < 1.2e-5,
+        "{unit:?}"
+    );
+    let l = Bivector {
+        e12: 1.0,
+        e13: 2.0,
+        e14: 3.0,
+        e23: 1.0,
+        e24: -2.0,
+        e34: 3.0,
+    }
+    .normalized_study();
+    let unit = l * l.reverse();
+    assert!(
+        (unit.s - 1.0).abs() < 1.2e-5 && unit.e1234.abs() < 1.2e-5,
+        "{unit:?}"
+    );
+    let pi = std::f32::consts::PI;
+    let (roll, pitch, yaw) = Even::from_euler_angles(0.2 * pi, 0.2 * pi, 0.0).to_euler_angles();
+    assert!((roll - 0.2 * pi).abs() < 1.2e-5 * pi && (pitch - 0.2 * pi).abs() < 1.2e-5 * pi);
+    assert!(yaw.abs() < 1.2e-5, "{yaw}");
+    let q = m / m;
+    assert!(
+        (q.s - 1.0).abs() < 1.2e-5 && q.e1234.abs() < 1.2e-5,
+        "{q:?}"
+    );
+    assert_eq!((-m).constrained(), m);
 }

@@ -11,8 +11,8 @@ use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 
 use super::expr::{
-    construct, field_ident, output_type, quadratic_component, scalar_type, signed_sum,
-    type_tokens, Operand,
+    construct, field_ident, output_type, quadratic_component, scalar_type, signed_sum, type_tokens,
+    Operand,
 };
 use super::unary::{descaled, largest_abs, nondegenerate};
 use crate::algebra::{canonical_blades, grade, Blade, Involution, ProductKind};
@@ -338,16 +338,19 @@ fn euler_angles(plan: &Plan, t: TypeId, origin: usize) -> TokenStream {
         }
         let k = parts.iter().position(|&(_, b)| b == blade)?;
         let v = &values[k];
-        Some(if parts[k].0 > 0 { quote!(#v) } else { quote!(-#v) })
+        Some(if parts[k].0 > 0 {
+            quote!(#v)
+        } else {
+            quote!(-#v)
+        })
     });
     quote! {
-        /// klein's `euler_angles` of the rotation part (the scalar and the Euclidean
-        /// bivectors; a motor's translation is left out): `(roll, pitch, yaw)` about
-        /// `x`, `y`, `z`, the rotation being `yaw` about `z` after `pitch` about `y` after
-        /// `roll` about `x` (`from_euler_angles` gives it back). `pitch` in
-        /// `[-pi/2, pi/2]`, the others in `(-pi, pi]`; at `pitch = +-pi/2` exactly `yaw`
-        /// is 0. Any scale of the rotor is allowed. Half-angle form, accurate to rounding
-        /// also near `pitch = +-pi/2` (docs/derivations/study-normalisation.md).
+        /// klein's `euler_angles` `(roll, pitch, yaw)` of the rotation part (the scalar
+        /// and the Euclidean bivectors; a motor's translation is left out), the inverse
+        /// of `from_euler_angles`: `pitch` in `[-pi/2, pi/2]`, the others in `(-pi, pi]`;
+        /// at `pitch = +-pi/2` exactly `yaw` is 0 (klein's choice). Any scale and sign of
+        /// the rotor is allowed. Half-angle form: the rotation rebuilt from the angles is
+        /// right to rounding also near the poles (docs/derivations/study-normalisation.md).
         #[inline]
         #[must_use]
         pub fn to_euler_angles(self) -> (#s, #s, #s) {
@@ -380,8 +383,10 @@ fn euler_angles(plan: &Plan, t: TypeId, origin: usize) -> TokenStream {
             (wrap(roll), pitch, wrap(yaw))
         }
 
-        /// The unit rotor of klein's `euler_angles` `(roll, pitch, yaw)`: `yaw` about `z`
-        /// after `pitch` about `y` after `roll` about `x` (see `to_euler_angles`).
+        /// The unit rotor of klein's `euler_angles` `(roll, pitch, yaw)`, klein's
+        /// `rx * ry * rz` of its rotors `rotor(angle, axis)` about `x`, `y`, `z`: the
+        /// point matrix is `Rx(-roll) Ry(-pitch) Rz(-yaw)` (right-handed elementary
+        /// rotations), the transpose of the aerospace `Rz(yaw) Ry(pitch) Rx(roll)`.
         #[inline]
         #[must_use]
         pub fn from_euler_angles(roll: #s, pitch: #s, yaw: #s) -> Self {
@@ -419,8 +424,7 @@ fn division(plan: &Plan) -> TokenStream {
         );
         let divisor = Operand::new(quote!(rhs), b);
         let (s_expr, p_expr) = study_parts(plan, &divisor);
-        let inverse =
-            times_scalar_plus_pseudoscalar(plan, &divisor, true, &quote!(a), &quote!(b));
+        let inverse = times_scalar_plus_pseudoscalar(plan, &divisor, true, &quote!(a), &quote!(b));
         out.extend(quote! {
             impl ::core::ops::Div<#rhs> for #lhs {
                 type Output = #out_ty;
