@@ -321,7 +321,7 @@ fn klein_line_and_motor_division() {
         rel = 1e-14
     );
     assert_close!(
-        (Even::from(q) / q).to_array(),
+        (q / q).to_array(),
         Even::ONE.to_array(),
         scale = 1.0,
         rel = 1e-14

@@ -35,7 +35,7 @@ pub fn emit_motor_toolkit(plan: &Plan) -> TokenStream {
             continue;
         }
         let study = plan.is_study_type(t);
-        let rotor_like = blades.contains(&0) && blades.iter().all(|&b| grade(b) % 2 == 0);
+        let rotor_like = blades.contains(&0) && blades.iter().all(|&b| grade(b).is_multiple_of(2));
         let mut methods = TokenStream::new();
         if study && plan.has(Op::Norm) {
             methods.extend(study_normalisation(plan, t));
