@@ -48,3 +48,53 @@ fn user_types_hold_exactly_their_blades_in_canonical_order() {
     let text = crate::expand::algebra(raw).unwrap().to_string();
     assert!(text.contains("pub struct Plane { # [doc = \"The `e12` component.\"] pub e12 : f64 , # [doc = \"The `e13` component.\"] pub e13 : f64 , }"), "{text}");
 }
+
+/// klein's motor toolkit appears only in projective algebras, and each part only where
+/// its meaning holds: the Study normalisation and division by motors where `x ~x` has a
+/// pseudoscalar part (3D PGA), Euler angles in 3D PGA, matrices in every PGA.
+#[test]
+fn the_motor_toolkit_is_emitted_only_for_projective_algebras() {
+    let text = |input: &str| {
+        let raw: crate::spec::RawAlgebra = syn::parse_str(input).unwrap();
+        crate::expand::algebra(raw).unwrap().to_string()
+    };
+    let pga3 = text("mod p { metric: [0, 1, 1, 1] }");
+    let pga3_last = text("mod p { metric: [1, 1, 1, 0] }");
+    for module in [&pga3, &pga3_last] {
+        for name in [
+            "fn normalized_study",
+            "fn sqrt",
+            "fn constrained",
+            "fn to_matrix4x4",
+            "fn to_matrix3x4",
+            "fn to_euler_angles",
+            "Div < Bivector > for Even",
+            "Div < Even > for Bivector",
+        ] {
+            assert!(module.contains(name), "{name} missing in 3D PGA");
+        }
+    }
+    let pga2 = text("mod p { metric: [0, 1, 1] }");
+    assert!(pga2.contains("fn to_matrix3x3") && pga2.contains("fn constrained"));
+    assert!(!pga2.contains("fn normalized_study") && !pga2.contains("fn to_euler_angles"));
+    for other in [
+        "mod g { metric: [1, 1, 1, 1] }",
+        "mod g { metric: [1, 1, 1] }",
+        "mod g { metric: [1, -1, -1, -1] }",
+        "mod g { metric: [0, 0, 1, 1] }",
+        "mod g { metric: [0, 1, 1, -1] }",
+    ] {
+        let module = text(other);
+        for name in [
+            "fn normalized_study",
+            "fn constrained",
+            "fn to_matrix",
+            "fn to_euler",
+        ] {
+            assert!(!module.contains(name), "{name} in {other}");
+        }
+    }
+    // Left out with the operations they belong to.
+    let restricted = text("mod p { metric: [0, 1, 1, 1], ops: [geometric] }");
+    assert!(!restricted.contains("fn normalized_study") && !restricted.contains("fn to_matrix"));
+}

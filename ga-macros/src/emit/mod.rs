@@ -9,6 +9,7 @@ mod expr;
 mod generic;
 mod integrations;
 mod math;
+mod motors;
 mod operators;
 mod products;
 mod projective;
@@ -78,6 +79,7 @@ pub fn module_items(spec: &Spec, plan: &Plan) -> TokenStream {
     }
     items.extend(conveniences::emit_conveniences(plan));
     items.extend(projective::emit_projective_constructors(plan));
+    items.extend(motors::emit_motor_toolkit(plan));
     if plan.lanes.is_none() && plan.emitted.contains(&TypeId::multivector(n)) {
         items.extend(unary::emit_multivector_inverse(plan));
         items.extend(versor::emit_multivector_helpers(plan));

@@ -257,6 +257,29 @@ impl Plan {
         q.keys().all(|&blade| blade == 0)
     }
 
+    /// Whether `A ~A` is `s + p I` for every `A` of this type, with `p` not always zero,
+    /// in a projective algebra (3D PGA's motors and lines): `I` null, its own reverse,
+    /// commuting with every blade of the type, and `A I` again of the type. Then
+    /// multiplying by `a + b I` rescales `A ~A` freely, which gives the Study
+    /// normalisation and the closed-form inverse (docs/derivations/study-normalisation.md).
+    pub fn is_study_type(&self, t: TypeId) -> bool {
+        if self.metric.projective_origin().is_none() {
+            return false;
+        }
+        let i = self.metric.pseudoscalar();
+        let blades = &self.types.get(t).blades;
+        let q = quadratic_self(&self.metric, blades, crate::algebra::Involution::Reverse);
+        let keys_ok = q.keys().all(|&b| b == 0 || b == i) && q.contains_key(&i);
+        let central = blades.iter().all(|&d| {
+            let (right, blade) = self.metric.geometric(d, i);
+            right == self.metric.geometric(i, d).0 && (right == 0 || blades.contains(&blade))
+        });
+        keys_ok
+            && central
+            && self.metric.geometric(i, i).0 == 0
+            && crate::algebra::Involution::Reverse.sign(i) > 0
+    }
+
     /// The type of `A^-1`: the inverse keeps the parity of `A` and the sign reversion
     /// gives it, so only grades congruent to A's mod 4 can appear.
     pub fn inverse_output(&self, t: TypeId) -> Output {
