@@ -1030,10 +1030,64 @@ fn simulate_plot_writes_an_svg_of_omega_and_energy_drift() {
         String::from_utf8_lossy(&out.stderr)
     );
     let svg = std::fs::read_to_string(dir.join("plot.svg")).unwrap();
-    assert!(svg.starts_with("<svg"), "{}", &svg[..svg.len().min(80)]);
     assert!(svg.contains("body angular velocity (rad/s)"));
     assert!(svg.contains("relative energy drift"));
-    assert!(dir.join("out.csv").is_file());
+    // The curves are the CSV's values: w1, w2 and w3 (one colour each, on one axis) hold
+    // one point per sample, at the same abscissae, and every point's height is one
+    // decreasing affine function of its w (the SVG's y grows downwards), to within the
+    // pixel the plot rounds to.
+    let csv = std::fs::read_to_string(dir.join("out.csv")).unwrap();
+    let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+    let rows: Vec<Vec<f64>> = csv
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|c| c.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 11);
+    let mut pairs = Vec::new();
+    let mut abscissae = None;
+    for (k, colour) in ["#D62728", "#2CA02C", "#1F77B4"].into_iter().enumerate() {
+        let points = polyline(&svg, colour);
+        assert_eq!(points.len(), rows.len(), "w{}: {points:?}", k + 1);
+        let xs: Vec<f64> = points.iter().map(|p| p.0).collect();
+        assert!(xs.windows(2).all(|w| w[1] > w[0]), "{xs:?}");
+        assert_eq!(*abscissae.get_or_insert(xs.clone()), xs);
+        let column = header
+            .iter()
+            .position(|c| *c == format!("w{}", k + 1))
+            .unwrap();
+        pairs.extend(rows.iter().zip(&points).map(|(row, p)| (row[column], p.1)));
+    }
+    let (low, high) = pairs.iter().fold((pairs[0], pairs[0]), |(lo, hi), &p| {
+        (
+            if p.0 < lo.0 { p } else { lo },
+            if p.0 > hi.0 { p } else { hi },
+        )
+    });
+    let slope = (high.1 - low.1) / (high.0 - low.0);
+    assert!(slope < 0.0, "{low:?} {high:?}");
+    for (w, y) in &pairs {
+        let expected = low.1 + slope * (w - low.0);
+        assert!(
+            (y - expected).abs() <= 1.5,
+            "w {w}: y {y}, expected {expected}"
+        );
+    }
+}
+
+/// The points of the SVG's one polyline drawn in `colour` at width 2 (a data series).
+fn polyline(svg: &str, colour: &str) -> Vec<(f64, f64)> {
+    let marker = format!("stroke=\"{colour}\" stroke-width=\"2\" points=\"");
+    assert_eq!(svg.matches(&marker).count(), 1, "{colour}");
+    let start = svg.find(&marker).unwrap() + marker.len();
+    let end = start + svg[start..].find('"').unwrap();
+    svg[start..end]
+        .split_whitespace()
+        .map(|p| {
+            let (x, y) = p.split_once(',').unwrap();
+            (x.parse().unwrap(), y.parse().unwrap())
+        })
+        .collect()
 }
 
 #[test]

@@ -753,8 +753,8 @@ fn bad_4d_input_names_its_field() {
             "negative-moment",
             FOUR.replace("[0.5, 0.9, 1.4, 2.0]", "[0.5, -0.9, 1.4, 2.0]"),
             "body.second_moments[1]",
-            "must be positive, got -0.9",
-            |e| matches!(e, Error::NotPositive { value, .. } if *value == -0.9),
+            "second moments cannot be negative, got -0.9",
+            is_invalid,
         ),
         (
             "short-omega",
