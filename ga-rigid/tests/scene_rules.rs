@@ -89,8 +89,8 @@ fn checked(
     kind: fn(&Error) -> bool,
 ) -> Error {
     let message = one_line(&e);
-    // The path as messages show it: cut to `ECHO_LIMIT` characters, length stated.
-    let prefix = format!("{}: {field}: ", echo_path(&path));
+    // The path as messages show it: cut to its end past `ECHO_LIMIT` characters.
+    let prefix = format!("{}: {field}: ", echo_path(path));
     assert!(
         message.starts_with(&prefix),
         "{name}: expected {prefix:?} first: {message}"
