@@ -37,13 +37,8 @@ fn crowd(n: usize) -> Vec<BodyState> {
 /// `[0, 1, 2]`): the step orders the axes itself, through a frame where they come in
 /// another order, so `[1, 2, 0]` measures a body that needs one.
 fn crowd_in_order(n: usize, order: [usize; 3]) -> Vec<BodyState> {
-    let mut seed = 0x9e37_79b9_7f4a_7c15_u64;
-    let mut next = move || {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed >> 40) as f32 / (1u64 << 24) as f32
-    };
+    let mut rng = ga_test_rng::Rng::new(0x9e37_79b9_7f4a_7c15);
+    let mut next = move || rng.next_f32();
     (0..n)
         .map(|_| {
             let sorted = [1.0 + next(), 2.0 + next(), 3.0 + next()];

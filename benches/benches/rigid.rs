@@ -29,7 +29,6 @@ use ga_benches::rigid::{
     RACE_PEER, RACE_TARGET, RACE_T_END, RK4_STEP, SHORT_FAT_MOMENTS, SHORT_FAT_MOMENTUM,
     STEP_GROUP, TOP_GROUP,
 };
-use ga_benches::rng::XorShift64;
 use ga_core::f64::g3::{Bivector, Rotor};
 use ga_rigid::dynamics::{
     omega_to_vector, RigidBody, State, SymmetricTop, DEFAULT_SYMMETRY_TOLERANCE,
@@ -40,6 +39,7 @@ use ga_rigid::integrators::{
     LieDop853, LieRk4, Rk4, Splitting,
 };
 use ga_rigid_cli::report::attitude_error;
+use ga_test_rng::Rng;
 use rayon::prelude::*;
 
 /// The step of the single-step benches: h |w| is about 0.03 on both bodies.
@@ -69,7 +69,7 @@ fn short_fat_top() -> (RigidBody, SymmetricTop) {
 /// Closed-form evaluation against one RK4 step, both per item of a batch.
 fn symmetric_top(c: &mut Criterion) {
     let (body, top) = short_fat_top();
-    let mut rng = XorShift64::new(401);
+    let mut rng = Rng::new(401);
     let times: Vec<f64> = (0..BATCH).map(|_| rng.uniform(0.0, 100.0)).collect();
     let states = conv(&times, |t| top.state(t));
     // Both sides compute the same motion: one RK4 step lands on the closed form.
@@ -178,7 +178,7 @@ fn integrator_step(c: &mut Criterion) {
 /// 10^6 seeded tops: symmetric bodies with a random symmetry axis and ratio of moments,
 /// random attitudes and angular velocities.
 fn million_tops() -> Vec<SymmetricTop> {
-    let mut rng = XorShift64::new(402);
+    let mut rng = Rng::new(402);
     (0..TOPS)
         .map(|_| {
             let axis = (rng.next_u64() % 3) as usize;

@@ -5,8 +5,8 @@
 //! `[s, e12, e13, e14, e23, e24, e34, e1234]`. Every bench converts the same arrays into
 //! each library's types, outside the timed loop.
 
-use crate::rng::XorShift64;
 use crate::table::{Scalar, G4};
+use ga_test_rng::Rng;
 
 /// Items per batch in the throughput benches (and steps in the latency chains).
 pub const BATCH: usize = 4096;
@@ -26,28 +26,28 @@ pub fn cast_all<S: Scalar, const K: usize>(xs: &[[f64; K]]) -> Vec<[S; K]> {
 /// `count` unit G3 rotors `[s, e12, e13, e23]` (uniform directions in 4D).
 #[must_use]
 pub fn g3_rotors(count: usize, seed: u64) -> Vec<[f64; 4]> {
-    let mut rng = XorShift64::new(seed);
+    let mut rng = Rng::new(seed);
     (0..count).map(|_| rng.unit_array()).collect()
 }
 
 /// `count` unit G3 vectors `[e1, e2, e3]`.
 #[must_use]
 pub fn g3_vectors(count: usize, seed: u64) -> Vec<[f64; 3]> {
-    let mut rng = XorShift64::new(seed);
+    let mut rng = Rng::new(seed);
     (0..count).map(|_| rng.unit_array()).collect()
 }
 
 /// `count` G3 bivectors `[e12, e13, e23]` with coefficients uniform in `[-1, 1)`.
 #[must_use]
 pub fn g3_bivectors(count: usize, seed: u64) -> Vec<[f64; 3]> {
-    let mut rng = XorShift64::new(seed);
+    let mut rng = Rng::new(seed);
     (0..count).map(|_| rng.uniform_array(-1.0, 1.0)).collect()
 }
 
 /// `count` full G3 multivectors with coefficients uniform in `[-amplitude, amplitude)`.
 #[must_use]
 pub fn g3_multivectors(count: usize, amplitude: f64, seed: u64) -> Vec<[f64; 8]> {
-    let mut rng = XorShift64::new(seed);
+    let mut rng = Rng::new(seed);
     (0..count)
         .map(|_| rng.uniform_array(-amplitude, amplitude))
         .collect()
@@ -56,14 +56,14 @@ pub fn g3_multivectors(count: usize, amplitude: f64, seed: u64) -> Vec<[f64; 8]>
 /// `count` unit G4 vectors `[e1, e2, e3, e4]`.
 #[must_use]
 pub fn g4_vectors(count: usize, seed: u64) -> Vec<[f64; 4]> {
-    let mut rng = XorShift64::new(seed);
+    let mut rng = Rng::new(seed);
     (0..count).map(|_| rng.unit_array()).collect()
 }
 
 /// `count` G4 bivectors with coefficients uniform in `[-1, 1)` (generally not simple).
 #[must_use]
 pub fn g4_bivectors(count: usize, seed: u64) -> Vec<[f64; 6]> {
-    let mut rng = XorShift64::new(seed);
+    let mut rng = Rng::new(seed);
     (0..count).map(|_| rng.uniform_array(-1.0, 1.0)).collect()
 }
 
@@ -74,7 +74,7 @@ pub fn g4_rotors(count: usize, seed: u64) -> Vec<[f64; 8]> {
     let algebra = G4::euclidean();
     let vector_blades = algebra.blades_of_grades(&[1]);
     let even_blades = algebra.blades_of_grades(&[0, 2, 4]);
-    let mut rng = XorShift64::new(seed);
+    let mut rng = Rng::new(seed);
     (0..count)
         .map(|_| {
             let mut rotor = algebra.embed(&[0], &[1.0]);
@@ -91,7 +91,7 @@ pub fn g4_rotors(count: usize, seed: u64) -> Vec<[f64; 8]> {
 /// `count` full G4 multivectors with coefficients uniform in `[-amplitude, amplitude)`.
 #[must_use]
 pub fn g4_multivectors(count: usize, amplitude: f64, seed: u64) -> Vec<[f64; 16]> {
-    let mut rng = XorShift64::new(seed);
+    let mut rng = Rng::new(seed);
     (0..count)
         .map(|_| rng.uniform_array(-amplitude, amplitude))
         .collect()

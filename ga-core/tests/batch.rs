@@ -5,33 +5,18 @@ use ga_core::f32::g3 as s3;
 use ga_core::f32::g4 as s4;
 use ga_core::f64::g3 as d3;
 
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        let bits = self.0.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11;
-        bits as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-    }
-
-    fn f32s<const N: usize>(&mut self) -> [f32; N] {
-        std::array::from_fn(|_| self.next() as f32)
-    }
-
-    fn f64s<const N: usize>(&mut self) -> [f64; N] {
-        std::array::from_fn(|_| self.next())
-    }
-}
+use ga_test_rng::Rng;
 
 #[test]
 fn g3_f32_x4_and_x8_rotor_products_and_sandwiches_match_items_exactly() {
-    let mut rng = Rng(3);
+    let mut rng = Rng::new(3);
     for _ in 0..100 {
-        let r: [s3::Rotor; 8] = std::array::from_fn(|_| s3::Rotor::from_array(rng.f32s()));
-        let q: [s3::Rotor; 8] = std::array::from_fn(|_| s3::Rotor::from_array(rng.f32s()));
-        let v: [s3::Vector; 8] = std::array::from_fn(|_| s3::Vector::from_array(rng.f32s()));
+        let r: [s3::Rotor; 8] =
+            std::array::from_fn(|_| s3::Rotor::from_array(rng.uniform_array_f32(-1.0, 1.0)));
+        let q: [s3::Rotor; 8] =
+            std::array::from_fn(|_| s3::Rotor::from_array(rng.uniform_array_f32(-1.0, 1.0)));
+        let v: [s3::Vector; 8] =
+            std::array::from_fn(|_| s3::Vector::from_array(rng.uniform_array_f32(-1.0, 1.0)));
         let products = (s3::x8::Rotor::from_items(r) * s3::x8::Rotor::from_items(q)).to_items();
         let rotated =
             s3::x8::Sandwich::sandwich(s3::x8::Rotor::from_items(r), s3::x8::Vector::from_items(v))
@@ -51,12 +36,12 @@ fn g3_f32_x4_and_x8_rotor_products_and_sandwiches_match_items_exactly() {
 
 #[test]
 fn g4_f32_x4_full_products_match_items_exactly() {
-    let mut rng = Rng(4);
+    let mut rng = Rng::new(4);
     for _ in 0..100 {
         let a: [s4::Multivector; 4] =
-            std::array::from_fn(|_| s4::Multivector::from_array(rng.f32s()));
+            std::array::from_fn(|_| s4::Multivector::from_array(rng.uniform_array_f32(-1.0, 1.0)));
         let b: [s4::Multivector; 4] =
-            std::array::from_fn(|_| s4::Multivector::from_array(rng.f32s()));
+            std::array::from_fn(|_| s4::Multivector::from_array(rng.uniform_array_f32(-1.0, 1.0)));
         let products =
             (s4::x4::Multivector::from_items(a) * s4::x4::Multivector::from_items(b)).to_items();
         let wedges =
@@ -70,11 +55,12 @@ fn g4_f32_x4_full_products_match_items_exactly() {
 
 #[test]
 fn g3_f64_x4_products_sums_and_reverses_match_items_exactly() {
-    let mut rng = Rng(5);
+    let mut rng = Rng::new(5);
     for _ in 0..100 {
         let a: [d3::Multivector; 4] =
-            std::array::from_fn(|_| d3::Multivector::from_array(rng.f64s()));
-        let b: [d3::Even; 4] = std::array::from_fn(|_| d3::Even::from_array(rng.f64s()));
+            std::array::from_fn(|_| d3::Multivector::from_array(rng.uniform_array(-1.0, 1.0)));
+        let b: [d3::Even; 4] =
+            std::array::from_fn(|_| d3::Even::from_array(rng.uniform_array(-1.0, 1.0)));
         let (wa, wb) = (
             d3::x4::Multivector::from_items(a),
             d3::x4::Even::from_items(b),

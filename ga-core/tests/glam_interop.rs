@@ -4,26 +4,17 @@ use ga_core::f32::g3 as s3;
 use ga_core::f64::g3 as d3;
 use ga_core::glam::{DMat3, DQuat, DVec3, Mat3, Quat, Vec3};
 
-/// A small deterministic generator (xorshift64*), so failures reproduce.
-struct Rng(u64);
+use ga_test_rng::Rng;
 
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        let bits = self.0.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11;
-        bits as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-    }
+/// A vector with components uniform in [-1, 1).
+fn vec(rng: &mut Rng) -> DVec3 {
+    DVec3::new(rng.signed(), rng.signed(), rng.signed())
+}
 
-    fn vec(&mut self) -> DVec3 {
-        DVec3::new(self.next(), self.next(), self.next())
-    }
-
-    fn quat(&mut self) -> DQuat {
-        let axis = self.vec().normalize_or(DVec3::Z);
-        DQuat::from_axis_angle(axis, 3.0 * self.next())
-    }
+/// A rotation about a random axis by an angle in [-3, 3).
+fn quat(rng: &mut Rng) -> DQuat {
+    let axis = vec(rng).normalize_or(DVec3::Z);
+    DQuat::from_axis_angle(axis, 3.0 * rng.signed())
 }
 
 #[test]
@@ -36,10 +27,10 @@ fn quarter_turn_in_e12_is_glams_positive_turn_about_z() {
 
 #[test]
 fn f64_rotors_rotate_vectors_like_glam_quaternions() {
-    let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
+    let mut rng = Rng::new(0x9e37_79b9_7f4a_7c15);
     for _ in 0..1000 {
-        let q = rng.quat();
-        let v = rng.vec();
+        let q = quat(&mut rng);
+        let v = vec(&mut rng);
         let r = d3::Rotor::from(q);
         let by_glam = q * v;
         let by_rotor = DVec3::from(d3::Sandwich::sandwich(r, d3::Vector::from(v)));
@@ -57,10 +48,10 @@ fn f64_rotors_rotate_vectors_like_glam_quaternions() {
 
 #[test]
 fn f32_rotors_rotate_vectors_like_glam_quaternions() {
-    let mut rng = Rng(0x1234_5678_9abc_def1);
+    let mut rng = Rng::new(0x1234_5678_9abc_def1);
     for _ in 0..1000 {
-        let q = rng.quat().as_quat();
-        let v = rng.vec().as_vec3();
+        let q = quat(&mut rng).as_quat();
+        let v = vec(&mut rng).as_vec3();
         let r = s3::Rotor::from(q);
         let by_glam = q * v;
         let by_rotor = Vec3::from(s3::Sandwich::sandwich(r, s3::Vector::from(v)));
@@ -74,24 +65,24 @@ fn f32_rotors_rotate_vectors_like_glam_quaternions() {
 
 #[test]
 fn conversions_are_exact_inverses() {
-    let mut rng = Rng(42);
+    let mut rng = Rng::new(42);
     for _ in 0..1000 {
-        let q = rng.quat();
+        let q = quat(&mut rng);
         assert_eq!(DQuat::from(d3::Rotor::from(q)), q);
-        let v = rng.vec();
+        let v = vec(&mut rng);
         assert_eq!(DVec3::from(d3::Vector::from(v)), v);
         let q32 = q.as_quat();
         assert_eq!(Quat::from(s3::Rotor::from(q32)), q32);
-        let r = d3::Rotor::new(rng.next(), rng.next(), rng.next(), rng.next());
+        let r = d3::Rotor::new(rng.signed(), rng.signed(), rng.signed(), rng.signed());
         assert_eq!(d3::Rotor::from(DQuat::from(r)), r);
     }
 }
 
 #[test]
 fn rotor_products_compose_like_quaternion_products() {
-    let mut rng = Rng(7);
+    let mut rng = Rng::new(7);
     for _ in 0..1000 {
-        let (p, q) = (rng.quat(), rng.quat());
+        let (p, q) = (quat(&mut rng), quat(&mut rng));
         let composed = DQuat::from(d3::Rotor::from(p) * d3::Rotor::from(q));
         assert!(
             composed.abs_diff_eq(p * q, 1e-14),

@@ -109,14 +109,10 @@ pub(crate) fn free_flow_normalized<R: Real, T: Turning<R>>(
 mod tests {
     use super::*;
 
-    /// A seeded stream in [-1, 1).
-    fn stream(mut seed: u64) -> impl FnMut() -> f64 {
-        move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 52) as f64 - 1.0
-        }
+    /// A seeded stream in [-1, 1) (the workspace's test generator).
+    fn stream(seed: u64) -> impl FnMut() -> f64 {
+        let mut rng = ga_test_rng::Rng::new(seed);
+        move || rng.signed()
     }
 
     /// Seeded principal moments, their inertia, and a unit orientation whose `w` was

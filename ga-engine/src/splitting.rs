@@ -167,14 +167,10 @@ mod tests {
     use super::*;
     use crate::sse::Q4;
 
-    /// A seeded stream of floats in [-1, 1).
-    fn stream(mut seed: u64) -> impl FnMut() -> f32 {
-        move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 40) as f32 / (1u64 << 23) as f32 - 1.0
-        }
+    /// A seeded stream of floats in [-1, 1) (the workspace's test generator).
+    fn stream(seed: u64) -> impl FnMut() -> f32 {
+        let mut rng = ga_test_rng::Rng::new(seed);
+        move || rng.uniform_f32(-1.0, 1.0)
     }
 
     fn bits(q: Q<f32>, l: V<f32>) -> [u32; 7] {

@@ -134,13 +134,8 @@ fn dlm_body_momentum(inverse: [f64; 3], m: [f64; 3], h: f64) -> [f64; 3] {
 /// body, and far below it on the whole.
 #[test]
 fn the_corrected_split_keeps_the_energy_better_than_the_five_turn_split() {
-    let mut seed = 0x0123_4567_89ab_cdef_u64;
-    let mut next = move || {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut rng = ga_test_rng::Rng::new(0x0123_4567_89ab_cdef);
+    let mut next = move || rng.next_f64();
     let h = 1.0 / 60.0;
     let mut log_ratio = 0.0;
     for case in 0..40 {

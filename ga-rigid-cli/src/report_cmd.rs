@@ -304,16 +304,13 @@ fn user_scenes(dir: &Path) -> Result<(Vec<TestScene>, Vec<PathBuf>), Error> {
     let scenes = paths
         .iter()
         .map(|path| {
-            let file = path
-                .file_name()
-                .map_or_else(String::new, |n| n.to_string_lossy().into_owned());
-            let scene = Scene::load(path)
-                .map_err(|e| Error::invalid("--scenes", format!("{}: {e}", echo(&file))))?;
+            // `Scene::load`'s errors start with the scene's path already.
+            let scene = Scene::load(path).map_err(|e| Error::invalid("--scenes", e.to_string()))?;
             let name = path
                 .file_stem()
                 .map_or_else(|| "scene".into(), |s| s.to_string_lossy().into_owned());
             TestScene::from_scene(&name, &scene)
-                .map_err(|e| Error::invalid("--scenes", format!("{}: {e}", echo(&file))))
+                .map_err(|e| Error::invalid("--scenes", format!("{}: {e}", echo_path(path))))
         })
         .collect::<Result<Vec<_>, Error>>()?;
     Ok((scenes, paths))

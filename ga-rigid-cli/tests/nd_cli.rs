@@ -185,38 +185,10 @@ fn a_3d_only_method_is_refused_in_4d_and_2d_with_one_line() {
     );
 }
 
+/// The method rules of a 4D run, in the command's words (the scene rules are library
+/// tests: ga-rigid/tests/scene_rules.rs).
 #[test]
-fn bad_4d_input_names_its_field() {
-    let cases = [
-        (
-            "short-rotor",
-            FOUR.replace("[1, 0, 0, 0, 0, 0, 0, 0]", "[1, 0, 0, 0]"),
-            "initial.rotor: 4D rotors have 8 components",
-        ),
-        (
-            "not-a-rotor",
-            FOUR.replace("[1, 0, 0, 0, 0, 0, 0, 0]", "[1, 0, 0, 0, 0, 0, 0, 1]"),
-            "initial.rotor: not a rotor",
-        ),
-        (
-            "3d-key",
-            FOUR.replace("second_moments", "moments"),
-            "body.moments: unknown field",
-        ),
-        (
-            "negative-moment",
-            FOUR.replace("[0.5, 0.9, 1.4, 2.0]", "[0.5, -0.9, 1.4, 2.0]"),
-            "body.second_moments[1]",
-        ),
-        (
-            "short-omega",
-            FOUR.replace("[1.0, 0, 0.4, -0.6, 0.2, 0.8]", "[1.0, 0, 0.4]"),
-            "initial.omega: 4D angular velocities have 6 components",
-        ),
-    ];
-    for (name, scene, start) in cases {
-        expect_rejected(name, &scene, &["--method", "rk4"], start);
-    }
+fn bad_4d_method_settings_name_their_field() {
     // The 3D closed form's body is not the 4D one's: (a, a, b, b) is required.
     expect_rejected(
         "closed-form-asymmetric",

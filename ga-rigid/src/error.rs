@@ -4,9 +4,10 @@
 //! then states the rule it broke, e.g. `body.moments: moments must be positive, got -1`.
 //! Library constructors name their own parameter (`moments`, `mass`, `points[2]`); the
 //! scene loader prefixes the section with [`Error::within`], so the same check reads
-//! `body.shape.mass: ...` when it comes from a scene file.
+//! `body.shape.mass: ...` when it comes from a scene file, and a scene read from a path
+//! names the file first ([`Error::in_file`]): `scenes/top.toml: body.shape.mass: ...`.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Everything that can go wrong in `ga-rigid`, from a bad scene file to a run beyond its
 /// limits.
@@ -139,6 +140,16 @@ pub enum Error {
         source: std::io::Error,
     },
 
+    /// Any of the other errors, found in the scene file `path`: the message is the file's
+    /// name and then the error's own (`scenes/top.toml: body.moments: ...`).
+    #[error("{}: {source}", echo_path(path))]
+    InFile {
+        /// The scene file.
+        path: PathBuf,
+        /// What is wrong in it (never another `InFile`).
+        source: Box<Error>,
+    },
+
     /// A feature whose implementation has not landed yet.
     #[error("{what}: not available yet")]
     NotAvailable {
@@ -190,6 +201,32 @@ impl Error {
         self
     }
 
+    /// The error as found in the scene file `path`, so that its message names the file
+    /// first. Errors that name the file already (a TOML syntax error's position, a failed
+    /// read of it, an error already in a file) are returned as they are; the field and the
+    /// kind stay those of the error inside ([`Error::field`], [`Error::in_file_source`]).
+    #[must_use]
+    pub fn in_file(self, path: &Path) -> Self {
+        match self {
+            Error::Toml { .. } | Error::InFile { .. } => self,
+            Error::Read { path: ref read, .. } if read == path => self,
+            other => Error::InFile {
+                path: path.to_path_buf(),
+                source: Box::new(other),
+            },
+        }
+    }
+
+    /// The error without the file it was found in: the inside of an [`Error::InFile`],
+    /// otherwise the error itself, for a caller that matches on the kind.
+    #[must_use]
+    pub fn in_file_source(&self) -> &Error {
+        match self {
+            Error::InFile { source, .. } => source,
+            other => other,
+        }
+    }
+
     /// The error in a front end's words: each whole word of the field and the message
     /// that is a library parameter in `names` (`dt`, `max_steps`) becomes the front end's
     /// name for it (`--dt`, `--max-steps`), so that a command renames once, at its edge.
@@ -197,6 +234,12 @@ impl Error {
     /// path, a file's line) are returned as they are.
     #[must_use]
     pub fn renamed(self, names: &[(&str, &str)]) -> Self {
+        if let Error::InFile { path, source } = self {
+            return Error::InFile {
+                path,
+                source: Box::new(source.renamed(names)),
+            };
+        }
         match &self {
             Error::NotFinite { field, .. }
             | Error::NotPositive { field, .. }
@@ -229,6 +272,7 @@ impl Error {
             | Error::OpenMesh { field, .. }
             | Error::Obj { field, .. }
             | Error::Read { field, .. } => Some(field),
+            Error::InFile { source, .. } => source.field(),
             Error::Toml { .. } | Error::NotAvailable { .. } => None,
         }
     }
@@ -245,6 +289,7 @@ impl Error {
             | Error::OpenMesh { field, .. }
             | Error::Obj { field, .. }
             | Error::Read { field, .. } => Some(field),
+            Error::InFile { source, .. } => source.field_mut(),
             Error::Toml { .. } | Error::NotAvailable { .. } => None,
         }
     }
@@ -314,10 +359,18 @@ pub fn echo(text: &str) -> String {
     }
 }
 
-/// A path for a message, cut like [`echo`].
+/// A path for a message, cut like [`echo`] but keeping its end, which holds the file's
+/// name: `.../scenes/top.toml (312 characters)`.
 #[must_use]
 pub fn echo_path(path: &std::path::Path) -> String {
-    echo(&path.display().to_string())
+    let text = path.display().to_string();
+    let count = text.chars().count();
+    if count <= ECHO_LIMIT {
+        echo(&text)
+    } else {
+        let tail: String = text.chars().skip(count - (ECHO_LIMIT - 20)).collect();
+        format!("...{} ({count} characters)", echo(&tail))
+    }
 }
 
 /// Check that a number is finite.

@@ -303,11 +303,12 @@ struct TorqueFile {
 
 impl Scene {
     /// Read and validate a scene file; errors naming the file's own problems use the
-    /// field `SCENE`. Only a regular file (or a link to one) of at most
+    /// field `SCENE`, and every error's message starts with the path
+    /// ([`Error::in_file`]). Only a regular file (or a link to one) of at most
     /// [`MAX_SCENE_BYTES`] is read.
     pub fn load(path: &Path) -> Result<Scene, Error> {
         let text = crate::input::read_text("SCENE", path, MAX_SCENE_BYTES)?;
-        Scene::parse(&text, path)
+        Scene::parse(&text, path).map_err(|e| e.in_file(path))
     }
 
     /// Parse and validate scene text; `path` is the file it came from (for messages and

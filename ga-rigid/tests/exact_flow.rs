@@ -279,32 +279,13 @@ fn assert_vec(got: Vec3, want: Vec3, tol: f64) {
 
 const ONE: [f64; 4] = [1.0, 0.0, 0.0, 0.0];
 
-/// A small seeded xorshift64* generator: no dependency needed.
-struct Rng(u64);
+use ga_test_rng::Rng;
 
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        let x = self.0.wrapping_mul(0x2545_f491_4f6c_dd1d);
-        (x >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next()
-    }
-
-    fn rotor(&mut self) -> [f64; 4] {
-        let q = [
-            self.range(-1.0, 1.0),
-            self.range(-1.0, 1.0),
-            self.range(-1.0, 1.0),
-            self.range(-1.0, 1.0),
-        ];
-        let n = (q.iter().map(|x| x * x).sum::<f64>()).sqrt();
-        q.map(|x| x / n)
-    }
+/// A unit rotor `[s, e12, e13, e23]`: four components uniform in [-1, 1), normalised.
+fn rotor(rng: &mut Rng) -> [f64; 4] {
+    let q: [f64; 4] = rng.uniform_array(-1.0, 1.0);
+    let n = (q.iter().map(|x| x * x).sum::<f64>()).sqrt();
+    q.map(|x| x / n)
 }
 
 // ---------------------------------------------------------------------------------------
@@ -319,7 +300,7 @@ fn rotor_matrix_follows_the_convention() {
     assert!((m[0][0] - t.cos()).abs() < 1e-15 && (m[1][0] - t.sin()).abs() < 1e-15);
     assert!(m[2][0].abs() < 1e-15);
     // A general unit rotor gives a proper orthogonal matrix.
-    let r = Rng(7).rotor();
+    let r = rotor(&mut Rng::new(7));
     let m = rotor_matrix(r);
     for a in 0..3 {
         for b in 0..3 {
@@ -426,7 +407,7 @@ fn symmetric_short_fat_top_precesses_at_minus_14_over_9() {
     }
     let orbit = free_body_orbit(j, m0);
     assert!((orbit.period - 2.0 * std::f64::consts::PI * 9.0 / 14.0).abs() < 1e-13);
-    assert_agrees(j, m0, Rng(3).rotor(), 1e-12);
+    assert_agrees(j, m0, rotor(&mut Rng::new(3)), 1e-12);
     // The symmetric axis in every position, prolate and oblate.
     for &j in &[
         [1.0, 2.0, 2.0],
@@ -434,13 +415,13 @@ fn symmetric_short_fat_top_precesses_at_minus_14_over_9() {
         [3.0, 3.0, 1.0],
         [2.0, 5.0, 2.0],
     ] {
-        assert_agrees(j, [0.3, -1.1, 0.8], Rng(5).rotor(), 1e-12);
+        assert_agrees(j, [0.3, -1.1, 0.8], rotor(&mut Rng::new(5)), 1e-12);
     }
 }
 
 #[test]
 fn near_symmetric_bodies_agree_with_reference() {
-    let r0 = Rng(11).rotor();
+    let r0 = rotor(&mut Rng::new(11));
     let gaps = [1e-9, 1e-12, 1e-15, 2.2e-16];
     for &g in &gaps {
         // i1 ~ i2 (orbit about axis 3, and the thin band about axis 1 near the equator).
@@ -457,7 +438,7 @@ fn near_symmetric_bodies_agree_with_reference() {
 #[test]
 fn spheres_spin_uniformly() {
     let (j, m0) = ([2.0, 2.0, 2.0], [0.3, -0.4, 1.2]);
-    let r0 = Rng(13).rotor();
+    let r0 = rotor(&mut Rng::new(13));
     let (_, m) = exact_free_body(j, m0, r0, 7.0);
     assert_eq!(m, m0);
     assert_agrees(j, m0, r0, 1e-12);
@@ -465,7 +446,7 @@ fn spheres_spin_uniformly() {
 
 #[test]
 fn bodies_at_rest_stay_put() {
-    let r0 = Rng(17).rotor();
+    let r0 = rotor(&mut Rng::new(17));
     for &j in &[[1.0, 2.0, 3.0], [1.0, 1.0, 1.0], [1.0, 1.0, 3.0]] {
         let (r, m) = exact_free_body(j, [0.0; 3], r0, 12.0);
         assert_eq!(m, [0.0; 3]);
@@ -475,7 +456,7 @@ fn bodies_at_rest_stay_put() {
 
 #[test]
 fn steady_rotations_about_principal_axes_agree_with_reference() {
-    let r0 = Rng(19).rotor();
+    let r0 = rotor(&mut Rng::new(19));
     let j = [1.0, 2.0, 3.0];
     for k in 0..3 {
         for &s in &[1.5, -0.7] {
@@ -492,7 +473,7 @@ fn steady_rotations_about_principal_axes_agree_with_reference() {
 fn nearly_steady_rotations_agree_with_reference() {
     // Tiny orbits about the stable axes, and a start next to the unstable middle axis
     // (near the saddle, so errors grow like exp(omega t) in any method).
-    let r0 = Rng(37).rotor();
+    let r0 = rotor(&mut Rng::new(37));
     let j = [1.0, 2.0, 3.0];
     for &m0 in &[
         [1.0, 1e-7, -1e-7],
@@ -512,7 +493,7 @@ fn exact_separatrix_agrees_with_reference() {
     let orbit = free_body_orbit(j, [1.0, 0.3, 2.0]);
     assert_eq!(orbit.complementary_parameter, 0.0);
     assert_eq!(orbit.period, f64::INFINITY);
-    let r0 = Rng(23).rotor();
+    let r0 = rotor(&mut Rng::new(23));
     for &m0 in &[
         [1.0, 0.3, 2.0],
         [-1.0, 0.3, 2.0],
@@ -534,7 +515,7 @@ fn exact_separatrix_agrees_with_reference() {
 #[test]
 fn near_separatrix_agrees_with_reference() {
     let j = [2.0, 5.0, 8.0];
-    let r0 = Rng(29).rotor();
+    let r0 = rotor(&mut Rng::new(29));
     for &eps in &[1e-12, -1e-12, 1e-8, -1e-8] {
         for &m0 in &[
             [1.0, 0.3, 2.0 * (1.0 + eps)],
@@ -550,20 +531,20 @@ fn near_separatrix_agrees_with_reference() {
 
 #[test]
 fn random_bodies_agree_with_reference() {
-    let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
+    let mut rng = Rng::new(0x9e37_79b9_7f4a_7c15);
     let mut worst = (0.0_f64, 0.0_f64);
     for _ in 0..40 {
         let j = [
-            rng.range(0.2, 3.0),
-            rng.range(0.2, 3.0),
-            rng.range(0.2, 3.0),
+            rng.uniform(0.2, 3.0),
+            rng.uniform(0.2, 3.0),
+            rng.uniform(0.2, 3.0),
         ];
         let m0 = [
-            rng.range(-2.0, 2.0),
-            rng.range(-2.0, 2.0),
-            rng.range(-2.0, 2.0),
+            rng.uniform(-2.0, 2.0),
+            rng.uniform(-2.0, 2.0),
+            rng.uniform(-2.0, 2.0),
         ];
-        let r0 = rng.rotor();
+        let r0 = rotor(&mut rng);
         let (ea, em) = assert_agrees(j, m0, r0, 1e-10);
         worst = (worst.0.max(ea), worst.1.max(em));
     }
@@ -576,20 +557,20 @@ fn random_bodies_agree_with_reference() {
 #[test]
 fn flow_is_a_one_parameter_group() {
     // phi(t1 + t2) = phi(t2) o phi(t1), and phi(-t) undoes phi(t), at long times too.
-    let mut rng = Rng(31);
+    let mut rng = Rng::new(31);
     for _ in 0..20 {
         let j = [
-            rng.range(0.2, 3.0),
-            rng.range(0.2, 3.0),
-            rng.range(0.2, 3.0),
+            rng.uniform(0.2, 3.0),
+            rng.uniform(0.2, 3.0),
+            rng.uniform(0.2, 3.0),
         ];
         let m0 = [
-            rng.range(-2.0, 2.0),
-            rng.range(-2.0, 2.0),
-            rng.range(-2.0, 2.0),
+            rng.uniform(-2.0, 2.0),
+            rng.uniform(-2.0, 2.0),
+            rng.uniform(-2.0, 2.0),
         ];
-        let r0 = rng.rotor();
-        let (t1, t2) = (rng.range(-50.0, 50.0), rng.range(-50.0, 50.0));
+        let r0 = rotor(&mut rng);
+        let (t1, t2) = (rng.uniform(-50.0, 50.0), rng.uniform(-50.0, 50.0));
         let (ra, ma) = exact_free_body(j, m0, r0, t1 + t2);
         let (r1, m1) = exact_free_body(j, m0, r0, t1);
         let (rb, mb) = exact_free_body(j, m1, r1, t2);
@@ -881,14 +862,14 @@ fn high_precision_references_agree_to_1e_13() {
 fn extreme_but_valid_inputs_stay_finite_and_keep_invariants() {
     // Magnitudes from 1e-150 to 1e150, gaps down to one ulp, times up to 1e6: no panic,
     // finite output, |m| and |R| kept.
-    let mut rng = Rng(41);
-    let pow = |rng: &mut Rng, lo: f64, hi: f64| 10f64.powf(rng.range(lo, hi));
+    let mut rng = Rng::new(41);
+    let pow = |rng: &mut Rng, lo: f64, hi: f64| 10f64.powf(rng.uniform(lo, hi));
     for k in 0..3000 {
         let scale = pow(&mut rng, -150.0, 150.0);
         let mut j = [
-            scale * rng.range(0.1, 1.0),
-            scale * rng.range(0.1, 1.0),
-            scale * rng.range(0.1, 1.0),
+            scale * rng.uniform(0.1, 1.0),
+            scale * rng.uniform(0.1, 1.0),
+            scale * rng.uniform(0.1, 1.0),
         ];
         match k % 5 {
             0 => j[1] = j[0] * (1.0 + f64::EPSILON),
@@ -898,9 +879,9 @@ fn extreme_but_valid_inputs_stay_finite_and_keep_invariants() {
         }
         let size = pow(&mut rng, -100.0, 100.0);
         let mut m0 = [
-            size * rng.range(-1.0, 1.0),
-            size * rng.range(-1.0, 1.0),
-            size * rng.range(-1.0, 1.0),
+            size * rng.uniform(-1.0, 1.0),
+            size * rng.uniform(-1.0, 1.0),
+            size * rng.uniform(-1.0, 1.0),
         ];
         if k % 7 == 0 {
             m0[k % 3] = 0.0;
@@ -909,8 +890,8 @@ fn extreme_but_valid_inputs_stay_finite_and_keep_invariants() {
             m0[(k + 1) % 3] = size * 1e-200;
         }
         // Keep |m| t / max(i) moderate so that the rotation angle is representable.
-        let t = rng.range(-1e6, 1e6) * j[0].max(j[1]).max(j[2]) / norm(m0);
-        let (r, m) = exact_free_body(j, m0, rng.rotor(), t);
+        let t = rng.uniform(-1e6, 1e6) * j[0].max(j[1]).max(j[2]) / norm(m0);
+        let (r, m) = exact_free_body(j, m0, rotor(&mut rng), t);
         assert!(
             r.iter().chain(m.iter()).all(|x| x.is_finite()),
             "{j:?} {m0:?} {t}: {r:?} {m:?}"

@@ -6,25 +6,21 @@
 use ga_core::f64::g3::*;
 use ga_tests::{assert_close, Algebra};
 
-/// A fixed-seed stream of values in [-4, 4) with a few exact zeros (SplitMix64).
-struct Values(u64);
+use ga_test_rng::Rng;
 
-impl Values {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        if z.is_multiple_of(7) {
-            return 0.0;
-        }
-        (z >> 11) as f64 / (1u64 << 53) as f64 * 8.0 - 4.0
+/// A value in [-4, 4), or about one time in seven an exact zero (which `Display` leaves
+/// out), from the workspace's seeded generator.
+fn value(rng: &mut Rng) -> f64 {
+    if rng.next_u64().is_multiple_of(7) {
+        0.0
+    } else {
+        rng.uniform(-4.0, 4.0)
     }
+}
 
-    fn array<const N: usize>(&mut self) -> [f64; N] {
-        std::array::from_fn(|_| self.next())
-    }
+/// `N` values of [`value`].
+fn array<const N: usize>(rng: &mut Rng) -> [f64; N] {
+    std::array::from_fn(|_| value(rng))
 }
 
 /// Reads `Display`'s `1 + 2 e1 - 0.5 e12` back into (blade name, value) pairs: a space
@@ -125,10 +121,10 @@ fn display_keeps_non_finite_components() {
 
 #[test]
 fn display_parses_back_to_the_same_value() {
-    let mut values = Values(1);
+    let mut values = Rng::new(1);
     let names = g3_blade_names();
     for _ in 0..500 {
-        let m = Multivector::from_array(values.array());
+        let m = Multivector::from_array(array(&mut values));
         let mut parsed = [0.0; 8];
         for (blade, value) in parse_terms(&m.to_string()) {
             let i = names.iter().position(|&n| n == blade).expect("a G3 blade");
@@ -141,8 +137,8 @@ fn display_parses_back_to_the_same_value() {
 
 #[test]
 fn index_reads_and_writes_the_component_at_its_canonical_position() {
-    let mut values = Values(2);
-    let mut m = Multivector::from_array(values.array());
+    let mut values = Rng::new(2);
+    let mut m = Multivector::from_array(array(&mut values));
     let fields = [m.s, m.e1, m.e2, m.e3, m.e12, m.e13, m.e23, m.e123];
     for (i, field) in fields.iter().enumerate() {
         assert_eq!(m[i], *field);
@@ -163,8 +159,8 @@ fn index_past_the_last_component_panics_like_an_array() {
 
 #[test]
 fn iteration_and_array_conversions_follow_canonical_order() {
-    let mut values = Values(3);
-    let a: [f64; 4] = values.array();
+    let mut values = Rng::new(3);
+    let a: [f64; 4] = array(&mut values);
     let r = Rotor::from(a);
     assert_eq!(r, Rotor::from_array(a));
     assert_eq!(<[f64; 4]>::from(r), a);
@@ -179,14 +175,18 @@ fn iteration_and_array_conversions_follow_canonical_order() {
 
 #[test]
 fn sum_and_product_fold_like_the_operators() {
-    let mut values = Values(4);
-    let vectors: Vec<Vector> = (0..5).map(|_| Vector::from_array(values.array())).collect();
+    let mut values = Rng::new(4);
+    let vectors: Vec<Vector> = (0..5)
+        .map(|_| Vector::from_array(array(&mut values)))
+        .collect();
     let by_hand = vectors.iter().fold(Vector::ZERO, |a, &b| a + b);
     assert_eq!(vectors.iter().sum::<Vector>(), by_hand);
     assert_eq!(vectors.iter().copied().sum::<Vector>(), by_hand);
     assert_eq!(Vec::<Even>::new().into_iter().sum::<Even>(), Even::ZERO);
 
-    let rotors: Vec<Rotor> = (0..4).map(|_| Rotor::from_array(values.array())).collect();
+    let rotors: Vec<Rotor> = (0..4)
+        .map(|_| Rotor::from_array(array(&mut values)))
+        .collect();
     let product = rotors[0] * rotors[1] * rotors[2] * rotors[3];
     assert_eq!(rotors.iter().product::<Rotor>(), product);
     assert_eq!(rotors.iter().copied().product::<Rotor>(), product);
@@ -206,12 +206,12 @@ fn sum_and_product_fold_like_the_operators() {
 // Taking references the compiler does not need is the point: it exercises `&a * &b`.
 #[allow(clippy::op_ref)]
 fn operators_on_references_match_the_by_value_operators() {
-    let mut values = Values(5);
-    let a = Vector::from_array(values.array());
-    let b = Bivector::from_array(values.array());
-    let r = Rotor::from_array(values.array());
-    let m = Multivector::from_array(values.array());
-    let s = values.next();
+    let mut values = Rng::new(5);
+    let a = Vector::from_array(array(&mut values));
+    let b = Bivector::from_array(array(&mut values));
+    let r = Rotor::from_array(array(&mut values));
+    let m = Multivector::from_array(array(&mut values));
+    let s = value(&mut values);
     assert_eq!(&a * &b, a * b);
     assert_eq!(&a ^ &b, a ^ b);
     assert_eq!(&a | &b, a | b);
@@ -244,12 +244,12 @@ fn dense(value: impl Into<Multivector>) -> Vec<f64> {
 #[test]
 fn division_multiplies_by_the_reference_inverse() {
     let algebra = Algebra::new(&[1, 1, 1]);
-    let mut values = Values(6);
+    let mut values = Rng::new(6);
     for _ in 0..50 {
-        let m = Multivector::from_array(values.array());
-        let v = Vector::from_array(values.array());
-        let b = Bivector::from_array(values.array());
-        let r = Rotor::from_array(values.array());
+        let m = Multivector::from_array(array(&mut values));
+        let v = Vector::from_array(array(&mut values));
+        let b = Bivector::from_array(array(&mut values));
+        let r = Rotor::from_array(array(&mut values));
         // The stream has exact zeros; a zero divisor is the other test's case.
         if v.norm() == 0.0 || b.norm() == 0.0 || r.norm() == 0.0 {
             continue;
@@ -289,8 +289,8 @@ fn division_by_zero_is_non_finite_like_scalar_division() {
 
 #[test]
 fn precision_casts_round_to_nearest_and_widen_exactly() {
-    let mut values = Values(7);
-    let m = Multivector::from_array(values.array());
+    let mut values = Rng::new(7);
+    let m = Multivector::from_array(array(&mut values));
     let single = m.as_f32();
     for (narrow, wide) in single.to_array().iter().zip(m.to_array()) {
         assert_eq!(*narrow, wide as f32);
@@ -318,7 +318,7 @@ macro_rules! every_type_of_every_algebra {
         fn $name() {
             use ga_tests::embed::Embed;
             use $path as algebra;
-            let mut values = Values($dim);
+            let mut values = Rng::new($dim);
             $(
                 every_type_of_every_algebra!(@type algebra, algebra::$grade, values);
             )*
@@ -332,7 +332,7 @@ macro_rules! every_type_of_every_algebra {
         for _ in 0..20 {
             let mut components = <$ty>::ZERO.to_array();
             for c in components.iter_mut() {
-                *c = $values.next();
+                *c = value(&mut $values);
             }
             let x = <$ty>::from(components);
             for (i, c) in components.iter().enumerate() {
@@ -364,14 +364,14 @@ ga_tests::for_each_algebra!(every_type_of_every_algebra);
 fn division_in_a_non_euclidean_metric_multiplies_by_the_reference_inverse() {
     use ga_tests::algebras::sta;
     let algebra = Algebra::new(&[1, -1, -1, -1]);
-    let mut values = Values(8);
+    let mut values = Rng::new(8);
     let dense = |m: sta::Multivector| algebra.from_canonical(&m.to_array());
     for _ in 0..50 {
-        let m = sta::Multivector::from_array(values.array());
-        let v = sta::Vector::from_array(values.array());
+        let m = sta::Multivector::from_array(array(&mut values));
+        let v = sta::Vector::from_array(array(&mut values));
         // A four-dimensional bivector has no `/` (B ~B has a grade-4 part); a trivector
         // has.
-        let t = sta::Trivector::from_array(values.array());
+        let t = sta::Trivector::from_array(array(&mut values));
         for (divisor, quotient) in [
             (sta::Multivector::from(v), m / v),
             (sta::Multivector::from(t), m / t),

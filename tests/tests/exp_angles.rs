@@ -21,14 +21,8 @@ fn ulps32(a: f32, b: f32) -> f32 {
 /// Angles that stress the reduction: random ones in [-20, 20], both sides of k pi/2 for
 /// k up to past the limit, tiny ones, and huge ones.
 fn angles() -> Vec<f64> {
-    let mut state = 0x9E37_79B9_7F4A_7C15_u64;
-    let mut next = move || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    };
-    let mut out: Vec<f64> = (0..20_000).map(|_| 40.0 * next() - 20.0).collect();
+    let mut rng = ga_test_rng::Rng::new(0x9E37_79B9_7F4A_7C15);
+    let mut out: Vec<f64> = (0..20_000).map(|_| rng.uniform(-20.0, 20.0)).collect();
     let mut k = 1.0_f64;
     while k < 1.5e6 {
         let centre = k * core::f64::consts::FRAC_PI_2;

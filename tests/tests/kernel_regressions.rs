@@ -232,13 +232,8 @@ macro_rules! sandwich_unit_range {
         fn $test() {
             use $path as alg;
             use alg::{Sandwich as _, SandwichUnit as _};
-            let mut state = 0x2545_f491_4f6c_dd1du64;
-            let mut next = move || {
-                state ^= state << 13;
-                state ^= state >> 7;
-                state ^= state << 17;
-                (state >> 11) as f64 / (1u64 << 53) as f64
-            };
+            let mut rng = ga_test_rng::Rng::new(0x2545_f491_4f6c_dd1d);
+            let mut next = move || rng.next_f64();
             // No grade part has more than three components in G2 or G3.
             let largest = $s::MAX * 0.95 / 6.0_f64.sqrt() as $s;
             for _ in 0..2000 {

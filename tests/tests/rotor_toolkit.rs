@@ -3,35 +3,23 @@
 //! edge cases: opposite vectors, half turns, nearly equal rotors, zero and non-finite
 //! input. Written once as a macro and run in f32 and f64.
 
-/// A fixed-seed stream in [-1, 1) (SplitMix64).
-struct Values(u64);
-
-impl Values {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        (z >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-    }
-}
+use ga_test_rng::Rng;
 
 macro_rules! toolkit_tests {
     ($name:ident, $s:ident, $quat:ty, $vec3:ty, $mat3:ty, $tol:expr) => {
         mod $name {
-            use super::Values;
+            use super::Rng;
             use ga_core::$s::g3::*;
 
             const TOL: $s = $tol;
             const PI: $s = core::$s::consts::PI;
 
-            fn unit(values: &mut Values) -> Vector {
+            fn unit(values: &mut Rng) -> Vector {
                 loop {
                     let v = Vector::new(
-                        values.next() as $s,
-                        values.next() as $s,
-                        values.next() as $s,
+                        values.signed() as $s,
+                        values.signed() as $s,
+                        values.signed() as $s,
                     );
                     if v.norm() > 0.1 {
                         return v.normalized();
@@ -39,9 +27,9 @@ macro_rules! toolkit_tests {
                 }
             }
 
-            fn rotor(values: &mut Values) -> Rotor {
+            fn rotor(values: &mut Rng) -> Rotor {
                 let axis = unit(values);
-                Rotor::from_axis_angle(axis, values.next() as $s * PI)
+                Rotor::from_axis_angle(axis, values.signed() as $s * PI)
             }
 
             fn quat(r: Rotor) -> $quat {
@@ -70,10 +58,10 @@ macro_rules! toolkit_tests {
 
             #[test]
             fn from_axis_angle_matches_glam() {
-                let mut values = Values(11);
+                let mut values = Rng::new(11);
                 for _ in 0..200 {
                     let axis = unit(&mut values);
-                    let angle = values.next() as $s * 2.0 * PI;
+                    let angle = values.signed() as $s * 2.0 * PI;
                     let ours = quat(Rotor::from_axis_angle(axis, angle));
                     let glam = <$quat>::from_axis_angle(<$vec3>::from(axis), angle);
                     let gap = q_array(ours)
@@ -94,10 +82,10 @@ macro_rules! toolkit_tests {
 
             #[test]
             fn scaled_axis_matches_glam_and_round_trips() {
-                let mut values = Values(12);
+                let mut values = Rng::new(12);
                 for _ in 0..200 {
                     let axis = unit(&mut values);
-                    let angle = values.next().abs() as $s * PI;
+                    let angle = values.signed().abs() as $s * PI;
                     let v = axis * angle;
                     let ours = quat(Rotor::from_scaled_axis(v));
                     let glam = <$quat>::from_scaled_axis(<$vec3>::from(v));
@@ -139,7 +127,7 @@ macro_rules! toolkit_tests {
 
             #[test]
             fn rotation_arc_matches_glam_and_maps_from_to_to() {
-                let mut values = Values(13);
+                let mut values = Rng::new(13);
                 for _ in 0..200 {
                     let (a, b) = (unit(&mut values), unit(&mut values));
                     let r = Rotor::from_rotation_arc(a, b);
@@ -155,7 +143,7 @@ macro_rules! toolkit_tests {
 
             #[test]
             fn rotation_arc_is_stable_for_opposite_and_nearly_opposite_vectors() {
-                let mut values = Values(14);
+                let mut values = Rng::new(14);
                 for basis in [Vector::E1, Vector::E2, Vector::E3, -Vector::E3] {
                     let r = Rotor::from_rotation_arc(basis, -basis);
                     assert!((r.sandwich(basis) + basis).norm() < TOL, "{basis:?}");
@@ -193,7 +181,7 @@ macro_rules! toolkit_tests {
 
             #[test]
             fn matrix_round_trips_match_glam() {
-                let mut values = Values(15);
+                let mut values = Rng::new(15);
                 for _ in 0..200 {
                     let r = rotor(&mut values);
                     let glam_matrix = <$mat3>::from_quat(quat(r));
@@ -218,7 +206,7 @@ macro_rules! toolkit_tests {
 
             #[test]
             fn from_matrix_is_accurate_near_and_at_a_half_turn() {
-                let mut values = Values(16);
+                let mut values = Rng::new(16);
                 for _ in 0..200 {
                     let axis = unit(&mut values);
                     for angle in [PI, PI - 1e-3, PI - 1e-6, -PI + 1e-6] {
@@ -234,10 +222,10 @@ macro_rules! toolkit_tests {
 
             #[test]
             fn slerp_matches_glam_along_the_shorter_arc() {
-                let mut values = Values(17);
+                let mut values = Rng::new(17);
                 for _ in 0..200 {
                     let (a, b) = (rotor(&mut values), rotor(&mut values));
-                    let t = (values.next() as $s + 1.0) / 2.0;
+                    let t = (values.signed() as $s + 1.0) / 2.0;
                     let ours = a.slerp(b, t);
                     let glam = quat(a).slerp(quat(b), t);
                     assert!(rotation_gap(q_array(quat(ours)), q_array(glam)) < 16.0 * TOL);
@@ -249,7 +237,7 @@ macro_rules! toolkit_tests {
 
             #[test]
             fn slerp_and_angle_between_are_accurate_for_nearly_equal_rotors() {
-                let mut values = Values(18);
+                let mut values = Rng::new(18);
                 for _ in 0..100 {
                     let a = rotor(&mut values);
                     let axis = unit(&mut values);
@@ -272,10 +260,10 @@ macro_rules! toolkit_tests {
 
             #[test]
             fn nlerp_and_angle_between_match_glam() {
-                let mut values = Values(19);
+                let mut values = Rng::new(19);
                 for _ in 0..200 {
                     let (a, b) = (rotor(&mut values), rotor(&mut values));
-                    let t = (values.next() as $s + 1.0) / 2.0;
+                    let t = (values.signed() as $s + 1.0) / 2.0;
                     let ours = quat(a.nlerp(b, t));
                     let glam = quat(a).lerp(quat(b), t);
                     assert!(rotation_gap(q_array(ours), q_array(glam)) < 4.0 * TOL);
@@ -291,7 +279,7 @@ macro_rules! toolkit_tests {
 
             #[test]
             fn from_forward_up_points_e3_along_dir_with_e2_up() {
-                let mut values = Values(20);
+                let mut values = Rng::new(20);
                 for _ in 0..200 {
                     let dir = unit(&mut values) * 3.0;
                     let up = unit(&mut values);
@@ -340,16 +328,16 @@ macro_rules! toolkit_tests {
             #[test]
             fn g2_angle_functions_follow_the_e12_plane_of_g3() {
                 use ga_core::$s::g2;
-                let mut values = Values(21);
+                let mut values = Rng::new(21);
                 for _ in 0..200 {
-                    let angle = values.next() as $s * PI;
+                    let angle = values.signed() as $s * PI;
                     let r2 = g2::Rotor::from_angle(angle);
                     let r3 = Rotor::from_axis_angle(Vector::E3, angle);
                     assert!((r2.s - r3.s).abs() < TOL && (r2.e12 - r3.e12).abs() < TOL);
                     assert!((r2.angle() - angle).abs() < 4.0 * TOL);
                     assert!(((-r2).angle() - angle).abs() < 4.0 * TOL);
-                    let other = values.next() as $s * PI;
-                    let t = (values.next() as $s + 1.0) / 2.0;
+                    let other = values.signed() as $s * PI;
+                    let t = (values.signed() as $s + 1.0) / 2.0;
                     let s2 = r2.slerp(g2::Rotor::from_angle(other), t);
                     let s3 = r3.slerp(Rotor::from_axis_angle(Vector::E3, other), t);
                     assert!(rotation_gap([s2.s, s2.e12, 0.0, 0.0], s3.to_array()) < 8.0 * TOL);
@@ -369,9 +357,9 @@ toolkit_tests!(single, f32, glam::Quat, glam::Vec3, glam::Mat3, 2e-6);
 fn g2_from_angle_is_the_reference_exponential() {
     use ga_tests::Algebra;
     let algebra = Algebra::new(&[1, 1]);
-    let mut values = Values(22);
+    let mut values = Rng::new(22);
     for _ in 0..100 {
-        let angle = values.next() * std::f64::consts::PI;
+        let angle = values.signed() * std::f64::consts::PI;
         let r = ga_core::f64::g2::Rotor::from_angle(angle);
         // exp(-e12 angle / 2), blade bitmask 0b11 for e12.
         let expected = algebra.exp(&algebra.basis(0b11, -angle / 2.0));

@@ -116,10 +116,11 @@ impl<A: Algebra> BodyScene<A> {
 
 impl NdScene {
     /// Read and validate a 2D or 4D scene file (at most
-    /// [`crate::scene::MAX_SCENE_BYTES`], a regular file or a link to one).
+    /// [`crate::scene::MAX_SCENE_BYTES`], a regular file or a link to one); every
+    /// error's message starts with the path, as [`crate::scene::Scene::load`]'s.
     pub fn load(path: &Path) -> Result<NdScene, Error> {
         let text = crate::input::read_text("SCENE", path, crate::scene::MAX_SCENE_BYTES)?;
-        NdScene::parse(&text, path)
+        NdScene::parse(&text, path).map_err(|e| e.in_file(path))
     }
 
     /// Parse and validate scene text; `path` is the file it came from, for messages.

@@ -384,18 +384,13 @@ fn kernel(source: &str, manifest: &Manifest, functions: &[Signature], n: usize) 
 }
 
 /// `count` pairs of dense multivectors of `2^n` components, uniform in [-1, 1], from a
-/// fixed seed (xorshift64*, so that a failure reproduces).
+/// fixed seed (the workspace's generator, so that a failure reproduces; the seed made odd,
+/// as it always was here, so that these inputs stay the ones the tolerances were set on).
 #[must_use]
 pub fn random_inputs(n: usize, count: usize, seed: u64) -> Vec<f32> {
-    let mut state = seed | 1;
+    let mut rng = ga_test_rng::Rng::new(seed | 1);
     (0..count * (2 << n))
-        .map(|_| {
-            state ^= state >> 12;
-            state ^= state << 25;
-            state ^= state >> 27;
-            let bits = state.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 40; // 24 bits
-            (bits as f32 / (1u64 << 23) as f32) - 1.0
-        })
+        .map(|_| rng.uniform_f32(-1.0, 1.0))
         .collect()
 }
 
