@@ -1,6 +1,7 @@
 //! The cost of one step at engine step sizes, through the registry (issue 18): every
 //! method of the report's engine table (`ENGINE_METHODS`: the engines' steps, Buss's, the
-//! implicit midpoint rule on the quaternion form, the discrete Moser-Veselov step, and
+//! implicit midpoint rule on the quaternion form, the discrete Moser-Veselov step, Spiers's
+//! two forms (avian's pull request #993), and
 //! ours) built by `Method::integrator` as the command builds it, stepping the T-handle
 //! (moments (3, 5, 9), body momentum (0, 2, 0.01), the report's `engine_runs.csv` body)
 //! `STEPS` times at `h |w(0)|` = 0.1 and 0.5, one `advance` a step as an engine calls it.

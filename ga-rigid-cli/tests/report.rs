@@ -97,24 +97,24 @@ fn a_quick_report_writes_csv_plots_and_page() {
     let mut names = Vec::new();
     for (i, scene) in report.scenes.iter().enumerate() {
         let svg = report::svg(scene).unwrap();
-        // Four panels of 620 x 470 under a 40-pixel title.
+        // Five panels of 620 x 470 in three rows under a 40-pixel title.
         assert!(
-            svg.contains(r#"width="1240" height="980""#),
+            svg.contains(r#"width="1240" height="1450""#),
             "{}",
             &svg[..200]
         );
         for panel in report::style::Panel::ALL {
             assert_eq!(svg.matches(panel.title()).count(), 1, "{}", panel.title());
         }
-        assert_eq!(svg.matches("median run time (µs)").count(), 4);
-        // Each method run on the scene is named in exactly one legend, and in a second
-        // one only when it is ours and the fastest to the peers' best.
+        assert_eq!(svg.matches("median run time (µs)").count(), 5);
+        // Each method run on the scene is named in exactly one legend, and in the two
+        // peer panels' as well only when it is ours and the fastest to the peers' best.
         let beside_peers = report::fastest_of_ours_to_the_peers_best(scene);
         let mut methods: Vec<Method> = scene.rows.iter().map(|r| r.method).collect();
         methods.dedup();
         for method in methods {
             let legend_entry = format!("\n{}\n</text>", method.name());
-            let expected = 1 + usize::from(beside_peers == Some(method));
+            let expected = 1 + 2 * usize::from(beside_peers == Some(method));
             assert_eq!(
                 svg.matches(&legend_entry).count(),
                 expected,

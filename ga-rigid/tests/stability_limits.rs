@@ -160,3 +160,13 @@ fn moser_veselov_has_no_step_beyond_h_w_of_one() {
     assert!(bounded(Method::MoserVeselov, &body, start, 0.99));
     assert!(!bounded(Method::MoserVeselov, &body, start, 1.1));
 }
+
+/// Spiers's two forms keep `|L|`, so their energy stays within the moments' range, and
+/// their limit is where the Dzhanibekov body, near its separatrix, first moves by half its
+/// energy: the limit holds (above) and is not loose.
+#[test]
+fn the_spiers_limits_are_not_loose() {
+    for method in [Method::SpiersVelocity, Method::SpiersMomentum] {
+        assert_limit_not_loose(method);
+    }
+}

@@ -22,12 +22,14 @@ pub const ENGINE_RATES: [f64; 4] = [0.05, 0.1, 0.2, 0.5];
 /// Steps of each run in a full report (a quick one takes a twentieth).
 pub const ENGINE_STEPS: u64 = 100_000;
 /// The methods compared: the engines' steps (peers) and ours.
-pub const ENGINE_METHODS: [Method; 13] = [
+pub const ENGINE_METHODS: [Method; 15] = [
     Method::EulerGyroExplicit,
     Method::EulerGyroImplicit,
     Method::Buss2,
     Method::MidpointQuaternion,
     Method::MoserVeselov,
+    Method::SpiersVelocity,
+    Method::SpiersMomentum,
     Method::Splitting,
     Method::SplittingCayley,
     Method::SplittingCasimir,
@@ -37,14 +39,49 @@ pub const ENGINE_METHODS: [Method; 13] = [
     Method::LieRk4,
     Method::Rk4,
 ];
+/// A free body and its start for the engine runs: principal moments and body momentum,
+/// with `R(0) = 1`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct EngineBody {
+    /// Its name in tables.
+    pub name: &'static str,
+    /// Principal moments.
+    pub moments: [f64; 3],
+    /// Body angular momentum at the start.
+    pub momentum: [f64; 3],
+}
+
 /// The T-handle: the Dzhanibekov body of the suite, moments (3, 5, 9), body momentum
-/// (0, 2, 0.01), flipping about its intermediate axis e2.
-const MOMENTS: [f64; 3] = [3.0, 5.0, 9.0];
-const MOMENTUM: [f64; 3] = [0.0, 2.0, 0.01];
+/// (0, 2, 0.01), flipping about its intermediate axis e2. The report's engine table.
+pub const T_HANDLE: EngineBody = EngineBody {
+    name: "T-handle",
+    moments: [3.0, 5.0, 9.0],
+    momentum: [0.0, 2.0, 0.01],
+};
+
+/// A near-symmetric body: the two smaller moments 2% apart, its momentum 37 degrees off
+/// the largest axis, so that the body momentum circles e3 (nearly the symmetric top's
+/// precession, which Spiers's step makes exact) and crosses `m2 = 0` twice a period.
+pub const NEAR_SYMMETRIC: EngineBody = EngineBody {
+    name: "near-symmetric",
+    moments: [5.0, 5.1, 9.0],
+    momentum: [1.2, 0.3, 1.6],
+};
+
+impl EngineBody {
+    /// The exact flow's time between sign changes of `m2`: half the period of the body
+    /// momentum.
+    #[must_use]
+    pub fn exact_flip_period(&self) -> f64 {
+        0.5 * free_body_orbit(self.moments, self.momentum).period
+    }
+}
 
 /// One run of one method at one step size.
 #[derive(Clone, Debug, PartialEq)]
 pub struct EngineRun {
+    /// The body.
+    pub body: EngineBody,
     /// The method.
     pub method: Method,
     /// `h |w(0)|`.
@@ -66,17 +103,17 @@ pub struct EngineRun {
     pub elapsed: Duration,
 }
 
-/// The exact flow's time between flips: half the period of the body momentum.
+/// The T-handle's exact time between flips: half the period of the body momentum.
 #[must_use]
 pub fn exact_flip_period() -> f64 {
-    0.5 * free_body_orbit(MOMENTS, MOMENTUM).period
+    T_HANDLE.exact_flip_period()
 }
 
 impl EngineRun {
     /// The flip period's error relative to the exact one, when there is a flip period.
     #[must_use]
     pub fn flip_error(&self) -> Option<f64> {
-        let exact = exact_flip_period();
+        let exact = self.body.exact_flip_period();
         self.flip_period.map(|p| (p - exact) / exact)
     }
 }
@@ -167,8 +204,18 @@ pub fn engine_runs(size: Size, progress: &mut dyn FnMut(&str)) -> Result<Vec<Eng
 
 /// `steps` steps of `method` at `h |w(0)| = rate` on the T-handle.
 pub fn engine_run(method: Method, rate: f64, steps: u64) -> Result<EngineRun, Error> {
-    let body = RigidBody::new_unphysical(MOMENTS)?;
-    let w = [0, 1, 2].map(|k| MOMENTUM[k] / MOMENTS[k]);
+    engine_run_on(T_HANDLE, method, rate, steps)
+}
+
+/// `steps` steps of `method` at `h |w(0)| = rate` on `on`.
+pub fn engine_run_on(
+    on: EngineBody,
+    method: Method,
+    rate: f64,
+    steps: u64,
+) -> Result<EngineRun, Error> {
+    let body = RigidBody::new_unphysical(on.moments)?;
+    let w = [0, 1, 2].map(|k| on.momentum[k] / on.moments[k]);
     let mut state = State {
         rotor: Rotor::ONE,
         omega: omega_from_vector(w),
@@ -178,6 +225,7 @@ pub fn engine_run(method: Method, rate: f64, steps: u64) -> Result<EngineRun, Er
     let e0 = body.energy(state.omega);
     let l0 = body.space_momentum(&state);
     let mut run = EngineRun {
+        body: on,
         method,
         rate,
         steps,
@@ -239,8 +287,8 @@ flips,flip_period,flip_period_exact,flip_period_rel_error,seconds,status";
 pub fn engine_runs_csv(rows: &[EngineRun]) -> String {
     let mut out = String::new();
     let _ = writeln!(out, "{ENGINE_RUNS_CSV_HEADER}");
-    let exact = exact_flip_period();
     for r in rows {
+        let exact = r.body.exact_flip_period();
         let period = r.flip_period.map_or(String::new(), |p| format!("{p:e}"));
         let error = r.flip_error().map_or(String::new(), |e| format!("{e:e}"));
         let status = match &r.failure {

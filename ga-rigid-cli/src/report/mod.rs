@@ -22,8 +22,9 @@ pub use analysis::{
     scene_kind, verdict, Order, Pick, SceneKind, ERROR_LEVELS, MIN_ORDER_POINTS,
 };
 pub use engine_steps::{
-    engine_run, engine_runs, engine_runs_csv, engine_verdicts, exact_flip_period, EngineRun,
-    ENGINE_BOUNDS, ENGINE_METHODS, ENGINE_RATES, ENGINE_RUNS_CSV_HEADER, ENGINE_STEPS,
+    engine_run, engine_run_on, engine_runs, engine_runs_csv, engine_verdicts, exact_flip_period,
+    EngineBody, EngineRun, ENGINE_BOUNDS, ENGINE_METHODS, ENGINE_RATES, ENGINE_RUNS_CSV_HEADER,
+    ENGINE_STEPS, NEAR_SYMMETRIC, T_HANDLE,
 };
 pub use estimate::scene_seconds;
 pub use invariants::{

@@ -1,5 +1,5 @@
 //! One work-precision diagram per scene, as SVG text: the largest attitude error over the
-//! run against the median run time, log-log, in four panels of at most eight methods
+//! run against the median run time, log-log, in five panels of at most eight methods
 //! ([`super::style`]): each method a line through its settings, in its own colour and
 //! marker, the peers dashed, the legend under each panel. Points are not labelled with
 //! their step or tolerance (labels on crowded lines overprint each other); results.csv
@@ -57,13 +57,13 @@ pub fn fastest_of_ours_to_the_peers_best(scene: &SceneResult) -> Option<Method> 
         .rows
         .iter()
         .map(|r| r.method)
-        .filter(|&m| panel(m) != Panel::Peers)
+        .filter(|&m| !panel(m).is_peers())
         .collect();
     ours.dedup();
     let peers_best = scene
         .rows
         .iter()
-        .filter(|r| panel(r.method) == Panel::Peers)
+        .filter(|r| panel(r.method).is_peers())
         .flat_map(|r| points(scene, r.method))
         .map(|(_, e)| e)
         .fold(f64::INFINITY, f64::min);
@@ -101,14 +101,14 @@ fn panel_methods(scene: &SceneResult, which: Panel) -> Vec<Method> {
         .into_iter()
         .filter(|&m| scene.rows.iter().any(|r| r.method == m))
         .collect();
-    if which == Panel::Peers {
+    if which.is_peers() {
         methods.extend(fastest_of_ours_to_the_peers_best(scene));
     }
     methods
 }
 
 fn draw(scene: &SceneResult, text: &mut String) -> DrawResult {
-    // One pair of axes for the four panels, so that they compare at a glance.
+    // One pair of axes for the five panels, so that they compare at a glance.
     let all: Vec<(f64, f64)> = scene
         .rows
         .iter()
@@ -135,11 +135,11 @@ fn draw(scene: &SceneResult, text: &mut String) -> DrawResult {
     let x_range = widen(t_lo / 2.0, t_hi * 2.0);
     let y_range = widen(e_lo / 5.0, e_hi * 5.0);
 
-    let size = (2 * PANEL.0, 2 * PANEL.1 + 40);
+    let size = (2 * PANEL.0, 3 * PANEL.1 + 40);
     let root = SVGBackend::with_string(text, size).into_drawing_area();
     root.fill(&WHITE)?;
     let root = root.titled(&scene.name, ("sans-serif", 22))?;
-    let areas = root.split_evenly((2, 2));
+    let areas = root.split_evenly((3, 2));
     for (area, which) in areas.iter().zip(Panel::ALL) {
         let (chart_area, legend_area) = area.split_vertically(PANEL.1 - LEGEND_HEIGHT);
         let methods = panel_methods(scene, which);
@@ -196,6 +196,7 @@ pub(crate) fn marker<DB: DrawingBackend>(
         Marker::Square => Rectangle::new([(-4, -4), (4, 4)], colour.filled()).into_dyn(),
         Marker::Triangle => TriangleMarker::new((0, 0), 5, colour.filled()).into_dyn(),
         Marker::Ring => Circle::new((0, 0), 4, colour.stroke_width(2)).into_dyn(),
+        Marker::OpenSquare => Rectangle::new([(-4, -4), (4, 4)], colour.stroke_width(2)).into_dyn(),
     }
 }
 

@@ -1,10 +1,10 @@
 //! How each method looks in the report: the panel of the work-precision diagram it is
 //! drawn in, and a colour and marker that are its own wherever it appears.
 //!
-//! A diagram of 26 methods in one frame cannot be read, so each scene's diagram is four
+//! A diagram of 28 methods in one frame cannot be read, so each scene's diagram is five
 //! small panels of at most eight lines: our second-order steppers, our fixed-step methods
-//! of order four and up, our adaptive and exact methods, and the peers with our fastest
-//! method repeated beside them. Within a panel every method has its own colour (the
+//! of order four and up, our adaptive and exact methods, the engines' steps among the
+//! peers and the other peers, each peer panel with our fastest method repeated beside it. Within a panel every method has its own colour (the
 //! eight colours of Okabe and Ito's palette, which stay apart for colour-blind readers);
 //! each panel has its own marker, so a method's colour and marker together name it in
 //! every diagram. Peers are drawn dashed, in the plot and in the legend.
@@ -22,18 +22,27 @@ pub enum Panel {
     HighOrder,
     /// Our adaptive methods, the exact flow and the closed form.
     AdaptiveAndExact,
-    /// The methods people use today (and, drawn beside them, our fastest).
+    /// The engines' steps among the peers (and, drawn beside them, our fastest).
+    EnginePeers,
+    /// The other methods people use today (and, drawn beside them, our fastest).
     Peers,
 }
 
 impl Panel {
-    /// The four panels in the order they are drawn (left to right, top to bottom).
-    pub const ALL: [Panel; 4] = [
+    /// The five panels in the order they are drawn (left to right, top to bottom).
+    pub const ALL: [Panel; 5] = [
         Panel::SecondOrder,
         Panel::HighOrder,
         Panel::AdaptiveAndExact,
+        Panel::EnginePeers,
         Panel::Peers,
     ];
+
+    /// Whether the panel holds peers.
+    #[must_use]
+    pub fn is_peers(self) -> bool {
+        matches!(self, Panel::EnginePeers | Panel::Peers)
+    }
 
     /// The panel's title.
     #[must_use]
@@ -42,7 +51,8 @@ impl Panel {
             Panel::SecondOrder => "ours: second-order steppers",
             Panel::HighOrder => "ours: fixed step, order 4 and up",
             Panel::AdaptiveAndExact => "ours: adaptive, exact, closed form",
-            Panel::Peers => "peers (dashed) and our fastest to their best",
+            Panel::EnginePeers => "engine steps (dashed) and our fastest to the best peer",
+            Panel::Peers => "other peers (dashed) and our fastest to the best peer",
         }
     }
 
@@ -53,6 +63,7 @@ impl Panel {
             Panel::SecondOrder => Marker::Circle,
             Panel::HighOrder => Marker::Square,
             Panel::AdaptiveAndExact => Marker::Triangle,
+            Panel::EnginePeers => Marker::OpenSquare,
             Panel::Peers => Marker::Ring,
         }
     }
@@ -79,6 +90,8 @@ pub enum Marker {
     Triangle,
     /// An open circle.
     Ring,
+    /// An open square.
+    OpenSquare,
 }
 
 /// How one method is drawn.
@@ -110,7 +123,12 @@ pub(crate) const PALETTE: [RGBColor; 8] = [
 pub fn panel(method: Method) -> Panel {
     use Method::*;
     if method.info().peer.is_some() {
-        return Panel::Peers;
+        return match method {
+            EulerGyroExplicit | EulerGyroImplicit | Buss2 | SpiersVelocity | SpiersMomentum => {
+                Panel::EnginePeers
+            }
+            _ => Panel::Peers,
+        };
     }
     match method {
         Midpoint | Splitting | SplittingCayley | SplittingCasimir | SplittingCorrected
@@ -134,7 +152,7 @@ pub fn style(method: Method) -> Style {
     Style {
         colour: PALETTE[place % PALETTE.len()],
         marker: home.marker(),
-        dashed: home == Panel::Peers,
+        dashed: home.is_peers(),
     }
 }
 

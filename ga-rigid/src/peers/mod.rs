@@ -15,6 +15,9 @@
 //!   our `midpoint` is the same rule with its attitude part in closed form.
 //! - `moser-veselov`: the discrete Moser-Veselov step (RATTLE on the rotation matrix),
 //!   with torque kicks in a Strang splitting under a torque.
+//! - `spiers-velocity`, `spiers-momentum`: Spiers's gyroscopic step ("A better way to
+//!   spin", avian's pull request #993) in the article's two forms, a velocity update before
+//!   the engine's orientation update and the momentum-first split.
 
 mod buss;
 mod gyroscopic_euler;
@@ -22,6 +25,7 @@ mod midpoint_quaternion;
 mod moser_veselov;
 #[cfg(feature = "peers")]
 mod quaternion_ode;
+mod spiers;
 
 pub use buss::Buss;
 pub use gyroscopic_euler::{ExplicitGyroscopicEuler, ImplicitGyroscopicEuler};
@@ -29,3 +33,4 @@ pub use midpoint_quaternion::QuaternionMidpoint;
 pub use moser_veselov::MoserVeselov;
 #[cfg(feature = "peers")]
 pub use quaternion_ode::{QuaternionOde, QuaternionSolver};
+pub use spiers::{Spiers, SpiersForm};
