@@ -753,6 +753,105 @@ macro_rules! glam_vocabulary {
             }
         }
 
+        /// glam's `Vec3` names for rotating and splitting vectors, with glam's meanings.
+        impl Vector {
+            /// `self` turned by `angle` about x, right-handed (glam's `Vec3::rotate_x`):
+            /// `Rotor::from_rotation_x(angle).mul_vec3(self)`.
+            ///
+            /// ```
+            #[doc = concat!("use ga_core::", stringify!($s), "::g3::*;")]
+            #[doc = concat!("let v = Vector::Y.rotate_x(core::", stringify!($s), "::consts::FRAC_PI_2);")]
+            /// assert!((v - Vector::Z).norm() < 1e-6);
+            /// ```
+            #[inline]
+            #[must_use]
+            pub fn rotate_x(self, angle: $s) -> Vector {
+                Rotor::from_rotation_x(angle).mul_vec3(self)
+            }
+
+            /// `self` turned by `angle` about y, right-handed (glam's `Vec3::rotate_y`).
+            #[inline]
+            #[must_use]
+            pub fn rotate_y(self, angle: $s) -> Vector {
+                Rotor::from_rotation_y(angle).mul_vec3(self)
+            }
+
+            /// `self` turned by `angle` about z, right-handed (glam's `Vec3::rotate_z`).
+            #[inline]
+            #[must_use]
+            pub fn rotate_z(self, angle: $s) -> Vector {
+                Rotor::from_rotation_z(angle).mul_vec3(self)
+            }
+
+            /// `self` turned by `angle` about the unit `axis` (glam's
+            /// `Vec3::rotate_axis`): `Rotor::from_axis_angle(axis, angle).mul_vec3(self)`.
+            #[inline]
+            #[must_use]
+            pub fn rotate_axis(self, axis: Vector, angle: $s) -> Vector {
+                Rotor::from_axis_angle(axis, angle).mul_vec3(self)
+            }
+
+            /// `self` turned toward `rhs` by at most `max_angle` about their common
+            /// normal (glam's `Vec3::rotate_towards`): parallel to `rhs` once
+            /// `max_angle` reaches the angle between them, and a negative `max_angle`
+            /// turns away, at most to the opposite of `rhs`. Parallel or opposite
+            /// vectors turn about [`any_orthogonal_vector`](Self::any_orthogonal_vector).
+            /// A zero input is returned unchanged (glam panics there: its clamp gets NaN).
+            ///
+            /// ```
+            #[doc = concat!("use ga_core::", stringify!($s), "::g3::*;")]
+            /// let v = Vector::X.rotate_towards(Vector::Y, 0.5);
+            /// assert!((v - Vector::X.rotate_z(0.5)).norm() < 1e-6);
+            /// ```
+            #[inline]
+            #[must_use]
+            pub fn rotate_towards(self, rhs: Vector, max_angle: $s) -> Vector {
+                let between = self.angle_between(rhs);
+                if between.is_nan() {
+                    return self;
+                }
+                // `max` and `min`, not `clamp`: no panic on a NaN `max_angle`.
+                let angle = max_angle
+                    .max(between - ::core::$s::consts::PI)
+                    .min(between);
+                let axis = match self.cross(rhs).try_normalized() {
+                    Some(axis) => axis,
+                    None => self.any_orthogonal_vector().normalize(),
+                };
+                self.rotate_axis(axis, angle)
+            }
+
+            /// Two unit vectors that make a right-handed orthonormal basis with the unit
+            /// `self` (glam's `Vec3::any_orthonormal_pair`, the same pair): Duff et al.,
+            /// "Building an orthonormal basis, revisited", JCGT 6(1), 2017.
+            ///
+            /// ```
+            #[doc = concat!("use ga_core::", stringify!($s), "::g3::*;")]
+            /// let n = Vector::new(0.0, 0.6, -0.8);
+            /// let (a, b) = n.any_orthonormal_pair();
+            /// assert!((a.cross(b) - n).norm() < 1e-6);
+            /// ```
+            #[inline]
+            #[must_use]
+            pub fn any_orthonormal_pair(self) -> (Vector, Vector) {
+                let sign = (1.0 as $s).copysign(self.e3);
+                let a = -1.0 / (sign + self.e3);
+                let b = self.e1 * self.e2 * a;
+                (
+                    Vector::new(1.0 + sign * self.e1 * self.e1 * a, sign * b, -sign * self.e1),
+                    self.any_orthonormal_vector(),
+                )
+            }
+
+            /// The part of `self` perpendicular to the unit `rhs` (glam's
+            /// `Vec3::reject_from_normalized`): `self - rhs (self . rhs)`.
+            #[inline]
+            #[must_use]
+            pub fn reject_from_normalized(self, rhs: Vector) -> Vector {
+                self - self.project_onto_normalized(rhs)
+            }
+        }
+
         /// glam's `Quat` names beyond the rotor toolkit, with glam's meanings.
         impl Rotor {
             /// All components NaN (glam's `Quat::NAN`).

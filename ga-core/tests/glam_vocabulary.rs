@@ -535,6 +535,103 @@ macro_rules! vocabulary_tests {
             }
 
             #[test]
+            fn vector_rotations_match_glam_on_edge_cases() {
+                let mut rng = Rng::new(35);
+                let mut vectors = edge_vectors();
+                vectors.extend((0..40).map(|_| vector(&mut rng) * 3.0));
+                let angles = [0.0, 1e-8, FRAC_PI_2, -FRAC_PI_2, PI, -PI, 2.5, 100.0];
+                for &v in &vectors {
+                    let g = $vec3::from(v);
+                    let size = 8.0 * TOL * (1.0 + v.norm());
+                    for &angle in &angles {
+                        assert!(
+                            close(v.rotate_x(angle), g.rotate_x(angle), size),
+                            "{v} {angle}"
+                        );
+                        assert!(
+                            close(v.rotate_y(angle), g.rotate_y(angle), size),
+                            "{v} {angle}"
+                        );
+                        assert!(
+                            close(v.rotate_z(angle), g.rotate_z(angle), size),
+                            "{v} {angle}"
+                        );
+                        let axis = unit(&mut rng);
+                        let theirs = g.rotate_axis(axis.into(), angle);
+                        assert!(
+                            close(v.rotate_axis(axis, angle), theirs, size),
+                            "{v} {angle}"
+                        );
+                    }
+                    let n = unit(&mut rng);
+                    let theirs = g.reject_from_normalized(n.into());
+                    assert!(close(v.reject_from_normalized(n), theirs, size), "{v} {n}");
+                }
+            }
+
+            #[test]
+            fn vector_rotate_towards_matches_glam() {
+                let mut rng = Rng::new(36);
+                let mut pairs = vec![
+                    (Vector::X, Vector::Y),
+                    (Vector::X, Vector::X * 2.0),
+                    (Vector::X, -Vector::X),
+                    (Vector::Z * 3.0, Vector::new(1.0, 1.0, -1.0)),
+                ];
+                pairs.extend((0..60).map(|_| (vector(&mut rng) * 2.0, vector(&mut rng))));
+                for (a, b) in pairs {
+                    if a.norm() < 1e-3 || b.norm() < 1e-3 {
+                        continue;
+                    }
+                    let between = $vec3::from(a).angle_between(b.into());
+                    // Away from the ends of the clamp, where glam's f32 `acos` polynomial
+                    // and our `atan2` angle may fall on different sides.
+                    for max_angle in [0.0, 0.3, -0.3, 2.0, -2.0, 10.0, -10.0] {
+                        if (max_angle - between).abs() < 1e-3
+                            || (max_angle - (between - PI)).abs() < 1e-3
+                        {
+                            continue;
+                        }
+                        let ours = a.rotate_towards(b, max_angle);
+                        let theirs = $vec3::from(a).rotate_towards(b.into(), max_angle);
+                        // glam's f32 angle is a polynomial acos: about 1e-5 rad.
+                        let tol = if TOL > 1e-10 { 1e-4 } else { 1e-12 };
+                        assert!(
+                            close(ours, theirs, tol * (1.0 + a.norm())),
+                            "{a} {b} {max_angle}"
+                        );
+                    }
+                }
+                // glam panics on a zero input (its clamp gets NaN); ours returns it.
+                assert_eq!(Vector::ZERO.rotate_towards(Vector::X, 1.0), Vector::ZERO);
+                assert_eq!(Vector::X.rotate_towards(Vector::ZERO, 1.0), Vector::X);
+            }
+
+            #[test]
+            fn any_orthonormal_pair_is_glams_pair() {
+                // Duff et al.'s pathological inputs (as in glam's own suite), the axes
+                // and their opposites, and random unit vectors.
+                let mut inputs = vec![
+                    Vector::new(0.00038527316, 0.00038460016, -0.99999988079).normalize(),
+                    Vector::new(-0.00019813581, -0.00008946839, -0.99999988079).normalize(),
+                ];
+                for axis in Vector::AXES {
+                    inputs.push(axis);
+                    inputs.push(-axis);
+                }
+                let mut rng = Rng::new(37);
+                inputs.extend((0..100).map(|_| unit(&mut rng)));
+                for n in inputs {
+                    let (a, b) = n.any_orthonormal_pair();
+                    let (ga, gb) = $vec3::from(n).any_orthonormal_pair();
+                    assert!(close(a, ga, 4.0 * TOL) && close(b, gb, 4.0 * TOL), "{n}");
+                    // Independently: orthonormal and right-handed.
+                    assert!((a.cross(b) - n).norm() < 16.0 * TOL, "{n}");
+                    assert!(a.dot(n).abs() < 16.0 * TOL && b.dot(n).abs() < 16.0 * TOL);
+                }
+            }
+
+            #[test]
             fn mat4_conversions_match_glam() {
                 let mut rng = Rng::new(18);
                 for _ in 0..100 {
