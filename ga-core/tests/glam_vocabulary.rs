@@ -608,6 +608,7 @@ macro_rules! vocabulary_tests {
             }
 
             #[test]
+            #[allow(clippy::excessive_precision)] // Duff et al.'s values as published.
             fn any_orthonormal_pair_is_glams_pair() {
                 // Duff et al.'s pathological inputs (as in glam's own suite), the axes
                 // and their opposites, and random unit vectors.
