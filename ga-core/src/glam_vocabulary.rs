@@ -31,7 +31,10 @@ pub struct Xyz<S> {
 // Unused when no precision is on.
 #[allow(unused_macros)]
 macro_rules! glam_vocabulary {
-    ($s:ident, $vec4:ident, $mat4:ident, $affine3:ident) => {
+    (
+        $s:ident, $quat_fn:ident, $vec3_fn:ident, $vec4:ident, $mat3:ident, $mat4:ident,
+        $affine3:ident
+    ) => {
         #[cfg(not(feature = "std"))]
         #[allow(unused_imports)]
         use crate::rotor::no_std_math::Real as _;
@@ -48,6 +51,32 @@ macro_rules! glam_vocabulary {
             assert!(offset_of!(Vector, e2) == offset_of!(Xyz<$s>, y));
             assert!(offset_of!(Vector, e3) == offset_of!(Xyz<$s>, z));
         };
+
+        /// The rotor of glam's quaternion `(x, y, z, w)` (glam's free function of this
+        /// name): [`Rotor::from_xyzw`], re-exported in the `g3` module.
+        ///
+        /// ```
+        #[doc = concat!("use ga_core::", stringify!($s), "::g3::*;")]
+        #[doc = concat!("assert_eq!(", stringify!($quat_fn), "(0.0, 0.0, 0.0, 1.0), Rotor::IDENTITY);")]
+        /// ```
+        #[inline]
+        #[must_use]
+        pub const fn $quat_fn(x: $s, y: $s, z: $s, w: $s) -> Rotor {
+            Rotor::from_xyzw(x, y, z, w)
+        }
+
+        /// The vector `x e1 + y e2 + z e3` (glam's free function of this name):
+        /// [`Vector::new`], re-exported in the `g3` module.
+        ///
+        /// ```
+        #[doc = concat!("use ga_core::", stringify!($s), "::g3::*;")]
+        #[doc = concat!("assert_eq!(", stringify!($vec3_fn), "(1.0, 2.0, 3.0).y, 2.0);")]
+        /// ```
+        #[inline]
+        #[must_use]
+        pub const fn $vec3_fn(x: $s, y: $s, z: $s) -> Vector {
+            Vector::new(x, y, z)
+        }
 
         /// glam's field names: `v.x`, `v.y`, `v.z` are `e1`, `e2`, `e3` (read through
         /// `Xyz`, as glam's `Vec3A` reads through its `XYZ`).
@@ -522,17 +551,21 @@ macro_rules! glam_vocabulary {
             /// `R v ~R` (glam's `Quat::mul_vec3` and `Quat * Vec3`): the sandwich, which
             /// is what glam's formula computes for any quaternion (scaled by `|R|^2` when
             /// `R` is not unit). `Rotor * Vector` is the geometric product: see docs/glam.md.
+            /// `v` is a `Vector` or any type that converts to and from one (glam's
+            /// `Vec3`, `[x, y, z]`, mint's), and the result is of `v`'s type, so that a
+            /// ported `q * v` becomes `q.mul_vec3(v)` whichever vector `v` is.
             ///
             /// ```
             #[doc = concat!("use ga_core::", stringify!($s), "::g3::*;")]
             /// let r = Rotor::from_rotation_z(1.0);
             /// assert_eq!(r.mul_vec3(Vector::X), r.sandwich(Vector::X));
+            /// assert_eq!(r.mul_vec3([1.0, 0.0, 0.0]), r.sandwich(Vector::X).to_array());
             /// ```
             #[doc(alias = "mul")]
             #[inline]
             #[must_use]
-            pub fn mul_vec3(self, v: Vector) -> Vector {
-                self.sandwich(v)
+            pub fn mul_vec3<V: Into<Vector> + From<Vector>>(self, v: V) -> V {
+                V::from(self.sandwich(v.into()))
             }
 
             /// The four-component dot product (glam's `Quat::dot`): `<self ~rhs>_0`.
@@ -720,6 +753,105 @@ macro_rules! glam_vocabulary {
             }
         }
 
+        /// glam's `Vec3` names for rotating and splitting vectors, with glam's meanings.
+        impl Vector {
+            /// `self` turned by `angle` about x, right-handed (glam's `Vec3::rotate_x`):
+            /// `Rotor::from_rotation_x(angle).mul_vec3(self)`.
+            ///
+            /// ```
+            #[doc = concat!("use ga_core::", stringify!($s), "::g3::*;")]
+            #[doc = concat!("let v = Vector::Y.rotate_x(core::", stringify!($s), "::consts::FRAC_PI_2);")]
+            /// assert!((v - Vector::Z).norm() < 1e-6);
+            /// ```
+            #[inline]
+            #[must_use]
+            pub fn rotate_x(self, angle: $s) -> Vector {
+                Rotor::from_rotation_x(angle).mul_vec3(self)
+            }
+
+            /// `self` turned by `angle` about y, right-handed (glam's `Vec3::rotate_y`).
+            #[inline]
+            #[must_use]
+            pub fn rotate_y(self, angle: $s) -> Vector {
+                Rotor::from_rotation_y(angle).mul_vec3(self)
+            }
+
+            /// `self` turned by `angle` about z, right-handed (glam's `Vec3::rotate_z`).
+            #[inline]
+            #[must_use]
+            pub fn rotate_z(self, angle: $s) -> Vector {
+                Rotor::from_rotation_z(angle).mul_vec3(self)
+            }
+
+            /// `self` turned by `angle` about the unit `axis` (glam's
+            /// `Vec3::rotate_axis`): `Rotor::from_axis_angle(axis, angle).mul_vec3(self)`.
+            #[inline]
+            #[must_use]
+            pub fn rotate_axis(self, axis: Vector, angle: $s) -> Vector {
+                Rotor::from_axis_angle(axis, angle).mul_vec3(self)
+            }
+
+            /// `self` turned toward `rhs` by at most `max_angle` about their common
+            /// normal (glam's `Vec3::rotate_towards`): parallel to `rhs` once
+            /// `max_angle` reaches the angle between them, and a negative `max_angle`
+            /// turns away, at most to the opposite of `rhs`. Parallel or opposite
+            /// vectors turn about [`any_orthogonal_vector`](Self::any_orthogonal_vector).
+            /// A zero input is returned unchanged (glam panics there: its clamp gets NaN).
+            ///
+            /// ```
+            #[doc = concat!("use ga_core::", stringify!($s), "::g3::*;")]
+            /// let v = Vector::X.rotate_towards(Vector::Y, 0.5);
+            /// assert!((v - Vector::X.rotate_z(0.5)).norm() < 1e-6);
+            /// ```
+            #[inline]
+            #[must_use]
+            pub fn rotate_towards(self, rhs: Vector, max_angle: $s) -> Vector {
+                let between = self.angle_between(rhs);
+                if between.is_nan() {
+                    return self;
+                }
+                // `max` and `min`, not `clamp`: no panic on a NaN `max_angle`.
+                let angle = max_angle
+                    .max(between - ::core::$s::consts::PI)
+                    .min(between);
+                let axis = match self.cross(rhs).try_normalized() {
+                    Some(axis) => axis,
+                    None => self.any_orthogonal_vector().normalize(),
+                };
+                self.rotate_axis(axis, angle)
+            }
+
+            /// Two unit vectors that make a right-handed orthonormal basis with the unit
+            /// `self` (glam's `Vec3::any_orthonormal_pair`, the same pair): Duff et al.,
+            /// "Building an orthonormal basis, revisited", JCGT 6(1), 2017.
+            ///
+            /// ```
+            #[doc = concat!("use ga_core::", stringify!($s), "::g3::*;")]
+            /// let n = Vector::new(0.0, 0.6, -0.8);
+            /// let (a, b) = n.any_orthonormal_pair();
+            /// assert!((a.cross(b) - n).norm() < 1e-6);
+            /// ```
+            #[inline]
+            #[must_use]
+            pub fn any_orthonormal_pair(self) -> (Vector, Vector) {
+                let sign = (1.0 as $s).copysign(self.e3);
+                let a = -1.0 / (sign + self.e3);
+                let b = self.e1 * self.e2 * a;
+                (
+                    Vector::new(1.0 + sign * self.e1 * self.e1 * a, sign * b, -sign * self.e1),
+                    self.any_orthonormal_vector(),
+                )
+            }
+
+            /// The part of `self` perpendicular to the unit `rhs` (glam's
+            /// `Vec3::reject_from_normalized`): `self - rhs (self . rhs)`.
+            #[inline]
+            #[must_use]
+            pub fn reject_from_normalized(self, rhs: Vector) -> Vector {
+                self - self.project_onto_normalized(rhs)
+            }
+        }
+
         /// glam's `Quat` names beyond the rotor toolkit, with glam's meanings.
         impl Rotor {
             /// All components NaN (glam's `Quat::NAN`).
@@ -804,8 +936,13 @@ macro_rules! glam_vocabulary {
             /// [`from_mat3`](Self::from_mat3) of those columns, unchecked as glam's.
             #[inline]
             #[must_use]
-            pub fn from_rotation_axes(x_axis: Vector, y_axis: Vector, z_axis: Vector) -> Rotor {
-                Rotor::from_mat3([x_axis.to_array(), y_axis.to_array(), z_axis.to_array()])
+            pub fn from_rotation_axes(
+                x_axis: impl Into<Vector>,
+                y_axis: impl Into<Vector>,
+                z_axis: impl Into<Vector>,
+            ) -> Rotor {
+                let (x, y, z) = (x_axis.into(), y_axis.into(), z_axis.into());
+                Rotor::from_mat3([x.to_array(), y.to_array(), z.to_array()])
             }
 
             /// The rotation about z taking the direction of the 2D vector `from` to that
@@ -902,17 +1039,70 @@ macro_rules! glam_vocabulary {
                 Rotor::from_mat3(a.matrix3)
             }
         }
+
+        /// glam's 4-vector `(x, y, z, w)` of a rotor (glam's `From<Quat> for Vec4`), the
+        /// inverse of [`Rotor::from_vec4`].
+        #[cfg(feature = "glam")]
+        impl From<Rotor> for crate::glam::$vec4 {
+            #[inline]
+            fn from(r: Rotor) -> crate::glam::$vec4 {
+                let [x, y, z, w] = r.to_xyzw();
+                crate::glam::$vec4::new(x, y, z, w)
+            }
+        }
+
+        /// glam's `Mat3 * Vec3` with a `Vector`: the matrix (column-major) times the
+        /// vector, so that a ported program that keeps glam's matrices can apply them to
+        /// `Vector`s.
+        #[cfg(feature = "glam")]
+        impl ::core::ops::Mul<Vector> for crate::glam::$mat3 {
+            type Output = Vector;
+            #[inline]
+            fn mul(self, v: Vector) -> Vector {
+                Vector::from(self.mul_vec3(v.into()))
+            }
+        }
+
+        /// glam's `Mat3 * &Vec3` with a `Vector`: as `Mat3 * Vector`.
+        #[cfg(feature = "glam")]
+        impl ::core::ops::Mul<&Vector> for crate::glam::$mat3 {
+            type Output = Vector;
+            #[inline]
+            fn mul(self, v: &Vector) -> Vector {
+                self * *v
+            }
+        }
+
+        /// glam's `&Mat3 * Vec3` with a `Vector`: as `Mat3 * Vector`.
+        #[cfg(feature = "glam")]
+        impl ::core::ops::Mul<Vector> for &crate::glam::$mat3 {
+            type Output = Vector;
+            #[inline]
+            fn mul(self, v: Vector) -> Vector {
+                *self * v
+            }
+        }
+
+        /// glam's `&Mat3 * &Vec3` with a `Vector`: as `Mat3 * Vector`.
+        #[cfg(feature = "glam")]
+        impl ::core::ops::Mul<&Vector> for &crate::glam::$mat3 {
+            type Output = Vector;
+            #[inline]
+            fn mul(self, v: &Vector) -> Vector {
+                *self * *v
+            }
+        }
     };
 }
 
 #[cfg(all(feature = "g3", feature = "f64"))]
-mod g3_f64 {
-    glam_vocabulary!(f64, DVec4, DMat4, DAffine3);
+pub(crate) mod g3_f64 {
+    glam_vocabulary!(f64, dquat, dvec3, DVec4, DMat3, DMat4, DAffine3);
 }
 
 #[cfg(all(feature = "g3", feature = "f32"))]
-mod g3_f32 {
-    glam_vocabulary!(f32, Vec4, Mat4, Affine3);
+pub(crate) mod g3_f32 {
+    glam_vocabulary!(f32, quat, vec3, Vec4, Mat3, Mat4, Affine3);
 }
 
 /// glam's SIMD-aligned f32 types as inputs (feature `glam`): `Vec3A`, `Mat3A`, `Affine3A`.
@@ -936,6 +1126,15 @@ mod g3_f32_aligned {
         }
     }
 
+    /// glam's `Mat3A::from_quat`: the matrix of `x -> R x ~R` (for a unit rotor), as
+    /// `Mat3::from(r)`.
+    impl From<Rotor> for Mat3A {
+        #[inline]
+        fn from(r: Rotor) -> Mat3A {
+            Mat3A::from(crate::glam::Mat3::from(r))
+        }
+    }
+
     /// So that `from_mat3`, `from_matrix` take glam's `Mat3A` as they take its `Mat3`.
     impl RotationMatrix<f32> for Mat3A {
         #[inline]
@@ -956,7 +1155,7 @@ mod g3_f32_aligned {
         #[inline]
         #[must_use]
         pub fn mul_vec3a(self, rhs: Vec3A) -> Vec3A {
-            self.mul_vec3(rhs.into()).into()
+            self.mul_vec3(rhs)
         }
 
         /// The rotor of glam's `Mat3A` (glam's `Quat::from_mat3a`), unchecked as glam's.

@@ -146,8 +146,10 @@ pub use glam_0_32;
 /// One algebra module, with the batch modules when the `batch` feature is on and the
 /// WGSL constant when `wgsl` is (the macro's `lanes` and `shaders` keys cannot carry a
 /// `cfg` that stops the work itself: a `cfg` on the emitted item would still have the
-/// macro write the shader source on every build), and the integrations the crate features
-/// ask for.
+/// macro write the shader source on every build), the integrations the crate features
+/// ask for, and the items after the braces (G3's glam free functions `quat`, `vec3`).
+/// The macro writes a closed module, so it is written as a private `generated` module
+/// whose items the public one re-exports next to those extra items.
 // Unused when no precision is on.
 #[allow(unused_macros)]
 macro_rules! algebra {
@@ -157,20 +159,25 @@ macro_rules! algebra {
             metric: $metric:tt, scalar: $scalar:tt, lanes: $lanes:tt, shaders: $shaders:tt
             $(, $mint:tt)?
         }
+        $($extra:item)*
     ) => {
-        #[cfg(all(feature = "batch", feature = "wgsl"))]
-        algebra!(@one $doc $name $metric $scalar [lanes: $lanes, shaders: $shaders,] $($mint)?);
-        #[cfg(all(feature = "batch", not(feature = "wgsl")))]
-        algebra!(@one $doc $name $metric $scalar [lanes: $lanes,] $($mint)?);
-        #[cfg(all(not(feature = "batch"), feature = "wgsl"))]
-        algebra!(@one $doc $name $metric $scalar [shaders: $shaders,] $($mint)?);
-        #[cfg(all(not(feature = "batch"), not(feature = "wgsl")))]
-        algebra!(@one $doc $name $metric $scalar [] $($mint)?);
+        #[doc = $doc]
+        pub mod $name {
+            #[cfg(all(feature = "batch", feature = "wgsl"))]
+            algebra!(@one $metric $scalar [lanes: $lanes, shaders: $shaders,] $($mint)?);
+            #[cfg(all(feature = "batch", not(feature = "wgsl")))]
+            algebra!(@one $metric $scalar [lanes: $lanes,] $($mint)?);
+            #[cfg(all(not(feature = "batch"), feature = "wgsl"))]
+            algebra!(@one $metric $scalar [shaders: $shaders,] $($mint)?);
+            #[cfg(all(not(feature = "batch"), not(feature = "wgsl")))]
+            algebra!(@one $metric $scalar [] $($mint)?);
+            pub use generated::*;
+            $($extra)*
+        }
     };
-    (@one $doc:tt $name:tt $metric:tt $scalar:tt [$($keys:tt)*] $($mint:tt)?) => {
+    (@one $metric:tt $scalar:tt [$($keys:tt)*] $($mint:tt)?) => {
         ga_macros::algebra! {
-            #[doc = $doc]
-            pub mod $name {
+            mod generated {
                 metric: $metric,
                 scalar: $scalar,
                 $($keys)*
@@ -198,6 +205,10 @@ pub mod f64 {
     algebra! {
         #[doc = "Euclidean space, G(3, 0, 0), in `f64`."]
         g3 { metric: [1, 1, 1], scalar: f64, lanes: [4], shaders: [], mint }
+        /// glam's `dquat(x, y, z, w)`: [`Rotor::from_xyzw`].
+        pub use crate::glam_vocabulary::g3_f64::dquat;
+        /// glam's `dvec3(x, y, z)`: [`Vector::new`].
+        pub use crate::glam_vocabulary::g3_f64::dvec3;
     }
     #[cfg(feature = "g4")]
     algebra! {
@@ -224,6 +235,10 @@ pub mod f32 {
             metric: [1, 1, 1], scalar: f32, lanes: [4, 8],
             shaders: [wgsl], mint
         }
+        /// glam's `quat(x, y, z, w)`: [`Rotor::from_xyzw`].
+        pub use crate::glam_vocabulary::g3_f32::quat;
+        /// glam's `vec3(x, y, z)`: [`Vector::new`].
+        pub use crate::glam_vocabulary::g3_f32::vec3;
     }
     #[cfg(feature = "g4")]
     algebra! {

@@ -347,18 +347,25 @@ macro_rules! rotor3_toolkit {
                 if !right_handed {
                     return None;
                 }
-                Some(Self::from_mat3(c))
+                // `from_mat3` keeps glam's sign; this form promises a non-negative scalar.
+                let r = Self::from_mat3(c);
+                Some(if r.s < 0.0 { -r } else { r })
             }
 
             /// The rotor of a rotation matrix without checking that it is one (glam's
             /// `Quat::from_mat3`): for a matrix with scale, shear or reflection the result
-            /// is ill-defined, as glam's is. Non-negative scalar.
+            /// is ill-defined, as glam's is. The sign is glam's too: the quaternion
+            /// component whose square the branch computes is positive, so that the result
+            /// equals glam's componentwise, not only up to `R = -R` (a half turn about x
+            /// gives `x = 1`, whatever the sign of the rounding in `w`);
+            /// [`from_matrix`](Self::from_matrix) returns a non-negative scalar.
             ///
             /// Shepperd's method (S. W. Shepperd, "Quaternion from rotation matrix",
             /// J. Guidance and Control 1(3), 1978) with the branch chosen by signs
             /// (M. Day, "Converting a rotation matrix to a quaternion", Insomniac Games,
             /// 2015): the square root is taken of a diagonal combination of at least 1,
-            /// so it is accurate near a half turn too.
+            /// so it is accurate near a half turn too. Ties between branches go the way
+            /// glam's do (`<=`), so that the sign matches there as well.
             ///
             /// ```
             #[doc = concat!("use ga_core::", stringify!($s), "::g3::*;")]
@@ -372,26 +379,25 @@ macro_rules! rotor3_toolkit {
                 let [[m00, m10, m20], [m01, m11, m21], [m02, m12, m22]] = m.to_cols_array_2d();
                 // Day's selection: signs of the diagonal pick a component whose squared
                 // magnitude times 4 is `t >= 1`, so `1 / sqrt(t)` never loses digits.
+                // `t` is summed in glam's order, so that the two agree to the last bit.
                 let (t, w, x, y, z);
-                if m22 < 0.0 {
-                    if m00 > m11 {
-                        t = 1.0 + m00 - m11 - m22;
+                if m22 <= 0.0 {
+                    if m00 >= m11 {
+                        t = (1.0 - m22) - (m11 - m00);
                         (w, x, y, z) = (m21 - m12, t, m01 + m10, m02 + m20);
                     } else {
-                        t = 1.0 - m00 + m11 - m22;
+                        t = (1.0 - m22) + (m11 - m00);
                         (w, x, y, z) = (m02 - m20, m01 + m10, t, m12 + m21);
                     }
-                } else if m00 < -m11 {
-                    t = 1.0 - m00 - m11 + m22;
+                } else if m00 <= -m11 {
+                    t = (1.0 + m22) - (m11 + m00);
                     (w, x, y, z) = (m10 - m01, m02 + m20, m12 + m21, t);
                 } else {
-                    t = 1.0 + m00 + m11 + m22;
+                    t = (1.0 + m22) + (m11 + m00);
                     (w, x, y, z) = (t, m21 - m12, m02 - m20, m10 - m01);
                 }
                 let k = 0.5 / t.sqrt();
-                let (w, x, y, z) = (w * k, x * k, y * k, z * k);
-                let sign: $s = if w < 0.0 { -1.0 } else { 1.0 };
-                Rotor::new(sign * w, -sign * z, sign * y, -sign * x)
+                Rotor::new(w * k, -z * k, y * k, -x * k)
             }
 
             /// The rotation matrix of a unit rotor, column-major (`[c][r]`: column `c` is

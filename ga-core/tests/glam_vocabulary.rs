@@ -24,7 +24,7 @@ fn proper(order: EulerRot) -> bool {
 macro_rules! vocabulary_tests {
     (
         $name:ident, $s:ident, $vec2:ident, $vec3:ident, $vec4:ident, $quat:ident, $mat3:ident,
-        $mat4:ident, $affine3:ident, $tol:expr
+        $mat4:ident, $affine3:ident, $quat_fn:ident, $vec3_fn:ident, $tol:expr
     ) => {
         mod $name {
             use super::*;
@@ -414,6 +414,224 @@ macro_rules! vocabulary_tests {
                 assert!(gap(Rotor::from_mat3(&glam_m), $quat::from_mat3(&glam_m)) < 4.0 * TOL);
             }
 
+            /// Rotors whose matrices take each of Shepperd's four branches with either
+            /// sign of the other components: half turns about the axes (with the
+            /// rounding of `cos(pi / 2)` on both sides of zero), quarter turns (the
+            /// branch ties), angles near pi about oblique axes, and random rotors.
+            fn matrix_edge_rotors(rng: &mut Rng) -> Vec<Rotor> {
+                let mut rotors = Vec::new();
+                for angle in [PI, -PI, FRAC_PI_2, -FRAC_PI_2, PI * 0.999, -PI * 0.999, 0.0] {
+                    rotors.push(Rotor::from_rotation_x(angle));
+                    rotors.push(Rotor::from_rotation_y(angle));
+                    rotors.push(Rotor::from_rotation_z(angle));
+                    for axis in [Vector::new(1.0, 1.0, 0.0), Vector::new(-1.0, 2.0, 3.0)] {
+                        rotors.push(Rotor::from_axis_angle(axis.normalize(), angle));
+                    }
+                }
+                rotors.extend((0..300).map(|_| rotor(rng)));
+                rotors
+            }
+
+            #[test]
+            fn from_mat3_gives_glams_quaternion_not_only_its_rotation() {
+                // Failed before: `from_mat3` made the scalar non-negative, so a half turn
+                // about x whose `w` rounds below zero came out as `-q` (glam: `x = 1`).
+                let mut rng = Rng::new(31);
+                for r in matrix_edge_rotors(&mut rng) {
+                    let m = $mat3::from_quat(r.into());
+                    let theirs = Rotor::from($quat::from_mat3(&m));
+                    let ours = Rotor::from_mat3(&m);
+                    assert!(
+                        (ours - theirs).norm() <= 4.0 * TOL,
+                        "{r}: {ours} vs {theirs}"
+                    );
+                    let from_axes = Rotor::from_rotation_axes(m.x_axis, m.y_axis, m.z_axis);
+                    let theirs_axes =
+                        Rotor::from($quat::from_rotation_axes(m.x_axis, m.y_axis, m.z_axis));
+                    assert!((from_axes - theirs_axes).norm() <= 4.0 * TOL, "{r}");
+                    // The checked form keeps its promise of a non-negative scalar.
+                    let checked = Rotor::from_matrix(&m).unwrap();
+                    assert!(checked.s >= 0.0, "{r}: {checked}");
+                    assert!((checked - ours).norm().min((checked + ours).norm()) <= 4.0 * TOL);
+                }
+            }
+
+            #[test]
+            fn free_constructors_are_glams() {
+                let values = [0.0, -0.0, 1.0, -2.5, 1e-30, $s::MAX, $s::INFINITY, $s::NAN];
+                for &x in &values {
+                    for &w in &values {
+                        let (y, z) = (-x, 0.5);
+                        let ours = $quat_fn(x, y, z, w).to_xyzw().map(<$s>::to_bits);
+                        let theirs = ga_core::glam::$quat_fn(x, y, z, w).to_array();
+                        assert_eq!(ours, theirs.map(<$s>::to_bits), "{x} {w}");
+                        let ours = $vec3_fn(x, w, z).to_array().map(<$s>::to_bits);
+                        let theirs = ga_core::glam::$vec3_fn(x, w, z).to_array();
+                        assert_eq!(ours, theirs.map(<$s>::to_bits), "{x} {w}");
+                    }
+                }
+                assert_eq!($quat_fn(0.0, 0.0, 0.0, 1.0), Rotor::IDENTITY);
+            }
+
+            #[test]
+            fn rotor_to_vec4_is_glams_xyzw() {
+                let mut rng = Rng::new(32);
+                let mut rotors = vec![Rotor::ZERO, Rotor::IDENTITY, -Rotor::IDENTITY, Rotor::NAN];
+                rotors.extend((0..50).map(|_| rotor(&mut rng) * 1.5));
+                for r in rotors {
+                    let ours = $vec4::from(r);
+                    let theirs = $vec4::from($quat::from(r));
+                    assert_eq!(
+                        ours.to_array().map(<$s>::to_bits),
+                        theirs.to_array().map(<$s>::to_bits)
+                    );
+                    let back = Rotor::from_vec4(ours);
+                    assert_eq!(
+                        back.to_array().map(<$s>::to_bits),
+                        r.to_array().map(<$s>::to_bits)
+                    );
+                }
+            }
+
+            #[test]
+            fn glam_matrix_times_vector_is_glams_product() {
+                let mut rng = Rng::new(33);
+                for i in 0..100 {
+                    // General matrices (not rotations), some with huge or zero columns.
+                    let scale = [1.0, 1e30, 0.0][i % 3];
+                    let m = $mat3::from_cols(
+                        $vec3::from(vector(&mut rng)) * scale,
+                        $vec3::from(vector(&mut rng)),
+                        $vec3::from(vector(&mut rng)) * 7.0,
+                    );
+                    let v = vector(&mut rng) * 3.0;
+                    let theirs = m * $vec3::from(v);
+                    let ours: Vector = m * v;
+                    assert!(close(ours, theirs, 4.0 * TOL), "{m} {v}");
+                    // Independently: the combination of the columns.
+                    let by_columns = Vector::from(m.x_axis) * v.x
+                        + Vector::from(m.y_axis) * v.y
+                        + Vector::from(m.z_axis) * v.z;
+                    let size = 1.0 + by_columns.norm() + scale * v.norm();
+                    assert!((ours - by_columns).norm() <= 8.0 * TOL * size, "{m} {v}");
+                    assert_eq!(&m * v, ours);
+                    assert_eq!(m * &v, ours);
+                    assert_eq!(&m * &v, ours);
+                }
+            }
+
+            #[test]
+            fn mul_vec3_takes_and_returns_glams_vectors() {
+                let mut rng = Rng::new(34);
+                for i in 0..100 {
+                    let r = rotor(&mut rng) * if i % 4 == 0 { 0.5 } else { 1.0 };
+                    let v = $vec3::from(vector(&mut rng) * 10.0);
+                    let ours: $vec3 = r.mul_vec3(v);
+                    let theirs = $quat::from(r).mul_vec3(v);
+                    assert!(close(Vector::from(ours), theirs, 8.0 * TOL), "{r} {v}");
+                    let array: [$s; 3] = r.mul_vec3(v.to_array());
+                    assert_eq!(array, r.mul_vec3(Vector::from(v)).to_array());
+                }
+            }
+
+            #[test]
+            fn vector_rotations_match_glam_on_edge_cases() {
+                let mut rng = Rng::new(35);
+                let mut vectors = edge_vectors();
+                vectors.extend((0..40).map(|_| vector(&mut rng) * 3.0));
+                let angles = [0.0, 1e-8, FRAC_PI_2, -FRAC_PI_2, PI, -PI, 2.5, 100.0];
+                for &v in &vectors {
+                    let g = $vec3::from(v);
+                    let size = 8.0 * TOL * (1.0 + v.norm());
+                    for &angle in &angles {
+                        assert!(
+                            close(v.rotate_x(angle), g.rotate_x(angle), size),
+                            "{v} {angle}"
+                        );
+                        assert!(
+                            close(v.rotate_y(angle), g.rotate_y(angle), size),
+                            "{v} {angle}"
+                        );
+                        assert!(
+                            close(v.rotate_z(angle), g.rotate_z(angle), size),
+                            "{v} {angle}"
+                        );
+                        let axis = unit(&mut rng);
+                        let theirs = g.rotate_axis(axis.into(), angle);
+                        assert!(
+                            close(v.rotate_axis(axis, angle), theirs, size),
+                            "{v} {angle}"
+                        );
+                    }
+                    let n = unit(&mut rng);
+                    let theirs = g.reject_from_normalized(n.into());
+                    assert!(close(v.reject_from_normalized(n), theirs, size), "{v} {n}");
+                }
+            }
+
+            #[test]
+            fn vector_rotate_towards_matches_glam() {
+                let mut rng = Rng::new(36);
+                let mut pairs = vec![
+                    (Vector::X, Vector::Y),
+                    (Vector::X, Vector::X * 2.0),
+                    (Vector::X, -Vector::X),
+                    (Vector::Z * 3.0, Vector::new(1.0, 1.0, -1.0)),
+                ];
+                pairs.extend((0..60).map(|_| (vector(&mut rng) * 2.0, vector(&mut rng))));
+                for (a, b) in pairs {
+                    if a.norm() < 1e-3 || b.norm() < 1e-3 {
+                        continue;
+                    }
+                    let between = $vec3::from(a).angle_between(b.into());
+                    // Away from the ends of the clamp, where glam's f32 `acos` polynomial
+                    // and our `atan2` angle may fall on different sides.
+                    for max_angle in [0.0, 0.3, -0.3, 2.0, -2.0, 10.0, -10.0] {
+                        if (max_angle - between).abs() < 1e-3
+                            || (max_angle - (between - PI)).abs() < 1e-3
+                        {
+                            continue;
+                        }
+                        let ours = a.rotate_towards(b, max_angle);
+                        let theirs = $vec3::from(a).rotate_towards(b.into(), max_angle);
+                        // glam's f32 angle is a polynomial acos: about 1e-5 rad.
+                        let tol = if TOL > 1e-10 { 1e-4 } else { 1e-12 };
+                        assert!(
+                            close(ours, theirs, tol * (1.0 + a.norm())),
+                            "{a} {b} {max_angle}"
+                        );
+                    }
+                }
+                // glam panics on a zero input (its clamp gets NaN); ours returns it.
+                assert_eq!(Vector::ZERO.rotate_towards(Vector::X, 1.0), Vector::ZERO);
+                assert_eq!(Vector::X.rotate_towards(Vector::ZERO, 1.0), Vector::X);
+            }
+
+            #[test]
+            #[allow(clippy::excessive_precision)] // Duff et al.'s values as published.
+            fn any_orthonormal_pair_is_glams_pair() {
+                // Duff et al.'s pathological inputs (as in glam's own suite), the axes
+                // and their opposites, and random unit vectors.
+                let mut inputs = vec![
+                    Vector::new(0.00038527316, 0.00038460016, -0.99999988079).normalize(),
+                    Vector::new(-0.00019813581, -0.00008946839, -0.99999988079).normalize(),
+                ];
+                for axis in Vector::AXES {
+                    inputs.push(axis);
+                    inputs.push(-axis);
+                }
+                let mut rng = Rng::new(37);
+                inputs.extend((0..100).map(|_| unit(&mut rng)));
+                for n in inputs {
+                    let (a, b) = n.any_orthonormal_pair();
+                    let (ga, gb) = $vec3::from(n).any_orthonormal_pair();
+                    assert!(close(a, ga, 4.0 * TOL) && close(b, gb, 4.0 * TOL), "{n}");
+                    // Independently: orthonormal and right-handed.
+                    assert!((a.cross(b) - n).norm() < 16.0 * TOL, "{n}");
+                    assert!(a.dot(n).abs() < 16.0 * TOL && b.dot(n).abs() < 16.0 * TOL);
+                }
+            }
+
             #[test]
             fn mat4_conversions_match_glam() {
                 let mut rng = Rng::new(18);
@@ -800,6 +1018,8 @@ vocabulary_tests!(
     Mat3,
     Mat4,
     Affine3,
+    quat,
+    vec3,
     2e-7
 );
 vocabulary_tests!(
@@ -812,6 +1032,8 @@ vocabulary_tests!(
     DMat3,
     DMat4,
     DAffine3,
+    dquat,
+    dvec3,
     4e-16
 );
 
@@ -863,6 +1085,7 @@ fn simd_aligned_f32_inputs_match_glam() {
         assert!((-r).mul_vec3a(v).abs_diff_eq(q * v, 1e-6));
         assert_eq!(Vec3A::from(Vector::from(v)), v);
         let m = Mat3A::from_quat(q);
+        assert!(Mat3A::from(r).abs_diff_eq(m, 1e-6));
         let gap = |a: Rotor, b: Quat| (a - Rotor::from(b)).norm().min((a + Rotor::from(b)).norm());
         assert!(gap(Rotor::from_mat3a(&m), Quat::from_mat3a(&m)) < 1e-6);
         assert!(gap(Rotor::from_matrix(m).unwrap(), q) < 1e-6);
