@@ -41,10 +41,7 @@ fn advised<T>(items: impl ExactSizeIterator<Item = T>) -> Vec<T> {
     let bytes = v.capacity() * std::mem::size_of::<T>();
     let start = v.as_mut_ptr() as usize;
     let page = 4096;
-    let (first, last) = (
-        (start + page - 1) / page * page,
-        (start + bytes) / page * page,
-    );
+    let (first, last) = (start.div_ceil(page) * page, (start + bytes) / page * page);
     if last > first {
         // SAFETY: the range lies inside the vector's own allocation (rounded inwards to
         // whole pages); the advice changes only how the kernel backs it.
