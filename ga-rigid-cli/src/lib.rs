@@ -52,6 +52,37 @@ where
     I: IntoIterator<Item = T>,
     T: Into<OsString> + Clone,
 {
+    match try_run(args) {
+        Ok(()) => 0,
+        Err(failure) => {
+            eprintln!("{}", failure.message);
+            failure.status
+        }
+    }
+}
+
+/// A command that failed: its exit status and the one line [`run`] prints on standard
+/// error for it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Failure {
+    /// 2 for bad input, 1 for a failed write or a missing feature ([`exit_code`]).
+    pub status: u8,
+    /// The error line, without its newline.
+    pub message: String,
+}
+
+/// [`run`] that returns the error line instead of printing it, for callers that report
+/// errors their own way (the Python package raises it). The output, help and progress are
+/// printed as [`run`] prints them.
+///
+/// # Errors
+/// [`Failure`] with the status and line of [`run`] whenever [`run`] returns a non-zero
+/// status.
+pub fn try_run<I, T>(args: I) -> Result<(), Failure>
+where
+    I: IntoIterator<Item = T>,
+    T: Into<OsString> + Clone,
+{
     let cli = match Cli::try_parse_from(args) {
         Ok(cli) => cli,
         Err(e) => return clap_exit(&e),
@@ -61,13 +92,10 @@ where
         Command::Inertia(a) => inertia(a),
         Command::Report(a) => report(a),
     };
-    match result {
-        Ok(()) => 0,
-        Err(e) => {
-            eprintln!("{e}");
-            exit_code(&e)
-        }
-    }
+    result.map_err(|e| Failure {
+        status: exit_code(&e),
+        message: e.to_string(),
+    })
 }
 
 /// The process exit status for an error: 2 for bad input (the user can fix the command
@@ -84,18 +112,22 @@ pub fn exit_code(error: &Error) -> u8 {
 /// first paragraph, joined into one line (clap's own text, e.g. "error: unexpected
 /// argument '--x' found"), so that, like every other error, they are one line on
 /// standard error, with status 2.
-fn clap_exit(e: &clap::Error) -> u8 {
+fn clap_exit(e: &clap::Error) -> Result<(), Failure> {
     use clap::error::ErrorKind;
     let rendered = e.render().to_string();
     match e.kind() {
         ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
             let _ = std::io::stdout().write_all(rendered.as_bytes());
-            0
+            Ok(())
         }
         ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
             // clap would print the whole help here; keep the one-line rule for errors.
-            eprintln!("error: a subcommand is required (simulate, inertia or report); try --help");
-            2
+            Err(Failure {
+                status: 2,
+                message:
+                    "error: a subcommand is required (simulate, inertia or report); try --help"
+                        .to_string(),
+            })
         }
         _ => {
             // The first paragraph is the error; some errors continue it on indented lines
@@ -111,8 +143,10 @@ fn clap_exit(e: &clap::Error) -> u8 {
             } else {
                 cut_quoted(&without_possible_values(&first.join(" ")))
             };
-            eprintln!("{line}");
-            2
+            Err(Failure {
+                status: 2,
+                message: line,
+            })
         }
     }
 }

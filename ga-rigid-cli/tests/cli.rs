@@ -1866,3 +1866,53 @@ fn a_slow_needle_gets_a_step_from_the_rates_it_reaches() {
         "{dt} vs {expected}"
     );
 }
+
+/// `try_run` (the library entry the Python package raises from) fails with the status and
+/// the line the binary prints, for each kind of error: a usage error, a missing
+/// subcommand, a bad scene, a refused `--out`; and succeeds where the binary does.
+#[test]
+fn try_run_returns_the_status_and_line_the_command_prints() {
+    let dir = test_dir("try_run");
+    let good = write(&dir, "good.toml", &scene(BODY, INITIAL, RUN));
+    let bad = write(
+        &dir,
+        "bad.toml",
+        &scene(BODY, INITIAL, "[run]\nt_end = 10.0\n"),
+    );
+    let file = write(&dir, "file", "x");
+    let (good, bad, file) = (
+        good.to_str().unwrap(),
+        bad.to_str().unwrap(),
+        file.to_str().unwrap(),
+    );
+    let out_file = format!("--out={file}");
+    let cases: [&[&str]; 5] = [
+        &["simulate", "--no-such-flag"],
+        &[],
+        &["simulate", bad, "--method", "rk4", "--dt", "0.01"],
+        &["report", &out_file, "--quick"],
+        &["inertia", good],
+    ];
+    for (i, args) in cases.into_iter().enumerate() {
+        let binary = run(&dir, args);
+        let library =
+            ga_rigid_cli::try_run(std::iter::once("ga-rigid").chain(args.iter().copied()));
+        assert_eq!(library.is_err(), i < 4, "{args:?}: {library:?}");
+        match library {
+            Ok(()) => assert_eq!(binary.status.code(), Some(0), "{args:?}"),
+            Err(failure) => {
+                assert_eq!(
+                    binary.status.code(),
+                    Some(i32::from(failure.status)),
+                    "{args:?}"
+                );
+                let stderr = String::from_utf8_lossy(&binary.stderr);
+                assert_eq!(stderr, format!("{}\n", failure.message), "{args:?}");
+                assert!(
+                    failure.status == 2 && !failure.message.is_empty(),
+                    "{args:?}"
+                );
+            }
+        }
+    }
+}

@@ -6,7 +6,7 @@ Set-up (once; kingdon and clifford pull numba):
     /tmp/ga-bench/bin/python python/bench/bench.py
 
 A library that is not installed is left out of the table (and named under it). Each figure
-is the best of several repeats, in microseconds per call; the checks at the start make sure
+is the best of 15 repeats, in microseconds per call; the checks at the start make sure
 every contestant computes the same rotation.
 """
 
@@ -44,13 +44,18 @@ def cpu_model():
     return platform.processor() or platform.machine()
 
 
+REPEATS = 15
+
+
 def best_us(fn, budget=0.3):
-    """Best time per call in microseconds, the repeat count sized to about `budget` seconds."""
+    """Best time per call in microseconds over `REPEATS` repeats, each sized to about
+    `budget` / 5 seconds: on a shared CPU a long call (1e6 items, milliseconds) is often
+    preempted, and the more repeats the likelier one runs uninterrupted."""
     fn()
     timer = timeit.Timer(fn)
     number, took = timer.autorange()
     number = max(1, int(number * budget / max(took, 1e-9) / 5))
-    return min(timer.repeat(repeat=5, number=number)) / number * 1e6
+    return min(timer.repeat(repeat=REPEATS, number=number)) / number * 1e6
 
 
 def unit(n):
@@ -153,7 +158,7 @@ if alg is not None:
 
 columns = ["ga_rs object", "ga_rs array", "kingdon", "clifford", "numpy formula", "numpy V @ M.T"]
 print(f"CPU: {cpu_model()}; Python {platform.python_version()}, numpy {np.__version__}; "
-      f"ga_rs kernels: {g3.instruction_set}; float64; microseconds per call (best of 5)\n")
+      f"ga_rs kernels: {g3.instruction_set}; float64; microseconds per call (best of {REPEATS})\n")
 print("| case | " + " | ".join(columns) + " |")
 print("|---|" + "---:|" * len(columns))
 for case, times in rows.items():

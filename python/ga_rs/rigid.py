@@ -86,6 +86,8 @@ def inertia(scene):
 
 def report(out_dir, quick=False):
     """Write the report (``ga-rigid report --out out_dir [--quick]``): runs every method on
-    the suite's scenes; minutes for the full report. ``ValueError`` when the command fails
-    (its one-line message is printed on standard error)."""
+    the suite's scenes; minutes for the full report. Where the command would exit with
+    status 2 (``--out`` a file, its parent missing, a report file in it that cannot be
+    replaced) this raises ``ValueError`` with the line the command prints, where it would
+    exit with 1 (a failed write) ``OSError``; nothing is written then."""
     return _native.report(os.fsdecode(os.fspath(out_dir)), bool(quick))

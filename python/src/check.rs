@@ -2,10 +2,12 @@
 //! cast or length mismatch can panic inside a kernel.
 
 use numpy::{
-    PyReadonlyArray1, PyReadonlyArray2, PyReadwriteArray1, PyReadwriteArray2, PyUntypedArrayMethods,
+    PyArrayDyn, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArrayDyn,
+    PyReadwriteArray1, PyReadwriteArray2, PyUntypedArrayMethods,
 };
 use pyo3::exceptions::PyValueError;
-use pyo3::{PyErr, PyResult};
+use pyo3::types::{PyAnyMethods, PyFloat};
+use pyo3::{Bound, PyAny, PyErr, PyResult, Python};
 
 /// Above this many items a call releases the GIL while it computes.
 pub const DETACH_ITEMS: usize = 4096;
@@ -144,4 +146,155 @@ pub fn compute<T: Send>(py: pyo3::Python<'_>, n: usize, f: impl FnOnce() -> T + 
     } else {
         f()
     }
+}
+
+/// A float type the batched functions compute in.
+pub trait Float: numpy::Element + bytemuck::Pod + Send + Sync {
+    /// A Python float as this type (rounded to nearest, as numpy converts it).
+    fn from_f64(x: f64) -> Self;
+}
+
+impl Float for f32 {
+    fn from_f64(x: f64) -> Self {
+        x as f32
+    }
+}
+
+impl Float for f64 {
+    fn from_f64(x: f64) -> Self {
+        x
+    }
+}
+
+/// An input of a fast-path call: an array of the call's dtype, or a Python float in a
+/// scalar slot (weak, as numpy's `result_type` takes it).
+enum Input<'py, S: Float> {
+    Array(PyReadonlyArrayDyn<'py, S>),
+    Scalar([S; 1]),
+}
+
+impl<S: Float> Input<'_, S> {
+    /// The leading axes of an input whose trailing `comps` axes are the components.
+    fn lead(&self, comps: usize) -> &[usize] {
+        match self {
+            Input::Array(a) => &a.shape()[..a.ndim() - comps],
+            Input::Scalar(_) => &[],
+        }
+    }
+
+    fn slice(&self) -> Option<&[S]> {
+        match self {
+            Input::Array(a) => a.as_slice().ok(),
+            Input::Scalar(s) => Some(s),
+        }
+    }
+}
+
+/// `x` as a fast-path input of components `comps`, or `None` where the general path
+/// must take it (another dtype or type, other trailing axes, not C-contiguous, borrowed
+/// for writing elsewhere).
+fn input<'py, S: Float>(x: &Bound<'py, PyAny>, comps: &[usize]) -> Option<Input<'py, S>> {
+    if let Ok(a) = x.cast::<PyArrayDyn<S>>() {
+        let shape = a.shape();
+        let ok = shape.len() >= comps.len()
+            && shape[shape.len() - comps.len()..] == *comps
+            && a.is_c_contiguous();
+        return if ok {
+            a.try_readonly().ok().map(Input::Array)
+        } else {
+            None
+        };
+    }
+    if comps.is_empty() && x.is_exact_instance_of::<PyFloat>() {
+        return x
+            .extract::<f64>()
+            .ok()
+            .map(|v| Input::Scalar([S::from_f64(v)]));
+    }
+    None
+}
+
+/// Whether two slices share any byte.
+fn overlap<A, B>(a: &[A], b: &[B]) -> bool {
+    let (a, b) = (a.as_ptr_range(), b.as_ptr_range());
+    let (a, b) = (
+        a.start as usize..a.end as usize,
+        b.start as usize..b.end as usize,
+    );
+    !a.is_empty() && !b.is_empty() && a.start < b.end && b.start < a.end
+}
+
+/// The common case of a batched call without the Python layer's general checks: every
+/// input (`(value, trailing component axes)`) a C-contiguous array of dtype `S` (or a
+/// Python float in a scalar slot), the leading shapes all equal except single items
+/// (no leading axes), and `out` absent or a C-contiguous writable `S` array of the
+/// result's shape sharing no memory with an input. Runs `run` on the inputs' scalars
+/// and the output's (without the GIL from [`DETACH_ITEMS`] items) and returns the output.
+///
+/// `Ok(None)` for anything else, with nothing written: the general path then converts,
+/// broadcasts or copies, or raises its error, so both paths give one set of messages.
+/// `run` returns `false`, before writing, where it cannot view the scalars as items.
+pub fn fast<'py, S: Float, const N: usize>(
+    py: Python<'py>,
+    values: [(&Bound<'py, PyAny>, &[usize]); N],
+    out: Option<&Bound<'py, PyAny>>,
+    out_comps: &[usize],
+    run: impl FnOnce([&[S]; N], &mut [S]) -> bool + Send,
+) -> PyResult<Option<Bound<'py, PyAny>>> {
+    let mut inputs = Vec::with_capacity(N);
+    for (x, comps) in values {
+        match input::<S>(x, comps) {
+            Some(i) => inputs.push(i),
+            None => return Ok(None),
+        }
+    }
+    let mut lead: &[usize] = &[];
+    for (i, (_, comps)) in inputs.iter().zip(values) {
+        let l = i.lead(comps.len());
+        if l.is_empty() {
+            continue;
+        }
+        if lead.is_empty() {
+            lead = l;
+        } else if lead != l {
+            return Ok(None);
+        }
+    }
+    let shape: Vec<usize> = lead.iter().chain(out_comps).copied().collect();
+    let array = match out {
+        None => PyArrayDyn::<S>::zeros(py, shape, false),
+        Some(o) => match o.cast::<PyArrayDyn<S>>() {
+            Ok(a) if a.shape() == shape.as_slice() && a.is_c_contiguous() => a.clone(),
+            _ => return Ok(None),
+        },
+    };
+    let Ok(mut writer) = array.try_readwrite() else {
+        return Ok(None);
+    };
+    let Ok(out_slice) = writer.as_slice_mut() else {
+        return Ok(None);
+    };
+    let mut slices: [&[S]; N] = [&[]; N];
+    for (slot, i) in slices.iter_mut().zip(&inputs) {
+        match i.slice() {
+            Some(s) if !overlap(s, out_slice) => *slot = s,
+            _ => return Ok(None),
+        }
+    }
+    let items = lead.iter().product::<usize>();
+    if !compute(py, items, || run(slices, out_slice)) {
+        return Ok(None);
+    }
+    drop(writer);
+    Ok(Some(array.into_any()))
+}
+
+/// Scalars viewed as items of `T` (`None` where the length or alignment does not fit).
+pub fn view<S: bytemuck::Pod, T: bytemuck::Pod>(s: &[S]) -> Option<&[T]> {
+    bytemuck::try_cast_slice(s).ok()
+}
+
+/// Writable scalars viewed as items of `T`.
+pub fn view_mut<S: bytemuck::Pod, T: bytemuck::Pod>(s: &mut [S]) -> Option<&mut [T]> {
+    bytemuck::try_cast_slice_mut(s).ok()
 }

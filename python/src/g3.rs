@@ -13,7 +13,7 @@ macro_rules! batched {
         /// The batched functions in this precision.
         pub mod $t {
             use crate::check::{broadcasts, compute, items, items_mut, map1, map2, map3};
-            use crate::check::{scalars, scalars_mut};
+            use crate::check::{fast, scalars, scalars_mut, view, view_mut};
             use ga_core::kernels::$t as kernels;
             use ga_core::$t::g3::{Bivector, Rotor, Sandwich, Vector};
             use numpy::{PyReadonlyArray1, PyReadonlyArray2, PyReadwriteArray1, PyReadwriteArray2};
@@ -21,6 +21,32 @@ macro_rules! batched {
             use pyo3::prelude::*;
 
             const NAN: $t = $t::NAN;
+
+            /// `out = a b` on items (each input 1 or `out.len()` of them; the kernel
+            /// where both are `out.len()`).
+            fn mul_rotors_items(a: &[Rotor], b: &[Rotor], out: &mut [Rotor]) -> PyResult<()> {
+                if a.len() == out.len() && b.len() == out.len() {
+                    kernels::mul_pairs(a, b, out).map_err(|e| PyValueError::new_err(e.to_string()))
+                } else {
+                    map2(a, b, out, |x, y| x * y);
+                    Ok(())
+                }
+            }
+
+            /// `out = r v ~r` on items: the matrix kernel for one rotor on many vectors,
+            /// the pairs kernel for a rotor per vector.
+            fn sandwich_items(r: &[Rotor], v: &[Vector], out: &mut [Vector]) -> PyResult<()> {
+                let n = out.len();
+                let result = match (r.len() == n, v.len() == n) {
+                    (true, true) => kernels::sandwich_pairs(r, v, out),
+                    (false, true) => kernels::sandwich_all(r[0], v, out),
+                    _ => {
+                        map2(r, v, out, |q, x| q.sandwich(x));
+                        Ok(())
+                    }
+                };
+                result.map_err(|e| PyValueError::new_err(e.to_string()))
+            }
 
             /// `out = a b` for rotors `a`, `b` (the kernel: bit for bit `a * b`).
             #[pyfunction]
@@ -36,15 +62,7 @@ macro_rules! batched {
                 let n = out.len();
                 broadcasts(a.len(), n, "a")?;
                 broadcasts(b.len(), n, "b")?;
-                compute(py, n, || {
-                    if a.len() == n && b.len() == n {
-                        kernels::mul_pairs(a, b, out)
-                            .map_err(|e| PyValueError::new_err(e.to_string()))
-                    } else {
-                        map2(a, b, out, |x, y| x * y);
-                        Ok(())
-                    }
-                })
+                compute(py, n, || mul_rotors_items(a, b, out))
             }
 
             /// `out = a b = a.b + a^b` for vectors, a rotor-shaped `[s, e12, e13, e23]`.
@@ -118,17 +136,7 @@ macro_rules! batched {
                 let n = out.len();
                 broadcasts(r.len(), n, "rotor")?;
                 broadcasts(v.len(), n, "vector")?;
-                compute(py, n, || {
-                    let result = match (r.len() == n, v.len() == n) {
-                        (true, true) => kernels::sandwich_pairs(r, v, out),
-                        (false, true) => kernels::sandwich_all(r[0], v, out),
-                        _ => {
-                            map2(r, v, out, |q, x| q.sandwich(x));
-                            Ok(())
-                        }
-                    };
-                    result.map_err(|e| PyValueError::new_err(e.to_string()))
-                })
+                compute(py, n, || sandwich_items(r, v, out))
             }
 
             /// `out = ~r`.
@@ -269,6 +277,220 @@ macro_rules! batched {
                 Ok(())
             }
 
+            /// The fast paths in this precision (see [`crate::check::fast`]): each
+            /// `Ok(None)` where its inputs are not this precision's common case.
+            pub mod quick {
+                use super::*;
+
+                /// The result of a fast call, `None` for the general path.
+                type Quick<'py> = PyResult<Option<Bound<'py, PyAny>>>;
+                /// An argument as the Python layer passes it.
+                type Arg<'a, 'py> = &'a Bound<'py, PyAny>;
+
+                /// `geometric`: rotors by rotors, or vectors by vectors.
+                pub fn geometric<'py>(
+                    py: Python<'py>,
+                    a: Arg<'_, 'py>,
+                    b: Arg<'_, 'py>,
+                    out: Option<Arg<'_, 'py>>,
+                ) -> Quick<'py> {
+                    let rotors =
+                        fast::<$t, 2>(py, [(a, &[4]), (b, &[4])], out, &[4], |[a, b], out| {
+                            let (Some(a), Some(b), Some(out)) = (view(a), view(b), view_mut(out))
+                            else {
+                                return false;
+                            };
+                            mul_rotors_items(a, b, out).is_ok()
+                        })?;
+                    if rotors.is_some() {
+                        return Ok(rotors);
+                    }
+                    fast::<$t, 2>(py, [(a, &[3]), (b, &[3])], out, &[4], |[a, b], out| {
+                        let (Some(a), Some(b), Some(out)) = (
+                            view::<_, Vector>(a),
+                            view::<_, Vector>(b),
+                            view_mut::<_, Rotor>(out),
+                        ) else {
+                            return false;
+                        };
+                        map2(a, b, out, |x, y| x * y);
+                        true
+                    })
+                }
+
+                /// `sandwich`.
+                pub fn sandwich<'py>(
+                    py: Python<'py>,
+                    r: Arg<'_, 'py>,
+                    v: Arg<'_, 'py>,
+                    out: Option<Arg<'_, 'py>>,
+                ) -> Quick<'py> {
+                    fast::<$t, 2>(py, [(r, &[4]), (v, &[3])], out, &[3], |[r, v], out| {
+                        let (Some(r), Some(v), Some(out)) = (view(r), view(v), view_mut(out))
+                        else {
+                            return false;
+                        };
+                        sandwich_items(r, v, out).is_ok()
+                    })
+                }
+
+                /// `outer`.
+                pub fn outer<'py>(
+                    py: Python<'py>,
+                    a: Arg<'_, 'py>,
+                    b: Arg<'_, 'py>,
+                    out: Option<Arg<'_, 'py>>,
+                ) -> Quick<'py> {
+                    fast::<$t, 2>(py, [(a, &[3]), (b, &[3])], out, &[3], |[a, b], out| {
+                        let (Some(a), Some(b), Some(out)) = (
+                            view::<_, Vector>(a),
+                            view::<_, Vector>(b),
+                            view_mut::<_, Bivector>(out),
+                        ) else {
+                            return false;
+                        };
+                        map2(a, b, out, |x, y| x ^ y);
+                        true
+                    })
+                }
+
+                /// `inner`.
+                pub fn inner<'py>(
+                    py: Python<'py>,
+                    a: Arg<'_, 'py>,
+                    b: Arg<'_, 'py>,
+                    out: Option<Arg<'_, 'py>>,
+                ) -> Quick<'py> {
+                    fast::<$t, 2>(py, [(a, &[3]), (b, &[3])], out, &[], |[a, b], out| {
+                        let (Some(a), Some(b)) = (view::<_, Vector>(a), view::<_, Vector>(b))
+                        else {
+                            return false;
+                        };
+                        map2(a, b, out, |x, y| x | y);
+                        true
+                    })
+                }
+
+                /// A one-input function from items of `A` (`k` components) to items of
+                /// `O` (`out_comps`).
+                fn unary<'py, A: bytemuck::Pod, O: bytemuck::Pod>(
+                    py: Python<'py>,
+                    x: Arg<'_, 'py>,
+                    k: &[usize],
+                    out: Option<Arg<'_, 'py>>,
+                    out_comps: &[usize],
+                    f: fn(A) -> O,
+                ) -> Quick<'py> {
+                    fast::<$t, 1>(py, [(x, k)], out, out_comps, |[x], out| {
+                        let (Some(x), Some(out)) = (view(x), view_mut(out)) else {
+                            return false;
+                        };
+                        map1(x, out, f);
+                        true
+                    })
+                }
+
+                /// `reverse`.
+                pub fn reverse<'py>(
+                    py: Python<'py>,
+                    r: Arg<'_, 'py>,
+                    out: Option<Arg<'_, 'py>>,
+                ) -> Quick<'py> {
+                    unary(py, r, &[4], out, &[4], Rotor::reverse)
+                }
+
+                /// `normalize`.
+                pub fn normalize<'py>(
+                    py: Python<'py>,
+                    r: Arg<'_, 'py>,
+                    out: Option<Arg<'_, 'py>>,
+                ) -> Quick<'py> {
+                    unary(py, r, &[4], out, &[4], Rotor::normalized)
+                }
+
+                /// `exp`.
+                pub fn exp<'py>(
+                    py: Python<'py>,
+                    b: Arg<'_, 'py>,
+                    out: Option<Arg<'_, 'py>>,
+                ) -> Quick<'py> {
+                    unary(py, b, &[3], out, &[4], Bivector::exp)
+                }
+
+                /// `log`.
+                pub fn log<'py>(
+                    py: Python<'py>,
+                    r: Arg<'_, 'py>,
+                    out: Option<Arg<'_, 'py>>,
+                ) -> Quick<'py> {
+                    unary(py, r, &[4], out, &[3], log_one)
+                }
+
+                /// `to_matrix`.
+                pub fn to_matrix<'py>(
+                    py: Python<'py>,
+                    r: Arg<'_, 'py>,
+                    out: Option<Arg<'_, 'py>>,
+                ) -> Quick<'py> {
+                    unary(py, r, &[4], out, &[3, 3], Rotor::sandwich_matrix)
+                }
+
+                /// `from_matrix`.
+                pub fn from_matrix<'py>(
+                    py: Python<'py>,
+                    m: Arg<'_, 'py>,
+                    out: Option<Arg<'_, 'py>>,
+                ) -> Quick<'py> {
+                    unary(py, m, &[3, 3], out, &[4], from_matrix_one)
+                }
+
+                /// `from_axis_angle`.
+                pub fn from_axis_angle<'py>(
+                    py: Python<'py>,
+                    axis: Arg<'_, 'py>,
+                    angle: Arg<'_, 'py>,
+                    out: Option<Arg<'_, 'py>>,
+                ) -> Quick<'py> {
+                    fast::<$t, 2>(
+                        py,
+                        [(axis, &[3]), (angle, &[])],
+                        out,
+                        &[4],
+                        |[axis, angle], out| {
+                            let (Some(axis), Some(out)) = (view(axis), view_mut(out)) else {
+                                return false;
+                            };
+                            map2(axis, angle, out, Rotor::from_axis_angle);
+                            true
+                        },
+                    )
+                }
+
+                /// `slerp`.
+                pub fn slerp<'py>(
+                    py: Python<'py>,
+                    a: Arg<'_, 'py>,
+                    b: Arg<'_, 'py>,
+                    t: Arg<'_, 'py>,
+                    out: Option<Arg<'_, 'py>>,
+                ) -> Quick<'py> {
+                    fast::<$t, 3>(
+                        py,
+                        [(a, &[4]), (b, &[4]), (t, &[])],
+                        out,
+                        &[4],
+                        |[a, b, t], out| {
+                            let (Some(a), Some(b), Some(out)) = (view(a), view(b), view_mut(out))
+                            else {
+                                return false;
+                            };
+                            map3(a, b, t, out, Rotor::slerp);
+                            true
+                        },
+                    )
+                }
+            }
+
             /// Add this precision's functions to `m`, each name ending in `_f32`/`_f64`.
             pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
                 let suffix = concat!("_", stringify!($t));
@@ -298,6 +520,79 @@ macro_rules! batched {
 
 batched!(f32);
 batched!(f64);
+
+/// The fast paths the Python layer tries first (`ga_rs.g3`'s functions): float64 or
+/// float32 arrays that need no conversion, broadcasting or copy. Each returns the result,
+/// or `None` where the Python layer's general path must take the call; none raises for
+/// bad input (the general path raises, with its messages).
+mod quick {
+    use super::{f32, f64};
+    use pyo3::prelude::*;
+
+    type Quick<'py> = PyResult<Option<Bound<'py, PyAny>>>;
+    type Arg<'a, 'py> = &'a Bound<'py, PyAny>;
+
+    /// Defines a `#[pyfunction]` that tries float64, then float32.
+    macro_rules! both {
+        ($(#[$doc:meta])* $name:ident($($arg:ident),*)) => {
+            $(#[$doc])*
+            #[pyfunction]
+            pub fn $name<'py>(py: Python<'py>, $($arg: Arg<'_, 'py>,)* out: Option<Arg<'_, 'py>>) -> Quick<'py> {
+                match f64::quick::$name(py, $($arg,)* out)? {
+                    Some(result) => Ok(Some(result)),
+                    None => f32::quick::$name(py, $($arg,)* out),
+                }
+            }
+        };
+    }
+
+    both!(/// `geometric(a, b, out)`.
+        geometric(a, b));
+    both!(/// `sandwich(r, v, out)`.
+        sandwich(r, v));
+    both!(/// `outer(a, b, out)`.
+        outer(a, b));
+    both!(/// `inner(a, b, out)`.
+        inner(a, b));
+    both!(/// `reverse(r, out)`.
+        reverse(r));
+    both!(/// `normalize(r, out)`.
+        normalize(r));
+    both!(/// `exp(b, out)`.
+        exp(b));
+    both!(/// `log(r, out)`.
+        log(r));
+    both!(/// `to_matrix(r, out)`.
+        to_matrix(r));
+    both!(/// `from_matrix(m, out)`.
+        from_matrix(m));
+    both!(/// `from_axis_angle(axis, angle, out)`.
+        from_axis_angle(axis, angle));
+    both!(/// `slerp(a, b, t, out)`.
+        slerp(a, b, t));
+
+    /// Add the fast paths to `m`, each name ending in `_quick`.
+    pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+        for f in [
+            wrap_pyfunction!(geometric, m)?,
+            wrap_pyfunction!(sandwich, m)?,
+            wrap_pyfunction!(outer, m)?,
+            wrap_pyfunction!(inner, m)?,
+            wrap_pyfunction!(reverse, m)?,
+            wrap_pyfunction!(normalize, m)?,
+            wrap_pyfunction!(exp, m)?,
+            wrap_pyfunction!(log, m)?,
+            wrap_pyfunction!(to_matrix, m)?,
+            wrap_pyfunction!(from_matrix, m)?,
+            wrap_pyfunction!(from_axis_angle, m)?,
+            wrap_pyfunction!(slerp, m)?,
+        ] {
+            let name: String = f.getattr("__name__")?.extract()?;
+            m.add(format!("{name}_quick"), f)?;
+        }
+        Ok(())
+    }
+}
 
 fn array<'py>(py: Python<'py>, values: &[f64]) -> Bound<'py, PyArray1<f64>> {
     PyArray1::from_slice(py, values)
@@ -525,6 +820,7 @@ pub fn module(py: Python<'_>) -> PyResult<Bound<'_, PyModule>> {
     let m = PyModule::new(py, "g3")?;
     f32::register(&m)?;
     f64::register(&m)?;
+    quick::register(&m)?;
     m.add_class::<PyRotor>()?;
     m.add_class::<PyVector>()?;
     m.add_class::<PyBivector>()?;

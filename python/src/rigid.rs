@@ -13,7 +13,7 @@ use ga_rigid::registry::Method;
 use ga_rigid::run::run_simulation_with_progress;
 use ga_rigid::scene::Scene;
 use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1, PyReadwriteArray2};
-use pyo3::exceptions::{PyTypeError, PyValueError};
+use pyo3::exceptions::{PyOSError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
 
@@ -247,28 +247,26 @@ fn inertia<'py>(py: Python<'py>, scene: &Bound<'py, PyAny>) -> PyResult<Bound<'p
     Ok(out)
 }
 
-/// `ga-rigid report --out OUT_DIR [--quick]` through the command's library entry; its
-/// summary goes to standard output and any error line to standard error.
+/// `ga-rigid report --out=OUT_DIR [--quick]` through the command's library entry; its
+/// summary and progress go to standard output and error as the command prints them. An
+/// error is raised with the line the command would print: `ValueError` where the command
+/// exits with status 2 (bad input), `OSError` where it exits with 1 (a failed write).
 #[pyfunction]
 #[pyo3(signature = (out_dir, quick=false))]
 fn report(py: Python<'_>, out_dir: PathBuf, quick: bool) -> PyResult<()> {
-    let mut args = vec![
-        "ga-rigid".into(),
-        "report".into(),
-        "--out".into(),
-        out_dir.into_os_string(),
-    ];
+    // `--out=DIR` in one argument, so that a directory named like a flag ("-x") is taken
+    // as the value, not parsed as an option.
+    let mut out = std::ffi::OsString::from("--out=");
+    out.push(out_dir.into_os_string());
+    let mut args = vec!["ga-rigid".into(), "report".into(), out];
     if quick {
         args.push("--quick".into());
     }
-    let status = py.detach(|| ga_rigid_cli::run(args));
-    if status == 0 {
-        Ok(())
-    } else {
-        Err(PyValueError::new_err(format!(
-            "ga-rigid report failed with exit status {status}; its message is on standard error"
-        )))
-    }
+    py.detach(|| ga_rigid_cli::try_run(args))
+        .map_err(|failure| match failure.status {
+            2 => PyValueError::new_err(failure.message),
+            _ => PyOSError::new_err(failure.message),
+        })
 }
 
 /// The method names, in the registry's order.

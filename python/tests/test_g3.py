@@ -205,6 +205,78 @@ def test_the_native_layer_validates_too():
         native.reverse_f64(np.zeros((1, 4), np.float32), np.zeros((1, 4)))
 
 
+# --- the native fast path ---------------------------------------------------------
+
+def _quick_cases(rng, dtype):
+    """(name, arguments) of every function, in ndarrays of `dtype` that take the fast path."""
+    r, q = unit_rotors(rng, 50, dtype), unit_rotors(rng, 50, dtype)
+    v, w = rng.normal(size=(2, 50, 3)).astype(dtype)
+    t = rng.uniform(size=50).astype(dtype)
+    m = g3.to_matrix(r)
+    return [
+        ("geometric", (r, q)), ("geometric", (v, w)), ("geometric", (r[0], q)),
+        ("sandwich", (r, v)), ("sandwich", (r[0], v)), ("sandwich", (r, v[0])),
+        ("outer", (v, w)), ("inner", (v, w)), ("reverse", (r,)), ("normalize", (2 * r,)),
+        ("exp", (v,)), ("log", (r,)), ("to_matrix", (r,)), ("from_matrix", (m,)),
+        ("from_axis_angle", (v, t)), ("from_axis_angle", (v[0], t)), ("slerp", (r, q, t)),
+        ("slerp", (r, q, 0.25)), ("sandwich", (r.reshape(5, 10, 4), v.reshape(5, 10, 3))),
+        ("reverse", (r[0],)),
+    ]
+
+
+@pytest.mark.parametrize("dtype", [np.float64, np.float32])
+def test_the_fast_path_equals_the_general_path_bit_for_bit(rng, dtype):
+    from ga_rs._native import g3 as native
+    for name, args in _quick_cases(rng, dtype):
+        quick = getattr(native, name + "_quick")(*args, None)
+        assert quick is not None, name  # the case does take the fast path
+        # Strided views of the same values take the general path (it copies them).
+        views = [np.repeat(a, 2, axis=-1)[..., ::2] if isinstance(a, np.ndarray) else a
+                 for a in args]
+        assert getattr(native, name + "_quick")(*views, None) is None, name
+        general = getattr(g3, name)(*views)
+        assert quick.dtype == general.dtype == dtype and quick.shape == general.shape, name
+        assert (bits(quick) == bits(general)).all(), name
+        out = np.full_like(quick, np.nan)
+        assert getattr(g3, name)(*args, out=out) is out
+        assert (bits(out) == bits(quick)).all(), name
+    empty = native.geometric_quick(np.zeros((0, 4), dtype), np.zeros(4, dtype), None)
+    assert empty.shape == (0, 4) and empty.dtype == dtype
+
+
+def test_the_fast_path_leaves_every_other_case_to_the_general_path(rng):
+    from ga_rs._native import g3 as native
+    r, v = unit_rotors(rng, 6), rng.normal(size=(6, 3))
+    out = np.empty((6, 3))
+    read_only = np.empty((6, 3))
+    read_only.flags.writeable = False
+    others = [
+        (r, [list(x) for x in v], None),                 # not an array
+        (r.astype(np.float32), v, None),                 # mixed dtypes
+        (r, v.astype(np.float32), out),                  # mixed dtypes
+        (r, v.astype(">f8"), None),                      # byte-swapped
+        (r.reshape(2, 1, 3, 4), v.reshape(2, 3, 3), None),  # broadcast needs numpy
+        (r[:1], v, None),                                # (1,) against (6,): numpy's rule
+        (np.asfortranarray(r), v, None),                  # not C-contiguous
+        (r[::2], v[::2], None),                          # a strided view
+        (r, v, v),                                       # out is an input
+        (r, v, out.astype(np.float32)),                  # out of another dtype
+        (r, v, np.empty((3, 6)).T),                      # out not C-contiguous
+        (r, v, read_only),                               # out not writable
+        (r, v, np.empty((6, 4))),                        # out of another shape
+        (np.zeros((6, 3)), v, None),                     # rotors of 3 components
+        (r, v.astype(np.int64), None),                   # integers
+    ]
+    for a, b, o in others:
+        assert native.sandwich_quick(a, b, o) is None
+    assert native.slerp_quick(r, r, np.float64(0.5), None) is None  # a numpy scalar
+    assert native.slerp_quick(r, r, 1, None) is None                 # a Python int
+    with pytest.raises(ValueError, match="writable"):
+        g3.sandwich(r, v, out=read_only)
+    np.testing.assert_allclose(g3.sandwich(r[::2], v[::2]), rotate(r[::2], v[::2]), atol=1e-14)
+    np.testing.assert_allclose(g3.sandwich(r[:1], v), rotate(r[:1], v), atol=1e-14)
+
+
 # --- copies -------------------------------------------------------------------------
 
 def test_out_is_written_in_place_and_aliasing_is_safe(rng):

@@ -1,6 +1,10 @@
 """ga_rs.rigid: the command's checks and messages, dict and file scenes alike, and the
 exact free-body flow vectorised over time."""
 
+import os
+import shutil
+import subprocess
+
 import numpy as np
 import pytest
 
@@ -106,9 +110,31 @@ def test_inertia_of_a_solid():
     assert rigid.inertia(SCENE)["mass"] is None
 
 
-def test_report_refuses_an_out_dir_that_is_a_file(tmp_path, capfd):
-    f = tmp_path / "file"
-    f.write_text("x")
-    with pytest.raises(ValueError, match="exit status 2"):
-        rigid.report(f, quick=True)
-    assert "--out" in capfd.readouterr().err
+def _command():
+    """The `ga-rigid` binary to compare messages with: $GA_RIGID_BIN or one on PATH."""
+    return os.environ.get("GA_RIGID_BIN") or shutil.which("ga-rigid")
+
+
+@pytest.mark.parametrize("out, message", [
+    ("file", "--out: file exists and is not a directory"),
+    ("missing/out", "--out: the directory missing does not exist (only the last part of --out is created)"),
+    ("out", "--out: out/index.html is a directory, not a regular file"),
+    ("-x", "--out: -x exists and is not a directory"),  # a name like a flag is the value
+])
+def test_report_errors_are_value_errors_with_the_commands_line(tmp_path, monkeypatch, capfd,
+                                                               out, message):
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "file").write_text("x")
+    (tmp_path / "-x").write_text("x")
+    (tmp_path / "out" / "index.html").mkdir(parents=True)
+    before = sorted(p.relative_to(tmp_path) for p in tmp_path.rglob("*"))
+    with pytest.raises(ValueError) as e:
+        rigid.report(out, quick=True)
+    assert str(e.value) == message
+    assert capfd.readouterr().err == ""  # the line is in the exception, not printed
+    assert sorted(p.relative_to(tmp_path) for p in tmp_path.rglob("*")) == before
+    command = _command()
+    if command:  # the command itself: the same line, status 2
+        run = subprocess.run([command, "report", f"--out={out}", "--quick"],
+                             capture_output=True, text=True, timeout=60)
+        assert (run.returncode, run.stderr) == (2, message + "\n")
