@@ -57,12 +57,14 @@ impl RigidBody {
     }
 
     /// The principal moments.
+    #[inline]
     #[must_use]
     pub fn moments(&self) -> [f64; 3] {
         self.moments
     }
 
     /// Whether an applied torque acts.
+    #[inline]
     #[must_use]
     pub fn has_torque(&self) -> bool {
         self.torque.is_some()

@@ -158,6 +158,10 @@ struct QuaternionForm<'a> {
 }
 
 impl System<f64, Y> for QuaternionForm<'_> {
+    // Inline, so that the solver's stage loop can take it in whichever codegen unit the
+    // solver lands: without it the peer's speed moved by 40 % with unrelated changes to
+    // this crate, as the partition of the code moved (the race in BENCHMARKS.md).
+    #[inline]
     fn system(&self, t: f64, y: &Y, dy: &mut Y) {
         let j = self.body.moments();
         let m = [y[0], y[1], y[2]];
