@@ -135,7 +135,7 @@ pub fn norm_squared_expr(plan: &Plan, operand: &Operand) -> TokenStream {
 }
 
 /// The indices of the components that `<A ~A>_0` sees (blades of non-zero square).
-fn nondegenerate(plan: &Plan, t: TypeId) -> Vec<usize> {
+pub(super) fn nondegenerate(plan: &Plan, t: TypeId) -> Vec<usize> {
     let blades = &plan.types.get(t).blades;
     (0..blades.len())
         .filter(|&i| plan.metric.geometric(blades[i], blades[i]).0 != 0)
