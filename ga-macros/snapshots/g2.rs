@@ -11210,13 +11210,19 @@ pub mod g2 {
             let log = {
                 let p = Bivector { e12: self.e12 };
                 let [x, root] = square_and_root(p);
-                let (p, [weight, turn]) = if self.s < 0.0 && x < 0.0 {
-                    log_past_right_angle(self.s, p, 1.0)
+                if self.s < 0.0 && x < 0.0 {
+                    let (u, [w, _]) = log_past_right_angle(self.s, p, 1.0);
+                    Bivector { e12: w * u.e12 }
                 } else {
-                    (p, log_weight(self.s, x, root, p == Bivector::ZERO))
-                };
-                Bivector {
-                    e12: weight * p.e12 + turn,
+                    let [weight, turn] = log_weight(
+                        self.s,
+                        x,
+                        root,
+                        p == Bivector::ZERO,
+                    );
+                    Bivector {
+                        e12: weight * p.e12 + turn,
+                    }
                 }
             };
             if log.to_array().iter().all(|c| c.is_finite()) { Some(log) } else { None }
@@ -11383,6 +11389,7 @@ pub mod g2 {
     /// carries it. NaN where no real logarithm exists (`c < 0` with `P^2 >= 0` and
     /// `P` not zero).
     #[allow(dead_code)]
+    #[inline]
     fn log_weight(c: f64, x: f64, m: f64, p_is_zero: bool) -> [f64; 2] {
         if p_is_zero && c < 0.0 {
             [1.0 / c, ::core::f64::consts::PI]
@@ -11403,7 +11410,10 @@ pub mod g2 {
     /// four-dimensional channel, whose angle is `sqrt 2` times the root of its
     /// square. Near -1 the plain `atan2(m, c) / m` times `B` differentiates to the
     /// difference of two terms of size `pi / m`, which loses everything to rounding.
+    /// Out of line, so that `log`, inlined where it is called, stays as small as before
+    /// on the path of a rotation below a right angle.
     #[allow(dead_code)]
+    #[inline(never)]
     fn log_past_right_angle(c: f64, b: Bivector, k: f64) -> (Bivector, [f64; 2]) {
         let largest: f64 = b.e12.abs();
         let u = Bivector { e12: b.e12 / largest };

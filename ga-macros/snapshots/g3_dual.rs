@@ -17025,17 +17025,31 @@ pub mod g3 {
                     e23: self.e23,
                 };
                 let [x, root] = square_and_root(p);
-                let (p, [weight, turn]) = if self.s < <Scalar as ::ga_core::Scalar>::ZERO
+                if self.s < <Scalar as ::ga_core::Scalar>::ZERO
                     && x < <Scalar as ::ga_core::Scalar>::ZERO
                 {
-                    log_past_right_angle(self.s, p, <Scalar as ::ga_core::Scalar>::ONE)
+                    let (u, [w, _]) = log_past_right_angle(
+                        self.s,
+                        p,
+                        <Scalar as ::ga_core::Scalar>::ONE,
+                    );
+                    Bivector {
+                        e12: w * u.e12,
+                        e13: w * u.e13,
+                        e23: w * u.e23,
+                    }
                 } else {
-                    (p, log_weight(self.s, x, root, p == Bivector::ZERO))
-                };
-                Bivector {
-                    e12: weight * p.e12 + turn,
-                    e13: weight * p.e13,
-                    e23: weight * p.e23,
+                    let [weight, turn] = log_weight(
+                        self.s,
+                        x,
+                        root,
+                        p == Bivector::ZERO,
+                    );
+                    Bivector {
+                        e12: weight * p.e12 + turn,
+                        e13: weight * p.e13,
+                        e23: weight * p.e23,
+                    }
                 }
             };
             if log.to_array().iter().all(|c| c.is_finite()) { Some(log) } else { None }
@@ -17323,6 +17337,7 @@ pub mod g3 {
     /// carries it. NaN where no real logarithm exists (`c < 0` with `P^2 >= 0` and
     /// `P` not zero).
     #[allow(dead_code)]
+    #[inline]
     fn log_weight(c: Scalar, x: Scalar, m: Scalar, p_is_zero: bool) -> [Scalar; 2] {
         if p_is_zero && c < <Scalar as ::ga_core::Scalar>::ZERO {
             [
@@ -17354,7 +17369,10 @@ pub mod g3 {
     /// four-dimensional channel, whose angle is `sqrt 2` times the root of its
     /// square. Near -1 the plain `atan2(m, c) / m` times `B` differentiates to the
     /// difference of two terms of size `pi / m`, which loses everything to rounding.
+    /// Out of line, so that `log`, inlined where it is called, stays as small as before
+    /// on the path of a rotation below a right angle.
     #[allow(dead_code)]
+    #[inline(never)]
     fn log_past_right_angle(
         c: Scalar,
         b: Bivector,

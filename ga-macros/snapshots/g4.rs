@@ -26697,6 +26697,7 @@ pub mod g4 {
     /// carries it. NaN where no real logarithm exists (`c < 0` with `P^2 >= 0` and
     /// `P` not zero).
     #[allow(dead_code)]
+    #[inline]
     fn log_weight(c: f64, x: f64, m: f64, p_is_zero: bool) -> [f64; 2] {
         if p_is_zero && c < 0.0 {
             [1.0 / c, ::core::f64::consts::PI]
@@ -26717,7 +26718,10 @@ pub mod g4 {
     /// four-dimensional channel, whose angle is `sqrt 2` times the root of its
     /// square. Near -1 the plain `atan2(m, c) / m` times `B` differentiates to the
     /// difference of two terms of size `pi / m`, which loses everything to rounding.
+    /// Out of line, so that `log`, inlined where it is called, stays as small as before
+    /// on the path of a rotation below a right angle.
     #[allow(dead_code)]
+    #[inline(never)]
     fn log_past_right_angle(c: f64, b: Bivector, k: f64) -> (Bivector, [f64; 2]) {
         let largest: f64 = b
             .e12

@@ -248,14 +248,16 @@ pub fn emit_log(plan: &Plan, form: ExpLogForm) -> TokenStream {
                 let p = Bivector { #(#p_fields: self.#p_fields),* };
                 let [x, root] = square_and_root(p);
                 // Past a right angle `P` is divided by its largest component first, so
-                // that a derivative near -1 is not the difference of two huge terms.
-                let (p, [weight, turn]) = if self.s < 0.0 && x < 0.0 {
-                    log_past_right_angle(self.s, p, 1.0)
+                // that a derivative near -1 is not the difference of two huge terms; the
+                // other branch is the code of before, unchanged.
+                if self.s < 0.0 && x < 0.0 {
+                    let (u, [w, _]) = log_past_right_angle(self.s, p, 1.0);
+                    Bivector { #(#p_fields: w * u.#p_fields),* }
                 } else {
-                    (p, log_weight(self.s, x, root, p == Bivector::ZERO))
-                };
-                #no_plane
-                Bivector { #(#terms),* }
+                    let [weight, turn] = log_weight(self.s, x, root, p == Bivector::ZERO);
+                    #no_plane
+                    Bivector { #(#terms),* }
+                }
             }
         }
         ExpLogForm::Channels => {
@@ -542,6 +544,7 @@ fn exp_weights(s: #s, t: #s) -> [#s; 4] {
 /// carries it. NaN where no real logarithm exists (`c < 0` with `P^2 >= 0` and
 /// `P` not zero).
 #[allow(dead_code)]
+#[inline]
 fn log_weight(c: #s, x: #s, m: #s, p_is_zero: bool) -> [#s; 2] {
     if p_is_zero && c < 0.0 {
         [1.0 / c, ::core::#s::consts::PI]
@@ -563,7 +566,10 @@ fn log_weight(c: #s, x: #s, m: #s, p_is_zero: bool) -> [#s; 2] {
 /// four-dimensional channel, whose angle is `sqrt 2` times the root of its
 /// square. Near -1 the plain `atan2(m, c) / m` times `B` differentiates to the
 /// difference of two terms of size `pi / m`, which loses everything to rounding.
+/// Out of line, so that `log`, inlined where it is called, stays as small as before
+/// on the path of a rotation below a right angle.
 #[allow(dead_code)]
+#[inline(never)]
 fn log_past_right_angle(c: #s, b: Bivector, k: #s) -> (Bivector, [#s; 2]) {
     let largest: #s = #largest_rotation;
     let u = #descaled;
