@@ -252,6 +252,17 @@ macro_rules! g3_rotor_benches {
                 batch1(&mut g, "table", &tr, |r| table.log(&r));
                 g.finish();
 
+                // The same rotors with the scalar part made non-negative (`-R` is the same
+                // rotation): the path most inputs take, apart from log's branch past a
+                // right angle.
+                let positive: Vec<[S; 4]> = r
+                    .iter()
+                    .map(|x| if x[0] < 0.0 { x.map(|c| -c) } else { *x })
+                    .collect();
+                let mut g = group(c, &format!("g3/log/{PRECISION}/batch-nonnegative-scalar"));
+                batch1(&mut g, "ga-core", &conv(&positive, ga::Even::from_array), |r| r.log());
+                g.finish();
+
                 // The next rotor is the input plus a small multiple of the last log.
                 let eps = LOG_FEEDBACK as S;
                 let mut g = group(c, &format!("g3/log/{PRECISION}/chain"));

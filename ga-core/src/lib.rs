@@ -58,6 +58,8 @@ pub mod libm {
 extern crate self as ga_core;
 
 mod scalar;
+#[doc(hidden)]
+pub use scalar::checked as __checked_scalar;
 pub use scalar::Scalar;
 
 /// num-dual, whose `Dual64` and `HyperDual64` implement [`Scalar`] (feature `dual`).

@@ -16,6 +16,11 @@ use core::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAss
 ///
 /// The constants are the `f64` values lifted (`EPSILON` is `f64::EPSILON` with zero
 /// derivative parts, and so on).
+#[diagnostic::on_unimplemented(
+    message = "`{Self}` is not a scalar type for `algebra!`: it does not implement `ga_core::Scalar`",
+    label = "`scalar:` takes f32, f64 or a type implementing `ga_core::Scalar`",
+    note = "ga-core implements it for num-dual's `Dual64` and `HyperDual64` (feature `dual`); see the documentation of `ga_core::Scalar`"
+)]
 pub trait Scalar:
     Copy
     + Debug
@@ -326,4 +331,30 @@ mod num_dual_impls {
 
     dual_scalar!(Dual64, dual, [eps]);
     dual_scalar!(HyperDual64, hyper, [eps1, eps2, eps1eps2]);
+}
+
+/// How `algebra!` names a generic scalar `S` (not API): its modules write
+/// `<[S; checked::<S>()] as Element>::Type`, which is `S` when `S: Scalar`. When it is not,
+/// the one error is the bound of [`checked`] at the user's `scalar:` token, and the array
+/// length, and with it the type, is an error that the compiler does not report again, where
+/// naming `S` itself gave one error per use (over a thousand for G3).
+#[doc(hidden)]
+pub mod checked {
+    use super::Scalar;
+
+    /// Zero, for a scalar type only: the length of the array that [`Element`] unwraps.
+    #[must_use]
+    pub const fn checked<S: Scalar>() -> usize {
+        0
+    }
+
+    /// The element type of an array.
+    pub trait Element {
+        /// The element type.
+        type Type;
+    }
+
+    impl<T, const N: usize> Element for [T; N] {
+        type Type = T;
+    }
 }

@@ -2262,7 +2262,7 @@ fn ga_cosh_sinhc(x: f32, r: f32) -> vec2<f32> {
 
 fn ga_log_weight(c: f32, x: f32, m: f32, p_is_zero: bool) -> vec3<f32> {
     if (p_is_zero && c < 0.0) {
-        return vec3<f32>(0.0, 3.141592653589793, 1.0);
+        return vec3<f32>(1.0 / c, 3.141592653589793, 1.0);
     } else if (x < 0.0) {
         return vec3<f32>(atan2(m, c) / m, 0.0, 1.0);
     } else if (c < 0.0) {
@@ -2296,11 +2296,18 @@ fn log_even(a: Even) -> Logarithm {
     }
     let p = Bivector(a.e12, a.e13, a.e23);
     let x = -((p.e12 * p.e12 + p.e13 * p.e13) + p.e23 * p.e23);
-    let w = ga_log_weight(a.s, x, sqrt(abs(x)), p.e12 == 0.0 && p.e13 == 0.0 && p.e23 == 0.0);
+    var w = ga_log_weight(a.s, x, sqrt(abs(x)), p.e12 == 0.0 && p.e13 == 0.0 && p.e23 == 0.0);
+    var d = p;
+    if (a.s < 0.0 && x < 0.0) {
+        let largest = max(max(abs(p.e12), abs(p.e13)), abs(p.e23));
+        d = Bivector(p.e12 / largest, p.e13 / largest, p.e23 / largest);
+        let root = 1.0 * sqrt(abs(-((d.e12 * d.e12 + d.e13 * d.e13) + d.e23 * d.e23)));
+        w = vec3<f32>(atan2(root * largest, a.s) / root, 0.0, 1.0);
+    }
     if (w.z == 0.0) {
         return Logarithm(Bivector(0.0, 0.0, 0.0), false);
     }
-    let log = Bivector(w.x * p.e12 + w.y, w.x * p.e13, w.x * p.e23);
+    let log = Bivector(w.x * d.e12 + w.y, w.x * d.e13, w.x * d.e23);
     if (!(abs(log.e12) <= 3.4e38 && abs(log.e13) <= 3.4e38 && abs(log.e23) <= 3.4e38)) {
         return Logarithm(Bivector(0.0, 0.0, 0.0), false);
     }

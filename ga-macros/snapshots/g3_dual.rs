@@ -5,18 +5,18 @@
 pub mod g3 {
     #[allow(unused_imports)]
     use ::ga_core::Scalar as _;
-    const _: fn() = || {
-        fn implements_ga_core_scalar<T: ::ga_core::Scalar>() {}
-        implements_ga_core_scalar::<::num_dual::Dual64>();
-    };
+    ///The scalar type, `::num_dual::Dual64`, as this module's items name it (through a check that it implements `ga_core::Scalar`, so that a type that does not gets one error).
+    pub type Scalar = <[::num_dual::Dual64; ::ga_core::__checked_scalar::checked::<
+        ::num_dual::Dual64,
+    >()] as ::ga_core::__checked_scalar::Element>::Type;
     /// The result of a product that is zero for every input (for example the outer
     /// product of two parallel grades that cannot fit); converts into every type.
     #[derive(Clone, Copy, Debug, PartialEq, Eq)]
     pub struct Zero;
     impl ::core::convert::From<Zero> for ::num_dual::Dual64 {
         #[inline]
-        fn from(_: Zero) -> ::num_dual::Dual64 {
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO
+        fn from(_: Zero) -> Scalar {
+            <Scalar as ::ga_core::Scalar>::ZERO
         }
     }
     /// The dimension of the grade-`r` subspace: the binomial coefficient C(n, r).
@@ -44,13 +44,13 @@ pub mod g3 {
     pub type Rotor = Even;
     impl ::core::convert::From<::num_dual::Dual64> for Even {
         #[inline]
-        fn from(value: ::num_dual::Dual64) -> Even {
+        fn from(value: Scalar) -> Even {
             Even { s: value, ..Even::ZERO }
         }
     }
     impl ::core::convert::From<::num_dual::Dual64> for Multivector {
         #[inline]
-        fn from(value: ::num_dual::Dual64) -> Multivector {
+        fn from(value: Scalar) -> Multivector {
             Multivector {
                 s: value,
                 ..Multivector::ZERO
@@ -62,51 +62,43 @@ pub mod g3 {
     #[allow(dead_code)]
     mod math {
         #[inline]
-        pub(super) fn sqrt(x: ::num_dual::Dual64) -> ::num_dual::Dual64 {
+        pub(super) fn sqrt(x: super::Scalar) -> super::Scalar {
             ::ga_core::Scalar::sqrt(x)
         }
         #[inline]
-        pub(super) fn sin(x: ::num_dual::Dual64) -> ::num_dual::Dual64 {
+        pub(super) fn sin(x: super::Scalar) -> super::Scalar {
             ::ga_core::Scalar::sin(x)
         }
         #[inline]
-        pub(super) fn cos(x: ::num_dual::Dual64) -> ::num_dual::Dual64 {
+        pub(super) fn cos(x: super::Scalar) -> super::Scalar {
             ::ga_core::Scalar::cos(x)
         }
         #[inline]
-        pub(super) fn cosh(x: ::num_dual::Dual64) -> ::num_dual::Dual64 {
+        pub(super) fn cosh(x: super::Scalar) -> super::Scalar {
             ::ga_core::Scalar::cosh(x)
         }
         #[inline]
-        pub(super) fn sinh(x: ::num_dual::Dual64) -> ::num_dual::Dual64 {
+        pub(super) fn sinh(x: super::Scalar) -> super::Scalar {
             ::ga_core::Scalar::sinh(x)
         }
         #[inline]
-        pub(super) fn asinh(x: ::num_dual::Dual64) -> ::num_dual::Dual64 {
+        pub(super) fn asinh(x: super::Scalar) -> super::Scalar {
             ::ga_core::Scalar::asinh(x)
         }
         #[inline]
-        pub(super) fn ln_1p(x: ::num_dual::Dual64) -> ::num_dual::Dual64 {
+        pub(super) fn ln_1p(x: super::Scalar) -> super::Scalar {
             ::ga_core::Scalar::ln_1p(x)
         }
         #[inline]
-        pub(super) fn sin_cos(
-            x: ::num_dual::Dual64,
-        ) -> (::num_dual::Dual64, ::num_dual::Dual64) {
+        pub(super) fn sin_cos(x: super::Scalar) -> (super::Scalar, super::Scalar) {
             ::ga_core::Scalar::sin_cos(x)
         }
         #[inline]
-        pub(super) fn atan2(
-            y: ::num_dual::Dual64,
-            x: ::num_dual::Dual64,
-        ) -> ::num_dual::Dual64 {
+        pub(super) fn atan2(y: super::Scalar, x: super::Scalar) -> super::Scalar {
             ::ga_core::Scalar::atan2(y, x)
         }
         #[inline]
-        pub(super) fn hypot(
-            x: ::num_dual::Dual64,
-            y: ::num_dual::Dual64,
-        ) -> ::num_dual::Dual64 {
+        pub(super) fn hypot(x: super::Scalar, y: super::Scalar) -> super::Scalar {
             ::ga_core::Scalar::hypot(x, y)
         }
     }
@@ -163,54 +155,50 @@ pub mod g3 {
     #[repr(C)]
     pub struct Vector {
         ///The `e1` component.
-        pub e1: ::num_dual::Dual64,
+        pub e1: Scalar,
         ///The `e2` component.
-        pub e2: ::num_dual::Dual64,
+        pub e2: Scalar,
         ///The `e3` component.
-        pub e3: ::num_dual::Dual64,
+        pub e3: Scalar,
     }
     impl Vector {
         /// The number of components.
         pub const LEN: usize = 3usize;
         /// All components zero.
         pub const ZERO: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
         );
         ///The basis blade `e1`.
         pub const E1: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ONE,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
         );
         ///The basis blade `e2`.
         pub const E2: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ONE,
+            <Scalar as ::ga_core::Scalar>::ZERO,
         );
         ///The basis blade `e3`.
         pub const E3: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ONE,
         );
         /// A value from its components in canonical order.
         #[inline]
         #[must_use]
         #[allow(clippy::too_many_arguments)]
-        pub const fn new(
-            e1: ::num_dual::Dual64,
-            e2: ::num_dual::Dual64,
-            e3: ::num_dual::Dual64,
-        ) -> Self {
+        pub const fn new(e1: Scalar, e2: Scalar, e3: Scalar) -> Self {
             Self { e1, e2, e3 }
         }
         /// A value from its components in canonical order.
         #[inline]
         #[must_use]
-        pub const fn from_array(components: [::num_dual::Dual64; 3usize]) -> Self {
+        pub const fn from_array(components: [Scalar; 3usize]) -> Self {
             Self {
                 e1: components[0usize],
                 e2: components[1usize],
@@ -220,7 +208,7 @@ pub mod g3 {
         /// The components in canonical order (grade first, then lexicographic).
         #[inline]
         #[must_use]
-        pub const fn to_array(self) -> [::num_dual::Dual64; 3usize] {
+        pub const fn to_array(self) -> [Scalar; 3usize] {
             [self.e1, self.e2, self.e3]
         }
     }
@@ -308,7 +296,7 @@ pub mod g3 {
         /// passes the square root of the largest float; `norm` does not.
         #[inline]
         #[must_use]
-        pub fn norm_squared(self) -> ::num_dual::Dual64 {
+        pub fn norm_squared(self) -> Scalar {
             (self.e1 * self.e1 + self.e2 * self.e2) + self.e3 * self.e3
         }
         /// `sqrt(|<A ~A>_0|)`, right to a few ulps for every finite `A` whose norm is
@@ -316,24 +304,18 @@ pub mod g3 {
         /// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
         #[inline]
         #[must_use]
-        pub fn norm(self) -> ::num_dual::Dual64 {
+        pub fn norm(self) -> Scalar {
             let squared = self.norm_squared().abs();
-            if squared >= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
-                && squared
-                    <= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
+            if squared >= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
+                && squared <= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
             {
                 return math::sqrt(squared);
             }
-            let largest: ::num_dual::Dual64 = self
-                .e1
-                .abs()
-                .max(self.e2.abs())
-                .max(self.e3.abs());
-            if !(largest > <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO
-                && largest < <::num_dual::Dual64 as ::ga_core::Scalar>::INFINITY)
+            let largest: Scalar = self.e1.abs().max(self.e2.abs()).max(self.e3.abs());
+            if !(largest > <Scalar as ::ga_core::Scalar>::ZERO
+                && largest < <Scalar as ::ga_core::Scalar>::INFINITY)
             {
-                return if largest == <::num_dual::Dual64 as ::ga_core::Scalar>::INFINITY
-                {
+                return if largest == <Scalar as ::ga_core::Scalar>::INFINITY {
                     largest
                 } else {
                     math::sqrt(squared)
@@ -353,26 +335,19 @@ pub mod g3 {
         #[must_use]
         pub fn normalized(self) -> Self {
             let squared = self.norm_squared().abs();
-            if squared >= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
-                && squared
-                    <= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
+            if squared >= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
+                && squared <= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
             {
-                return self
-                    * (<::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-                        / math::sqrt(squared));
+                return self * (<Scalar as ::ga_core::Scalar>::ONE / math::sqrt(squared));
             }
-            let largest: ::num_dual::Dual64 = self
-                .e1
-                .abs()
-                .max(self.e2.abs())
-                .max(self.e3.abs());
+            let largest: Scalar = self.e1.abs().max(self.e2.abs()).max(self.e3.abs());
             let descaled = Vector {
                 e1: self.e1 / largest,
                 e2: self.e2 / largest,
                 e3: self.e3 / largest,
             };
             descaled
-                * (<::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+                * (<Scalar as ::ga_core::Scalar>::ONE
                     / math::sqrt(descaled.norm_squared().abs()))
         }
         /// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
@@ -394,17 +369,16 @@ pub mod g3 {
         #[inline]
         #[must_use]
         pub fn inverse(self) -> Option<Vector> {
-            let denominator: ::num_dual::Dual64 = (self.e1 * self.e1 + self.e2 * self.e2)
+            let denominator: Scalar = (self.e1 * self.e1 + self.e2 * self.e2)
                 + self.e3 * self.e3;
             let inverse = if denominator.abs()
-                >= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
+                >= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
                 && denominator.abs()
-                    <= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
+                    <= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
             {
-                self.reverse()
-                    * (<::num_dual::Dual64 as ::ga_core::Scalar>::ONE / denominator)
+                self.reverse() * (<Scalar as ::ga_core::Scalar>::ONE / denominator)
             } else {
-                let largest: ::num_dual::Dual64 = self
+                let largest: Scalar = self
                     .e1
                     .abs()
                     .max(self.e2.abs())
@@ -414,11 +388,10 @@ pub mod g3 {
                     e2: self.e2 / largest,
                     e3: self.e3 / largest,
                 };
-                let denominator: ::num_dual::Dual64 = (descaled.e1 * descaled.e1
+                let denominator: Scalar = (descaled.e1 * descaled.e1
                     + descaled.e2 * descaled.e2) + descaled.e3 * descaled.e3;
                 descaled.reverse()
-                    * ((<::num_dual::Dual64 as ::ga_core::Scalar>::ONE / denominator)
-                        / largest)
+                    * ((<Scalar as ::ga_core::Scalar>::ONE / denominator) / largest)
             };
             if inverse.to_array().iter().all(|c| c.is_finite()) {
                 Some(inverse.into())
@@ -458,11 +431,8 @@ pub mod g3 {
             let largest = self
                 .to_array()
                 .iter()
-                .fold(
-                    <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                    |m, c| m.max(c.abs()),
-                );
-            if !(largest > <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO) {
+                .fold(<Scalar as ::ga_core::Scalar>::ZERO, |m, c| m.max(c.abs()));
+            if !(largest > <Scalar as ::ga_core::Scalar>::ZERO) {
                 return None;
             }
             let blade = Multivector::from(Vector {
@@ -471,25 +441,25 @@ pub mod g3 {
                 e3: self.e3 / largest,
             });
             let size = math::sqrt(
-                blade.to_array().iter().map(|c| c * c).sum::<::num_dual::Dual64>(),
+                blade.to_array().iter().map(|c| c * c).sum::<Scalar>(),
             );
             let mut rest = blade;
             let mut factors = [Vector::ZERO; 1usize];
             for slot in factors.iter_mut().take(1usize - 1) {
                 let inverse = mv_blade_inverse(rest)?;
                 let mut best = Vector::ZERO;
-                let mut best_size: ::num_dual::Dual64 = <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO;
+                let mut best_size: Scalar = <Scalar as ::ga_core::Scalar>::ZERO;
                 for basis in [
                     Vector {
-                        e1: <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
+                        e1: <Scalar as ::ga_core::Scalar>::ONE,
                         ..Vector::ZERO
                     },
                     Vector {
-                        e2: <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
+                        e2: <Scalar as ::ga_core::Scalar>::ONE,
                         ..Vector::ZERO
                     },
                     Vector {
-                        e3: <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
+                        e3: <Scalar as ::ga_core::Scalar>::ONE,
                         ..Vector::ZERO
                     },
                 ] {
@@ -528,18 +498,16 @@ pub mod g3 {
                 .iter()
                 .zip(blade.to_array())
                 .map(|(p, b)| (p - b) * (p - b))
-                .sum::<::num_dual::Dual64>();
+                .sum::<Scalar>();
             let error = math::sqrt(error);
             let scale = factors
                 .iter()
-                .map(|f| math::sqrt(
-                    f.to_array().iter().map(|c| c * c).sum::<::num_dual::Dual64>(),
-                ))
-                .product::<::num_dual::Dual64>()
+                .map(|f| math::sqrt(f.to_array().iter().map(|c| c * c).sum::<Scalar>()))
+                .product::<Scalar>()
                 .max(size);
             if error
-                <= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(1024.0)
-                    * <::num_dual::Dual64 as ::ga_core::Scalar>::EPSILON * scale
+                <= <Scalar as ::ga_core::Scalar>::from_f64(1024.0)
+                    * <Scalar as ::ga_core::Scalar>::EPSILON * scale
             {
                 factors[0] = factors[0] * largest;
                 Some(factors)
@@ -553,54 +521,50 @@ pub mod g3 {
     #[repr(C)]
     pub struct Bivector {
         ///The `e12` component.
-        pub e12: ::num_dual::Dual64,
+        pub e12: Scalar,
         ///The `e13` component.
-        pub e13: ::num_dual::Dual64,
+        pub e13: Scalar,
         ///The `e23` component.
-        pub e23: ::num_dual::Dual64,
+        pub e23: Scalar,
     }
     impl Bivector {
         /// The number of components.
         pub const LEN: usize = 3usize;
         /// All components zero.
         pub const ZERO: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
         );
         ///The basis blade `e12`.
         pub const E12: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ONE,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
         );
         ///The basis blade `e13`.
         pub const E13: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ONE,
+            <Scalar as ::ga_core::Scalar>::ZERO,
         );
         ///The basis blade `e23`.
         pub const E23: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ONE,
         );
         /// A value from its components in canonical order.
         #[inline]
         #[must_use]
         #[allow(clippy::too_many_arguments)]
-        pub const fn new(
-            e12: ::num_dual::Dual64,
-            e13: ::num_dual::Dual64,
-            e23: ::num_dual::Dual64,
-        ) -> Self {
+        pub const fn new(e12: Scalar, e13: Scalar, e23: Scalar) -> Self {
             Self { e12, e13, e23 }
         }
         /// A value from its components in canonical order.
         #[inline]
         #[must_use]
-        pub const fn from_array(components: [::num_dual::Dual64; 3usize]) -> Self {
+        pub const fn from_array(components: [Scalar; 3usize]) -> Self {
             Self {
                 e12: components[0usize],
                 e13: components[1usize],
@@ -610,7 +574,7 @@ pub mod g3 {
         /// The components in canonical order (grade first, then lexicographic).
         #[inline]
         #[must_use]
-        pub const fn to_array(self) -> [::num_dual::Dual64; 3usize] {
+        pub const fn to_array(self) -> [Scalar; 3usize] {
             [self.e12, self.e13, self.e23]
         }
     }
@@ -698,7 +662,7 @@ pub mod g3 {
         /// passes the square root of the largest float; `norm` does not.
         #[inline]
         #[must_use]
-        pub fn norm_squared(self) -> ::num_dual::Dual64 {
+        pub fn norm_squared(self) -> Scalar {
             (self.e12 * self.e12 + self.e13 * self.e13) + self.e23 * self.e23
         }
         /// `sqrt(|<A ~A>_0|)`, right to a few ulps for every finite `A` whose norm is
@@ -706,24 +670,18 @@ pub mod g3 {
         /// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
         #[inline]
         #[must_use]
-        pub fn norm(self) -> ::num_dual::Dual64 {
+        pub fn norm(self) -> Scalar {
             let squared = self.norm_squared().abs();
-            if squared >= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
-                && squared
-                    <= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
+            if squared >= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
+                && squared <= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
             {
                 return math::sqrt(squared);
             }
-            let largest: ::num_dual::Dual64 = self
-                .e12
-                .abs()
-                .max(self.e13.abs())
-                .max(self.e23.abs());
-            if !(largest > <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO
-                && largest < <::num_dual::Dual64 as ::ga_core::Scalar>::INFINITY)
+            let largest: Scalar = self.e12.abs().max(self.e13.abs()).max(self.e23.abs());
+            if !(largest > <Scalar as ::ga_core::Scalar>::ZERO
+                && largest < <Scalar as ::ga_core::Scalar>::INFINITY)
             {
-                return if largest == <::num_dual::Dual64 as ::ga_core::Scalar>::INFINITY
-                {
+                return if largest == <Scalar as ::ga_core::Scalar>::INFINITY {
                     largest
                 } else {
                     math::sqrt(squared)
@@ -743,26 +701,19 @@ pub mod g3 {
         #[must_use]
         pub fn normalized(self) -> Self {
             let squared = self.norm_squared().abs();
-            if squared >= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
-                && squared
-                    <= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
+            if squared >= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
+                && squared <= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
             {
-                return self
-                    * (<::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-                        / math::sqrt(squared));
+                return self * (<Scalar as ::ga_core::Scalar>::ONE / math::sqrt(squared));
             }
-            let largest: ::num_dual::Dual64 = self
-                .e12
-                .abs()
-                .max(self.e13.abs())
-                .max(self.e23.abs());
+            let largest: Scalar = self.e12.abs().max(self.e13.abs()).max(self.e23.abs());
             let descaled = Bivector {
                 e12: self.e12 / largest,
                 e13: self.e13 / largest,
                 e23: self.e23 / largest,
             };
             descaled
-                * (<::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+                * (<Scalar as ::ga_core::Scalar>::ONE
                     / math::sqrt(descaled.norm_squared().abs()))
         }
         /// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
@@ -784,17 +735,16 @@ pub mod g3 {
         #[inline]
         #[must_use]
         pub fn inverse(self) -> Option<Bivector> {
-            let denominator: ::num_dual::Dual64 = (self.e12 * self.e12
-                + self.e13 * self.e13) + self.e23 * self.e23;
+            let denominator: Scalar = (self.e12 * self.e12 + self.e13 * self.e13)
+                + self.e23 * self.e23;
             let inverse = if denominator.abs()
-                >= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
+                >= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
                 && denominator.abs()
-                    <= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
+                    <= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
             {
-                self.reverse()
-                    * (<::num_dual::Dual64 as ::ga_core::Scalar>::ONE / denominator)
+                self.reverse() * (<Scalar as ::ga_core::Scalar>::ONE / denominator)
             } else {
-                let largest: ::num_dual::Dual64 = self
+                let largest: Scalar = self
                     .e12
                     .abs()
                     .max(self.e13.abs())
@@ -804,11 +754,10 @@ pub mod g3 {
                     e13: self.e13 / largest,
                     e23: self.e23 / largest,
                 };
-                let denominator: ::num_dual::Dual64 = (descaled.e12 * descaled.e12
+                let denominator: Scalar = (descaled.e12 * descaled.e12
                     + descaled.e13 * descaled.e13) + descaled.e23 * descaled.e23;
                 descaled.reverse()
-                    * ((<::num_dual::Dual64 as ::ga_core::Scalar>::ONE / denominator)
-                        / largest)
+                    * ((<Scalar as ::ga_core::Scalar>::ONE / denominator) / largest)
             };
             if inverse.to_array().iter().all(|c| c.is_finite()) {
                 Some(inverse.into())
@@ -854,11 +803,8 @@ pub mod g3 {
             let largest = self
                 .to_array()
                 .iter()
-                .fold(
-                    <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                    |m, c| m.max(c.abs()),
-                );
-            if !(largest > <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO) {
+                .fold(<Scalar as ::ga_core::Scalar>::ZERO, |m, c| m.max(c.abs()));
+            if !(largest > <Scalar as ::ga_core::Scalar>::ZERO) {
                 return None;
             }
             let blade = Multivector::from(Bivector {
@@ -867,25 +813,25 @@ pub mod g3 {
                 e23: self.e23 / largest,
             });
             let size = math::sqrt(
-                blade.to_array().iter().map(|c| c * c).sum::<::num_dual::Dual64>(),
+                blade.to_array().iter().map(|c| c * c).sum::<Scalar>(),
             );
             let mut rest = blade;
             let mut factors = [Vector::ZERO; 2usize];
             for slot in factors.iter_mut().take(2usize - 1) {
                 let inverse = mv_blade_inverse(rest)?;
                 let mut best = Vector::ZERO;
-                let mut best_size: ::num_dual::Dual64 = <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO;
+                let mut best_size: Scalar = <Scalar as ::ga_core::Scalar>::ZERO;
                 for basis in [
                     Vector {
-                        e1: <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
+                        e1: <Scalar as ::ga_core::Scalar>::ONE,
                         ..Vector::ZERO
                     },
                     Vector {
-                        e2: <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
+                        e2: <Scalar as ::ga_core::Scalar>::ONE,
                         ..Vector::ZERO
                     },
                     Vector {
-                        e3: <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
+                        e3: <Scalar as ::ga_core::Scalar>::ONE,
                         ..Vector::ZERO
                     },
                 ] {
@@ -924,18 +870,16 @@ pub mod g3 {
                 .iter()
                 .zip(blade.to_array())
                 .map(|(p, b)| (p - b) * (p - b))
-                .sum::<::num_dual::Dual64>();
+                .sum::<Scalar>();
             let error = math::sqrt(error);
             let scale = factors
                 .iter()
-                .map(|f| math::sqrt(
-                    f.to_array().iter().map(|c| c * c).sum::<::num_dual::Dual64>(),
-                ))
-                .product::<::num_dual::Dual64>()
+                .map(|f| math::sqrt(f.to_array().iter().map(|c| c * c).sum::<Scalar>()))
+                .product::<Scalar>()
                 .max(size);
             if error
-                <= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(1024.0)
-                    * <::num_dual::Dual64 as ::ga_core::Scalar>::EPSILON * scale
+                <= <Scalar as ::ga_core::Scalar>::from_f64(1024.0)
+                    * <Scalar as ::ga_core::Scalar>::EPSILON * scale
             {
                 factors[0] = factors[0] * largest;
                 Some(factors)
@@ -949,34 +893,32 @@ pub mod g3 {
     #[repr(C)]
     pub struct Trivector {
         ///The `e123` component.
-        pub e123: ::num_dual::Dual64,
+        pub e123: Scalar,
     }
     impl Trivector {
         /// The number of components.
         pub const LEN: usize = 1usize;
         /// All components zero.
-        pub const ZERO: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-        );
+        pub const ZERO: Self = Self::new(<Scalar as ::ga_core::Scalar>::ZERO);
         ///The basis blade `e123`.
-        pub const E123: Self = Self::new(<::num_dual::Dual64 as ::ga_core::Scalar>::ONE);
+        pub const E123: Self = Self::new(<Scalar as ::ga_core::Scalar>::ONE);
         /// A value from its components in canonical order.
         #[inline]
         #[must_use]
         #[allow(clippy::too_many_arguments)]
-        pub const fn new(e123: ::num_dual::Dual64) -> Self {
+        pub const fn new(e123: Scalar) -> Self {
             Self { e123 }
         }
         /// A value from its components in canonical order.
         #[inline]
         #[must_use]
-        pub const fn from_array(components: [::num_dual::Dual64; 1usize]) -> Self {
+        pub const fn from_array(components: [Scalar; 1usize]) -> Self {
             Self { e123: components[0usize] }
         }
         /// The components in canonical order (grade first, then lexicographic).
         #[inline]
         #[must_use]
-        pub const fn to_array(self) -> [::num_dual::Dual64; 1usize] {
+        pub const fn to_array(self) -> [Scalar; 1usize] {
             [self.e123]
         }
     }
@@ -1026,13 +968,13 @@ pub mod g3 {
         ///The dual as the right complement: `e_A ^ e_A.dual() = e1..en` for every blade, independent of the metric (so it works for degenerate metrics).
         #[inline]
         #[must_use]
-        pub fn dual(self) -> ::num_dual::Dual64 {
+        pub fn dual(self) -> Scalar {
             self.e123
         }
         ///The inverse of `dual`.
         #[inline]
         #[must_use]
-        pub fn undual(self) -> ::num_dual::Dual64 {
+        pub fn undual(self) -> Scalar {
             self.e123
         }
         /// `<A ~A>_0`: the squared norm (negative or zero for some elements of
@@ -1040,7 +982,7 @@ pub mod g3 {
         /// passes the square root of the largest float; `norm` does not.
         #[inline]
         #[must_use]
-        pub fn norm_squared(self) -> ::num_dual::Dual64 {
+        pub fn norm_squared(self) -> Scalar {
             self.e123 * self.e123
         }
         /// `sqrt(|<A ~A>_0|)`, right to a few ulps for every finite `A` whose norm is
@@ -1048,20 +990,18 @@ pub mod g3 {
         /// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
         #[inline]
         #[must_use]
-        pub fn norm(self) -> ::num_dual::Dual64 {
+        pub fn norm(self) -> Scalar {
             let squared = self.norm_squared().abs();
-            if squared >= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
-                && squared
-                    <= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
+            if squared >= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
+                && squared <= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
             {
                 return math::sqrt(squared);
             }
-            let largest: ::num_dual::Dual64 = self.e123.abs();
-            if !(largest > <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO
-                && largest < <::num_dual::Dual64 as ::ga_core::Scalar>::INFINITY)
+            let largest: Scalar = self.e123.abs();
+            if !(largest > <Scalar as ::ga_core::Scalar>::ZERO
+                && largest < <Scalar as ::ga_core::Scalar>::INFINITY)
             {
-                return if largest == <::num_dual::Dual64 as ::ga_core::Scalar>::INFINITY
-                {
+                return if largest == <Scalar as ::ga_core::Scalar>::INFINITY {
                     largest
                 } else {
                     math::sqrt(squared)
@@ -1079,20 +1019,17 @@ pub mod g3 {
         #[must_use]
         pub fn normalized(self) -> Self {
             let squared = self.norm_squared().abs();
-            if squared >= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
-                && squared
-                    <= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
+            if squared >= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
+                && squared <= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
             {
-                return self
-                    * (<::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-                        / math::sqrt(squared));
+                return self * (<Scalar as ::ga_core::Scalar>::ONE / math::sqrt(squared));
             }
-            let largest: ::num_dual::Dual64 = self.e123.abs();
+            let largest: Scalar = self.e123.abs();
             let descaled = Trivector {
                 e123: self.e123 / largest,
             };
             descaled
-                * (<::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+                * (<Scalar as ::ga_core::Scalar>::ONE
                     / math::sqrt(descaled.norm_squared().abs()))
         }
         /// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
@@ -1114,23 +1051,21 @@ pub mod g3 {
         #[inline]
         #[must_use]
         pub fn inverse(self) -> Option<Trivector> {
-            let denominator: ::num_dual::Dual64 = self.e123 * self.e123;
+            let denominator: Scalar = self.e123 * self.e123;
             let inverse = if denominator.abs()
-                >= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
+                >= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
                 && denominator.abs()
-                    <= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
+                    <= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
             {
-                self.reverse()
-                    * (<::num_dual::Dual64 as ::ga_core::Scalar>::ONE / denominator)
+                self.reverse() * (<Scalar as ::ga_core::Scalar>::ONE / denominator)
             } else {
-                let largest: ::num_dual::Dual64 = self.e123.abs();
+                let largest: Scalar = self.e123.abs();
                 let descaled = Trivector {
                     e123: self.e123 / largest,
                 };
-                let denominator: ::num_dual::Dual64 = descaled.e123 * descaled.e123;
+                let denominator: Scalar = descaled.e123 * descaled.e123;
                 descaled.reverse()
-                    * ((<::num_dual::Dual64 as ::ga_core::Scalar>::ONE / denominator)
-                        / largest)
+                    * ((<Scalar as ::ga_core::Scalar>::ONE / denominator) / largest)
             };
             if inverse.to_array().iter().all(|c| c.is_finite()) {
                 Some(inverse.into())
@@ -1166,36 +1101,33 @@ pub mod g3 {
             let largest = self
                 .to_array()
                 .iter()
-                .fold(
-                    <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                    |m, c| m.max(c.abs()),
-                );
-            if !(largest > <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO) {
+                .fold(<Scalar as ::ga_core::Scalar>::ZERO, |m, c| m.max(c.abs()));
+            if !(largest > <Scalar as ::ga_core::Scalar>::ZERO) {
                 return None;
             }
             let blade = Multivector::from(Trivector {
                 e123: self.e123 / largest,
             });
             let size = math::sqrt(
-                blade.to_array().iter().map(|c| c * c).sum::<::num_dual::Dual64>(),
+                blade.to_array().iter().map(|c| c * c).sum::<Scalar>(),
             );
             let mut rest = blade;
             let mut factors = [Vector::ZERO; 3usize];
             for slot in factors.iter_mut().take(3usize - 1) {
                 let inverse = mv_blade_inverse(rest)?;
                 let mut best = Vector::ZERO;
-                let mut best_size: ::num_dual::Dual64 = <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO;
+                let mut best_size: Scalar = <Scalar as ::ga_core::Scalar>::ZERO;
                 for basis in [
                     Vector {
-                        e1: <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
+                        e1: <Scalar as ::ga_core::Scalar>::ONE,
                         ..Vector::ZERO
                     },
                     Vector {
-                        e2: <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
+                        e2: <Scalar as ::ga_core::Scalar>::ONE,
                         ..Vector::ZERO
                     },
                     Vector {
-                        e3: <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
+                        e3: <Scalar as ::ga_core::Scalar>::ONE,
                         ..Vector::ZERO
                     },
                 ] {
@@ -1234,18 +1166,16 @@ pub mod g3 {
                 .iter()
                 .zip(blade.to_array())
                 .map(|(p, b)| (p - b) * (p - b))
-                .sum::<::num_dual::Dual64>();
+                .sum::<Scalar>();
             let error = math::sqrt(error);
             let scale = factors
                 .iter()
-                .map(|f| math::sqrt(
-                    f.to_array().iter().map(|c| c * c).sum::<::num_dual::Dual64>(),
-                ))
-                .product::<::num_dual::Dual64>()
+                .map(|f| math::sqrt(f.to_array().iter().map(|c| c * c).sum::<Scalar>()))
+                .product::<Scalar>()
                 .max(size);
             if error
-                <= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(1024.0)
-                    * <::num_dual::Dual64 as ::ga_core::Scalar>::EPSILON * scale
+                <= <Scalar as ::ga_core::Scalar>::from_f64(1024.0)
+                    * <Scalar as ::ga_core::Scalar>::EPSILON * scale
             {
                 factors[0] = factors[0] * largest;
                 Some(factors)
@@ -1259,68 +1189,63 @@ pub mod g3 {
     #[repr(C)]
     pub struct Even {
         ///The `s` component.
-        pub s: ::num_dual::Dual64,
+        pub s: Scalar,
         ///The `e12` component.
-        pub e12: ::num_dual::Dual64,
+        pub e12: Scalar,
         ///The `e13` component.
-        pub e13: ::num_dual::Dual64,
+        pub e13: Scalar,
         ///The `e23` component.
-        pub e23: ::num_dual::Dual64,
+        pub e23: Scalar,
     }
     impl Even {
         /// The number of components.
         pub const LEN: usize = 4usize;
         /// All components zero.
         pub const ZERO: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
         );
         ///The basis blade `s`.
         pub const ONE: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ONE,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
         );
         ///The basis blade `e12`.
         pub const E12: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ONE,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
         );
         ///The basis blade `e13`.
         pub const E13: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ONE,
+            <Scalar as ::ga_core::Scalar>::ZERO,
         );
         ///The basis blade `e23`.
         pub const E23: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ONE,
         );
         /// A value from its components in canonical order.
         #[inline]
         #[must_use]
         #[allow(clippy::too_many_arguments)]
-        pub const fn new(
-            s: ::num_dual::Dual64,
-            e12: ::num_dual::Dual64,
-            e13: ::num_dual::Dual64,
-            e23: ::num_dual::Dual64,
-        ) -> Self {
+        pub const fn new(s: Scalar, e12: Scalar, e13: Scalar, e23: Scalar) -> Self {
             Self { s, e12, e13, e23 }
         }
         /// A value from its components in canonical order.
         #[inline]
         #[must_use]
-        pub const fn from_array(components: [::num_dual::Dual64; 4usize]) -> Self {
+        pub const fn from_array(components: [Scalar; 4usize]) -> Self {
             Self {
                 s: components[0usize],
                 e12: components[1usize],
@@ -1331,7 +1256,7 @@ pub mod g3 {
         /// The components in canonical order (grade first, then lexicographic).
         #[inline]
         #[must_use]
-        pub const fn to_array(self) -> [::num_dual::Dual64; 4usize] {
+        pub const fn to_array(self) -> [Scalar; 4usize] {
             [self.s, self.e12, self.e13, self.e23]
         }
     }
@@ -1414,7 +1339,7 @@ pub mod g3 {
         /// passes the square root of the largest float; `norm` does not.
         #[inline]
         #[must_use]
-        pub fn norm_squared(self) -> ::num_dual::Dual64 {
+        pub fn norm_squared(self) -> Scalar {
             (self.s * self.s + self.e12 * self.e12)
                 + (self.e13 * self.e13 + self.e23 * self.e23)
         }
@@ -1423,25 +1348,23 @@ pub mod g3 {
         /// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
         #[inline]
         #[must_use]
-        pub fn norm(self) -> ::num_dual::Dual64 {
+        pub fn norm(self) -> Scalar {
             let squared = self.norm_squared().abs();
-            if squared >= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
-                && squared
-                    <= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
+            if squared >= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
+                && squared <= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
             {
                 return math::sqrt(squared);
             }
-            let largest: ::num_dual::Dual64 = self
+            let largest: Scalar = self
                 .s
                 .abs()
                 .max(self.e12.abs())
                 .max(self.e13.abs())
                 .max(self.e23.abs());
-            if !(largest > <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO
-                && largest < <::num_dual::Dual64 as ::ga_core::Scalar>::INFINITY)
+            if !(largest > <Scalar as ::ga_core::Scalar>::ZERO
+                && largest < <Scalar as ::ga_core::Scalar>::INFINITY)
             {
-                return if largest == <::num_dual::Dual64 as ::ga_core::Scalar>::INFINITY
-                {
+                return if largest == <Scalar as ::ga_core::Scalar>::INFINITY {
                     largest
                 } else {
                     math::sqrt(squared)
@@ -1462,15 +1385,12 @@ pub mod g3 {
         #[must_use]
         pub fn normalized(self) -> Self {
             let squared = self.norm_squared().abs();
-            if squared >= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
-                && squared
-                    <= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
+            if squared >= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
+                && squared <= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
             {
-                return self
-                    * (<::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-                        / math::sqrt(squared));
+                return self * (<Scalar as ::ga_core::Scalar>::ONE / math::sqrt(squared));
             }
-            let largest: ::num_dual::Dual64 = self
+            let largest: Scalar = self
                 .s
                 .abs()
                 .max(self.e12.abs())
@@ -1483,7 +1403,7 @@ pub mod g3 {
                 e23: self.e23 / largest,
             };
             descaled
-                * (<::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+                * (<Scalar as ::ga_core::Scalar>::ONE
                     / math::sqrt(descaled.norm_squared().abs()))
         }
         /// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
@@ -1505,17 +1425,16 @@ pub mod g3 {
         #[inline]
         #[must_use]
         pub fn inverse(self) -> Option<Even> {
-            let denominator: ::num_dual::Dual64 = (self.s * self.s + self.e12 * self.e12)
+            let denominator: Scalar = (self.s * self.s + self.e12 * self.e12)
                 + (self.e13 * self.e13 + self.e23 * self.e23);
             let inverse = if denominator.abs()
-                >= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
+                >= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
                 && denominator.abs()
-                    <= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
+                    <= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
             {
-                self.reverse()
-                    * (<::num_dual::Dual64 as ::ga_core::Scalar>::ONE / denominator)
+                self.reverse() * (<Scalar as ::ga_core::Scalar>::ONE / denominator)
             } else {
-                let largest: ::num_dual::Dual64 = self
+                let largest: Scalar = self
                     .s
                     .abs()
                     .max(self.e12.abs())
@@ -1527,12 +1446,11 @@ pub mod g3 {
                     e13: self.e13 / largest,
                     e23: self.e23 / largest,
                 };
-                let denominator: ::num_dual::Dual64 = (descaled.s * descaled.s
+                let denominator: Scalar = (descaled.s * descaled.s
                     + descaled.e12 * descaled.e12)
                     + (descaled.e13 * descaled.e13 + descaled.e23 * descaled.e23);
                 descaled.reverse()
-                    * ((<::num_dual::Dual64 as ::ga_core::Scalar>::ONE / denominator)
-                        / largest)
+                    * ((<Scalar as ::ga_core::Scalar>::ONE / denominator) / largest)
             };
             if inverse.to_array().iter().all(|c| c.is_finite()) {
                 Some(inverse.into())
@@ -1543,7 +1461,7 @@ pub mod g3 {
         ///The grade-0 part <A>_0.
         #[inline]
         #[must_use]
-        pub fn grade0(self) -> ::num_dual::Dual64 {
+        pub fn grade0(self) -> Scalar {
             self.s
         }
         ///The grade-2 part <A>_2.
@@ -1571,68 +1489,63 @@ pub mod g3 {
     #[repr(C)]
     pub struct Odd {
         ///The `e1` component.
-        pub e1: ::num_dual::Dual64,
+        pub e1: Scalar,
         ///The `e2` component.
-        pub e2: ::num_dual::Dual64,
+        pub e2: Scalar,
         ///The `e3` component.
-        pub e3: ::num_dual::Dual64,
+        pub e3: Scalar,
         ///The `e123` component.
-        pub e123: ::num_dual::Dual64,
+        pub e123: Scalar,
     }
     impl Odd {
         /// The number of components.
         pub const LEN: usize = 4usize;
         /// All components zero.
         pub const ZERO: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
         );
         ///The basis blade `e1`.
         pub const E1: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ONE,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
         );
         ///The basis blade `e2`.
         pub const E2: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ONE,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
         );
         ///The basis blade `e3`.
         pub const E3: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ONE,
+            <Scalar as ::ga_core::Scalar>::ZERO,
         );
         ///The basis blade `e123`.
         pub const E123: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ONE,
         );
         /// A value from its components in canonical order.
         #[inline]
         #[must_use]
         #[allow(clippy::too_many_arguments)]
-        pub const fn new(
-            e1: ::num_dual::Dual64,
-            e2: ::num_dual::Dual64,
-            e3: ::num_dual::Dual64,
-            e123: ::num_dual::Dual64,
-        ) -> Self {
+        pub const fn new(e1: Scalar, e2: Scalar, e3: Scalar, e123: Scalar) -> Self {
             Self { e1, e2, e3, e123 }
         }
         /// A value from its components in canonical order.
         #[inline]
         #[must_use]
-        pub const fn from_array(components: [::num_dual::Dual64; 4usize]) -> Self {
+        pub const fn from_array(components: [Scalar; 4usize]) -> Self {
             Self {
                 e1: components[0usize],
                 e2: components[1usize],
@@ -1643,7 +1556,7 @@ pub mod g3 {
         /// The components in canonical order (grade first, then lexicographic).
         #[inline]
         #[must_use]
-        pub const fn to_array(self) -> [::num_dual::Dual64; 4usize] {
+        pub const fn to_array(self) -> [Scalar; 4usize] {
             [self.e1, self.e2, self.e3, self.e123]
         }
     }
@@ -1726,7 +1639,7 @@ pub mod g3 {
         /// passes the square root of the largest float; `norm` does not.
         #[inline]
         #[must_use]
-        pub fn norm_squared(self) -> ::num_dual::Dual64 {
+        pub fn norm_squared(self) -> Scalar {
             (self.e1 * self.e1 + self.e2 * self.e2)
                 + (self.e3 * self.e3 + self.e123 * self.e123)
         }
@@ -1735,25 +1648,23 @@ pub mod g3 {
         /// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
         #[inline]
         #[must_use]
-        pub fn norm(self) -> ::num_dual::Dual64 {
+        pub fn norm(self) -> Scalar {
             let squared = self.norm_squared().abs();
-            if squared >= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
-                && squared
-                    <= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
+            if squared >= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
+                && squared <= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
             {
                 return math::sqrt(squared);
             }
-            let largest: ::num_dual::Dual64 = self
+            let largest: Scalar = self
                 .e1
                 .abs()
                 .max(self.e2.abs())
                 .max(self.e3.abs())
                 .max(self.e123.abs());
-            if !(largest > <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO
-                && largest < <::num_dual::Dual64 as ::ga_core::Scalar>::INFINITY)
+            if !(largest > <Scalar as ::ga_core::Scalar>::ZERO
+                && largest < <Scalar as ::ga_core::Scalar>::INFINITY)
             {
-                return if largest == <::num_dual::Dual64 as ::ga_core::Scalar>::INFINITY
-                {
+                return if largest == <Scalar as ::ga_core::Scalar>::INFINITY {
                     largest
                 } else {
                     math::sqrt(squared)
@@ -1774,15 +1685,12 @@ pub mod g3 {
         #[must_use]
         pub fn normalized(self) -> Self {
             let squared = self.norm_squared().abs();
-            if squared >= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
-                && squared
-                    <= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
+            if squared >= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
+                && squared <= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
             {
-                return self
-                    * (<::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-                        / math::sqrt(squared));
+                return self * (<Scalar as ::ga_core::Scalar>::ONE / math::sqrt(squared));
             }
-            let largest: ::num_dual::Dual64 = self
+            let largest: Scalar = self
                 .e1
                 .abs()
                 .max(self.e2.abs())
@@ -1795,7 +1703,7 @@ pub mod g3 {
                 e123: self.e123 / largest,
             };
             descaled
-                * (<::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+                * (<Scalar as ::ga_core::Scalar>::ONE
                     / math::sqrt(descaled.norm_squared().abs()))
         }
         /// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
@@ -1817,17 +1725,16 @@ pub mod g3 {
         #[inline]
         #[must_use]
         pub fn inverse(self) -> Option<Odd> {
-            let denominator: ::num_dual::Dual64 = (self.e1 * self.e1 + self.e2 * self.e2)
+            let denominator: Scalar = (self.e1 * self.e1 + self.e2 * self.e2)
                 + (self.e3 * self.e3 + self.e123 * self.e123);
             let inverse = if denominator.abs()
-                >= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
+                >= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
                 && denominator.abs()
-                    <= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
+                    <= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
             {
-                self.reverse()
-                    * (<::num_dual::Dual64 as ::ga_core::Scalar>::ONE / denominator)
+                self.reverse() * (<Scalar as ::ga_core::Scalar>::ONE / denominator)
             } else {
-                let largest: ::num_dual::Dual64 = self
+                let largest: Scalar = self
                     .e1
                     .abs()
                     .max(self.e2.abs())
@@ -1839,12 +1746,11 @@ pub mod g3 {
                     e3: self.e3 / largest,
                     e123: self.e123 / largest,
                 };
-                let denominator: ::num_dual::Dual64 = (descaled.e1 * descaled.e1
+                let denominator: Scalar = (descaled.e1 * descaled.e1
                     + descaled.e2 * descaled.e2)
                     + (descaled.e3 * descaled.e3 + descaled.e123 * descaled.e123);
                 descaled.reverse()
-                    * ((<::num_dual::Dual64 as ::ga_core::Scalar>::ONE / denominator)
-                        / largest)
+                    * ((<Scalar as ::ga_core::Scalar>::ONE / denominator) / largest)
             };
             if inverse.to_array().iter().all(|c| c.is_finite()) {
                 Some(inverse.into())
@@ -1883,137 +1789,137 @@ pub mod g3 {
     #[repr(C)]
     pub struct Multivector {
         ///The `s` component.
-        pub s: ::num_dual::Dual64,
+        pub s: Scalar,
         ///The `e1` component.
-        pub e1: ::num_dual::Dual64,
+        pub e1: Scalar,
         ///The `e2` component.
-        pub e2: ::num_dual::Dual64,
+        pub e2: Scalar,
         ///The `e3` component.
-        pub e3: ::num_dual::Dual64,
+        pub e3: Scalar,
         ///The `e12` component.
-        pub e12: ::num_dual::Dual64,
+        pub e12: Scalar,
         ///The `e13` component.
-        pub e13: ::num_dual::Dual64,
+        pub e13: Scalar,
         ///The `e23` component.
-        pub e23: ::num_dual::Dual64,
+        pub e23: Scalar,
         ///The `e123` component.
-        pub e123: ::num_dual::Dual64,
+        pub e123: Scalar,
     }
     impl Multivector {
         /// The number of components.
         pub const LEN: usize = 8usize;
         /// All components zero.
         pub const ZERO: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
         );
         ///The basis blade `s`.
         pub const ONE: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ONE,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
         );
         ///The basis blade `e1`.
         pub const E1: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ONE,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
         );
         ///The basis blade `e2`.
         pub const E2: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ONE,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
         );
         ///The basis blade `e3`.
         pub const E3: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ONE,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
         );
         ///The basis blade `e12`.
         pub const E12: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ONE,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
         );
         ///The basis blade `e13`.
         pub const E13: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ONE,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
         );
         ///The basis blade `e23`.
         pub const E23: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ONE,
+            <Scalar as ::ga_core::Scalar>::ZERO,
         );
         ///The basis blade `e123`.
         pub const E123: Self = Self::new(
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ZERO,
+            <Scalar as ::ga_core::Scalar>::ONE,
         );
         /// A value from its components in canonical order.
         #[inline]
         #[must_use]
         #[allow(clippy::too_many_arguments)]
         pub const fn new(
-            s: ::num_dual::Dual64,
-            e1: ::num_dual::Dual64,
-            e2: ::num_dual::Dual64,
-            e3: ::num_dual::Dual64,
-            e12: ::num_dual::Dual64,
-            e13: ::num_dual::Dual64,
-            e23: ::num_dual::Dual64,
-            e123: ::num_dual::Dual64,
+            s: Scalar,
+            e1: Scalar,
+            e2: Scalar,
+            e3: Scalar,
+            e12: Scalar,
+            e13: Scalar,
+            e23: Scalar,
+            e123: Scalar,
         ) -> Self {
             Self {
                 s,
@@ -2029,7 +1935,7 @@ pub mod g3 {
         /// A value from its components in canonical order.
         #[inline]
         #[must_use]
-        pub const fn from_array(components: [::num_dual::Dual64; 8usize]) -> Self {
+        pub const fn from_array(components: [Scalar; 8usize]) -> Self {
             Self {
                 s: components[0usize],
                 e1: components[1usize],
@@ -2044,7 +1950,7 @@ pub mod g3 {
         /// The components in canonical order (grade first, then lexicographic).
         #[inline]
         #[must_use]
-        pub const fn to_array(self) -> [::num_dual::Dual64; 8usize] {
+        pub const fn to_array(self) -> [Scalar; 8usize] {
             [self.s, self.e1, self.e2, self.e3, self.e12, self.e13, self.e23, self.e123]
         }
     }
@@ -2135,7 +2041,7 @@ pub mod g3 {
         /// passes the square root of the largest float; `norm` does not.
         #[inline]
         #[must_use]
-        pub fn norm_squared(self) -> ::num_dual::Dual64 {
+        pub fn norm_squared(self) -> Scalar {
             ((self.s * self.s + self.e1 * self.e1)
                 + (self.e2 * self.e2 + self.e3 * self.e3))
                 + ((self.e12 * self.e12 + self.e13 * self.e13)
@@ -2146,15 +2052,14 @@ pub mod g3 {
         /// are first divided by the largest of them (as `hypot` and LAPACK's `nrm2` do).
         #[inline]
         #[must_use]
-        pub fn norm(self) -> ::num_dual::Dual64 {
+        pub fn norm(self) -> Scalar {
             let squared = self.norm_squared().abs();
-            if squared >= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
-                && squared
-                    <= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
+            if squared >= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
+                && squared <= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
             {
                 return math::sqrt(squared);
             }
-            let largest: ::num_dual::Dual64 = self
+            let largest: Scalar = self
                 .s
                 .abs()
                 .max(self.e1.abs())
@@ -2164,11 +2069,10 @@ pub mod g3 {
                 .max(self.e13.abs())
                 .max(self.e23.abs())
                 .max(self.e123.abs());
-            if !(largest > <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO
-                && largest < <::num_dual::Dual64 as ::ga_core::Scalar>::INFINITY)
+            if !(largest > <Scalar as ::ga_core::Scalar>::ZERO
+                && largest < <Scalar as ::ga_core::Scalar>::INFINITY)
             {
-                return if largest == <::num_dual::Dual64 as ::ga_core::Scalar>::INFINITY
-                {
+                return if largest == <Scalar as ::ga_core::Scalar>::INFINITY {
                     largest
                 } else {
                     math::sqrt(squared)
@@ -2193,15 +2097,12 @@ pub mod g3 {
         #[must_use]
         pub fn normalized(self) -> Self {
             let squared = self.norm_squared().abs();
-            if squared >= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
-                && squared
-                    <= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
+            if squared >= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
+                && squared <= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
             {
-                return self
-                    * (<::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-                        / math::sqrt(squared));
+                return self * (<Scalar as ::ga_core::Scalar>::ONE / math::sqrt(squared));
             }
-            let largest: ::num_dual::Dual64 = self
+            let largest: Scalar = self
                 .s
                 .abs()
                 .max(self.e1.abs())
@@ -2222,7 +2123,7 @@ pub mod g3 {
                 e123: self.e123 / largest,
             };
             descaled
-                * (<::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+                * (<Scalar as ::ga_core::Scalar>::ONE
                     / math::sqrt(descaled.norm_squared().abs()))
         }
         /// `self / self.norm()`, or `None` when the norm is zero (or the value null) or
@@ -2257,7 +2158,7 @@ pub mod g3 {
         ///The grade-0 part <A>_0.
         #[inline]
         #[must_use]
-        pub fn grade0(self) -> ::num_dual::Dual64 {
+        pub fn grade0(self) -> Scalar {
             self.s
         }
         ///The grade-1 part <A>_1.
@@ -2430,7 +2331,7 @@ pub mod g3 {
     impl ::core::ops::Mul<::num_dual::Dual64> for Vector {
         type Output = Vector;
         #[inline]
-        fn mul(self, rhs: ::num_dual::Dual64) -> Vector {
+        fn mul(self, rhs: Scalar) -> Vector {
             Vector {
                 e1: self.e1 * rhs,
                 e2: self.e2 * rhs,
@@ -2516,7 +2417,7 @@ pub mod g3 {
     impl ::core::ops::Mul<::num_dual::Dual64> for Bivector {
         type Output = Bivector;
         #[inline]
-        fn mul(self, rhs: ::num_dual::Dual64) -> Bivector {
+        fn mul(self, rhs: Scalar) -> Bivector {
             Bivector {
                 e12: self.e12 * rhs,
                 e13: self.e13 * rhs,
@@ -2602,7 +2503,7 @@ pub mod g3 {
     impl ::core::ops::Mul<::num_dual::Dual64> for Trivector {
         type Output = Trivector;
         #[inline]
-        fn mul(self, rhs: ::num_dual::Dual64) -> Trivector {
+        fn mul(self, rhs: Scalar) -> Trivector {
             Trivector { e123: self.e123 * rhs }
         }
     }
@@ -2629,9 +2530,9 @@ pub mod g3 {
         }
     }
     impl ::core::ops::Mul<Trivector> for Trivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn mul(self, rhs: Trivector) -> ::num_dual::Dual64 {
+        fn mul(self, rhs: Trivector) -> Scalar {
             -self.e123 * rhs.e123
         }
     }
@@ -2678,7 +2579,7 @@ pub mod g3 {
     impl ::core::ops::Mul<::num_dual::Dual64> for Even {
         type Output = Even;
         #[inline]
-        fn mul(self, rhs: ::num_dual::Dual64) -> Even {
+        fn mul(self, rhs: Scalar) -> Even {
             Even {
                 s: self.s * rhs,
                 e12: self.e12 * rhs,
@@ -2782,7 +2683,7 @@ pub mod g3 {
     impl ::core::ops::Mul<::num_dual::Dual64> for Odd {
         type Output = Odd;
         #[inline]
-        fn mul(self, rhs: ::num_dual::Dual64) -> Odd {
+        fn mul(self, rhs: Scalar) -> Odd {
             Odd {
                 e1: self.e1 * rhs,
                 e2: self.e2 * rhs,
@@ -2886,7 +2787,7 @@ pub mod g3 {
     impl ::core::ops::Mul<::num_dual::Dual64> for Multivector {
         type Output = Multivector;
         #[inline]
-        fn mul(self, rhs: ::num_dual::Dual64) -> Multivector {
+        fn mul(self, rhs: Scalar) -> Multivector {
             Multivector {
                 s: self.s * rhs,
                 e1: self.e1 * rhs,
@@ -3107,7 +3008,7 @@ pub mod g3 {
     impl ::core::ops::BitXor<::num_dual::Dual64> for Vector {
         type Output = Vector;
         #[inline]
-        fn bitxor(self, rhs: ::num_dual::Dual64) -> Vector {
+        fn bitxor(self, rhs: Scalar) -> Vector {
             Vector {
                 e1: self.e1 * rhs,
                 e2: self.e2 * rhs,
@@ -3171,7 +3072,7 @@ pub mod g3 {
         #[inline]
         fn bitxor(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                s: <Scalar as ::ga_core::Scalar>::ZERO,
                 e1: self.e1 * rhs.s,
                 e2: self.e2 * rhs.s,
                 e3: self.e3 * rhs.s,
@@ -3185,7 +3086,7 @@ pub mod g3 {
     impl ::core::ops::BitXor<::num_dual::Dual64> for Bivector {
         type Output = Bivector;
         #[inline]
-        fn bitxor(self, rhs: ::num_dual::Dual64) -> Bivector {
+        fn bitxor(self, rhs: Scalar) -> Bivector {
             Bivector {
                 e12: self.e12 * rhs,
                 e13: self.e13 * rhs,
@@ -3243,10 +3144,10 @@ pub mod g3 {
         #[inline]
         fn bitxor(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e1: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e2: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e3: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                s: <Scalar as ::ga_core::Scalar>::ZERO,
+                e1: <Scalar as ::ga_core::Scalar>::ZERO,
+                e2: <Scalar as ::ga_core::Scalar>::ZERO,
+                e3: <Scalar as ::ga_core::Scalar>::ZERO,
                 e12: self.e12 * rhs.s,
                 e13: self.e13 * rhs.s,
                 e23: self.e23 * rhs.s,
@@ -3257,7 +3158,7 @@ pub mod g3 {
     impl ::core::ops::BitXor<::num_dual::Dual64> for Trivector {
         type Output = Trivector;
         #[inline]
-        fn bitxor(self, rhs: ::num_dual::Dual64) -> Trivector {
+        fn bitxor(self, rhs: Scalar) -> Trivector {
             Trivector { e123: self.e123 * rhs }
         }
     }
@@ -3314,7 +3215,7 @@ pub mod g3 {
     impl ::core::ops::BitXor<::num_dual::Dual64> for Even {
         type Output = Even;
         #[inline]
-        fn bitxor(self, rhs: ::num_dual::Dual64) -> Even {
+        fn bitxor(self, rhs: Scalar) -> Even {
             Even {
                 s: self.s * rhs,
                 e12: self.e12 * rhs,
@@ -3400,7 +3301,7 @@ pub mod g3 {
     impl ::core::ops::BitXor<::num_dual::Dual64> for Odd {
         type Output = Odd;
         #[inline]
-        fn bitxor(self, rhs: ::num_dual::Dual64) -> Odd {
+        fn bitxor(self, rhs: Scalar) -> Odd {
             Odd {
                 e1: self.e1 * rhs,
                 e2: self.e2 * rhs,
@@ -3466,7 +3367,7 @@ pub mod g3 {
         #[inline]
         fn bitxor(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                s: <Scalar as ::ga_core::Scalar>::ZERO,
                 e1: self.e1 * rhs.s,
                 e2: self.e2 * rhs.s,
                 e3: self.e3 * rhs.s,
@@ -3481,7 +3382,7 @@ pub mod g3 {
     impl ::core::ops::BitXor<::num_dual::Dual64> for Multivector {
         type Output = Multivector;
         #[inline]
-        fn bitxor(self, rhs: ::num_dual::Dual64) -> Multivector {
+        fn bitxor(self, rhs: Scalar) -> Multivector {
             Multivector {
                 s: self.s * rhs,
                 e1: self.e1 * rhs,
@@ -3499,7 +3400,7 @@ pub mod g3 {
         #[inline]
         fn bitxor(self, rhs: Vector) -> Multivector {
             Multivector {
-                s: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                s: <Scalar as ::ga_core::Scalar>::ZERO,
                 e1: self.s * rhs.e1,
                 e2: self.s * rhs.e2,
                 e3: self.s * rhs.e3,
@@ -3515,10 +3416,10 @@ pub mod g3 {
         #[inline]
         fn bitxor(self, rhs: Bivector) -> Multivector {
             Multivector {
-                s: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e1: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e2: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e3: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                s: <Scalar as ::ga_core::Scalar>::ZERO,
+                e1: <Scalar as ::ga_core::Scalar>::ZERO,
+                e2: <Scalar as ::ga_core::Scalar>::ZERO,
+                e3: <Scalar as ::ga_core::Scalar>::ZERO,
                 e12: self.s * rhs.e12,
                 e13: self.s * rhs.e13,
                 e23: self.s * rhs.e23,
@@ -3557,7 +3458,7 @@ pub mod g3 {
         #[inline]
         fn bitxor(self, rhs: Odd) -> Multivector {
             Multivector {
-                s: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                s: <Scalar as ::ga_core::Scalar>::ZERO,
                 e1: self.s * rhs.e1,
                 e2: self.s * rhs.e2,
                 e3: self.s * rhs.e3,
@@ -3663,7 +3564,7 @@ pub mod g3 {
     impl ::core::ops::BitOr<::num_dual::Dual64> for Vector {
         type Output = Vector;
         #[inline]
-        fn bitor(self, rhs: ::num_dual::Dual64) -> Vector {
+        fn bitor(self, rhs: Scalar) -> Vector {
             Vector {
                 e1: self.e1 * rhs,
                 e2: self.e2 * rhs,
@@ -3672,9 +3573,9 @@ pub mod g3 {
         }
     }
     impl ::core::ops::BitOr<Vector> for Vector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn bitor(self, rhs: Vector) -> ::num_dual::Dual64 {
+        fn bitor(self, rhs: Vector) -> Scalar {
             (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3
         }
     }
@@ -3735,14 +3636,14 @@ pub mod g3 {
                 e12: self.e3 * rhs.e123,
                 e13: -self.e2 * rhs.e123,
                 e23: self.e1 * rhs.e123,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
     impl ::core::ops::BitOr<::num_dual::Dual64> for Bivector {
         type Output = Bivector;
         #[inline]
-        fn bitor(self, rhs: ::num_dual::Dual64) -> Bivector {
+        fn bitor(self, rhs: Scalar) -> Bivector {
             Bivector {
                 e12: self.e12 * rhs,
                 e13: self.e13 * rhs,
@@ -3762,9 +3663,9 @@ pub mod g3 {
         }
     }
     impl ::core::ops::BitOr<Bivector> for Bivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn bitor(self, rhs: Bivector) -> ::num_dual::Dual64 {
+        fn bitor(self, rhs: Bivector) -> Scalar {
             -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23)
         }
     }
@@ -3814,14 +3715,14 @@ pub mod g3 {
                 e12: self.e12 * rhs.s,
                 e13: self.e13 * rhs.s,
                 e23: self.e23 * rhs.s,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
     impl ::core::ops::BitOr<::num_dual::Dual64> for Trivector {
         type Output = Trivector;
         #[inline]
-        fn bitor(self, rhs: ::num_dual::Dual64) -> Trivector {
+        fn bitor(self, rhs: Scalar) -> Trivector {
             Trivector { e123: self.e123 * rhs }
         }
     }
@@ -3848,9 +3749,9 @@ pub mod g3 {
         }
     }
     impl ::core::ops::BitOr<Trivector> for Trivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn bitor(self, rhs: Trivector) -> ::num_dual::Dual64 {
+        fn bitor(self, rhs: Trivector) -> Scalar {
             -self.e123 * rhs.e123
         }
     }
@@ -3897,7 +3798,7 @@ pub mod g3 {
     impl ::core::ops::BitOr<::num_dual::Dual64> for Even {
         type Output = Even;
         #[inline]
-        fn bitor(self, rhs: ::num_dual::Dual64) -> Even {
+        fn bitor(self, rhs: Scalar) -> Even {
             Even {
                 s: self.s * rhs,
                 e12: self.e12 * rhs,
@@ -3992,7 +3893,7 @@ pub mod g3 {
     impl ::core::ops::BitOr<::num_dual::Dual64> for Odd {
         type Output = Odd;
         #[inline]
-        fn bitor(self, rhs: ::num_dual::Dual64) -> Odd {
+        fn bitor(self, rhs: Scalar) -> Odd {
             Odd {
                 e1: self.e1 * rhs,
                 e2: self.e2 * rhs,
@@ -4087,7 +3988,7 @@ pub mod g3 {
     impl ::core::ops::BitOr<::num_dual::Dual64> for Multivector {
         type Output = Multivector;
         #[inline]
-        fn bitor(self, rhs: ::num_dual::Dual64) -> Multivector {
+        fn bitor(self, rhs: Scalar) -> Multivector {
             Multivector {
                 s: self.s * rhs,
                 e1: self.e1 * rhs,
@@ -4112,7 +4013,7 @@ pub mod g3 {
                 e12: self.e123 * rhs.e3,
                 e13: -self.e123 * rhs.e2,
                 e23: self.e123 * rhs.e1,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
@@ -4128,7 +4029,7 @@ pub mod g3 {
                 e12: self.s * rhs.e12,
                 e13: self.s * rhs.e13,
                 e23: self.s * rhs.e23,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
@@ -4291,15 +4192,15 @@ pub mod g3 {
     impl LeftContraction<::num_dual::Dual64> for Vector {
         type Output = Zero;
         #[inline]
-        fn left_contraction(self, rhs: ::num_dual::Dual64) -> Zero {
+        fn left_contraction(self, rhs: Scalar) -> Zero {
             let _ = (self, rhs);
             Zero
         }
     }
     impl LeftContraction<Vector> for Vector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn left_contraction(self, rhs: Vector) -> ::num_dual::Dual64 {
+        fn left_contraction(self, rhs: Vector) -> Scalar {
             (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3
         }
     }
@@ -4360,14 +4261,14 @@ pub mod g3 {
                 e12: self.e3 * rhs.e123,
                 e13: -self.e2 * rhs.e123,
                 e23: self.e1 * rhs.e123,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
     impl LeftContraction<::num_dual::Dual64> for Bivector {
         type Output = Zero;
         #[inline]
-        fn left_contraction(self, rhs: ::num_dual::Dual64) -> Zero {
+        fn left_contraction(self, rhs: Scalar) -> Zero {
             let _ = (self, rhs);
             Zero
         }
@@ -4381,9 +4282,9 @@ pub mod g3 {
         }
     }
     impl LeftContraction<Bivector> for Bivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn left_contraction(self, rhs: Bivector) -> ::num_dual::Dual64 {
+        fn left_contraction(self, rhs: Bivector) -> Scalar {
             -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23)
         }
     }
@@ -4399,9 +4300,9 @@ pub mod g3 {
         }
     }
     impl LeftContraction<Even> for Bivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn left_contraction(self, rhs: Even) -> ::num_dual::Dual64 {
+        fn left_contraction(self, rhs: Even) -> Scalar {
             -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23)
         }
     }
@@ -4425,17 +4326,17 @@ pub mod g3 {
                 e1: -self.e23 * rhs.e123,
                 e2: self.e13 * rhs.e123,
                 e3: -self.e12 * rhs.e123,
-                e12: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e13: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e23: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e12: <Scalar as ::ga_core::Scalar>::ZERO,
+                e13: <Scalar as ::ga_core::Scalar>::ZERO,
+                e23: <Scalar as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
     impl LeftContraction<::num_dual::Dual64> for Trivector {
         type Output = Zero;
         #[inline]
-        fn left_contraction(self, rhs: ::num_dual::Dual64) -> Zero {
+        fn left_contraction(self, rhs: Scalar) -> Zero {
             let _ = (self, rhs);
             Zero
         }
@@ -4457,9 +4358,9 @@ pub mod g3 {
         }
     }
     impl LeftContraction<Trivector> for Trivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn left_contraction(self, rhs: Trivector) -> ::num_dual::Dual64 {
+        fn left_contraction(self, rhs: Trivector) -> Scalar {
             -self.e123 * rhs.e123
         }
     }
@@ -4472,23 +4373,23 @@ pub mod g3 {
         }
     }
     impl LeftContraction<Odd> for Trivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn left_contraction(self, rhs: Odd) -> ::num_dual::Dual64 {
+        fn left_contraction(self, rhs: Odd) -> Scalar {
             -self.e123 * rhs.e123
         }
     }
     impl LeftContraction<Multivector> for Trivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn left_contraction(self, rhs: Multivector) -> ::num_dual::Dual64 {
+        fn left_contraction(self, rhs: Multivector) -> Scalar {
             -self.e123 * rhs.e123
         }
     }
     impl LeftContraction<::num_dual::Dual64> for Even {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn left_contraction(self, rhs: ::num_dual::Dual64) -> ::num_dual::Dual64 {
+        fn left_contraction(self, rhs: Scalar) -> Scalar {
             self.s * rhs
         }
     }
@@ -4572,15 +4473,15 @@ pub mod g3 {
     impl LeftContraction<::num_dual::Dual64> for Odd {
         type Output = Zero;
         #[inline]
-        fn left_contraction(self, rhs: ::num_dual::Dual64) -> Zero {
+        fn left_contraction(self, rhs: Scalar) -> Zero {
             let _ = (self, rhs);
             Zero
         }
     }
     impl LeftContraction<Vector> for Odd {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn left_contraction(self, rhs: Vector) -> ::num_dual::Dual64 {
+        fn left_contraction(self, rhs: Vector) -> Scalar {
             (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3
         }
     }
@@ -4644,14 +4545,14 @@ pub mod g3 {
                 e12: self.e3 * rhs.e123,
                 e13: -self.e2 * rhs.e123,
                 e23: self.e1 * rhs.e123,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
     impl LeftContraction<::num_dual::Dual64> for Multivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn left_contraction(self, rhs: ::num_dual::Dual64) -> ::num_dual::Dual64 {
+        fn left_contraction(self, rhs: Scalar) -> Scalar {
             self.s * rhs
         }
     }
@@ -4664,10 +4565,10 @@ pub mod g3 {
                 e1: self.s * rhs.e1,
                 e2: self.s * rhs.e2,
                 e3: self.s * rhs.e3,
-                e12: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e13: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e23: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e12: <Scalar as ::ga_core::Scalar>::ZERO,
+                e13: <Scalar as ::ga_core::Scalar>::ZERO,
+                e23: <Scalar as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
@@ -4683,7 +4584,7 @@ pub mod g3 {
                 e12: self.s * rhs.e12,
                 e13: self.s * rhs.e13,
                 e23: self.s * rhs.e23,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
@@ -4716,7 +4617,7 @@ pub mod g3 {
                 e12: self.s * rhs.e12,
                 e13: self.s * rhs.e13,
                 e23: self.s * rhs.e23,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
@@ -4784,9 +4685,9 @@ pub mod g3 {
         }
     }
     impl RightContraction<Even> for ::num_dual::Dual64 {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn right_contraction(self, rhs: Even) -> ::num_dual::Dual64 {
+        fn right_contraction(self, rhs: Even) -> Scalar {
             self * rhs.s
         }
     }
@@ -4799,16 +4700,16 @@ pub mod g3 {
         }
     }
     impl RightContraction<Multivector> for ::num_dual::Dual64 {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn right_contraction(self, rhs: Multivector) -> ::num_dual::Dual64 {
+        fn right_contraction(self, rhs: Multivector) -> Scalar {
             self * rhs.s
         }
     }
     impl RightContraction<::num_dual::Dual64> for Vector {
         type Output = Vector;
         #[inline]
-        fn right_contraction(self, rhs: ::num_dual::Dual64) -> Vector {
+        fn right_contraction(self, rhs: Scalar) -> Vector {
             Vector {
                 e1: self.e1 * rhs,
                 e2: self.e2 * rhs,
@@ -4817,9 +4718,9 @@ pub mod g3 {
         }
     }
     impl RightContraction<Vector> for Vector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn right_contraction(self, rhs: Vector) -> ::num_dual::Dual64 {
+        fn right_contraction(self, rhs: Vector) -> Scalar {
             (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3
         }
     }
@@ -4851,9 +4752,9 @@ pub mod g3 {
         }
     }
     impl RightContraction<Odd> for Vector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn right_contraction(self, rhs: Odd) -> ::num_dual::Dual64 {
+        fn right_contraction(self, rhs: Odd) -> Scalar {
             (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3
         }
     }
@@ -4866,17 +4767,17 @@ pub mod g3 {
                 e1: self.e1 * rhs.s,
                 e2: self.e2 * rhs.s,
                 e3: self.e3 * rhs.s,
-                e12: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e13: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e23: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e12: <Scalar as ::ga_core::Scalar>::ZERO,
+                e13: <Scalar as ::ga_core::Scalar>::ZERO,
+                e23: <Scalar as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
     impl RightContraction<::num_dual::Dual64> for Bivector {
         type Output = Bivector;
         #[inline]
-        fn right_contraction(self, rhs: ::num_dual::Dual64) -> Bivector {
+        fn right_contraction(self, rhs: Scalar) -> Bivector {
             Bivector {
                 e12: self.e12 * rhs,
                 e13: self.e13 * rhs,
@@ -4896,9 +4797,9 @@ pub mod g3 {
         }
     }
     impl RightContraction<Bivector> for Bivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn right_contraction(self, rhs: Bivector) -> ::num_dual::Dual64 {
+        fn right_contraction(self, rhs: Bivector) -> Scalar {
             -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23)
         }
     }
@@ -4945,14 +4846,14 @@ pub mod g3 {
                 e12: self.e12 * rhs.s,
                 e13: self.e13 * rhs.s,
                 e23: self.e23 * rhs.s,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
     impl RightContraction<::num_dual::Dual64> for Trivector {
         type Output = Trivector;
         #[inline]
-        fn right_contraction(self, rhs: ::num_dual::Dual64) -> Trivector {
+        fn right_contraction(self, rhs: Scalar) -> Trivector {
             Trivector { e123: self.e123 * rhs }
         }
     }
@@ -4979,9 +4880,9 @@ pub mod g3 {
         }
     }
     impl RightContraction<Trivector> for Trivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn right_contraction(self, rhs: Trivector) -> ::num_dual::Dual64 {
+        fn right_contraction(self, rhs: Trivector) -> Scalar {
             -self.e123 * rhs.e123
         }
     }
@@ -5028,7 +4929,7 @@ pub mod g3 {
     impl RightContraction<::num_dual::Dual64> for Even {
         type Output = Even;
         #[inline]
-        fn right_contraction(self, rhs: ::num_dual::Dual64) -> Even {
+        fn right_contraction(self, rhs: Scalar) -> Even {
             Even {
                 s: self.s * rhs,
                 e12: self.e12 * rhs,
@@ -5049,9 +4950,9 @@ pub mod g3 {
         }
     }
     impl RightContraction<Bivector> for Even {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn right_contraction(self, rhs: Bivector) -> ::num_dual::Dual64 {
+        fn right_contraction(self, rhs: Bivector) -> Scalar {
             -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23)
         }
     }
@@ -5100,14 +5001,14 @@ pub mod g3 {
                 e12: self.e12 * rhs.s,
                 e13: self.e13 * rhs.s,
                 e23: self.e23 * rhs.s,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
     impl RightContraction<::num_dual::Dual64> for Odd {
         type Output = Odd;
         #[inline]
-        fn right_contraction(self, rhs: ::num_dual::Dual64) -> Odd {
+        fn right_contraction(self, rhs: Scalar) -> Odd {
             Odd {
                 e1: self.e1 * rhs,
                 e2: self.e2 * rhs,
@@ -5140,9 +5041,9 @@ pub mod g3 {
         }
     }
     impl RightContraction<Trivector> for Odd {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn right_contraction(self, rhs: Trivector) -> ::num_dual::Dual64 {
+        fn right_contraction(self, rhs: Trivector) -> Scalar {
             -self.e123 * rhs.e123
         }
     }
@@ -5191,7 +5092,7 @@ pub mod g3 {
     impl RightContraction<::num_dual::Dual64> for Multivector {
         type Output = Multivector;
         #[inline]
-        fn right_contraction(self, rhs: ::num_dual::Dual64) -> Multivector {
+        fn right_contraction(self, rhs: Scalar) -> Multivector {
             Multivector {
                 s: self.s * rhs,
                 e1: self.e1 * rhs,
@@ -5216,7 +5117,7 @@ pub mod g3 {
                 e12: self.e123 * rhs.e3,
                 e13: -self.e123 * rhs.e2,
                 e23: self.e123 * rhs.e1,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
@@ -5229,17 +5130,17 @@ pub mod g3 {
                 e1: -self.e123 * rhs.e23,
                 e2: self.e123 * rhs.e13,
                 e3: -self.e123 * rhs.e12,
-                e12: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e13: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e23: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e12: <Scalar as ::ga_core::Scalar>::ZERO,
+                e13: <Scalar as ::ga_core::Scalar>::ZERO,
+                e23: <Scalar as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
     impl RightContraction<Trivector> for Multivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn right_contraction(self, rhs: Trivector) -> ::num_dual::Dual64 {
+        fn right_contraction(self, rhs: Trivector) -> Scalar {
             -self.e123 * rhs.e123
         }
     }
@@ -5273,7 +5174,7 @@ pub mod g3 {
                 e12: self.e123 * rhs.e3,
                 e13: -self.e123 * rhs.e2,
                 e23: self.e123 * rhs.e1,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
@@ -5324,9 +5225,9 @@ pub mod g3 {
         }
     }
     impl ScalarProduct<Even> for ::num_dual::Dual64 {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn scalar_product(self, rhs: Even) -> ::num_dual::Dual64 {
+        fn scalar_product(self, rhs: Even) -> Scalar {
             self * rhs.s
         }
     }
@@ -5339,24 +5240,24 @@ pub mod g3 {
         }
     }
     impl ScalarProduct<Multivector> for ::num_dual::Dual64 {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn scalar_product(self, rhs: Multivector) -> ::num_dual::Dual64 {
+        fn scalar_product(self, rhs: Multivector) -> Scalar {
             self * rhs.s
         }
     }
     impl ScalarProduct<::num_dual::Dual64> for Vector {
         type Output = Zero;
         #[inline]
-        fn scalar_product(self, rhs: ::num_dual::Dual64) -> Zero {
+        fn scalar_product(self, rhs: Scalar) -> Zero {
             let _ = (self, rhs);
             Zero
         }
     }
     impl ScalarProduct<Vector> for Vector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn scalar_product(self, rhs: Vector) -> ::num_dual::Dual64 {
+        fn scalar_product(self, rhs: Vector) -> Scalar {
             (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3
         }
     }
@@ -5385,23 +5286,23 @@ pub mod g3 {
         }
     }
     impl ScalarProduct<Odd> for Vector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn scalar_product(self, rhs: Odd) -> ::num_dual::Dual64 {
+        fn scalar_product(self, rhs: Odd) -> Scalar {
             (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3
         }
     }
     impl ScalarProduct<Multivector> for Vector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn scalar_product(self, rhs: Multivector) -> ::num_dual::Dual64 {
+        fn scalar_product(self, rhs: Multivector) -> Scalar {
             (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3
         }
     }
     impl ScalarProduct<::num_dual::Dual64> for Bivector {
         type Output = Zero;
         #[inline]
-        fn scalar_product(self, rhs: ::num_dual::Dual64) -> Zero {
+        fn scalar_product(self, rhs: Scalar) -> Zero {
             let _ = (self, rhs);
             Zero
         }
@@ -5415,9 +5316,9 @@ pub mod g3 {
         }
     }
     impl ScalarProduct<Bivector> for Bivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn scalar_product(self, rhs: Bivector) -> ::num_dual::Dual64 {
+        fn scalar_product(self, rhs: Bivector) -> Scalar {
             -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23)
         }
     }
@@ -5430,9 +5331,9 @@ pub mod g3 {
         }
     }
     impl ScalarProduct<Even> for Bivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn scalar_product(self, rhs: Even) -> ::num_dual::Dual64 {
+        fn scalar_product(self, rhs: Even) -> Scalar {
             -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23)
         }
     }
@@ -5445,16 +5346,16 @@ pub mod g3 {
         }
     }
     impl ScalarProduct<Multivector> for Bivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn scalar_product(self, rhs: Multivector) -> ::num_dual::Dual64 {
+        fn scalar_product(self, rhs: Multivector) -> Scalar {
             -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23)
         }
     }
     impl ScalarProduct<::num_dual::Dual64> for Trivector {
         type Output = Zero;
         #[inline]
-        fn scalar_product(self, rhs: ::num_dual::Dual64) -> Zero {
+        fn scalar_product(self, rhs: Scalar) -> Zero {
             let _ = (self, rhs);
             Zero
         }
@@ -5476,9 +5377,9 @@ pub mod g3 {
         }
     }
     impl ScalarProduct<Trivector> for Trivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn scalar_product(self, rhs: Trivector) -> ::num_dual::Dual64 {
+        fn scalar_product(self, rhs: Trivector) -> Scalar {
             -self.e123 * rhs.e123
         }
     }
@@ -5491,23 +5392,23 @@ pub mod g3 {
         }
     }
     impl ScalarProduct<Odd> for Trivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn scalar_product(self, rhs: Odd) -> ::num_dual::Dual64 {
+        fn scalar_product(self, rhs: Odd) -> Scalar {
             -self.e123 * rhs.e123
         }
     }
     impl ScalarProduct<Multivector> for Trivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn scalar_product(self, rhs: Multivector) -> ::num_dual::Dual64 {
+        fn scalar_product(self, rhs: Multivector) -> Scalar {
             -self.e123 * rhs.e123
         }
     }
     impl ScalarProduct<::num_dual::Dual64> for Even {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn scalar_product(self, rhs: ::num_dual::Dual64) -> ::num_dual::Dual64 {
+        fn scalar_product(self, rhs: Scalar) -> Scalar {
             self.s * rhs
         }
     }
@@ -5520,9 +5421,9 @@ pub mod g3 {
         }
     }
     impl ScalarProduct<Bivector> for Even {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn scalar_product(self, rhs: Bivector) -> ::num_dual::Dual64 {
+        fn scalar_product(self, rhs: Bivector) -> Scalar {
             -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23)
         }
     }
@@ -5535,9 +5436,9 @@ pub mod g3 {
         }
     }
     impl ScalarProduct<Even> for Even {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn scalar_product(self, rhs: Even) -> ::num_dual::Dual64 {
+        fn scalar_product(self, rhs: Even) -> Scalar {
             (self.s * rhs.s - self.e12 * rhs.e12)
                 - (self.e13 * rhs.e13 + self.e23 * rhs.e23)
         }
@@ -5551,9 +5452,9 @@ pub mod g3 {
         }
     }
     impl ScalarProduct<Multivector> for Even {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn scalar_product(self, rhs: Multivector) -> ::num_dual::Dual64 {
+        fn scalar_product(self, rhs: Multivector) -> Scalar {
             (self.s * rhs.s - self.e12 * rhs.e12)
                 - (self.e13 * rhs.e13 + self.e23 * rhs.e23)
         }
@@ -5561,15 +5462,15 @@ pub mod g3 {
     impl ScalarProduct<::num_dual::Dual64> for Odd {
         type Output = Zero;
         #[inline]
-        fn scalar_product(self, rhs: ::num_dual::Dual64) -> Zero {
+        fn scalar_product(self, rhs: Scalar) -> Zero {
             let _ = (self, rhs);
             Zero
         }
     }
     impl ScalarProduct<Vector> for Odd {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn scalar_product(self, rhs: Vector) -> ::num_dual::Dual64 {
+        fn scalar_product(self, rhs: Vector) -> Scalar {
             (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3
         }
     }
@@ -5582,9 +5483,9 @@ pub mod g3 {
         }
     }
     impl ScalarProduct<Trivector> for Odd {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn scalar_product(self, rhs: Trivector) -> ::num_dual::Dual64 {
+        fn scalar_product(self, rhs: Trivector) -> Scalar {
             -self.e123 * rhs.e123
         }
     }
@@ -5597,69 +5498,69 @@ pub mod g3 {
         }
     }
     impl ScalarProduct<Odd> for Odd {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn scalar_product(self, rhs: Odd) -> ::num_dual::Dual64 {
+        fn scalar_product(self, rhs: Odd) -> Scalar {
             (self.e1 * rhs.e1 + self.e2 * rhs.e2)
                 + (self.e3 * rhs.e3 - self.e123 * rhs.e123)
         }
     }
     impl ScalarProduct<Multivector> for Odd {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn scalar_product(self, rhs: Multivector) -> ::num_dual::Dual64 {
+        fn scalar_product(self, rhs: Multivector) -> Scalar {
             (self.e1 * rhs.e1 + self.e2 * rhs.e2)
                 + (self.e3 * rhs.e3 - self.e123 * rhs.e123)
         }
     }
     impl ScalarProduct<::num_dual::Dual64> for Multivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn scalar_product(self, rhs: ::num_dual::Dual64) -> ::num_dual::Dual64 {
+        fn scalar_product(self, rhs: Scalar) -> Scalar {
             self.s * rhs
         }
     }
     impl ScalarProduct<Vector> for Multivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn scalar_product(self, rhs: Vector) -> ::num_dual::Dual64 {
+        fn scalar_product(self, rhs: Vector) -> Scalar {
             (self.e1 * rhs.e1 + self.e2 * rhs.e2) + self.e3 * rhs.e3
         }
     }
     impl ScalarProduct<Bivector> for Multivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn scalar_product(self, rhs: Bivector) -> ::num_dual::Dual64 {
+        fn scalar_product(self, rhs: Bivector) -> Scalar {
             -((self.e12 * rhs.e12 + self.e13 * rhs.e13) + self.e23 * rhs.e23)
         }
     }
     impl ScalarProduct<Trivector> for Multivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn scalar_product(self, rhs: Trivector) -> ::num_dual::Dual64 {
+        fn scalar_product(self, rhs: Trivector) -> Scalar {
             -self.e123 * rhs.e123
         }
     }
     impl ScalarProduct<Even> for Multivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn scalar_product(self, rhs: Even) -> ::num_dual::Dual64 {
+        fn scalar_product(self, rhs: Even) -> Scalar {
             (self.s * rhs.s - self.e12 * rhs.e12)
                 - (self.e13 * rhs.e13 + self.e23 * rhs.e23)
         }
     }
     impl ScalarProduct<Odd> for Multivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn scalar_product(self, rhs: Odd) -> ::num_dual::Dual64 {
+        fn scalar_product(self, rhs: Odd) -> Scalar {
             (self.e1 * rhs.e1 + self.e2 * rhs.e2)
                 + (self.e3 * rhs.e3 - self.e123 * rhs.e123)
         }
     }
     impl ScalarProduct<Multivector> for Multivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn scalar_product(self, rhs: Multivector) -> ::num_dual::Dual64 {
+        fn scalar_product(self, rhs: Multivector) -> Scalar {
             ((self.s * rhs.s + self.e1 * rhs.e1) + (self.e2 * rhs.e2 + self.e3 * rhs.e3))
                 - ((self.e12 * rhs.e12 + self.e13 * rhs.e13)
                     + (self.e23 * rhs.e23 + self.e123 * rhs.e123))
@@ -5716,7 +5617,7 @@ pub mod g3 {
     impl Commutator<::num_dual::Dual64> for Vector {
         type Output = Zero;
         #[inline]
-        fn commutator(self, rhs: ::num_dual::Dual64) -> Zero {
+        fn commutator(self, rhs: Scalar) -> Zero {
             let _ = (self, rhs);
             Zero
         }
@@ -5778,21 +5679,21 @@ pub mod g3 {
         #[inline]
         fn commutator(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                s: <Scalar as ::ga_core::Scalar>::ZERO,
                 e1: -(self.e2 * rhs.e12 + self.e3 * rhs.e13),
                 e2: self.e1 * rhs.e12 - self.e3 * rhs.e23,
                 e3: self.e1 * rhs.e13 + self.e2 * rhs.e23,
                 e12: self.e1 * rhs.e2 - self.e2 * rhs.e1,
                 e13: self.e1 * rhs.e3 - self.e3 * rhs.e1,
                 e23: self.e2 * rhs.e3 - self.e3 * rhs.e2,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
     impl Commutator<::num_dual::Dual64> for Bivector {
         type Output = Zero;
         #[inline]
-        fn commutator(self, rhs: ::num_dual::Dual64) -> Zero {
+        fn commutator(self, rhs: Scalar) -> Zero {
             let _ = (self, rhs);
             Zero
         }
@@ -5854,21 +5755,21 @@ pub mod g3 {
         #[inline]
         fn commutator(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                s: <Scalar as ::ga_core::Scalar>::ZERO,
                 e1: self.e12 * rhs.e2 + self.e13 * rhs.e3,
                 e2: self.e23 * rhs.e3 - self.e12 * rhs.e1,
                 e3: -(self.e13 * rhs.e1 + self.e23 * rhs.e2),
                 e12: self.e23 * rhs.e13 - self.e13 * rhs.e23,
                 e13: self.e12 * rhs.e23 - self.e23 * rhs.e12,
                 e23: self.e13 * rhs.e12 - self.e12 * rhs.e13,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
     impl Commutator<::num_dual::Dual64> for Trivector {
         type Output = Zero;
         #[inline]
-        fn commutator(self, rhs: ::num_dual::Dual64) -> Zero {
+        fn commutator(self, rhs: Scalar) -> Zero {
             let _ = (self, rhs);
             Zero
         }
@@ -5924,7 +5825,7 @@ pub mod g3 {
     impl Commutator<::num_dual::Dual64> for Even {
         type Output = Zero;
         #[inline]
-        fn commutator(self, rhs: ::num_dual::Dual64) -> Zero {
+        fn commutator(self, rhs: Scalar) -> Zero {
             let _ = (self, rhs);
             Zero
         }
@@ -5986,21 +5887,21 @@ pub mod g3 {
         #[inline]
         fn commutator(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                s: <Scalar as ::ga_core::Scalar>::ZERO,
                 e1: self.e12 * rhs.e2 + self.e13 * rhs.e3,
                 e2: self.e23 * rhs.e3 - self.e12 * rhs.e1,
                 e3: -(self.e13 * rhs.e1 + self.e23 * rhs.e2),
                 e12: self.e23 * rhs.e13 - self.e13 * rhs.e23,
                 e13: self.e12 * rhs.e23 - self.e23 * rhs.e12,
                 e23: self.e13 * rhs.e12 - self.e12 * rhs.e13,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
     impl Commutator<::num_dual::Dual64> for Odd {
         type Output = Zero;
         #[inline]
-        fn commutator(self, rhs: ::num_dual::Dual64) -> Zero {
+        fn commutator(self, rhs: Scalar) -> Zero {
             let _ = (self, rhs);
             Zero
         }
@@ -6062,21 +5963,21 @@ pub mod g3 {
         #[inline]
         fn commutator(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                s: <Scalar as ::ga_core::Scalar>::ZERO,
                 e1: -(self.e2 * rhs.e12 + self.e3 * rhs.e13),
                 e2: self.e1 * rhs.e12 - self.e3 * rhs.e23,
                 e3: self.e1 * rhs.e13 + self.e2 * rhs.e23,
                 e12: self.e1 * rhs.e2 - self.e2 * rhs.e1,
                 e13: self.e1 * rhs.e3 - self.e3 * rhs.e1,
                 e23: self.e2 * rhs.e3 - self.e3 * rhs.e2,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
     impl Commutator<::num_dual::Dual64> for Multivector {
         type Output = Zero;
         #[inline]
-        fn commutator(self, rhs: ::num_dual::Dual64) -> Zero {
+        fn commutator(self, rhs: Scalar) -> Zero {
             let _ = (self, rhs);
             Zero
         }
@@ -6086,14 +5987,14 @@ pub mod g3 {
         #[inline]
         fn commutator(self, rhs: Vector) -> Multivector {
             Multivector {
-                s: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                s: <Scalar as ::ga_core::Scalar>::ZERO,
                 e1: self.e12 * rhs.e2 + self.e13 * rhs.e3,
                 e2: self.e23 * rhs.e3 - self.e12 * rhs.e1,
                 e3: -(self.e13 * rhs.e1 + self.e23 * rhs.e2),
                 e12: self.e1 * rhs.e2 - self.e2 * rhs.e1,
                 e13: self.e1 * rhs.e3 - self.e3 * rhs.e1,
                 e23: self.e2 * rhs.e3 - self.e3 * rhs.e2,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
@@ -6102,14 +6003,14 @@ pub mod g3 {
         #[inline]
         fn commutator(self, rhs: Bivector) -> Multivector {
             Multivector {
-                s: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                s: <Scalar as ::ga_core::Scalar>::ZERO,
                 e1: -(self.e2 * rhs.e12 + self.e3 * rhs.e13),
                 e2: self.e1 * rhs.e12 - self.e3 * rhs.e23,
                 e3: self.e1 * rhs.e13 + self.e2 * rhs.e23,
                 e12: self.e23 * rhs.e13 - self.e13 * rhs.e23,
                 e13: self.e12 * rhs.e23 - self.e23 * rhs.e12,
                 e23: self.e13 * rhs.e12 - self.e12 * rhs.e13,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
@@ -6126,14 +6027,14 @@ pub mod g3 {
         #[inline]
         fn commutator(self, rhs: Even) -> Multivector {
             Multivector {
-                s: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                s: <Scalar as ::ga_core::Scalar>::ZERO,
                 e1: -(self.e2 * rhs.e12 + self.e3 * rhs.e13),
                 e2: self.e1 * rhs.e12 - self.e3 * rhs.e23,
                 e3: self.e1 * rhs.e13 + self.e2 * rhs.e23,
                 e12: self.e23 * rhs.e13 - self.e13 * rhs.e23,
                 e13: self.e12 * rhs.e23 - self.e23 * rhs.e12,
                 e23: self.e13 * rhs.e12 - self.e12 * rhs.e13,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
@@ -6142,14 +6043,14 @@ pub mod g3 {
         #[inline]
         fn commutator(self, rhs: Odd) -> Multivector {
             Multivector {
-                s: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                s: <Scalar as ::ga_core::Scalar>::ZERO,
                 e1: self.e12 * rhs.e2 + self.e13 * rhs.e3,
                 e2: self.e23 * rhs.e3 - self.e12 * rhs.e1,
                 e3: -(self.e13 * rhs.e1 + self.e23 * rhs.e2),
                 e12: self.e1 * rhs.e2 - self.e2 * rhs.e1,
                 e13: self.e1 * rhs.e3 - self.e3 * rhs.e1,
                 e23: self.e2 * rhs.e3 - self.e3 * rhs.e2,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
@@ -6158,7 +6059,7 @@ pub mod g3 {
         #[inline]
         fn commutator(self, rhs: Multivector) -> Multivector {
             Multivector {
-                s: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                s: <Scalar as ::ga_core::Scalar>::ZERO,
                 e1: (self.e12 * rhs.e2 + self.e13 * rhs.e3)
                     - (self.e2 * rhs.e12 + self.e3 * rhs.e13),
                 e2: (self.e1 * rhs.e12 + self.e23 * rhs.e3)
@@ -6171,7 +6072,7 @@ pub mod g3 {
                     - (self.e3 * rhs.e1 + self.e23 * rhs.e12),
                 e23: (self.e2 * rhs.e3 + self.e13 * rhs.e12)
                     - (self.e3 * rhs.e2 + self.e12 * rhs.e13),
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
@@ -6192,9 +6093,9 @@ pub mod g3 {
         }
     }
     impl Regressive<Trivector> for ::num_dual::Dual64 {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn regressive(self, rhs: Trivector) -> ::num_dual::Dual64 {
+        fn regressive(self, rhs: Trivector) -> Scalar {
             self * rhs.e123
         }
     }
@@ -6207,23 +6108,23 @@ pub mod g3 {
         }
     }
     impl Regressive<Odd> for ::num_dual::Dual64 {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn regressive(self, rhs: Odd) -> ::num_dual::Dual64 {
+        fn regressive(self, rhs: Odd) -> Scalar {
             self * rhs.e123
         }
     }
     impl Regressive<Multivector> for ::num_dual::Dual64 {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn regressive(self, rhs: Multivector) -> ::num_dual::Dual64 {
+        fn regressive(self, rhs: Multivector) -> Scalar {
             self * rhs.e123
         }
     }
     impl Regressive<::num_dual::Dual64> for Vector {
         type Output = Zero;
         #[inline]
-        fn regressive(self, rhs: ::num_dual::Dual64) -> Zero {
+        fn regressive(self, rhs: Scalar) -> Zero {
             let _ = (self, rhs);
             Zero
         }
@@ -6237,9 +6138,9 @@ pub mod g3 {
         }
     }
     impl Regressive<Bivector> for Vector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn regressive(self, rhs: Bivector) -> ::num_dual::Dual64 {
+        fn regressive(self, rhs: Bivector) -> Scalar {
             (self.e1 * rhs.e23 + self.e3 * rhs.e12) - self.e2 * rhs.e13
         }
     }
@@ -6255,9 +6156,9 @@ pub mod g3 {
         }
     }
     impl Regressive<Even> for Vector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn regressive(self, rhs: Even) -> ::num_dual::Dual64 {
+        fn regressive(self, rhs: Even) -> Scalar {
             (self.e1 * rhs.e23 + self.e3 * rhs.e12) - self.e2 * rhs.e13
         }
     }
@@ -6281,25 +6182,25 @@ pub mod g3 {
                 e1: self.e1 * rhs.e123,
                 e2: self.e2 * rhs.e123,
                 e3: self.e3 * rhs.e123,
-                e12: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e13: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e23: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e12: <Scalar as ::ga_core::Scalar>::ZERO,
+                e13: <Scalar as ::ga_core::Scalar>::ZERO,
+                e23: <Scalar as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
     impl Regressive<::num_dual::Dual64> for Bivector {
         type Output = Zero;
         #[inline]
-        fn regressive(self, rhs: ::num_dual::Dual64) -> Zero {
+        fn regressive(self, rhs: Scalar) -> Zero {
             let _ = (self, rhs);
             Zero
         }
     }
     impl Regressive<Vector> for Bivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn regressive(self, rhs: Vector) -> ::num_dual::Dual64 {
+        fn regressive(self, rhs: Vector) -> Scalar {
             (self.e12 * rhs.e3 + self.e23 * rhs.e1) - self.e13 * rhs.e2
         }
     }
@@ -6360,14 +6261,14 @@ pub mod g3 {
                 e12: self.e12 * rhs.e123,
                 e13: self.e13 * rhs.e123,
                 e23: self.e23 * rhs.e123,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
     impl Regressive<::num_dual::Dual64> for Trivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn regressive(self, rhs: ::num_dual::Dual64) -> ::num_dual::Dual64 {
+        fn regressive(self, rhs: Scalar) -> Scalar {
             self.e123 * rhs
         }
     }
@@ -6445,15 +6346,15 @@ pub mod g3 {
     impl Regressive<::num_dual::Dual64> for Even {
         type Output = Zero;
         #[inline]
-        fn regressive(self, rhs: ::num_dual::Dual64) -> Zero {
+        fn regressive(self, rhs: Scalar) -> Zero {
             let _ = (self, rhs);
             Zero
         }
     }
     impl Regressive<Vector> for Even {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn regressive(self, rhs: Vector) -> ::num_dual::Dual64 {
+        fn regressive(self, rhs: Vector) -> Scalar {
             (self.e12 * rhs.e3 + self.e23 * rhs.e1) - self.e13 * rhs.e2
         }
     }
@@ -6517,14 +6418,14 @@ pub mod g3 {
                 e12: self.e12 * rhs.e123,
                 e13: self.e13 * rhs.e123,
                 e23: self.e23 * rhs.e123,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
     impl Regressive<::num_dual::Dual64> for Odd {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn regressive(self, rhs: ::num_dual::Dual64) -> ::num_dual::Dual64 {
+        fn regressive(self, rhs: Scalar) -> Scalar {
             self.e123 * rhs
         }
     }
@@ -6606,9 +6507,9 @@ pub mod g3 {
         }
     }
     impl Regressive<::num_dual::Dual64> for Multivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         #[inline]
-        fn regressive(self, rhs: ::num_dual::Dual64) -> ::num_dual::Dual64 {
+        fn regressive(self, rhs: Scalar) -> Scalar {
             self.e123 * rhs
         }
     }
@@ -6621,10 +6522,10 @@ pub mod g3 {
                 e1: self.e123 * rhs.e1,
                 e2: self.e123 * rhs.e2,
                 e3: self.e123 * rhs.e3,
-                e12: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e13: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e23: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e12: <Scalar as ::ga_core::Scalar>::ZERO,
+                e13: <Scalar as ::ga_core::Scalar>::ZERO,
+                e23: <Scalar as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
@@ -6640,7 +6541,7 @@ pub mod g3 {
                 e12: self.e123 * rhs.e12,
                 e13: self.e123 * rhs.e13,
                 e23: self.e123 * rhs.e23,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
@@ -6673,7 +6574,7 @@ pub mod g3 {
                 e12: self.e123 * rhs.e12,
                 e13: self.e123 * rhs.e13,
                 e23: self.e123 * rhs.e23,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
@@ -7113,10 +7014,10 @@ pub mod g3 {
                 e1: rhs.e1,
                 e2: rhs.e2,
                 e3: rhs.e3,
-                e12: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e13: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e23: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e12: <Scalar as ::ga_core::Scalar>::ZERO,
+                e13: <Scalar as ::ga_core::Scalar>::ZERO,
+                e23: <Scalar as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
@@ -7129,10 +7030,10 @@ pub mod g3 {
                 e1: -rhs.e1,
                 e2: -rhs.e2,
                 e3: -rhs.e3,
-                e12: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e13: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e23: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e12: <Scalar as ::ga_core::Scalar>::ZERO,
+                e13: <Scalar as ::ga_core::Scalar>::ZERO,
+                e23: <Scalar as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
@@ -7166,12 +7067,12 @@ pub mod g3 {
         fn add(self, rhs: Trivector) -> Multivector {
             Multivector {
                 s: self,
-                e1: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e2: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e3: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e12: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e13: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e23: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e1: <Scalar as ::ga_core::Scalar>::ZERO,
+                e2: <Scalar as ::ga_core::Scalar>::ZERO,
+                e3: <Scalar as ::ga_core::Scalar>::ZERO,
+                e12: <Scalar as ::ga_core::Scalar>::ZERO,
+                e13: <Scalar as ::ga_core::Scalar>::ZERO,
+                e23: <Scalar as ::ga_core::Scalar>::ZERO,
                 e123: rhs.e123,
             }
         }
@@ -7182,12 +7083,12 @@ pub mod g3 {
         fn sub(self, rhs: Trivector) -> Multivector {
             Multivector {
                 s: self,
-                e1: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e2: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e3: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e12: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e13: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e23: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e1: <Scalar as ::ga_core::Scalar>::ZERO,
+                e2: <Scalar as ::ga_core::Scalar>::ZERO,
+                e3: <Scalar as ::ga_core::Scalar>::ZERO,
+                e12: <Scalar as ::ga_core::Scalar>::ZERO,
+                e13: <Scalar as ::ga_core::Scalar>::ZERO,
+                e23: <Scalar as ::ga_core::Scalar>::ZERO,
                 e123: -rhs.e123,
             }
         }
@@ -7225,9 +7126,9 @@ pub mod g3 {
                 e1: rhs.e1,
                 e2: rhs.e2,
                 e3: rhs.e3,
-                e12: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e13: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e23: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e12: <Scalar as ::ga_core::Scalar>::ZERO,
+                e13: <Scalar as ::ga_core::Scalar>::ZERO,
+                e23: <Scalar as ::ga_core::Scalar>::ZERO,
                 e123: rhs.e123,
             }
         }
@@ -7241,9 +7142,9 @@ pub mod g3 {
                 e1: -rhs.e1,
                 e2: -rhs.e2,
                 e3: -rhs.e3,
-                e12: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e13: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e23: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e12: <Scalar as ::ga_core::Scalar>::ZERO,
+                e13: <Scalar as ::ga_core::Scalar>::ZERO,
+                e23: <Scalar as ::ga_core::Scalar>::ZERO,
                 e123: -rhs.e123,
             }
         }
@@ -7283,32 +7184,32 @@ pub mod g3 {
     impl ::core::ops::Add<::num_dual::Dual64> for Vector {
         type Output = Multivector;
         #[inline]
-        fn add(self, rhs: ::num_dual::Dual64) -> Multivector {
+        fn add(self, rhs: Scalar) -> Multivector {
             Multivector {
                 s: rhs,
                 e1: self.e1,
                 e2: self.e2,
                 e3: self.e3,
-                e12: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e13: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e23: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e12: <Scalar as ::ga_core::Scalar>::ZERO,
+                e13: <Scalar as ::ga_core::Scalar>::ZERO,
+                e23: <Scalar as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
     impl ::core::ops::Sub<::num_dual::Dual64> for Vector {
         type Output = Multivector;
         #[inline]
-        fn sub(self, rhs: ::num_dual::Dual64) -> Multivector {
+        fn sub(self, rhs: Scalar) -> Multivector {
             Multivector {
                 s: -rhs,
                 e1: self.e1,
                 e2: self.e2,
                 e3: self.e3,
-                e12: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e13: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e23: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e12: <Scalar as ::ga_core::Scalar>::ZERO,
+                e13: <Scalar as ::ga_core::Scalar>::ZERO,
+                e23: <Scalar as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
@@ -7351,14 +7252,14 @@ pub mod g3 {
         #[inline]
         fn add(self, rhs: Bivector) -> Multivector {
             Multivector {
-                s: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                s: <Scalar as ::ga_core::Scalar>::ZERO,
                 e1: self.e1,
                 e2: self.e2,
                 e3: self.e3,
                 e12: rhs.e12,
                 e13: rhs.e13,
                 e23: rhs.e23,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
@@ -7367,14 +7268,14 @@ pub mod g3 {
         #[inline]
         fn sub(self, rhs: Bivector) -> Multivector {
             Multivector {
-                s: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                s: <Scalar as ::ga_core::Scalar>::ZERO,
                 e1: self.e1,
                 e2: self.e2,
                 e3: self.e3,
                 e12: -rhs.e12,
                 e13: -rhs.e13,
                 e23: -rhs.e23,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
@@ -7414,7 +7315,7 @@ pub mod g3 {
                 e12: rhs.e12,
                 e13: rhs.e13,
                 e23: rhs.e23,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
@@ -7430,7 +7331,7 @@ pub mod g3 {
                 e12: -rhs.e12,
                 e13: -rhs.e13,
                 e23: -rhs.e23,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
@@ -7493,7 +7394,7 @@ pub mod g3 {
     impl ::core::ops::Add<::num_dual::Dual64> for Bivector {
         type Output = Even;
         #[inline]
-        fn add(self, rhs: ::num_dual::Dual64) -> Even {
+        fn add(self, rhs: Scalar) -> Even {
             Even {
                 s: rhs,
                 e12: self.e12,
@@ -7505,7 +7406,7 @@ pub mod g3 {
     impl ::core::ops::Sub<::num_dual::Dual64> for Bivector {
         type Output = Even;
         #[inline]
-        fn sub(self, rhs: ::num_dual::Dual64) -> Even {
+        fn sub(self, rhs: Scalar) -> Even {
             Even {
                 s: -rhs,
                 e12: self.e12,
@@ -7519,14 +7420,14 @@ pub mod g3 {
         #[inline]
         fn add(self, rhs: Vector) -> Multivector {
             Multivector {
-                s: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                s: <Scalar as ::ga_core::Scalar>::ZERO,
                 e1: rhs.e1,
                 e2: rhs.e2,
                 e3: rhs.e3,
                 e12: self.e12,
                 e13: self.e13,
                 e23: self.e23,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
@@ -7535,14 +7436,14 @@ pub mod g3 {
         #[inline]
         fn sub(self, rhs: Vector) -> Multivector {
             Multivector {
-                s: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                s: <Scalar as ::ga_core::Scalar>::ZERO,
                 e1: -rhs.e1,
                 e2: -rhs.e2,
                 e3: -rhs.e3,
                 e12: self.e12,
                 e13: self.e13,
                 e23: self.e23,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
@@ -7585,10 +7486,10 @@ pub mod g3 {
         #[inline]
         fn add(self, rhs: Trivector) -> Multivector {
             Multivector {
-                s: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e1: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e2: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e3: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                s: <Scalar as ::ga_core::Scalar>::ZERO,
+                e1: <Scalar as ::ga_core::Scalar>::ZERO,
+                e2: <Scalar as ::ga_core::Scalar>::ZERO,
+                e3: <Scalar as ::ga_core::Scalar>::ZERO,
                 e12: self.e12,
                 e13: self.e13,
                 e23: self.e23,
@@ -7601,10 +7502,10 @@ pub mod g3 {
         #[inline]
         fn sub(self, rhs: Trivector) -> Multivector {
             Multivector {
-                s: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e1: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e2: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e3: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                s: <Scalar as ::ga_core::Scalar>::ZERO,
+                e1: <Scalar as ::ga_core::Scalar>::ZERO,
+                e2: <Scalar as ::ga_core::Scalar>::ZERO,
+                e3: <Scalar as ::ga_core::Scalar>::ZERO,
                 e12: self.e12,
                 e13: self.e13,
                 e23: self.e23,
@@ -7641,7 +7542,7 @@ pub mod g3 {
         #[inline]
         fn add(self, rhs: Odd) -> Multivector {
             Multivector {
-                s: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                s: <Scalar as ::ga_core::Scalar>::ZERO,
                 e1: rhs.e1,
                 e2: rhs.e2,
                 e3: rhs.e3,
@@ -7657,7 +7558,7 @@ pub mod g3 {
         #[inline]
         fn sub(self, rhs: Odd) -> Multivector {
             Multivector {
-                s: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                s: <Scalar as ::ga_core::Scalar>::ZERO,
                 e1: -rhs.e1,
                 e2: -rhs.e2,
                 e3: -rhs.e3,
@@ -7703,15 +7604,15 @@ pub mod g3 {
     impl ::core::ops::Add<::num_dual::Dual64> for Trivector {
         type Output = Multivector;
         #[inline]
-        fn add(self, rhs: ::num_dual::Dual64) -> Multivector {
+        fn add(self, rhs: Scalar) -> Multivector {
             Multivector {
                 s: rhs,
-                e1: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e2: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e3: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e12: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e13: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e23: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e1: <Scalar as ::ga_core::Scalar>::ZERO,
+                e2: <Scalar as ::ga_core::Scalar>::ZERO,
+                e3: <Scalar as ::ga_core::Scalar>::ZERO,
+                e12: <Scalar as ::ga_core::Scalar>::ZERO,
+                e13: <Scalar as ::ga_core::Scalar>::ZERO,
+                e23: <Scalar as ::ga_core::Scalar>::ZERO,
                 e123: self.e123,
             }
         }
@@ -7719,15 +7620,15 @@ pub mod g3 {
     impl ::core::ops::Sub<::num_dual::Dual64> for Trivector {
         type Output = Multivector;
         #[inline]
-        fn sub(self, rhs: ::num_dual::Dual64) -> Multivector {
+        fn sub(self, rhs: Scalar) -> Multivector {
             Multivector {
                 s: -rhs,
-                e1: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e2: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e3: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e12: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e13: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e23: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e1: <Scalar as ::ga_core::Scalar>::ZERO,
+                e2: <Scalar as ::ga_core::Scalar>::ZERO,
+                e3: <Scalar as ::ga_core::Scalar>::ZERO,
+                e12: <Scalar as ::ga_core::Scalar>::ZERO,
+                e13: <Scalar as ::ga_core::Scalar>::ZERO,
+                e23: <Scalar as ::ga_core::Scalar>::ZERO,
                 e123: self.e123,
             }
         }
@@ -7761,10 +7662,10 @@ pub mod g3 {
         #[inline]
         fn add(self, rhs: Bivector) -> Multivector {
             Multivector {
-                s: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e1: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e2: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e3: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                s: <Scalar as ::ga_core::Scalar>::ZERO,
+                e1: <Scalar as ::ga_core::Scalar>::ZERO,
+                e2: <Scalar as ::ga_core::Scalar>::ZERO,
+                e3: <Scalar as ::ga_core::Scalar>::ZERO,
                 e12: rhs.e12,
                 e13: rhs.e13,
                 e23: rhs.e23,
@@ -7777,10 +7678,10 @@ pub mod g3 {
         #[inline]
         fn sub(self, rhs: Bivector) -> Multivector {
             Multivector {
-                s: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e1: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e2: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e3: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                s: <Scalar as ::ga_core::Scalar>::ZERO,
+                e1: <Scalar as ::ga_core::Scalar>::ZERO,
+                e2: <Scalar as ::ga_core::Scalar>::ZERO,
+                e3: <Scalar as ::ga_core::Scalar>::ZERO,
                 e12: -rhs.e12,
                 e13: -rhs.e13,
                 e23: -rhs.e23,
@@ -7824,9 +7725,9 @@ pub mod g3 {
         fn add(self, rhs: Even) -> Multivector {
             Multivector {
                 s: rhs.s,
-                e1: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e2: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e3: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e1: <Scalar as ::ga_core::Scalar>::ZERO,
+                e2: <Scalar as ::ga_core::Scalar>::ZERO,
+                e3: <Scalar as ::ga_core::Scalar>::ZERO,
                 e12: rhs.e12,
                 e13: rhs.e13,
                 e23: rhs.e23,
@@ -7840,9 +7741,9 @@ pub mod g3 {
         fn sub(self, rhs: Even) -> Multivector {
             Multivector {
                 s: -rhs.s,
-                e1: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e2: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e3: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e1: <Scalar as ::ga_core::Scalar>::ZERO,
+                e2: <Scalar as ::ga_core::Scalar>::ZERO,
+                e3: <Scalar as ::ga_core::Scalar>::ZERO,
                 e12: -rhs.e12,
                 e13: -rhs.e13,
                 e23: -rhs.e23,
@@ -7909,7 +7810,7 @@ pub mod g3 {
     impl ::core::ops::Add<::num_dual::Dual64> for Even {
         type Output = Even;
         #[inline]
-        fn add(self, rhs: ::num_dual::Dual64) -> Even {
+        fn add(self, rhs: Scalar) -> Even {
             Even {
                 s: self.s + rhs,
                 e12: self.e12,
@@ -7920,14 +7821,14 @@ pub mod g3 {
     }
     impl ::core::ops::AddAssign<::num_dual::Dual64> for Even {
         #[inline]
-        fn add_assign(&mut self, rhs: ::num_dual::Dual64) {
+        fn add_assign(&mut self, rhs: Scalar) {
             *self = ::core::ops::Add::add(*self, rhs);
         }
     }
     impl ::core::ops::Sub<::num_dual::Dual64> for Even {
         type Output = Even;
         #[inline]
-        fn sub(self, rhs: ::num_dual::Dual64) -> Even {
+        fn sub(self, rhs: Scalar) -> Even {
             Even {
                 s: self.s - rhs,
                 e12: self.e12,
@@ -7938,7 +7839,7 @@ pub mod g3 {
     }
     impl ::core::ops::SubAssign<::num_dual::Dual64> for Even {
         #[inline]
-        fn sub_assign(&mut self, rhs: ::num_dual::Dual64) {
+        fn sub_assign(&mut self, rhs: Scalar) {
             *self = ::core::ops::Sub::sub(*self, rhs);
         }
     }
@@ -7954,7 +7855,7 @@ pub mod g3 {
                 e12: self.e12,
                 e13: self.e13,
                 e23: self.e23,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
@@ -7970,7 +7871,7 @@ pub mod g3 {
                 e12: self.e12,
                 e13: self.e13,
                 e23: self.e23,
-                e123: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e123: <Scalar as ::ga_core::Scalar>::ZERO,
             }
         }
     }
@@ -8016,9 +7917,9 @@ pub mod g3 {
         fn add(self, rhs: Trivector) -> Multivector {
             Multivector {
                 s: self.s,
-                e1: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e2: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e3: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e1: <Scalar as ::ga_core::Scalar>::ZERO,
+                e2: <Scalar as ::ga_core::Scalar>::ZERO,
+                e3: <Scalar as ::ga_core::Scalar>::ZERO,
                 e12: self.e12,
                 e13: self.e13,
                 e23: self.e23,
@@ -8032,9 +7933,9 @@ pub mod g3 {
         fn sub(self, rhs: Trivector) -> Multivector {
             Multivector {
                 s: self.s,
-                e1: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e2: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e3: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e1: <Scalar as ::ga_core::Scalar>::ZERO,
+                e2: <Scalar as ::ga_core::Scalar>::ZERO,
+                e3: <Scalar as ::ga_core::Scalar>::ZERO,
                 e12: self.e12,
                 e13: self.e13,
                 e23: self.e23,
@@ -8145,15 +8046,15 @@ pub mod g3 {
     impl ::core::ops::Add<::num_dual::Dual64> for Odd {
         type Output = Multivector;
         #[inline]
-        fn add(self, rhs: ::num_dual::Dual64) -> Multivector {
+        fn add(self, rhs: Scalar) -> Multivector {
             Multivector {
                 s: rhs,
                 e1: self.e1,
                 e2: self.e2,
                 e3: self.e3,
-                e12: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e13: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e23: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e12: <Scalar as ::ga_core::Scalar>::ZERO,
+                e13: <Scalar as ::ga_core::Scalar>::ZERO,
+                e23: <Scalar as ::ga_core::Scalar>::ZERO,
                 e123: self.e123,
             }
         }
@@ -8161,15 +8062,15 @@ pub mod g3 {
     impl ::core::ops::Sub<::num_dual::Dual64> for Odd {
         type Output = Multivector;
         #[inline]
-        fn sub(self, rhs: ::num_dual::Dual64) -> Multivector {
+        fn sub(self, rhs: Scalar) -> Multivector {
             Multivector {
                 s: -rhs,
                 e1: self.e1,
                 e2: self.e2,
                 e3: self.e3,
-                e12: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e13: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                e23: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                e12: <Scalar as ::ga_core::Scalar>::ZERO,
+                e13: <Scalar as ::ga_core::Scalar>::ZERO,
+                e23: <Scalar as ::ga_core::Scalar>::ZERO,
                 e123: self.e123,
             }
         }
@@ -8215,7 +8116,7 @@ pub mod g3 {
         #[inline]
         fn add(self, rhs: Bivector) -> Multivector {
             Multivector {
-                s: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                s: <Scalar as ::ga_core::Scalar>::ZERO,
                 e1: self.e1,
                 e2: self.e2,
                 e3: self.e3,
@@ -8231,7 +8132,7 @@ pub mod g3 {
         #[inline]
         fn sub(self, rhs: Bivector) -> Multivector {
             Multivector {
-                s: <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                s: <Scalar as ::ga_core::Scalar>::ZERO,
                 e1: self.e1,
                 e2: self.e2,
                 e3: self.e3,
@@ -8381,7 +8282,7 @@ pub mod g3 {
     impl ::core::ops::Add<::num_dual::Dual64> for Multivector {
         type Output = Multivector;
         #[inline]
-        fn add(self, rhs: ::num_dual::Dual64) -> Multivector {
+        fn add(self, rhs: Scalar) -> Multivector {
             Multivector {
                 s: self.s + rhs,
                 e1: self.e1,
@@ -8396,14 +8297,14 @@ pub mod g3 {
     }
     impl ::core::ops::AddAssign<::num_dual::Dual64> for Multivector {
         #[inline]
-        fn add_assign(&mut self, rhs: ::num_dual::Dual64) {
+        fn add_assign(&mut self, rhs: Scalar) {
             *self = ::core::ops::Add::add(*self, rhs);
         }
     }
     impl ::core::ops::Sub<::num_dual::Dual64> for Multivector {
         type Output = Multivector;
         #[inline]
-        fn sub(self, rhs: ::num_dual::Dual64) -> Multivector {
+        fn sub(self, rhs: Scalar) -> Multivector {
             Multivector {
                 s: self.s - rhs,
                 e1: self.e1,
@@ -8418,7 +8319,7 @@ pub mod g3 {
     }
     impl ::core::ops::SubAssign<::num_dual::Dual64> for Multivector {
         #[inline]
-        fn sub_assign(&mut self, rhs: ::num_dual::Dual64) {
+        fn sub_assign(&mut self, rhs: Scalar) {
             *self = ::core::ops::Sub::sub(*self, rhs);
         }
     }
@@ -8700,8 +8601,8 @@ pub mod g3 {
     impl ::core::ops::Div<::num_dual::Dual64> for Vector {
         type Output = Vector;
         #[inline]
-        fn div(self, rhs: ::num_dual::Dual64) -> Vector {
-            let inverse = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE / rhs;
+        fn div(self, rhs: Scalar) -> Vector {
+            let inverse = <Scalar as ::ga_core::Scalar>::ONE / rhs;
             Vector {
                 e1: self.e1 * inverse,
                 e2: self.e2 * inverse,
@@ -8711,7 +8612,7 @@ pub mod g3 {
     }
     impl ::core::ops::MulAssign<::num_dual::Dual64> for Vector {
         #[inline]
-        fn mul_assign(&mut self, rhs: ::num_dual::Dual64) {
+        fn mul_assign(&mut self, rhs: Scalar) {
             self.e1 *= rhs;
             self.e2 *= rhs;
             self.e3 *= rhs;
@@ -8719,7 +8620,7 @@ pub mod g3 {
     }
     impl ::core::ops::DivAssign<::num_dual::Dual64> for Vector {
         #[inline]
-        fn div_assign(&mut self, rhs: ::num_dual::Dual64) {
+        fn div_assign(&mut self, rhs: Scalar) {
             *self = *self / rhs;
         }
     }
@@ -8737,8 +8638,8 @@ pub mod g3 {
     impl ::core::ops::Div<::num_dual::Dual64> for Bivector {
         type Output = Bivector;
         #[inline]
-        fn div(self, rhs: ::num_dual::Dual64) -> Bivector {
-            let inverse = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE / rhs;
+        fn div(self, rhs: Scalar) -> Bivector {
+            let inverse = <Scalar as ::ga_core::Scalar>::ONE / rhs;
             Bivector {
                 e12: self.e12 * inverse,
                 e13: self.e13 * inverse,
@@ -8748,7 +8649,7 @@ pub mod g3 {
     }
     impl ::core::ops::MulAssign<::num_dual::Dual64> for Bivector {
         #[inline]
-        fn mul_assign(&mut self, rhs: ::num_dual::Dual64) {
+        fn mul_assign(&mut self, rhs: Scalar) {
             self.e12 *= rhs;
             self.e13 *= rhs;
             self.e23 *= rhs;
@@ -8756,7 +8657,7 @@ pub mod g3 {
     }
     impl ::core::ops::DivAssign<::num_dual::Dual64> for Bivector {
         #[inline]
-        fn div_assign(&mut self, rhs: ::num_dual::Dual64) {
+        fn div_assign(&mut self, rhs: Scalar) {
             *self = *self / rhs;
         }
     }
@@ -8770,8 +8671,8 @@ pub mod g3 {
     impl ::core::ops::Div<::num_dual::Dual64> for Trivector {
         type Output = Trivector;
         #[inline]
-        fn div(self, rhs: ::num_dual::Dual64) -> Trivector {
-            let inverse = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE / rhs;
+        fn div(self, rhs: Scalar) -> Trivector {
+            let inverse = <Scalar as ::ga_core::Scalar>::ONE / rhs;
             Trivector {
                 e123: self.e123 * inverse,
             }
@@ -8779,13 +8680,13 @@ pub mod g3 {
     }
     impl ::core::ops::MulAssign<::num_dual::Dual64> for Trivector {
         #[inline]
-        fn mul_assign(&mut self, rhs: ::num_dual::Dual64) {
+        fn mul_assign(&mut self, rhs: Scalar) {
             self.e123 *= rhs;
         }
     }
     impl ::core::ops::DivAssign<::num_dual::Dual64> for Trivector {
         #[inline]
-        fn div_assign(&mut self, rhs: ::num_dual::Dual64) {
+        fn div_assign(&mut self, rhs: Scalar) {
             *self = *self / rhs;
         }
     }
@@ -8804,8 +8705,8 @@ pub mod g3 {
     impl ::core::ops::Div<::num_dual::Dual64> for Even {
         type Output = Even;
         #[inline]
-        fn div(self, rhs: ::num_dual::Dual64) -> Even {
-            let inverse = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE / rhs;
+        fn div(self, rhs: Scalar) -> Even {
+            let inverse = <Scalar as ::ga_core::Scalar>::ONE / rhs;
             Even {
                 s: self.s * inverse,
                 e12: self.e12 * inverse,
@@ -8816,7 +8717,7 @@ pub mod g3 {
     }
     impl ::core::ops::MulAssign<::num_dual::Dual64> for Even {
         #[inline]
-        fn mul_assign(&mut self, rhs: ::num_dual::Dual64) {
+        fn mul_assign(&mut self, rhs: Scalar) {
             self.s *= rhs;
             self.e12 *= rhs;
             self.e13 *= rhs;
@@ -8825,7 +8726,7 @@ pub mod g3 {
     }
     impl ::core::ops::DivAssign<::num_dual::Dual64> for Even {
         #[inline]
-        fn div_assign(&mut self, rhs: ::num_dual::Dual64) {
+        fn div_assign(&mut self, rhs: Scalar) {
             *self = *self / rhs;
         }
     }
@@ -8844,8 +8745,8 @@ pub mod g3 {
     impl ::core::ops::Div<::num_dual::Dual64> for Odd {
         type Output = Odd;
         #[inline]
-        fn div(self, rhs: ::num_dual::Dual64) -> Odd {
-            let inverse = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE / rhs;
+        fn div(self, rhs: Scalar) -> Odd {
+            let inverse = <Scalar as ::ga_core::Scalar>::ONE / rhs;
             Odd {
                 e1: self.e1 * inverse,
                 e2: self.e2 * inverse,
@@ -8856,7 +8757,7 @@ pub mod g3 {
     }
     impl ::core::ops::MulAssign<::num_dual::Dual64> for Odd {
         #[inline]
-        fn mul_assign(&mut self, rhs: ::num_dual::Dual64) {
+        fn mul_assign(&mut self, rhs: Scalar) {
             self.e1 *= rhs;
             self.e2 *= rhs;
             self.e3 *= rhs;
@@ -8865,7 +8766,7 @@ pub mod g3 {
     }
     impl ::core::ops::DivAssign<::num_dual::Dual64> for Odd {
         #[inline]
-        fn div_assign(&mut self, rhs: ::num_dual::Dual64) {
+        fn div_assign(&mut self, rhs: Scalar) {
             *self = *self / rhs;
         }
     }
@@ -8888,8 +8789,8 @@ pub mod g3 {
     impl ::core::ops::Div<::num_dual::Dual64> for Multivector {
         type Output = Multivector;
         #[inline]
-        fn div(self, rhs: ::num_dual::Dual64) -> Multivector {
-            let inverse = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE / rhs;
+        fn div(self, rhs: Scalar) -> Multivector {
+            let inverse = <Scalar as ::ga_core::Scalar>::ONE / rhs;
             Multivector {
                 s: self.s * inverse,
                 e1: self.e1 * inverse,
@@ -8904,7 +8805,7 @@ pub mod g3 {
     }
     impl ::core::ops::MulAssign<::num_dual::Dual64> for Multivector {
         #[inline]
-        fn mul_assign(&mut self, rhs: ::num_dual::Dual64) {
+        fn mul_assign(&mut self, rhs: Scalar) {
             self.s *= rhs;
             self.e1 *= rhs;
             self.e2 *= rhs;
@@ -8917,7 +8818,7 @@ pub mod g3 {
     }
     impl ::core::ops::DivAssign<::num_dual::Dual64> for Multivector {
         #[inline]
-        fn div_assign(&mut self, rhs: ::num_dual::Dual64) {
+        fn div_assign(&mut self, rhs: Scalar) {
             *self = *self / rhs;
         }
     }
@@ -9197,7 +9098,7 @@ pub mod g3 {
         /// reflection's for a unit vector.
         #[inline]
         #[must_use]
-        pub fn sandwich_matrix(self) -> [[::num_dual::Dual64; 3]; 3] {
+        pub fn sandwich_matrix(self) -> [[Scalar; 3]; 3] {
             let two_e1 = self.e1 + self.e1;
             let two_e2 = self.e2 + self.e2;
             let e1_e1 = self.e1 * self.e1;
@@ -9548,7 +9449,7 @@ pub mod g3 {
         /// reflection's for a unit vector.
         #[inline]
         #[must_use]
-        pub fn sandwich_matrix(self) -> [[::num_dual::Dual64; 3]; 3] {
+        pub fn sandwich_matrix(self) -> [[Scalar; 3]; 3] {
             let two_s = self.s + self.s;
             let two_e12 = self.e12 + self.e12;
             let two_e13 = self.e13 + self.e13;
@@ -9913,7 +9814,7 @@ pub mod g3 {
         /// reflection's for a unit vector.
         #[inline]
         #[must_use]
-        pub fn sandwich_matrix(self) -> [[::num_dual::Dual64; 3]; 3] {
+        pub fn sandwich_matrix(self) -> [[Scalar; 3]; 3] {
             let two_e1 = self.e1 + self.e1;
             let two_e2 = self.e2 + self.e2;
             let two_e3 = self.e3 + self.e3;
@@ -10085,7 +9986,7 @@ pub mod g3 {
     /// fixed form shows what rounds away. Zero prints as `0`.
     fn display_terms(
         f: &mut ::core::fmt::Formatter<'_>,
-        terms: &[(::num_dual::Dual64, &str)],
+        terms: &[(Scalar, &str)],
     ) -> ::core::fmt::Result {
         /// Notes whether a non-zero digit is written: a term "prints as zero" exactly
         /// when the formatter's own rounding leaves none (no buffer, so `no_std`).
@@ -10099,15 +10000,13 @@ pub mod g3 {
         let mut first = true;
         for &(value, blade) in terms {
             let magnitude = value.abs();
-            if magnitude == <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO {
+            if magnitude == <Scalar as ::ga_core::Scalar>::ZERO {
                 continue;
             }
             let large = magnitude
-                >= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
-                    10000000000000000.0,
-                ) && magnitude.is_finite();
-            let small = magnitude
-                < <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(0.00001);
+                >= <Scalar as ::ga_core::Scalar>::from_f64(10000000000000000.0)
+                && magnitude.is_finite();
+            let small = magnitude < <Scalar as ::ga_core::Scalar>::from_f64(0.00001);
             let exponent = large || (small && f.precision().is_none());
             if let (Some(p), false) = (
                 f.precision(),
@@ -10143,10 +10042,10 @@ pub mod g3 {
         Ok(())
     }
     impl ::core::ops::Index<usize> for Vector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         /// The component at canonical position `index`; panics past `LEN`, like an array.
         #[inline]
-        fn index(&self, index: usize) -> &::num_dual::Dual64 {
+        fn index(&self, index: usize) -> &Scalar {
             match index {
                 0usize => &self.e1,
                 1usize => &self.e2,
@@ -10158,7 +10057,7 @@ pub mod g3 {
     impl ::core::ops::IndexMut<usize> for Vector {
         /// The component at canonical position `index`; panics past `LEN`, like an array.
         #[inline]
-        fn index_mut(&mut self, index: usize) -> &mut ::num_dual::Dual64 {
+        fn index_mut(&mut self, index: usize) -> &mut Scalar {
             match index {
                 0usize => &mut self.e1,
                 1usize => &mut self.e2,
@@ -10170,27 +10069,27 @@ pub mod g3 {
     impl Vector {
         /// The components in canonical order, by value.
         #[inline]
-        pub fn iter(&self) -> ::core::array::IntoIter<::num_dual::Dual64, 3usize> {
+        pub fn iter(&self) -> ::core::array::IntoIter<Scalar, 3usize> {
             self.to_array().into_iter()
         }
     }
     impl ::core::iter::IntoIterator for Vector {
-        type Item = ::num_dual::Dual64;
-        type IntoIter = ::core::array::IntoIter<::num_dual::Dual64, 3usize>;
+        type Item = Scalar;
+        type IntoIter = ::core::array::IntoIter<Scalar, 3usize>;
         #[inline]
         fn into_iter(self) -> Self::IntoIter {
             self.to_array().into_iter()
         }
     }
-    impl ::core::convert::From<[::num_dual::Dual64; 3usize]> for Vector {
+    impl ::core::convert::From<[Scalar; 3usize]> for Vector {
         #[inline]
-        fn from(components: [::num_dual::Dual64; 3usize]) -> Vector {
+        fn from(components: [Scalar; 3usize]) -> Vector {
             Vector::from_array(components)
         }
     }
-    impl ::core::convert::From<Vector> for [::num_dual::Dual64; 3usize] {
+    impl ::core::convert::From<Vector> for [Scalar; 3usize] {
         #[inline]
-        fn from(value: Vector) -> [::num_dual::Dual64; 3usize] {
+        fn from(value: Vector) -> [Scalar; 3usize] {
             value.to_array()
         }
     }
@@ -10226,10 +10125,10 @@ pub mod g3 {
         }
     }
     impl ::core::ops::Index<usize> for Bivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         /// The component at canonical position `index`; panics past `LEN`, like an array.
         #[inline]
-        fn index(&self, index: usize) -> &::num_dual::Dual64 {
+        fn index(&self, index: usize) -> &Scalar {
             match index {
                 0usize => &self.e12,
                 1usize => &self.e13,
@@ -10241,7 +10140,7 @@ pub mod g3 {
     impl ::core::ops::IndexMut<usize> for Bivector {
         /// The component at canonical position `index`; panics past `LEN`, like an array.
         #[inline]
-        fn index_mut(&mut self, index: usize) -> &mut ::num_dual::Dual64 {
+        fn index_mut(&mut self, index: usize) -> &mut Scalar {
             match index {
                 0usize => &mut self.e12,
                 1usize => &mut self.e13,
@@ -10253,27 +10152,27 @@ pub mod g3 {
     impl Bivector {
         /// The components in canonical order, by value.
         #[inline]
-        pub fn iter(&self) -> ::core::array::IntoIter<::num_dual::Dual64, 3usize> {
+        pub fn iter(&self) -> ::core::array::IntoIter<Scalar, 3usize> {
             self.to_array().into_iter()
         }
     }
     impl ::core::iter::IntoIterator for Bivector {
-        type Item = ::num_dual::Dual64;
-        type IntoIter = ::core::array::IntoIter<::num_dual::Dual64, 3usize>;
+        type Item = Scalar;
+        type IntoIter = ::core::array::IntoIter<Scalar, 3usize>;
         #[inline]
         fn into_iter(self) -> Self::IntoIter {
             self.to_array().into_iter()
         }
     }
-    impl ::core::convert::From<[::num_dual::Dual64; 3usize]> for Bivector {
+    impl ::core::convert::From<[Scalar; 3usize]> for Bivector {
         #[inline]
-        fn from(components: [::num_dual::Dual64; 3usize]) -> Bivector {
+        fn from(components: [Scalar; 3usize]) -> Bivector {
             Bivector::from_array(components)
         }
     }
-    impl ::core::convert::From<Bivector> for [::num_dual::Dual64; 3usize] {
+    impl ::core::convert::From<Bivector> for [Scalar; 3usize] {
         #[inline]
-        fn from(value: Bivector) -> [::num_dual::Dual64; 3usize] {
+        fn from(value: Bivector) -> [Scalar; 3usize] {
             value.to_array()
         }
     }
@@ -10309,10 +10208,10 @@ pub mod g3 {
         }
     }
     impl ::core::ops::Index<usize> for Trivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         /// The component at canonical position `index`; panics past `LEN`, like an array.
         #[inline]
-        fn index(&self, index: usize) -> &::num_dual::Dual64 {
+        fn index(&self, index: usize) -> &Scalar {
             match index {
                 0usize => &self.e123,
                 _ => {
@@ -10324,7 +10223,7 @@ pub mod g3 {
     impl ::core::ops::IndexMut<usize> for Trivector {
         /// The component at canonical position `index`; panics past `LEN`, like an array.
         #[inline]
-        fn index_mut(&mut self, index: usize) -> &mut ::num_dual::Dual64 {
+        fn index_mut(&mut self, index: usize) -> &mut Scalar {
             match index {
                 0usize => &mut self.e123,
                 _ => {
@@ -10336,27 +10235,27 @@ pub mod g3 {
     impl Trivector {
         /// The components in canonical order, by value.
         #[inline]
-        pub fn iter(&self) -> ::core::array::IntoIter<::num_dual::Dual64, 1usize> {
+        pub fn iter(&self) -> ::core::array::IntoIter<Scalar, 1usize> {
             self.to_array().into_iter()
         }
     }
     impl ::core::iter::IntoIterator for Trivector {
-        type Item = ::num_dual::Dual64;
-        type IntoIter = ::core::array::IntoIter<::num_dual::Dual64, 1usize>;
+        type Item = Scalar;
+        type IntoIter = ::core::array::IntoIter<Scalar, 1usize>;
         #[inline]
         fn into_iter(self) -> Self::IntoIter {
             self.to_array().into_iter()
         }
     }
-    impl ::core::convert::From<[::num_dual::Dual64; 1usize]> for Trivector {
+    impl ::core::convert::From<[Scalar; 1usize]> for Trivector {
         #[inline]
-        fn from(components: [::num_dual::Dual64; 1usize]) -> Trivector {
+        fn from(components: [Scalar; 1usize]) -> Trivector {
             Trivector::from_array(components)
         }
     }
-    impl ::core::convert::From<Trivector> for [::num_dual::Dual64; 1usize] {
+    impl ::core::convert::From<Trivector> for [Scalar; 1usize] {
         #[inline]
-        fn from(value: Trivector) -> [::num_dual::Dual64; 1usize] {
+        fn from(value: Trivector) -> [Scalar; 1usize] {
             value.to_array()
         }
     }
@@ -10392,10 +10291,10 @@ pub mod g3 {
         }
     }
     impl ::core::ops::Index<usize> for Even {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         /// The component at canonical position `index`; panics past `LEN`, like an array.
         #[inline]
-        fn index(&self, index: usize) -> &::num_dual::Dual64 {
+        fn index(&self, index: usize) -> &Scalar {
             match index {
                 0usize => &self.s,
                 1usize => &self.e12,
@@ -10408,7 +10307,7 @@ pub mod g3 {
     impl ::core::ops::IndexMut<usize> for Even {
         /// The component at canonical position `index`; panics past `LEN`, like an array.
         #[inline]
-        fn index_mut(&mut self, index: usize) -> &mut ::num_dual::Dual64 {
+        fn index_mut(&mut self, index: usize) -> &mut Scalar {
             match index {
                 0usize => &mut self.s,
                 1usize => &mut self.e12,
@@ -10421,27 +10320,27 @@ pub mod g3 {
     impl Even {
         /// The components in canonical order, by value.
         #[inline]
-        pub fn iter(&self) -> ::core::array::IntoIter<::num_dual::Dual64, 4usize> {
+        pub fn iter(&self) -> ::core::array::IntoIter<Scalar, 4usize> {
             self.to_array().into_iter()
         }
     }
     impl ::core::iter::IntoIterator for Even {
-        type Item = ::num_dual::Dual64;
-        type IntoIter = ::core::array::IntoIter<::num_dual::Dual64, 4usize>;
+        type Item = Scalar;
+        type IntoIter = ::core::array::IntoIter<Scalar, 4usize>;
         #[inline]
         fn into_iter(self) -> Self::IntoIter {
             self.to_array().into_iter()
         }
     }
-    impl ::core::convert::From<[::num_dual::Dual64; 4usize]> for Even {
+    impl ::core::convert::From<[Scalar; 4usize]> for Even {
         #[inline]
-        fn from(components: [::num_dual::Dual64; 4usize]) -> Even {
+        fn from(components: [Scalar; 4usize]) -> Even {
             Even::from_array(components)
         }
     }
-    impl ::core::convert::From<Even> for [::num_dual::Dual64; 4usize] {
+    impl ::core::convert::From<Even> for [Scalar; 4usize] {
         #[inline]
-        fn from(value: Even) -> [::num_dual::Dual64; 4usize] {
+        fn from(value: Even) -> [Scalar; 4usize] {
             value.to_array()
         }
     }
@@ -10500,10 +10399,10 @@ pub mod g3 {
         }
     }
     impl ::core::ops::Index<usize> for Odd {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         /// The component at canonical position `index`; panics past `LEN`, like an array.
         #[inline]
-        fn index(&self, index: usize) -> &::num_dual::Dual64 {
+        fn index(&self, index: usize) -> &Scalar {
             match index {
                 0usize => &self.e1,
                 1usize => &self.e2,
@@ -10516,7 +10415,7 @@ pub mod g3 {
     impl ::core::ops::IndexMut<usize> for Odd {
         /// The component at canonical position `index`; panics past `LEN`, like an array.
         #[inline]
-        fn index_mut(&mut self, index: usize) -> &mut ::num_dual::Dual64 {
+        fn index_mut(&mut self, index: usize) -> &mut Scalar {
             match index {
                 0usize => &mut self.e1,
                 1usize => &mut self.e2,
@@ -10529,27 +10428,27 @@ pub mod g3 {
     impl Odd {
         /// The components in canonical order, by value.
         #[inline]
-        pub fn iter(&self) -> ::core::array::IntoIter<::num_dual::Dual64, 4usize> {
+        pub fn iter(&self) -> ::core::array::IntoIter<Scalar, 4usize> {
             self.to_array().into_iter()
         }
     }
     impl ::core::iter::IntoIterator for Odd {
-        type Item = ::num_dual::Dual64;
-        type IntoIter = ::core::array::IntoIter<::num_dual::Dual64, 4usize>;
+        type Item = Scalar;
+        type IntoIter = ::core::array::IntoIter<Scalar, 4usize>;
         #[inline]
         fn into_iter(self) -> Self::IntoIter {
             self.to_array().into_iter()
         }
     }
-    impl ::core::convert::From<[::num_dual::Dual64; 4usize]> for Odd {
+    impl ::core::convert::From<[Scalar; 4usize]> for Odd {
         #[inline]
-        fn from(components: [::num_dual::Dual64; 4usize]) -> Odd {
+        fn from(components: [Scalar; 4usize]) -> Odd {
             Odd::from_array(components)
         }
     }
-    impl ::core::convert::From<Odd> for [::num_dual::Dual64; 4usize] {
+    impl ::core::convert::From<Odd> for [Scalar; 4usize] {
         #[inline]
-        fn from(value: Odd) -> [::num_dual::Dual64; 4usize] {
+        fn from(value: Odd) -> [Scalar; 4usize] {
             value.to_array()
         }
     }
@@ -10590,10 +10489,10 @@ pub mod g3 {
         }
     }
     impl ::core::ops::Index<usize> for Multivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         /// The component at canonical position `index`; panics past `LEN`, like an array.
         #[inline]
-        fn index(&self, index: usize) -> &::num_dual::Dual64 {
+        fn index(&self, index: usize) -> &Scalar {
             match index {
                 0usize => &self.s,
                 1usize => &self.e1,
@@ -10614,7 +10513,7 @@ pub mod g3 {
     impl ::core::ops::IndexMut<usize> for Multivector {
         /// The component at canonical position `index`; panics past `LEN`, like an array.
         #[inline]
-        fn index_mut(&mut self, index: usize) -> &mut ::num_dual::Dual64 {
+        fn index_mut(&mut self, index: usize) -> &mut Scalar {
             match index {
                 0usize => &mut self.s,
                 1usize => &mut self.e1,
@@ -10635,27 +10534,27 @@ pub mod g3 {
     impl Multivector {
         /// The components in canonical order, by value.
         #[inline]
-        pub fn iter(&self) -> ::core::array::IntoIter<::num_dual::Dual64, 8usize> {
+        pub fn iter(&self) -> ::core::array::IntoIter<Scalar, 8usize> {
             self.to_array().into_iter()
         }
     }
     impl ::core::iter::IntoIterator for Multivector {
-        type Item = ::num_dual::Dual64;
-        type IntoIter = ::core::array::IntoIter<::num_dual::Dual64, 8usize>;
+        type Item = Scalar;
+        type IntoIter = ::core::array::IntoIter<Scalar, 8usize>;
         #[inline]
         fn into_iter(self) -> Self::IntoIter {
             self.to_array().into_iter()
         }
     }
-    impl ::core::convert::From<[::num_dual::Dual64; 8usize]> for Multivector {
+    impl ::core::convert::From<[Scalar; 8usize]> for Multivector {
         #[inline]
-        fn from(components: [::num_dual::Dual64; 8usize]) -> Multivector {
+        fn from(components: [Scalar; 8usize]) -> Multivector {
             Multivector::from_array(components)
         }
     }
-    impl ::core::convert::From<Multivector> for [::num_dual::Dual64; 8usize] {
+    impl ::core::convert::From<Multivector> for [Scalar; 8usize] {
         #[inline]
-        fn from(value: Multivector) -> [::num_dual::Dual64; 8usize] {
+        fn from(value: Multivector) -> [Scalar; 8usize] {
             value.to_array()
         }
     }
@@ -10731,737 +10630,737 @@ pub mod g3 {
         }
     }
     impl ::core::ops::Mul<&Vector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Mul<Vector>>::Output;
+        type Output = <Scalar as ::core::ops::Mul<Vector>>::Output;
         #[inline]
         fn mul(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
     impl ::core::ops::Mul<Vector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Mul<Vector>>::Output;
+        type Output = <Scalar as ::core::ops::Mul<Vector>>::Output;
         #[inline]
         fn mul(self, rhs: Vector) -> Self::Output {
             ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Vector> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Mul<Vector>>::Output;
+        type Output = <Scalar as ::core::ops::Mul<Vector>>::Output;
         #[inline]
         fn mul(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Vector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitXor<Vector>>::Output;
+        type Output = <Scalar as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
     impl ::core::ops::BitXor<Vector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitXor<Vector>>::Output;
+        type Output = <Scalar as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Vector> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitXor<Vector>>::Output;
+        type Output = <Scalar as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitOr<Vector>>::Output;
+        type Output = <Scalar as ::core::ops::BitOr<Vector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
     impl ::core::ops::BitOr<Vector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitOr<Vector>>::Output;
+        type Output = <Scalar as ::core::ops::BitOr<Vector>>::Output;
         #[inline]
         fn bitor(self, rhs: Vector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitOr<Vector>>::Output;
+        type Output = <Scalar as ::core::ops::BitOr<Vector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Vector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Add<Vector>>::Output;
+        type Output = <Scalar as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
     impl ::core::ops::Add<Vector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Add<Vector>>::Output;
+        type Output = <Scalar as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: Vector) -> Self::Output {
             ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Vector> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Add<Vector>>::Output;
+        type Output = <Scalar as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Sub<Vector>>::Output;
+        type Output = <Scalar as ::core::ops::Sub<Vector>>::Output;
         #[inline]
         fn sub(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
     impl ::core::ops::Sub<Vector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Sub<Vector>>::Output;
+        type Output = <Scalar as ::core::ops::Sub<Vector>>::Output;
         #[inline]
         fn sub(self, rhs: Vector) -> Self::Output {
             ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Sub<Vector>>::Output;
+        type Output = <Scalar as ::core::ops::Sub<Vector>>::Output;
         #[inline]
         fn sub(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Bivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Mul<Bivector>>::Output;
+        type Output = <Scalar as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
     impl ::core::ops::Mul<Bivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Mul<Bivector>>::Output;
+        type Output = <Scalar as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: Bivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Bivector> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Mul<Bivector>>::Output;
+        type Output = <Scalar as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitXor<Bivector>>::Output;
+        type Output = <Scalar as ::core::ops::BitXor<Bivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
     impl ::core::ops::BitXor<Bivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitXor<Bivector>>::Output;
+        type Output = <Scalar as ::core::ops::BitXor<Bivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: Bivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitXor<Bivector>>::Output;
+        type Output = <Scalar as ::core::ops::BitXor<Bivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Bivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitOr<Bivector>>::Output;
+        type Output = <Scalar as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
     impl ::core::ops::BitOr<Bivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitOr<Bivector>>::Output;
+        type Output = <Scalar as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Bivector> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitOr<Bivector>>::Output;
+        type Output = <Scalar as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Add<Bivector>>::Output;
+        type Output = <Scalar as ::core::ops::Add<Bivector>>::Output;
         #[inline]
         fn add(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
     impl ::core::ops::Add<Bivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Add<Bivector>>::Output;
+        type Output = <Scalar as ::core::ops::Add<Bivector>>::Output;
         #[inline]
         fn add(self, rhs: Bivector) -> Self::Output {
             ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Add<Bivector>>::Output;
+        type Output = <Scalar as ::core::ops::Add<Bivector>>::Output;
         #[inline]
         fn add(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Bivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Sub<Bivector>>::Output;
+        type Output = <Scalar as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
     impl ::core::ops::Sub<Bivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Sub<Bivector>>::Output;
+        type Output = <Scalar as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: Bivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Bivector> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Sub<Bivector>>::Output;
+        type Output = <Scalar as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Trivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Mul<Trivector>>::Output;
+        type Output = <Scalar as ::core::ops::Mul<Trivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
     impl ::core::ops::Mul<Trivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Mul<Trivector>>::Output;
+        type Output = <Scalar as ::core::ops::Mul<Trivector>>::Output;
         #[inline]
         fn mul(self, rhs: Trivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Trivector> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Mul<Trivector>>::Output;
+        type Output = <Scalar as ::core::ops::Mul<Trivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Trivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitXor<Trivector>>::Output;
+        type Output = <Scalar as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
     impl ::core::ops::BitXor<Trivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitXor<Trivector>>::Output;
+        type Output = <Scalar as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Trivector> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitXor<Trivector>>::Output;
+        type Output = <Scalar as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitOr<Trivector>>::Output;
+        type Output = <Scalar as ::core::ops::BitOr<Trivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
     impl ::core::ops::BitOr<Trivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitOr<Trivector>>::Output;
+        type Output = <Scalar as ::core::ops::BitOr<Trivector>>::Output;
         #[inline]
         fn bitor(self, rhs: Trivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitOr<Trivector>>::Output;
+        type Output = <Scalar as ::core::ops::BitOr<Trivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Trivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Add<Trivector>>::Output;
+        type Output = <Scalar as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
     impl ::core::ops::Add<Trivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Add<Trivector>>::Output;
+        type Output = <Scalar as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: Trivector) -> Self::Output {
             ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Trivector> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Add<Trivector>>::Output;
+        type Output = <Scalar as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Sub<Trivector>>::Output;
+        type Output = <Scalar as ::core::ops::Sub<Trivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
     impl ::core::ops::Sub<Trivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Sub<Trivector>>::Output;
+        type Output = <Scalar as ::core::ops::Sub<Trivector>>::Output;
         #[inline]
         fn sub(self, rhs: Trivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Sub<Trivector>>::Output;
+        type Output = <Scalar as ::core::ops::Sub<Trivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Even> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Mul<Even>>::Output;
+        type Output = <Scalar as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
     impl ::core::ops::Mul<Even> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Mul<Even>>::Output;
+        type Output = <Scalar as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: Even) -> Self::Output {
             ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Even> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Mul<Even>>::Output;
+        type Output = <Scalar as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitXor<Even>>::Output;
+        type Output = <Scalar as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
     impl ::core::ops::BitXor<Even> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitXor<Even>>::Output;
+        type Output = <Scalar as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitXor<Even>>::Output;
+        type Output = <Scalar as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitOr<Even>>::Output;
+        type Output = <Scalar as ::core::ops::BitOr<Even>>::Output;
         #[inline]
         fn bitor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
     impl ::core::ops::BitOr<Even> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitOr<Even>>::Output;
+        type Output = <Scalar as ::core::ops::BitOr<Even>>::Output;
         #[inline]
         fn bitor(self, rhs: Even) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitOr<Even>>::Output;
+        type Output = <Scalar as ::core::ops::BitOr<Even>>::Output;
         #[inline]
         fn bitor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Even> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Add<Even>>::Output;
+        type Output = <Scalar as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
     impl ::core::ops::Add<Even> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Add<Even>>::Output;
+        type Output = <Scalar as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: Even) -> Self::Output {
             ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Even> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Add<Even>>::Output;
+        type Output = <Scalar as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Sub<Even>>::Output;
+        type Output = <Scalar as ::core::ops::Sub<Even>>::Output;
         #[inline]
         fn sub(self, rhs: &Even) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
     impl ::core::ops::Sub<Even> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Sub<Even>>::Output;
+        type Output = <Scalar as ::core::ops::Sub<Even>>::Output;
         #[inline]
         fn sub(self, rhs: Even) -> Self::Output {
             ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Sub<Even>>::Output;
+        type Output = <Scalar as ::core::ops::Sub<Even>>::Output;
         #[inline]
         fn sub(self, rhs: &Even) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Odd> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Mul<Odd>>::Output;
+        type Output = <Scalar as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
     impl ::core::ops::Mul<Odd> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Mul<Odd>>::Output;
+        type Output = <Scalar as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: Odd) -> Self::Output {
             ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Odd> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Mul<Odd>>::Output;
+        type Output = <Scalar as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitXor<Odd>>::Output;
+        type Output = <Scalar as ::core::ops::BitXor<Odd>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
     impl ::core::ops::BitXor<Odd> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitXor<Odd>>::Output;
+        type Output = <Scalar as ::core::ops::BitXor<Odd>>::Output;
         #[inline]
         fn bitxor(self, rhs: Odd) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitXor<Odd>>::Output;
+        type Output = <Scalar as ::core::ops::BitXor<Odd>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Odd> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitOr<Odd>>::Output;
+        type Output = <Scalar as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
     impl ::core::ops::BitOr<Odd> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitOr<Odd>>::Output;
+        type Output = <Scalar as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Odd> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitOr<Odd>>::Output;
+        type Output = <Scalar as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Add<Odd>>::Output;
+        type Output = <Scalar as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
     impl ::core::ops::Add<Odd> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Add<Odd>>::Output;
+        type Output = <Scalar as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: Odd) -> Self::Output {
             ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Add<Odd>>::Output;
+        type Output = <Scalar as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Sub<Odd>>::Output;
+        type Output = <Scalar as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
     impl ::core::ops::Sub<Odd> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Sub<Odd>>::Output;
+        type Output = <Scalar as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: Odd) -> Self::Output {
             ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Sub<Odd>>::Output;
+        type Output = <Scalar as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&Multivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Mul<Multivector>>::Output;
+        type Output = <Scalar as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
     impl ::core::ops::Mul<Multivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Mul<Multivector>>::Output;
+        type Output = <Scalar as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: Multivector) -> Self::Output {
             ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Multivector> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Mul<Multivector>>::Output;
+        type Output = <Scalar as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitXor<Multivector>>::Output;
+        type Output = <Scalar as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
     impl ::core::ops::BitXor<Multivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitXor<Multivector>>::Output;
+        type Output = <Scalar as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitXor<Multivector>>::Output;
+        type Output = <Scalar as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitOr<Multivector>>::Output;
+        type Output = <Scalar as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
     impl ::core::ops::BitOr<Multivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitOr<Multivector>>::Output;
+        type Output = <Scalar as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
         fn bitor(self, rhs: Multivector) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::BitOr<Multivector>>::Output;
+        type Output = <Scalar as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&Multivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Add<Multivector>>::Output;
+        type Output = <Scalar as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
     impl ::core::ops::Add<Multivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Add<Multivector>>::Output;
+        type Output = <Scalar as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: Multivector) -> Self::Output {
             ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Multivector> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Add<Multivector>>::Output;
+        type Output = <Scalar as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Sub<Multivector>>::Output;
+        type Output = <Scalar as ::core::ops::Sub<Multivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
     impl ::core::ops::Sub<Multivector> for &::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Sub<Multivector>>::Output;
+        type Output = <Scalar as ::core::ops::Sub<Multivector>>::Output;
         #[inline]
         fn sub(self, rhs: Multivector) -> Self::Output {
             ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for ::num_dual::Dual64 {
-        type Output = <::num_dual::Dual64 as ::core::ops::Sub<Multivector>>::Output;
+        type Output = <Scalar as ::core::ops::Sub<Multivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::Mul<&::num_dual::Dual64> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<::num_dual::Dual64>>::Output;
+        type Output = <Vector as ::core::ops::Mul<Scalar>>::Output;
         #[inline]
-        fn mul(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn mul(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
     impl ::core::ops::Mul<::num_dual::Dual64> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<::num_dual::Dual64>>::Output;
+        type Output = <Vector as ::core::ops::Mul<Scalar>>::Output;
         #[inline]
-        fn mul(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn mul(self, rhs: Scalar) -> Self::Output {
             ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&::num_dual::Dual64> for Vector {
-        type Output = <Vector as ::core::ops::Mul<::num_dual::Dual64>>::Output;
+        type Output = <Vector as ::core::ops::Mul<Scalar>>::Output;
         #[inline]
-        fn mul(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn mul(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&::num_dual::Dual64> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<::num_dual::Dual64>>::Output;
+        type Output = <Vector as ::core::ops::BitXor<Scalar>>::Output;
         #[inline]
-        fn bitxor(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn bitxor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
     impl ::core::ops::BitXor<::num_dual::Dual64> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<::num_dual::Dual64>>::Output;
+        type Output = <Vector as ::core::ops::BitXor<Scalar>>::Output;
         #[inline]
-        fn bitxor(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn bitxor(self, rhs: Scalar) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&::num_dual::Dual64> for Vector {
-        type Output = <Vector as ::core::ops::BitXor<::num_dual::Dual64>>::Output;
+        type Output = <Vector as ::core::ops::BitXor<Scalar>>::Output;
         #[inline]
-        fn bitxor(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn bitxor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&::num_dual::Dual64> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<::num_dual::Dual64>>::Output;
+        type Output = <Vector as ::core::ops::BitOr<Scalar>>::Output;
         #[inline]
-        fn bitor(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn bitor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
     impl ::core::ops::BitOr<::num_dual::Dual64> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<::num_dual::Dual64>>::Output;
+        type Output = <Vector as ::core::ops::BitOr<Scalar>>::Output;
         #[inline]
-        fn bitor(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn bitor(self, rhs: Scalar) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&::num_dual::Dual64> for Vector {
-        type Output = <Vector as ::core::ops::BitOr<::num_dual::Dual64>>::Output;
+        type Output = <Vector as ::core::ops::BitOr<Scalar>>::Output;
         #[inline]
-        fn bitor(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn bitor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&::num_dual::Dual64> for &Vector {
-        type Output = <Vector as ::core::ops::Add<::num_dual::Dual64>>::Output;
+        type Output = <Vector as ::core::ops::Add<Scalar>>::Output;
         #[inline]
-        fn add(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn add(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
     impl ::core::ops::Add<::num_dual::Dual64> for &Vector {
-        type Output = <Vector as ::core::ops::Add<::num_dual::Dual64>>::Output;
+        type Output = <Vector as ::core::ops::Add<Scalar>>::Output;
         #[inline]
-        fn add(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn add(self, rhs: Scalar) -> Self::Output {
             ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&::num_dual::Dual64> for Vector {
-        type Output = <Vector as ::core::ops::Add<::num_dual::Dual64>>::Output;
+        type Output = <Vector as ::core::ops::Add<Scalar>>::Output;
         #[inline]
-        fn add(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn add(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&::num_dual::Dual64> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<::num_dual::Dual64>>::Output;
+        type Output = <Vector as ::core::ops::Sub<Scalar>>::Output;
         #[inline]
-        fn sub(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn sub(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
     impl ::core::ops::Sub<::num_dual::Dual64> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<::num_dual::Dual64>>::Output;
+        type Output = <Vector as ::core::ops::Sub<Scalar>>::Output;
         #[inline]
-        fn sub(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn sub(self, rhs: Scalar) -> Self::Output {
             ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&::num_dual::Dual64> for Vector {
-        type Output = <Vector as ::core::ops::Sub<::num_dual::Dual64>>::Output;
+        type Output = <Vector as ::core::ops::Sub<Scalar>>::Output;
         #[inline]
-        fn sub(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn sub(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
@@ -12108,107 +12007,107 @@ pub mod g3 {
         }
     }
     impl ::core::ops::Mul<&::num_dual::Dual64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<::num_dual::Dual64>>::Output;
+        type Output = <Bivector as ::core::ops::Mul<Scalar>>::Output;
         #[inline]
-        fn mul(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn mul(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
     impl ::core::ops::Mul<::num_dual::Dual64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<::num_dual::Dual64>>::Output;
+        type Output = <Bivector as ::core::ops::Mul<Scalar>>::Output;
         #[inline]
-        fn mul(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn mul(self, rhs: Scalar) -> Self::Output {
             ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&::num_dual::Dual64> for Bivector {
-        type Output = <Bivector as ::core::ops::Mul<::num_dual::Dual64>>::Output;
+        type Output = <Bivector as ::core::ops::Mul<Scalar>>::Output;
         #[inline]
-        fn mul(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn mul(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&::num_dual::Dual64> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<::num_dual::Dual64>>::Output;
+        type Output = <Bivector as ::core::ops::BitXor<Scalar>>::Output;
         #[inline]
-        fn bitxor(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn bitxor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
     impl ::core::ops::BitXor<::num_dual::Dual64> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<::num_dual::Dual64>>::Output;
+        type Output = <Bivector as ::core::ops::BitXor<Scalar>>::Output;
         #[inline]
-        fn bitxor(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn bitxor(self, rhs: Scalar) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&::num_dual::Dual64> for Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<::num_dual::Dual64>>::Output;
+        type Output = <Bivector as ::core::ops::BitXor<Scalar>>::Output;
         #[inline]
-        fn bitxor(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn bitxor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&::num_dual::Dual64> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<::num_dual::Dual64>>::Output;
+        type Output = <Bivector as ::core::ops::BitOr<Scalar>>::Output;
         #[inline]
-        fn bitor(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn bitor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
     impl ::core::ops::BitOr<::num_dual::Dual64> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<::num_dual::Dual64>>::Output;
+        type Output = <Bivector as ::core::ops::BitOr<Scalar>>::Output;
         #[inline]
-        fn bitor(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn bitor(self, rhs: Scalar) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&::num_dual::Dual64> for Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<::num_dual::Dual64>>::Output;
+        type Output = <Bivector as ::core::ops::BitOr<Scalar>>::Output;
         #[inline]
-        fn bitor(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn bitor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&::num_dual::Dual64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<::num_dual::Dual64>>::Output;
+        type Output = <Bivector as ::core::ops::Add<Scalar>>::Output;
         #[inline]
-        fn add(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn add(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
     impl ::core::ops::Add<::num_dual::Dual64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<::num_dual::Dual64>>::Output;
+        type Output = <Bivector as ::core::ops::Add<Scalar>>::Output;
         #[inline]
-        fn add(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn add(self, rhs: Scalar) -> Self::Output {
             ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&::num_dual::Dual64> for Bivector {
-        type Output = <Bivector as ::core::ops::Add<::num_dual::Dual64>>::Output;
+        type Output = <Bivector as ::core::ops::Add<Scalar>>::Output;
         #[inline]
-        fn add(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn add(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&::num_dual::Dual64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<::num_dual::Dual64>>::Output;
+        type Output = <Bivector as ::core::ops::Sub<Scalar>>::Output;
         #[inline]
-        fn sub(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn sub(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
     impl ::core::ops::Sub<::num_dual::Dual64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<::num_dual::Dual64>>::Output;
+        type Output = <Bivector as ::core::ops::Sub<Scalar>>::Output;
         #[inline]
-        fn sub(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn sub(self, rhs: Scalar) -> Self::Output {
             ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&::num_dual::Dual64> for Bivector {
-        type Output = <Bivector as ::core::ops::Sub<::num_dual::Dual64>>::Output;
+        type Output = <Bivector as ::core::ops::Sub<Scalar>>::Output;
         #[inline]
-        fn sub(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn sub(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
@@ -12855,107 +12754,107 @@ pub mod g3 {
         }
     }
     impl ::core::ops::Mul<&::num_dual::Dual64> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<::num_dual::Dual64>>::Output;
+        type Output = <Trivector as ::core::ops::Mul<Scalar>>::Output;
         #[inline]
-        fn mul(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn mul(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
     impl ::core::ops::Mul<::num_dual::Dual64> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<::num_dual::Dual64>>::Output;
+        type Output = <Trivector as ::core::ops::Mul<Scalar>>::Output;
         #[inline]
-        fn mul(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn mul(self, rhs: Scalar) -> Self::Output {
             ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&::num_dual::Dual64> for Trivector {
-        type Output = <Trivector as ::core::ops::Mul<::num_dual::Dual64>>::Output;
+        type Output = <Trivector as ::core::ops::Mul<Scalar>>::Output;
         #[inline]
-        fn mul(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn mul(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&::num_dual::Dual64> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<::num_dual::Dual64>>::Output;
+        type Output = <Trivector as ::core::ops::BitXor<Scalar>>::Output;
         #[inline]
-        fn bitxor(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn bitxor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
     impl ::core::ops::BitXor<::num_dual::Dual64> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<::num_dual::Dual64>>::Output;
+        type Output = <Trivector as ::core::ops::BitXor<Scalar>>::Output;
         #[inline]
-        fn bitxor(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn bitxor(self, rhs: Scalar) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&::num_dual::Dual64> for Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<::num_dual::Dual64>>::Output;
+        type Output = <Trivector as ::core::ops::BitXor<Scalar>>::Output;
         #[inline]
-        fn bitxor(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn bitxor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&::num_dual::Dual64> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<::num_dual::Dual64>>::Output;
+        type Output = <Trivector as ::core::ops::BitOr<Scalar>>::Output;
         #[inline]
-        fn bitor(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn bitor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
     impl ::core::ops::BitOr<::num_dual::Dual64> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<::num_dual::Dual64>>::Output;
+        type Output = <Trivector as ::core::ops::BitOr<Scalar>>::Output;
         #[inline]
-        fn bitor(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn bitor(self, rhs: Scalar) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&::num_dual::Dual64> for Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<::num_dual::Dual64>>::Output;
+        type Output = <Trivector as ::core::ops::BitOr<Scalar>>::Output;
         #[inline]
-        fn bitor(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn bitor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&::num_dual::Dual64> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<::num_dual::Dual64>>::Output;
+        type Output = <Trivector as ::core::ops::Add<Scalar>>::Output;
         #[inline]
-        fn add(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn add(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
     impl ::core::ops::Add<::num_dual::Dual64> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<::num_dual::Dual64>>::Output;
+        type Output = <Trivector as ::core::ops::Add<Scalar>>::Output;
         #[inline]
-        fn add(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn add(self, rhs: Scalar) -> Self::Output {
             ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&::num_dual::Dual64> for Trivector {
-        type Output = <Trivector as ::core::ops::Add<::num_dual::Dual64>>::Output;
+        type Output = <Trivector as ::core::ops::Add<Scalar>>::Output;
         #[inline]
-        fn add(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn add(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&::num_dual::Dual64> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<::num_dual::Dual64>>::Output;
+        type Output = <Trivector as ::core::ops::Sub<Scalar>>::Output;
         #[inline]
-        fn sub(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn sub(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
     impl ::core::ops::Sub<::num_dual::Dual64> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<::num_dual::Dual64>>::Output;
+        type Output = <Trivector as ::core::ops::Sub<Scalar>>::Output;
         #[inline]
-        fn sub(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn sub(self, rhs: Scalar) -> Self::Output {
             ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&::num_dual::Dual64> for Trivector {
-        type Output = <Trivector as ::core::ops::Sub<::num_dual::Dual64>>::Output;
+        type Output = <Trivector as ::core::ops::Sub<Scalar>>::Output;
         #[inline]
-        fn sub(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn sub(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
@@ -13602,119 +13501,119 @@ pub mod g3 {
         }
     }
     impl ::core::ops::Mul<&::num_dual::Dual64> for &Even {
-        type Output = <Even as ::core::ops::Mul<::num_dual::Dual64>>::Output;
+        type Output = <Even as ::core::ops::Mul<Scalar>>::Output;
         #[inline]
-        fn mul(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn mul(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
     impl ::core::ops::Mul<::num_dual::Dual64> for &Even {
-        type Output = <Even as ::core::ops::Mul<::num_dual::Dual64>>::Output;
+        type Output = <Even as ::core::ops::Mul<Scalar>>::Output;
         #[inline]
-        fn mul(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn mul(self, rhs: Scalar) -> Self::Output {
             ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&::num_dual::Dual64> for Even {
-        type Output = <Even as ::core::ops::Mul<::num_dual::Dual64>>::Output;
+        type Output = <Even as ::core::ops::Mul<Scalar>>::Output;
         #[inline]
-        fn mul(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn mul(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&::num_dual::Dual64> for &Even {
-        type Output = <Even as ::core::ops::BitXor<::num_dual::Dual64>>::Output;
+        type Output = <Even as ::core::ops::BitXor<Scalar>>::Output;
         #[inline]
-        fn bitxor(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn bitxor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
     impl ::core::ops::BitXor<::num_dual::Dual64> for &Even {
-        type Output = <Even as ::core::ops::BitXor<::num_dual::Dual64>>::Output;
+        type Output = <Even as ::core::ops::BitXor<Scalar>>::Output;
         #[inline]
-        fn bitxor(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn bitxor(self, rhs: Scalar) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&::num_dual::Dual64> for Even {
-        type Output = <Even as ::core::ops::BitXor<::num_dual::Dual64>>::Output;
+        type Output = <Even as ::core::ops::BitXor<Scalar>>::Output;
         #[inline]
-        fn bitxor(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn bitxor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&::num_dual::Dual64> for &Even {
-        type Output = <Even as ::core::ops::BitOr<::num_dual::Dual64>>::Output;
+        type Output = <Even as ::core::ops::BitOr<Scalar>>::Output;
         #[inline]
-        fn bitor(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn bitor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
     impl ::core::ops::BitOr<::num_dual::Dual64> for &Even {
-        type Output = <Even as ::core::ops::BitOr<::num_dual::Dual64>>::Output;
+        type Output = <Even as ::core::ops::BitOr<Scalar>>::Output;
         #[inline]
-        fn bitor(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn bitor(self, rhs: Scalar) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&::num_dual::Dual64> for Even {
-        type Output = <Even as ::core::ops::BitOr<::num_dual::Dual64>>::Output;
+        type Output = <Even as ::core::ops::BitOr<Scalar>>::Output;
         #[inline]
-        fn bitor(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn bitor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&::num_dual::Dual64> for &Even {
-        type Output = <Even as ::core::ops::Add<::num_dual::Dual64>>::Output;
+        type Output = <Even as ::core::ops::Add<Scalar>>::Output;
         #[inline]
-        fn add(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn add(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
     impl ::core::ops::Add<::num_dual::Dual64> for &Even {
-        type Output = <Even as ::core::ops::Add<::num_dual::Dual64>>::Output;
+        type Output = <Even as ::core::ops::Add<Scalar>>::Output;
         #[inline]
-        fn add(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn add(self, rhs: Scalar) -> Self::Output {
             ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&::num_dual::Dual64> for Even {
-        type Output = <Even as ::core::ops::Add<::num_dual::Dual64>>::Output;
+        type Output = <Even as ::core::ops::Add<Scalar>>::Output;
         #[inline]
-        fn add(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn add(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&::num_dual::Dual64> for &Even {
-        type Output = <Even as ::core::ops::Sub<::num_dual::Dual64>>::Output;
+        type Output = <Even as ::core::ops::Sub<Scalar>>::Output;
         #[inline]
-        fn sub(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn sub(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
     impl ::core::ops::Sub<::num_dual::Dual64> for &Even {
-        type Output = <Even as ::core::ops::Sub<::num_dual::Dual64>>::Output;
+        type Output = <Even as ::core::ops::Sub<Scalar>>::Output;
         #[inline]
-        fn sub(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn sub(self, rhs: Scalar) -> Self::Output {
             ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&::num_dual::Dual64> for Even {
-        type Output = <Even as ::core::ops::Sub<::num_dual::Dual64>>::Output;
+        type Output = <Even as ::core::ops::Sub<Scalar>>::Output;
         #[inline]
-        fn sub(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn sub(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::AddAssign<&::num_dual::Dual64> for Even {
         #[inline]
-        fn add_assign(&mut self, rhs: &::num_dual::Dual64) {
+        fn add_assign(&mut self, rhs: &Scalar) {
             *self += *rhs;
         }
     }
     impl ::core::ops::SubAssign<&::num_dual::Dual64> for Even {
         #[inline]
-        fn sub_assign(&mut self, rhs: &::num_dual::Dual64) {
+        fn sub_assign(&mut self, rhs: &Scalar) {
             *self -= *rhs;
         }
     }
@@ -14373,107 +14272,107 @@ pub mod g3 {
         }
     }
     impl ::core::ops::Mul<&::num_dual::Dual64> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<::num_dual::Dual64>>::Output;
+        type Output = <Odd as ::core::ops::Mul<Scalar>>::Output;
         #[inline]
-        fn mul(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn mul(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
     impl ::core::ops::Mul<::num_dual::Dual64> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<::num_dual::Dual64>>::Output;
+        type Output = <Odd as ::core::ops::Mul<Scalar>>::Output;
         #[inline]
-        fn mul(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn mul(self, rhs: Scalar) -> Self::Output {
             ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&::num_dual::Dual64> for Odd {
-        type Output = <Odd as ::core::ops::Mul<::num_dual::Dual64>>::Output;
+        type Output = <Odd as ::core::ops::Mul<Scalar>>::Output;
         #[inline]
-        fn mul(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn mul(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&::num_dual::Dual64> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<::num_dual::Dual64>>::Output;
+        type Output = <Odd as ::core::ops::BitXor<Scalar>>::Output;
         #[inline]
-        fn bitxor(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn bitxor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
     impl ::core::ops::BitXor<::num_dual::Dual64> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<::num_dual::Dual64>>::Output;
+        type Output = <Odd as ::core::ops::BitXor<Scalar>>::Output;
         #[inline]
-        fn bitxor(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn bitxor(self, rhs: Scalar) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&::num_dual::Dual64> for Odd {
-        type Output = <Odd as ::core::ops::BitXor<::num_dual::Dual64>>::Output;
+        type Output = <Odd as ::core::ops::BitXor<Scalar>>::Output;
         #[inline]
-        fn bitxor(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn bitxor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&::num_dual::Dual64> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<::num_dual::Dual64>>::Output;
+        type Output = <Odd as ::core::ops::BitOr<Scalar>>::Output;
         #[inline]
-        fn bitor(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn bitor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
     impl ::core::ops::BitOr<::num_dual::Dual64> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<::num_dual::Dual64>>::Output;
+        type Output = <Odd as ::core::ops::BitOr<Scalar>>::Output;
         #[inline]
-        fn bitor(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn bitor(self, rhs: Scalar) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&::num_dual::Dual64> for Odd {
-        type Output = <Odd as ::core::ops::BitOr<::num_dual::Dual64>>::Output;
+        type Output = <Odd as ::core::ops::BitOr<Scalar>>::Output;
         #[inline]
-        fn bitor(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn bitor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&::num_dual::Dual64> for &Odd {
-        type Output = <Odd as ::core::ops::Add<::num_dual::Dual64>>::Output;
+        type Output = <Odd as ::core::ops::Add<Scalar>>::Output;
         #[inline]
-        fn add(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn add(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
     impl ::core::ops::Add<::num_dual::Dual64> for &Odd {
-        type Output = <Odd as ::core::ops::Add<::num_dual::Dual64>>::Output;
+        type Output = <Odd as ::core::ops::Add<Scalar>>::Output;
         #[inline]
-        fn add(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn add(self, rhs: Scalar) -> Self::Output {
             ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&::num_dual::Dual64> for Odd {
-        type Output = <Odd as ::core::ops::Add<::num_dual::Dual64>>::Output;
+        type Output = <Odd as ::core::ops::Add<Scalar>>::Output;
         #[inline]
-        fn add(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn add(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&::num_dual::Dual64> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<::num_dual::Dual64>>::Output;
+        type Output = <Odd as ::core::ops::Sub<Scalar>>::Output;
         #[inline]
-        fn sub(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn sub(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
     impl ::core::ops::Sub<::num_dual::Dual64> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<::num_dual::Dual64>>::Output;
+        type Output = <Odd as ::core::ops::Sub<Scalar>>::Output;
         #[inline]
-        fn sub(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn sub(self, rhs: Scalar) -> Self::Output {
             ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&::num_dual::Dual64> for Odd {
-        type Output = <Odd as ::core::ops::Sub<::num_dual::Dual64>>::Output;
+        type Output = <Odd as ::core::ops::Sub<Scalar>>::Output;
         #[inline]
-        fn sub(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn sub(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
@@ -15144,119 +15043,119 @@ pub mod g3 {
         }
     }
     impl ::core::ops::Mul<&::num_dual::Dual64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<::num_dual::Dual64>>::Output;
+        type Output = <Multivector as ::core::ops::Mul<Scalar>>::Output;
         #[inline]
-        fn mul(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn mul(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Mul::mul(*self, *rhs)
         }
     }
     impl ::core::ops::Mul<::num_dual::Dual64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<::num_dual::Dual64>>::Output;
+        type Output = <Multivector as ::core::ops::Mul<Scalar>>::Output;
         #[inline]
-        fn mul(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn mul(self, rhs: Scalar) -> Self::Output {
             ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&::num_dual::Dual64> for Multivector {
-        type Output = <Multivector as ::core::ops::Mul<::num_dual::Dual64>>::Output;
+        type Output = <Multivector as ::core::ops::Mul<Scalar>>::Output;
         #[inline]
-        fn mul(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn mul(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
     impl ::core::ops::BitXor<&::num_dual::Dual64> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<::num_dual::Dual64>>::Output;
+        type Output = <Multivector as ::core::ops::BitXor<Scalar>>::Output;
         #[inline]
-        fn bitxor(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn bitxor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, *rhs)
         }
     }
     impl ::core::ops::BitXor<::num_dual::Dual64> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<::num_dual::Dual64>>::Output;
+        type Output = <Multivector as ::core::ops::BitXor<Scalar>>::Output;
         #[inline]
-        fn bitxor(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn bitxor(self, rhs: Scalar) -> Self::Output {
             ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&::num_dual::Dual64> for Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<::num_dual::Dual64>>::Output;
+        type Output = <Multivector as ::core::ops::BitXor<Scalar>>::Output;
         #[inline]
-        fn bitxor(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn bitxor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
     impl ::core::ops::BitOr<&::num_dual::Dual64> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<::num_dual::Dual64>>::Output;
+        type Output = <Multivector as ::core::ops::BitOr<Scalar>>::Output;
         #[inline]
-        fn bitor(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn bitor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, *rhs)
         }
     }
     impl ::core::ops::BitOr<::num_dual::Dual64> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<::num_dual::Dual64>>::Output;
+        type Output = <Multivector as ::core::ops::BitOr<Scalar>>::Output;
         #[inline]
-        fn bitor(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn bitor(self, rhs: Scalar) -> Self::Output {
             ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&::num_dual::Dual64> for Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<::num_dual::Dual64>>::Output;
+        type Output = <Multivector as ::core::ops::BitOr<Scalar>>::Output;
         #[inline]
-        fn bitor(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn bitor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
     impl ::core::ops::Add<&::num_dual::Dual64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<::num_dual::Dual64>>::Output;
+        type Output = <Multivector as ::core::ops::Add<Scalar>>::Output;
         #[inline]
-        fn add(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn add(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Add::add(*self, *rhs)
         }
     }
     impl ::core::ops::Add<::num_dual::Dual64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<::num_dual::Dual64>>::Output;
+        type Output = <Multivector as ::core::ops::Add<Scalar>>::Output;
         #[inline]
-        fn add(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn add(self, rhs: Scalar) -> Self::Output {
             ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&::num_dual::Dual64> for Multivector {
-        type Output = <Multivector as ::core::ops::Add<::num_dual::Dual64>>::Output;
+        type Output = <Multivector as ::core::ops::Add<Scalar>>::Output;
         #[inline]
-        fn add(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn add(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
         }
     }
     impl ::core::ops::Sub<&::num_dual::Dual64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<::num_dual::Dual64>>::Output;
+        type Output = <Multivector as ::core::ops::Sub<Scalar>>::Output;
         #[inline]
-        fn sub(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn sub(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Sub::sub(*self, *rhs)
         }
     }
     impl ::core::ops::Sub<::num_dual::Dual64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<::num_dual::Dual64>>::Output;
+        type Output = <Multivector as ::core::ops::Sub<Scalar>>::Output;
         #[inline]
-        fn sub(self, rhs: ::num_dual::Dual64) -> Self::Output {
+        fn sub(self, rhs: Scalar) -> Self::Output {
             ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&::num_dual::Dual64> for Multivector {
-        type Output = <Multivector as ::core::ops::Sub<::num_dual::Dual64>>::Output;
+        type Output = <Multivector as ::core::ops::Sub<Scalar>>::Output;
         #[inline]
-        fn sub(self, rhs: &::num_dual::Dual64) -> Self::Output {
+        fn sub(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
     impl ::core::ops::AddAssign<&::num_dual::Dual64> for Multivector {
         #[inline]
-        fn add_assign(&mut self, rhs: &::num_dual::Dual64) {
+        fn add_assign(&mut self, rhs: &Scalar) {
             *self += *rhs;
         }
     }
     impl ::core::ops::SubAssign<&::num_dual::Dual64> for Multivector {
         #[inline]
-        fn sub_assign(&mut self, rhs: &::num_dual::Dual64) {
+        fn sub_assign(&mut self, rhs: &Scalar) {
             *self -= *rhs;
         }
     }
@@ -15972,33 +15871,33 @@ pub mod g3 {
     impl ::core::ops::Div<::num_dual::Dual64> for &Vector {
         type Output = Vector;
         #[inline]
-        fn div(self, rhs: ::num_dual::Dual64) -> Vector {
+        fn div(self, rhs: Scalar) -> Vector {
             *self / rhs
         }
     }
     impl ::core::ops::Div<&::num_dual::Dual64> for Vector {
         type Output = Vector;
         #[inline]
-        fn div(self, rhs: &::num_dual::Dual64) -> Vector {
+        fn div(self, rhs: &Scalar) -> Vector {
             self / *rhs
         }
     }
     impl ::core::ops::Div<&::num_dual::Dual64> for &Vector {
         type Output = Vector;
         #[inline]
-        fn div(self, rhs: &::num_dual::Dual64) -> Vector {
+        fn div(self, rhs: &Scalar) -> Vector {
             *self / *rhs
         }
     }
     impl ::core::ops::MulAssign<&::num_dual::Dual64> for Vector {
         #[inline]
-        fn mul_assign(&mut self, rhs: &::num_dual::Dual64) {
+        fn mul_assign(&mut self, rhs: &Scalar) {
             *self *= *rhs;
         }
     }
     impl ::core::ops::DivAssign<&::num_dual::Dual64> for Vector {
         #[inline]
-        fn div_assign(&mut self, rhs: &::num_dual::Dual64) {
+        fn div_assign(&mut self, rhs: &Scalar) {
             *self /= *rhs;
         }
     }
@@ -16012,33 +15911,33 @@ pub mod g3 {
     impl ::core::ops::Div<::num_dual::Dual64> for &Bivector {
         type Output = Bivector;
         #[inline]
-        fn div(self, rhs: ::num_dual::Dual64) -> Bivector {
+        fn div(self, rhs: Scalar) -> Bivector {
             *self / rhs
         }
     }
     impl ::core::ops::Div<&::num_dual::Dual64> for Bivector {
         type Output = Bivector;
         #[inline]
-        fn div(self, rhs: &::num_dual::Dual64) -> Bivector {
+        fn div(self, rhs: &Scalar) -> Bivector {
             self / *rhs
         }
     }
     impl ::core::ops::Div<&::num_dual::Dual64> for &Bivector {
         type Output = Bivector;
         #[inline]
-        fn div(self, rhs: &::num_dual::Dual64) -> Bivector {
+        fn div(self, rhs: &Scalar) -> Bivector {
             *self / *rhs
         }
     }
     impl ::core::ops::MulAssign<&::num_dual::Dual64> for Bivector {
         #[inline]
-        fn mul_assign(&mut self, rhs: &::num_dual::Dual64) {
+        fn mul_assign(&mut self, rhs: &Scalar) {
             *self *= *rhs;
         }
     }
     impl ::core::ops::DivAssign<&::num_dual::Dual64> for Bivector {
         #[inline]
-        fn div_assign(&mut self, rhs: &::num_dual::Dual64) {
+        fn div_assign(&mut self, rhs: &Scalar) {
             *self /= *rhs;
         }
     }
@@ -16052,33 +15951,33 @@ pub mod g3 {
     impl ::core::ops::Div<::num_dual::Dual64> for &Trivector {
         type Output = Trivector;
         #[inline]
-        fn div(self, rhs: ::num_dual::Dual64) -> Trivector {
+        fn div(self, rhs: Scalar) -> Trivector {
             *self / rhs
         }
     }
     impl ::core::ops::Div<&::num_dual::Dual64> for Trivector {
         type Output = Trivector;
         #[inline]
-        fn div(self, rhs: &::num_dual::Dual64) -> Trivector {
+        fn div(self, rhs: &Scalar) -> Trivector {
             self / *rhs
         }
     }
     impl ::core::ops::Div<&::num_dual::Dual64> for &Trivector {
         type Output = Trivector;
         #[inline]
-        fn div(self, rhs: &::num_dual::Dual64) -> Trivector {
+        fn div(self, rhs: &Scalar) -> Trivector {
             *self / *rhs
         }
     }
     impl ::core::ops::MulAssign<&::num_dual::Dual64> for Trivector {
         #[inline]
-        fn mul_assign(&mut self, rhs: &::num_dual::Dual64) {
+        fn mul_assign(&mut self, rhs: &Scalar) {
             *self *= *rhs;
         }
     }
     impl ::core::ops::DivAssign<&::num_dual::Dual64> for Trivector {
         #[inline]
-        fn div_assign(&mut self, rhs: &::num_dual::Dual64) {
+        fn div_assign(&mut self, rhs: &Scalar) {
             *self /= *rhs;
         }
     }
@@ -16092,33 +15991,33 @@ pub mod g3 {
     impl ::core::ops::Div<::num_dual::Dual64> for &Even {
         type Output = Even;
         #[inline]
-        fn div(self, rhs: ::num_dual::Dual64) -> Even {
+        fn div(self, rhs: Scalar) -> Even {
             *self / rhs
         }
     }
     impl ::core::ops::Div<&::num_dual::Dual64> for Even {
         type Output = Even;
         #[inline]
-        fn div(self, rhs: &::num_dual::Dual64) -> Even {
+        fn div(self, rhs: &Scalar) -> Even {
             self / *rhs
         }
     }
     impl ::core::ops::Div<&::num_dual::Dual64> for &Even {
         type Output = Even;
         #[inline]
-        fn div(self, rhs: &::num_dual::Dual64) -> Even {
+        fn div(self, rhs: &Scalar) -> Even {
             *self / *rhs
         }
     }
     impl ::core::ops::MulAssign<&::num_dual::Dual64> for Even {
         #[inline]
-        fn mul_assign(&mut self, rhs: &::num_dual::Dual64) {
+        fn mul_assign(&mut self, rhs: &Scalar) {
             *self *= *rhs;
         }
     }
     impl ::core::ops::DivAssign<&::num_dual::Dual64> for Even {
         #[inline]
-        fn div_assign(&mut self, rhs: &::num_dual::Dual64) {
+        fn div_assign(&mut self, rhs: &Scalar) {
             *self /= *rhs;
         }
     }
@@ -16138,33 +16037,33 @@ pub mod g3 {
     impl ::core::ops::Div<::num_dual::Dual64> for &Odd {
         type Output = Odd;
         #[inline]
-        fn div(self, rhs: ::num_dual::Dual64) -> Odd {
+        fn div(self, rhs: Scalar) -> Odd {
             *self / rhs
         }
     }
     impl ::core::ops::Div<&::num_dual::Dual64> for Odd {
         type Output = Odd;
         #[inline]
-        fn div(self, rhs: &::num_dual::Dual64) -> Odd {
+        fn div(self, rhs: &Scalar) -> Odd {
             self / *rhs
         }
     }
     impl ::core::ops::Div<&::num_dual::Dual64> for &Odd {
         type Output = Odd;
         #[inline]
-        fn div(self, rhs: &::num_dual::Dual64) -> Odd {
+        fn div(self, rhs: &Scalar) -> Odd {
             *self / *rhs
         }
     }
     impl ::core::ops::MulAssign<&::num_dual::Dual64> for Odd {
         #[inline]
-        fn mul_assign(&mut self, rhs: &::num_dual::Dual64) {
+        fn mul_assign(&mut self, rhs: &Scalar) {
             *self *= *rhs;
         }
     }
     impl ::core::ops::DivAssign<&::num_dual::Dual64> for Odd {
         #[inline]
-        fn div_assign(&mut self, rhs: &::num_dual::Dual64) {
+        fn div_assign(&mut self, rhs: &Scalar) {
             *self /= *rhs;
         }
     }
@@ -16178,33 +16077,33 @@ pub mod g3 {
     impl ::core::ops::Div<::num_dual::Dual64> for &Multivector {
         type Output = Multivector;
         #[inline]
-        fn div(self, rhs: ::num_dual::Dual64) -> Multivector {
+        fn div(self, rhs: Scalar) -> Multivector {
             *self / rhs
         }
     }
     impl ::core::ops::Div<&::num_dual::Dual64> for Multivector {
         type Output = Multivector;
         #[inline]
-        fn div(self, rhs: &::num_dual::Dual64) -> Multivector {
+        fn div(self, rhs: &Scalar) -> Multivector {
             self / *rhs
         }
     }
     impl ::core::ops::Div<&::num_dual::Dual64> for &Multivector {
         type Output = Multivector;
         #[inline]
-        fn div(self, rhs: &::num_dual::Dual64) -> Multivector {
+        fn div(self, rhs: &Scalar) -> Multivector {
             *self / *rhs
         }
     }
     impl ::core::ops::MulAssign<&::num_dual::Dual64> for Multivector {
         #[inline]
-        fn mul_assign(&mut self, rhs: &::num_dual::Dual64) {
+        fn mul_assign(&mut self, rhs: &Scalar) {
             *self *= *rhs;
         }
     }
     impl ::core::ops::DivAssign<&::num_dual::Dual64> for Multivector {
         #[inline]
-        fn div_assign(&mut self, rhs: &::num_dual::Dual64) {
+        fn div_assign(&mut self, rhs: &Scalar) {
             *self /= *rhs;
         }
     }
@@ -16220,7 +16119,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Vector) -> Vector {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2) + rhs.e3 * rhs.e3);
             self
                 * Vector {
@@ -16236,7 +16135,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Bivector) -> Bivector {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.e12 * rhs.e12 + rhs.e13 * rhs.e13) + rhs.e23 * rhs.e23);
             self
                 * Bivector {
@@ -16252,8 +16151,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Trivector) -> Trivector {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-                / (rhs.e123 * rhs.e123);
+            let scale = <Scalar as ::ga_core::Scalar>::ONE / (rhs.e123 * rhs.e123);
             self
                 * Trivector {
                     e123: -rhs.e123 * scale,
@@ -16266,7 +16164,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Even) -> Even {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.s * rhs.s + rhs.e12 * rhs.e12)
                     + (rhs.e13 * rhs.e13 + rhs.e23 * rhs.e23));
             self
@@ -16284,7 +16182,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Odd) -> Odd {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
                     + (rhs.e3 * rhs.e3 + rhs.e123 * rhs.e123));
             self
@@ -16302,7 +16200,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Vector) -> Even {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2) + rhs.e3 * rhs.e3);
             self
                 * Vector {
@@ -16318,7 +16216,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Bivector) -> Odd {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.e12 * rhs.e12 + rhs.e13 * rhs.e13) + rhs.e23 * rhs.e23);
             self
                 * Bivector {
@@ -16334,8 +16232,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Trivector) -> Bivector {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-                / (rhs.e123 * rhs.e123);
+            let scale = <Scalar as ::ga_core::Scalar>::ONE / (rhs.e123 * rhs.e123);
             self
                 * Trivector {
                     e123: -rhs.e123 * scale,
@@ -16348,7 +16245,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Even) -> Odd {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.s * rhs.s + rhs.e12 * rhs.e12)
                     + (rhs.e13 * rhs.e13 + rhs.e23 * rhs.e23));
             self
@@ -16366,7 +16263,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Odd) -> Even {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
                     + (rhs.e3 * rhs.e3 + rhs.e123 * rhs.e123));
             self
@@ -16384,7 +16281,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Vector) -> Odd {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2) + rhs.e3 * rhs.e3);
             self
                 * Vector {
@@ -16400,7 +16297,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Bivector) -> Even {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.e12 * rhs.e12 + rhs.e13 * rhs.e13) + rhs.e23 * rhs.e23);
             self
                 * Bivector {
@@ -16416,8 +16313,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Trivector) -> Vector {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-                / (rhs.e123 * rhs.e123);
+            let scale = <Scalar as ::ga_core::Scalar>::ONE / (rhs.e123 * rhs.e123);
             self
                 * Trivector {
                     e123: -rhs.e123 * scale,
@@ -16430,7 +16326,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Even) -> Even {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.s * rhs.s + rhs.e12 * rhs.e12)
                     + (rhs.e13 * rhs.e13 + rhs.e23 * rhs.e23));
             self
@@ -16448,7 +16344,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Odd) -> Odd {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
                     + (rhs.e3 * rhs.e3 + rhs.e123 * rhs.e123));
             self
@@ -16466,7 +16362,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Vector) -> Bivector {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2) + rhs.e3 * rhs.e3);
             self
                 * Vector {
@@ -16482,7 +16378,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Bivector) -> Vector {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.e12 * rhs.e12 + rhs.e13 * rhs.e13) + rhs.e23 * rhs.e23);
             self
                 * Bivector {
@@ -16493,13 +16389,12 @@ pub mod g3 {
         }
     }
     impl ::core::ops::Div<Trivector> for Trivector {
-        type Output = ::num_dual::Dual64;
+        type Output = Scalar;
         /// `self * rhs^-1` with `rhs^-1 = ~rhs / <rhs ~rhs>`; non-finite when
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
-        fn div(self, rhs: Trivector) -> ::num_dual::Dual64 {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-                / (rhs.e123 * rhs.e123);
+        fn div(self, rhs: Trivector) -> Scalar {
+            let scale = <Scalar as ::ga_core::Scalar>::ONE / (rhs.e123 * rhs.e123);
             self
                 * Trivector {
                     e123: -rhs.e123 * scale,
@@ -16512,7 +16407,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Even) -> Odd {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.s * rhs.s + rhs.e12 * rhs.e12)
                     + (rhs.e13 * rhs.e13 + rhs.e23 * rhs.e23));
             self
@@ -16530,7 +16425,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Odd) -> Even {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
                     + (rhs.e3 * rhs.e3 + rhs.e123 * rhs.e123));
             self
@@ -16548,7 +16443,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Vector) -> Odd {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2) + rhs.e3 * rhs.e3);
             self
                 * Vector {
@@ -16564,7 +16459,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Bivector) -> Even {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.e12 * rhs.e12 + rhs.e13 * rhs.e13) + rhs.e23 * rhs.e23);
             self
                 * Bivector {
@@ -16580,8 +16475,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Trivector) -> Odd {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-                / (rhs.e123 * rhs.e123);
+            let scale = <Scalar as ::ga_core::Scalar>::ONE / (rhs.e123 * rhs.e123);
             self
                 * Trivector {
                     e123: -rhs.e123 * scale,
@@ -16594,7 +16488,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Even) -> Even {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.s * rhs.s + rhs.e12 * rhs.e12)
                     + (rhs.e13 * rhs.e13 + rhs.e23 * rhs.e23));
             self
@@ -16612,7 +16506,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Odd) -> Odd {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
                     + (rhs.e3 * rhs.e3 + rhs.e123 * rhs.e123));
             self
@@ -16630,7 +16524,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Vector) -> Even {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2) + rhs.e3 * rhs.e3);
             self
                 * Vector {
@@ -16646,7 +16540,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Bivector) -> Odd {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.e12 * rhs.e12 + rhs.e13 * rhs.e13) + rhs.e23 * rhs.e23);
             self
                 * Bivector {
@@ -16662,8 +16556,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Trivector) -> Even {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-                / (rhs.e123 * rhs.e123);
+            let scale = <Scalar as ::ga_core::Scalar>::ONE / (rhs.e123 * rhs.e123);
             self
                 * Trivector {
                     e123: -rhs.e123 * scale,
@@ -16676,7 +16569,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Even) -> Odd {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.s * rhs.s + rhs.e12 * rhs.e12)
                     + (rhs.e13 * rhs.e13 + rhs.e23 * rhs.e23));
             self
@@ -16694,7 +16587,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Odd) -> Even {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
                     + (rhs.e3 * rhs.e3 + rhs.e123 * rhs.e123));
             self
@@ -16712,7 +16605,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Vector) -> Multivector {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2) + rhs.e3 * rhs.e3);
             self
                 * Vector {
@@ -16728,7 +16621,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Bivector) -> Multivector {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.e12 * rhs.e12 + rhs.e13 * rhs.e13) + rhs.e23 * rhs.e23);
             self
                 * Bivector {
@@ -16744,8 +16637,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Trivector) -> Multivector {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-                / (rhs.e123 * rhs.e123);
+            let scale = <Scalar as ::ga_core::Scalar>::ONE / (rhs.e123 * rhs.e123);
             self
                 * Trivector {
                     e123: -rhs.e123 * scale,
@@ -16758,7 +16650,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Even) -> Multivector {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.s * rhs.s + rhs.e12 * rhs.e12)
                     + (rhs.e13 * rhs.e13 + rhs.e23 * rhs.e23));
             self
@@ -16776,7 +16668,7 @@ pub mod g3 {
         /// `<rhs ~rhs>` is zero (see `inverse` for the checked form).
         #[inline]
         fn div(self, rhs: Odd) -> Multivector {
-            let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+            let scale = <Scalar as ::ga_core::Scalar>::ONE
                 / ((rhs.e1 * rhs.e1 + rhs.e2 * rhs.e2)
                     + (rhs.e3 * rhs.e3 + rhs.e123 * rhs.e123));
             self
@@ -16880,18 +16772,14 @@ pub mod g3 {
     /// `a b` in `f64` through `LEFT`: the residual's product, each component a sum of
     /// `len` signed products of one component of each.
     #[allow(dead_code)]
-    fn left_product(
-        a: &[::num_dual::Dual64; 8usize],
-        b: &[::num_dual::Dual64; 8usize],
-    ) -> [::num_dual::Dual64; 8usize] {
-        let mut out = [<::num_dual::Dual64 as ::ga_core::Scalar>::ZERO; 8usize];
+    fn left_product(a: &[Scalar; 8usize], b: &[Scalar; 8usize]) -> [Scalar; 8usize] {
+        let mut out = [<Scalar as ::ga_core::Scalar>::ZERO; 8usize];
         for (i, &ai) in a.iter().enumerate() {
             for (j, &(k, sign)) in LEFT[i].iter().enumerate() {
                 if sign != 0 {
                     out[k]
-                        += <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
-                            f64::from(sign),
-                        ) * (ai * b[j]);
+                        += <Scalar as ::ga_core::Scalar>::from_f64(f64::from(sign))
+                            * (ai * b[j]);
                 }
             }
         }
@@ -16910,36 +16798,26 @@ pub mod g3 {
     /// `(len + 1) u |A| |X|` plus the underflow of `len^2` products; `|r|`, with those
     /// added twice over, must be at most half of `INVERSE_TOLERANCE`.
     #[allow(dead_code)]
-    fn inverse_f64(
-        a: [::num_dual::Dual64; 8usize],
-    ) -> Option<[::num_dual::Dual64; 8usize]> {
+    fn inverse_f64(a: [Scalar; 8usize]) -> Option<[Scalar; 8usize]> {
         let largest = a
             .iter()
-            .fold(
-                <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                |m, x| m.max(x.abs()),
-            );
-        if !(largest > <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO)
-            || !largest.is_finite()
-        {
+            .fold(<Scalar as ::ga_core::Scalar>::ZERO, |m, x| m.max(x.abs()));
+        if !(largest > <Scalar as ::ga_core::Scalar>::ZERO) || !largest.is_finite() {
             return None;
         }
         let scaled = a.map(|v| v / largest);
-        let mut m = [[<::num_dual::Dual64 as ::ga_core::Scalar>::ZERO; 8usize]; 8usize];
+        let mut m = [[<Scalar as ::ga_core::Scalar>::ZERO; 8usize]; 8usize];
         for (i, &ai) in scaled.iter().enumerate() {
             for (j, &(k, sign)) in LEFT[i].iter().enumerate() {
-                m[k][j]
-                    += <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
-                        f64::from(sign),
-                    ) * ai;
+                m[k][j] += <Scalar as ::ga_core::Scalar>::from_f64(f64::from(sign)) * ai;
             }
         }
         let mut order = [0usize; 8usize];
         for (i, slot) in order.iter_mut().enumerate() {
             *slot = i;
         }
-        let tolerance = <::num_dual::Dual64 as ::ga_core::Scalar>::EPSILON
-            * (<::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(8usize as f64));
+        let tolerance = <Scalar as ::ga_core::Scalar>::EPSILON
+            * (<Scalar as ::ga_core::Scalar>::from_f64(8usize as f64));
         for col in 0..8usize {
             let mut pivot = col;
             for row in col + 1..8usize {
@@ -16955,15 +16833,15 @@ pub mod g3 {
             for row in col + 1..8usize {
                 let factor = m[row][col] / m[col][col];
                 m[row][col] = factor;
-                if !<::num_dual::Dual64 as ::ga_core::Scalar>::is_exact_zero(factor) {
+                if !<Scalar as ::ga_core::Scalar>::is_exact_zero(factor) {
                     for c in col + 1..8usize {
                         m[row][c] -= factor * m[col][c];
                     }
                 }
             }
         }
-        let solve = |rhs: &[::num_dual::Dual64; 8usize]| {
-            let mut y = [<::num_dual::Dual64 as ::ga_core::Scalar>::ZERO; 8usize];
+        let solve = |rhs: &[Scalar; 8usize]| {
+            let mut y = [<Scalar as ::ga_core::Scalar>::ZERO; 8usize];
             for row in 0..8usize {
                 let mut sum = rhs[order[row]];
                 for c in 0..row {
@@ -16980,8 +16858,8 @@ pub mod g3 {
             }
             y
         };
-        let mut one = [<::num_dual::Dual64 as ::ga_core::Scalar>::ZERO; 8usize];
-        one[0] = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE;
+        let mut one = [<Scalar as ::ga_core::Scalar>::ZERO; 8usize];
+        one[0] = <Scalar as ::ga_core::Scalar>::ONE;
         let mut x = solve(&one);
         let mut residual = left_product(&scaled, &x);
         for (k, r) in residual.iter_mut().enumerate() {
@@ -16993,36 +16871,33 @@ pub mod g3 {
         }
         let x = x.map(|v| v / largest);
         let mut residual = left_product(&a, &x);
-        residual[0] -= <::num_dual::Dual64 as ::ga_core::Scalar>::ONE;
+        residual[0] -= <Scalar as ::ga_core::Scalar>::ONE;
         let residual_sum = residual
             .iter()
-            .fold(
-                <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                |sum, r| sum + r.abs(),
-            );
+            .fold(<Scalar as ::ga_core::Scalar>::ZERO, |sum, r| sum + r.abs());
         let a_sum = a
             .iter()
             .fold(
-                <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                <Scalar as ::ga_core::Scalar>::ZERO,
                 |sum, v| sum + (v / largest).abs(),
             );
         let x_sum = x
             .iter()
             .fold(
-                <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                <Scalar as ::ga_core::Scalar>::ZERO,
                 |sum, v| sum + (v * largest).abs(),
             );
         let bound = residual_sum
-            + (<::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(8usize as f64)
-                + <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(2.0))
-                * <::num_dual::Dual64 as ::ga_core::Scalar>::EPSILON * (a_sum * x_sum)
-            + (<::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(8usize as f64)
-                * <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(8usize as f64))
-                * (<::num_dual::Dual64 as ::ga_core::Scalar>::MIN_POSITIVE
-                    * <::num_dual::Dual64 as ::ga_core::Scalar>::EPSILON);
+            + (<Scalar as ::ga_core::Scalar>::from_f64(8usize as f64)
+                + <Scalar as ::ga_core::Scalar>::from_f64(2.0))
+                * <Scalar as ::ga_core::Scalar>::EPSILON * (a_sum * x_sum)
+            + (<Scalar as ::ga_core::Scalar>::from_f64(8usize as f64)
+                * <Scalar as ::ga_core::Scalar>::from_f64(8usize as f64))
+                * (<Scalar as ::ga_core::Scalar>::MIN_POSITIVE
+                    * <Scalar as ::ga_core::Scalar>::EPSILON);
         if bound
-            <= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(0.5)
-                * <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(INVERSE_TOLERANCE)
+            <= <Scalar as ::ga_core::Scalar>::from_f64(0.5)
+                * <Scalar as ::ga_core::Scalar>::from_f64(INVERSE_TOLERANCE)
             && x.iter().all(|v| v.is_finite())
         {
             Some(x)
@@ -17045,10 +16920,10 @@ pub mod g3 {
     /// where a general linear solve would lose digits; `None` for a null blade.
     #[allow(dead_code)]
     fn mv_blade_inverse(a: Multivector) -> Option<Multivector> {
-        let norm_squared: ::num_dual::Dual64 = ((a.s * a.s + a.e1 * a.e1)
+        let norm_squared: Scalar = ((a.s * a.s + a.e1 * a.e1)
             + (a.e2 * a.e2 + a.e3 * a.e3))
             + ((a.e12 * a.e12 + a.e13 * a.e13) + (a.e23 * a.e23 + a.e123 * a.e123));
-        if norm_squared == <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO
+        if norm_squared == <Scalar as ::ga_core::Scalar>::ZERO
             || !norm_squared.is_finite()
         {
             return None;
@@ -17063,7 +16938,7 @@ pub mod g3 {
             e23: -a.e23,
             e123: -a.e123,
         };
-        let scale = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE / norm_squared;
+        let scale = <Scalar as ::ga_core::Scalar>::ONE / norm_squared;
         Some(Multivector::from_array(reverse.to_array().map(|c| c * scale)))
     }
     #[allow(dead_code)]
@@ -17106,10 +16981,10 @@ pub mod g3 {
         #[inline]
         #[must_use]
         pub fn exp(self) -> Even {
-            let x: ::num_dual::Dual64 = -((self.e12 * self.e12 + self.e13 * self.e13)
+            let x: Scalar = -((self.e12 * self.e12 + self.e13 * self.e13)
                 + self.e23 * self.e23);
             let [even, weight] = if x.abs()
-                <= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SERIES_MAX)
+                <= <Scalar as ::ga_core::Scalar>::from_f64(SERIES_MAX)
             {
                 cosh_sinhc_series(x)
             } else {
@@ -17136,12 +17011,10 @@ pub mod g3 {
         #[inline]
         #[must_use]
         pub fn log(self) -> Option<Bivector> {
-            let norm_squared: ::num_dual::Dual64 = (self.s * self.s
-                + self.e12 * self.e12) + (self.e13 * self.e13 + self.e23 * self.e23);
-            if !((norm_squared - <::num_dual::Dual64 as ::ga_core::Scalar>::ONE).abs()
-                <= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
-                    0.000000014901161193847656,
-                ))
+            let norm_squared: Scalar = (self.s * self.s + self.e12 * self.e12)
+                + (self.e13 * self.e13 + self.e23 * self.e23);
+            if !((norm_squared - <Scalar as ::ga_core::Scalar>::ONE).abs()
+                <= <Scalar as ::ga_core::Scalar>::from_f64(0.000000014901161193847656))
             {
                 return None;
             }
@@ -17152,11 +17025,31 @@ pub mod g3 {
                     e23: self.e23,
                 };
                 let [x, root] = square_and_root(p);
-                let [weight, turn] = log_weight(self.s, x, root, p == Bivector::ZERO);
-                Bivector {
-                    e12: weight * p.e12 + turn,
-                    e13: weight * p.e13,
-                    e23: weight * p.e23,
+                if self.s < <Scalar as ::ga_core::Scalar>::ZERO
+                    && x < <Scalar as ::ga_core::Scalar>::ZERO
+                {
+                    let (u, [w, _]) = log_past_right_angle(
+                        self.s,
+                        p,
+                        <Scalar as ::ga_core::Scalar>::ONE,
+                    );
+                    Bivector {
+                        e12: w * u.e12,
+                        e13: w * u.e13,
+                        e23: w * u.e23,
+                    }
+                } else {
+                    let [weight, turn] = log_weight(
+                        self.s,
+                        x,
+                        root,
+                        p == Bivector::ZERO,
+                    );
+                    Bivector {
+                        e12: weight * p.e12 + turn,
+                        e13: weight * p.e13,
+                        e23: weight * p.e23,
+                    }
                 }
             };
             if log.to_array().iter().all(|c| c.is_finite()) { Some(log) } else { None }
@@ -17169,88 +17062,74 @@ pub mod g3 {
     /// `x = -r^2`, by their series for `|x| <= SERIES_MAX`.
     #[allow(dead_code)]
     #[inline]
-    fn cosh_sinhc_series(x: ::num_dual::Dual64) -> [::num_dual::Dual64; 2] {
-        let z: ::num_dual::Dual64 = x;
+    fn cosh_sinhc_series(x: Scalar) -> [Scalar; 2] {
+        let z: Scalar = x;
         let z2 = z * z;
         let z4 = z2 * z2;
         let z8 = z4 * z4;
-        let cosh = ((((<::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-            + z * <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(0.5))
+        let cosh = ((((<Scalar as ::ga_core::Scalar>::ONE
+            + z * <Scalar as ::ga_core::Scalar>::from_f64(0.5))
             + z2
-                * (<::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
-                    0.041666666666666664,
-                )
-                    + z
-                        * <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
-                            0.001388888888888889,
-                        )))
+                * (<Scalar as ::ga_core::Scalar>::from_f64(0.041666666666666664)
+                    + z * <Scalar as ::ga_core::Scalar>::from_f64(0.001388888888888889)))
             + z4
-                * ((<::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
-                    0.0000248015873015873,
-                )
+                * ((<Scalar as ::ga_core::Scalar>::from_f64(0.0000248015873015873)
                     + z
-                        * <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
+                        * <Scalar as ::ga_core::Scalar>::from_f64(
                             0.0000002755731922398589,
                         ))
                     + z2
-                        * (<::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
+                        * (<Scalar as ::ga_core::Scalar>::from_f64(
                             0.00000000208767569878681,
                         )
                             + z
-                                * <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
+                                * <Scalar as ::ga_core::Scalar>::from_f64(
                                     0.000000000011470745597729725,
                                 ))))
             + z8
-                * ((<::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
+                * ((<Scalar as ::ga_core::Scalar>::from_f64(
                     0.00000000000004779477332387385,
                 )
                     + z
-                        * <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
+                        * <Scalar as ::ga_core::Scalar>::from_f64(
                             0.00000000000000015619206968586225,
                         ))
                     + z2
-                        * <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
+                        * <Scalar as ::ga_core::Scalar>::from_f64(
                             0.0000000000000000004110317623312165,
                         )));
-        let sinhc = ((((<::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-            + z
-                * <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
-                    0.16666666666666666,
-                ))
+        let sinhc = ((((<Scalar as ::ga_core::Scalar>::ONE
+            + z * <Scalar as ::ga_core::Scalar>::from_f64(0.16666666666666666))
             + z2
-                * (<::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
-                    0.008333333333333333,
-                )
+                * (<Scalar as ::ga_core::Scalar>::from_f64(0.008333333333333333)
                     + z
-                        * <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
+                        * <Scalar as ::ga_core::Scalar>::from_f64(
                             0.0001984126984126984,
                         )))
             + z4
-                * ((<::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
-                    0.0000027557319223985893,
-                )
+                * ((<Scalar as ::ga_core::Scalar>::from_f64(0.0000027557319223985893)
                     + z
-                        * <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
+                        * <Scalar as ::ga_core::Scalar>::from_f64(
                             0.00000002505210838544172,
                         ))
                     + z2
-                        * (<::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
+                        * (<Scalar as ::ga_core::Scalar>::from_f64(
                             0.00000000016059043836821613,
                         )
                             + z
-                                * <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
+                                * <Scalar as ::ga_core::Scalar>::from_f64(
                                     0.0000000000007647163731819816,
                                 ))))
             + z8
-                * ((<::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
+                * ((<Scalar as ::ga_core::Scalar>::from_f64(
                     0.0000000000000028114572543455206,
                 )
                     + z
-                        * <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
+                        * <Scalar as ::ga_core::Scalar>::from_f64(
                             0.00000000000000000822063524662433,
                         ))
                     + z2
-                        * <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
+                        * <Scalar as ::ga_core::Scalar>::from_f64(
                             0.000000000000000000019572941063391263,
                         )));
         [cosh, sinhc]
@@ -17260,16 +17139,16 @@ pub mod g3 {
     /// by its largest component, and `x` then carries only the sign of `<B B>_0`.
     #[allow(dead_code)]
     #[inline]
-    fn square_and_root(b: Bivector) -> [::num_dual::Dual64; 2] {
-        let x: ::num_dual::Dual64 = -((b.e12 * b.e12 + b.e13 * b.e13) + b.e23 * b.e23);
-        if x.abs() >= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
-            && x.abs() <= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
+    fn square_and_root(b: Bivector) -> [Scalar; 2] {
+        let x: Scalar = -((b.e12 * b.e12 + b.e13 * b.e13) + b.e23 * b.e23);
+        if x.abs() >= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MIN)
+            && x.abs() <= <Scalar as ::ga_core::Scalar>::from_f64(SQUARE_MAX)
         {
             return [x, math::sqrt(x.abs())];
         }
-        let largest: ::num_dual::Dual64 = b.e12.abs().max(b.e13.abs()).max(b.e23.abs());
-        if !(largest > <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO
-            && largest < <::num_dual::Dual64 as ::ga_core::Scalar>::INFINITY)
+        let largest: Scalar = b.e12.abs().max(b.e13.abs()).max(b.e23.abs());
+        if !(largest > <Scalar as ::ga_core::Scalar>::ZERO
+            && largest < <Scalar as ::ga_core::Scalar>::INFINITY)
         {
             return [x, math::sqrt(x.abs())];
         }
@@ -17278,34 +17157,31 @@ pub mod g3 {
             e13: b.e13 / largest,
             e23: b.e23 / largest,
         };
-        let x: ::num_dual::Dual64 = -((u.e12 * u.e12 + u.e13 * u.e13) + u.e23 * u.e23);
+        let x: Scalar = -((u.e12 * u.e12 + u.e13 * u.e13) + u.e23 * u.e23);
         [x, math::sqrt(x.abs()) * largest]
     }
     /// `[cosh, sinhc]` of a four-dimensional channel's angle, `sqrt 2` times the root
     /// of its square: in `f64` by the series where that is small, else by the root.
     #[allow(dead_code)]
     #[inline]
-    fn channel_cosh_sinhc(channel: Bivector) -> [::num_dual::Dual64; 2] {
+    fn channel_cosh_sinhc(channel: Bivector) -> [Scalar; 2] {
         let b = channel;
-        let x: ::num_dual::Dual64 = <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
-            2.0,
-        ) * (-((b.e12 * b.e12 + b.e13 * b.e13) + b.e23 * b.e23));
-        if x.abs() <= <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(SERIES_MAX) {
+        let x: Scalar = <Scalar as ::ga_core::Scalar>::from_f64(2.0)
+            * (-((b.e12 * b.e12 + b.e13 * b.e13) + b.e23 * b.e23));
+        if x.abs() <= <Scalar as ::ga_core::Scalar>::from_f64(SERIES_MAX) {
             return cosh_sinhc_series(x);
         }
         let [x, root] = square_and_root(channel);
         cosh_sinhc(
             x,
-            <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
-                ::core::f64::consts::SQRT_2,
-            ) * root,
+            <Scalar as ::ga_core::Scalar>::from_f64(::core::f64::consts::SQRT_2) * root,
         )
     }
     /// cosh(sqrt x) for x >= 0 and cos(sqrt -x) for x < 0: entire in x.
     #[allow(dead_code)]
     #[inline]
-    fn cosh_sqrt(x: ::num_dual::Dual64) -> ::num_dual::Dual64 {
-        if x >= <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO {
+    fn cosh_sqrt(x: Scalar) -> Scalar {
+        if x >= <Scalar as ::ga_core::Scalar>::ZERO {
             math::cosh(math::sqrt(x))
         } else {
             math::cos(math::sqrt(-x))
@@ -17319,59 +17195,52 @@ pub mod g3 {
     /// both comparisons; `1 + x` keeps it NaN instead of the identity's `[1, 1]`.
     #[allow(dead_code)]
     #[inline]
-    fn cosh_sinhc(
-        x: ::num_dual::Dual64,
-        r: ::num_dual::Dual64,
-    ) -> [::num_dual::Dual64; 2] {
-        if x < <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO {
-            let inverse = <::num_dual::Dual64 as ::ga_core::Scalar>::ONE / r;
+    fn cosh_sinhc(x: Scalar, r: Scalar) -> [Scalar; 2] {
+        if x < <Scalar as ::ga_core::Scalar>::ZERO {
+            let inverse = <Scalar as ::ga_core::Scalar>::ONE / r;
             let (sin, cos) = math::sin_cos(r);
             [
                 cos,
-                if r < <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(0.0001) {
-                    <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-                        - r * r
-                            / <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(6.0)
+                if r < <Scalar as ::ga_core::Scalar>::from_f64(0.0001) {
+                    <Scalar as ::ga_core::Scalar>::ONE
+                        - r * r / <Scalar as ::ga_core::Scalar>::from_f64(6.0)
                 } else {
                     sin * inverse
                 },
             ]
-        } else if x > <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO {
+        } else if x > <Scalar as ::ga_core::Scalar>::ZERO {
             [
                 math::cosh(r),
-                if r < <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(0.0001) {
-                    <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-                        + r * r
-                            / <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(6.0)
+                if r < <Scalar as ::ga_core::Scalar>::from_f64(0.0001) {
+                    <Scalar as ::ga_core::Scalar>::ONE
+                        + r * r / <Scalar as ::ga_core::Scalar>::from_f64(6.0)
                 } else {
                     math::sinh(r) / r
                 },
             ]
         } else {
             [
-                <::num_dual::Dual64 as ::ga_core::Scalar>::ONE + x,
-                <::num_dual::Dual64 as ::ga_core::Scalar>::ONE + x,
+                <Scalar as ::ga_core::Scalar>::ONE + x,
+                <Scalar as ::ga_core::Scalar>::ONE + x,
             ]
         }
     }
     /// sinh(sqrt x)/sqrt x (sin(sqrt -x)/sqrt -x for x < 0), by its series near 0.
     #[allow(dead_code)]
     #[inline]
-    fn sinhc_sqrt(x: ::num_dual::Dual64) -> ::num_dual::Dual64 {
-        if x.abs() < <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(0.001) {
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
+    fn sinhc_sqrt(x: Scalar) -> Scalar {
+        if x.abs() < <Scalar as ::ga_core::Scalar>::from_f64(0.001) {
+            <Scalar as ::ga_core::Scalar>::ONE
                 + x
-                    * (<::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-                        / <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(6.0)
+                    * (<Scalar as ::ga_core::Scalar>::ONE
+                        / <Scalar as ::ga_core::Scalar>::from_f64(6.0)
                         + x
-                            * (<::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-                                / <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(120.0)
+                            * (<Scalar as ::ga_core::Scalar>::ONE
+                                / <Scalar as ::ga_core::Scalar>::from_f64(120.0)
                                 + x
-                                    * (<::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-                                        / <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
-                                            5040.0,
-                                        ))))
-        } else if x > <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO {
+                                    * (<Scalar as ::ga_core::Scalar>::ONE
+                                        / <Scalar as ::ga_core::Scalar>::from_f64(5040.0))))
+        } else if x > <Scalar as ::ga_core::Scalar>::ZERO {
             let r = math::sqrt(x);
             math::sinh(r) / r
         } else {
@@ -17381,59 +17250,50 @@ pub mod g3 {
     }
     /// The derivative of `sinhc_sqrt`, (cosh_sqrt - sinhc_sqrt) / 2x, by its series near 0.
     #[allow(dead_code)]
-    fn sinhc_sqrt_derivative(x: ::num_dual::Dual64) -> ::num_dual::Dual64 {
-        if x.abs() < <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(0.01) {
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-                / <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(6.0)
+    fn sinhc_sqrt_derivative(x: Scalar) -> Scalar {
+        if x.abs() < <Scalar as ::ga_core::Scalar>::from_f64(0.01) {
+            <Scalar as ::ga_core::Scalar>::ONE
+                / <Scalar as ::ga_core::Scalar>::from_f64(6.0)
                 + x
-                    * (<::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-                        / <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(60.0)
+                    * (<Scalar as ::ga_core::Scalar>::ONE
+                        / <Scalar as ::ga_core::Scalar>::from_f64(60.0)
                         + x
-                            * (<::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-                                / <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
-                                    1680.0,
-                                )
+                            * (<Scalar as ::ga_core::Scalar>::ONE
+                                / <Scalar as ::ga_core::Scalar>::from_f64(1680.0)
                                 + x
-                                    * (<::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-                                        / <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
-                                            90720.0,
-                                        ))))
+                                    * (<Scalar as ::ga_core::Scalar>::ONE
+                                        / <Scalar as ::ga_core::Scalar>::from_f64(90720.0))))
         } else {
             (cosh_sqrt(x) - sinhc_sqrt(x))
-                / (<::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(2.0) * x)
+                / (<Scalar as ::ga_core::Scalar>::from_f64(2.0) * x)
         }
     }
     /// cosh(sqrt z) and sinh(sqrt z)/sqrt z for complex z = (re, im).
     #[allow(dead_code)]
-    fn complex_cosh_sinhc_sqrt(
-        re: ::num_dual::Dual64,
-        im: ::num_dual::Dual64,
-    ) -> [::num_dual::Dual64; 4] {
+    fn complex_cosh_sinhc_sqrt(re: Scalar, im: Scalar) -> [Scalar; 4] {
         let modulus = math::hypot(re, im);
-        if modulus < <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(0.001) {
+        if modulus < <Scalar as ::ga_core::Scalar>::from_f64(0.001) {
             let (z2r, z2i) = (
                 re * re - im * im,
-                <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(2.0) * re * im,
+                <Scalar as ::ga_core::Scalar>::from_f64(2.0) * re * im,
             );
             return [
-                <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-                    + re / <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(2.0)
-                    + z2r / <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(24.0),
-                im / <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(2.0)
-                    + z2i / <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(24.0),
-                <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-                    + re / <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(6.0)
-                    + z2r / <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(120.0),
-                im / <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(6.0)
-                    + z2i / <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(120.0),
+                <Scalar as ::ga_core::Scalar>::ONE
+                    + re / <Scalar as ::ga_core::Scalar>::from_f64(2.0)
+                    + z2r / <Scalar as ::ga_core::Scalar>::from_f64(24.0),
+                im / <Scalar as ::ga_core::Scalar>::from_f64(2.0)
+                    + z2i / <Scalar as ::ga_core::Scalar>::from_f64(24.0),
+                <Scalar as ::ga_core::Scalar>::ONE
+                    + re / <Scalar as ::ga_core::Scalar>::from_f64(6.0)
+                    + z2r / <Scalar as ::ga_core::Scalar>::from_f64(120.0),
+                im / <Scalar as ::ga_core::Scalar>::from_f64(6.0)
+                    + z2i / <Scalar as ::ga_core::Scalar>::from_f64(120.0),
             ];
         }
         let a = math::sqrt(
-            (modulus + re) / <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(2.0),
+            (modulus + re) / <Scalar as ::ga_core::Scalar>::from_f64(2.0),
         );
-        let b = math::sqrt(
-                (modulus - re) / <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(2.0),
-            )
+        let b = math::sqrt((modulus - re) / <Scalar as ::ga_core::Scalar>::from_f64(2.0))
             .copysign(im);
         let (ch, sh) = (math::cosh(a), math::sinh(a));
         let (s, c) = math::sin_cos(b);
@@ -17445,23 +17305,18 @@ pub mod g3 {
     /// For B^2 = s + Q with Q^2 = t: the weights (c0, c4, s0, s4) with
     /// cosh(B) = c0 + c4 Q and sinh(B)/B = s0 + s4 Q.
     #[allow(dead_code)]
-    fn exp_weights(
-        s: ::num_dual::Dual64,
-        t: ::num_dual::Dual64,
-    ) -> [::num_dual::Dual64; 4] {
-        if t > <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO {
+    fn exp_weights(s: Scalar, t: Scalar) -> [Scalar; 4] {
+        if t > <Scalar as ::ga_core::Scalar>::ZERO {
             let r = math::sqrt(t);
             let (cp, cm) = (cosh_sqrt(s + r), cosh_sqrt(s - r));
             let (sp, sm) = (sinhc_sqrt(s + r), sinhc_sqrt(s - r));
             [
-                (cp + cm) / <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(2.0),
-                (cp - cm)
-                    / (<::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(2.0) * r),
-                (sp + sm) / <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(2.0),
-                (sp - sm)
-                    / (<::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(2.0) * r),
+                (cp + cm) / <Scalar as ::ga_core::Scalar>::from_f64(2.0),
+                (cp - cm) / (<Scalar as ::ga_core::Scalar>::from_f64(2.0) * r),
+                (sp + sm) / <Scalar as ::ga_core::Scalar>::from_f64(2.0),
+                (sp - sm) / (<Scalar as ::ga_core::Scalar>::from_f64(2.0) * r),
             ]
-        } else if t < <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO {
+        } else if t < <Scalar as ::ga_core::Scalar>::ZERO {
             let r = math::sqrt(-t);
             let [cr, ci, sr, si] = complex_cosh_sinhc_sqrt(s, r);
             [cr, ci / r, sr, si / r]
@@ -17469,7 +17324,7 @@ pub mod g3 {
             let weight = sinhc_sqrt(s);
             [
                 cosh_sqrt(s),
-                weight / <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(2.0),
+                weight / <Scalar as ::ga_core::Scalar>::from_f64(2.0),
                 weight,
                 sinhc_sqrt_derivative(s),
             ]
@@ -17477,66 +17332,78 @@ pub mod g3 {
     }
     /// `[w, turn]` with `log(c + P) = w P + turn D`, where `P^2` has the sign of `x`,
     /// `m = sqrt |P^2|` and `c^2 - P^2 = 1`; `turn` is pi for `c + P = -1` (`P` zero)
-    /// and `D` the plane chosen for it. NaN where no real logarithm exists (`c < 0`
-    /// with `P^2 >= 0` and `P` not zero).
+    /// and `D` the plane chosen for it, with `w = 1/c` there: `-R = exp(P/c)` to
+    /// first order, so a `P` that is zero but has a derivative (over dual numbers)
+    /// carries it. NaN where no real logarithm exists (`c < 0` with `P^2 >= 0` and
+    /// `P` not zero).
     #[allow(dead_code)]
-    fn log_weight(
-        c: ::num_dual::Dual64,
-        x: ::num_dual::Dual64,
-        m: ::num_dual::Dual64,
-        p_is_zero: bool,
-    ) -> [::num_dual::Dual64; 2] {
-        if p_is_zero && c < <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO {
+    #[inline]
+    fn log_weight(c: Scalar, x: Scalar, m: Scalar, p_is_zero: bool) -> [Scalar; 2] {
+        if p_is_zero && c < <Scalar as ::ga_core::Scalar>::ZERO {
             [
-                <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-                <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(
-                    ::core::f64::consts::PI,
-                ),
+                <Scalar as ::ga_core::Scalar>::ONE / c,
+                <Scalar as ::ga_core::Scalar>::from_f64(::core::f64::consts::PI),
             ]
-        } else if x < <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO {
-            [math::atan2(m, c) / m, <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO]
-        } else if c < <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO {
+        } else if x < <Scalar as ::ga_core::Scalar>::ZERO {
+            [math::atan2(m, c) / m, <Scalar as ::ga_core::Scalar>::ZERO]
+        } else if c < <Scalar as ::ga_core::Scalar>::ZERO {
+            [<Scalar as ::ga_core::Scalar>::NAN, <Scalar as ::ga_core::Scalar>::ZERO]
+        } else if x > <Scalar as ::ga_core::Scalar>::ZERO {
             [
-                <::num_dual::Dual64 as ::ga_core::Scalar>::NAN,
-                <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            ]
-        } else if x > <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO {
-            [
-                if m < <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(0.0001) {
-                    <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-                        - m * m
-                            / <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(6.0)
+                if m < <Scalar as ::ga_core::Scalar>::from_f64(0.0001) {
+                    <Scalar as ::ga_core::Scalar>::ONE
+                        - m * m / <Scalar as ::ga_core::Scalar>::from_f64(6.0)
                 } else {
                     math::asinh(m) / m
                 },
-                <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                <Scalar as ::ga_core::Scalar>::ZERO,
             ]
         } else {
-            [
-                <::num_dual::Dual64 as ::ga_core::Scalar>::ONE / c,
-                <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
-            ]
+            [<Scalar as ::ga_core::Scalar>::ONE / c, <Scalar as ::ga_core::Scalar>::ZERO]
         }
+    }
+    /// `(u, [w, 0])` with `log(c + B) = w u` for `c < 0` and `<B B>_0 < 0` (a rotation
+    /// by more than a right angle): `u` is `B` divided by its largest component (one
+    /// of `u`'s components is then +-1, with a zero derivative over dual numbers), the
+    /// angle `atan2(k |B|, c)` and `w` the angle over `k |u|`; `k` is `sqrt 2` for a
+    /// four-dimensional channel, whose angle is `sqrt 2` times the root of its
+    /// square. Near -1 the plain `atan2(m, c) / m` times `B` differentiates to the
+    /// difference of two terms of size `pi / m`, which loses everything to rounding.
+    /// Out of line, so that `log`, inlined where it is called, stays as small as before
+    /// on the path of a rotation below a right angle.
+    #[allow(dead_code)]
+    #[inline(never)]
+    fn log_past_right_angle(
+        c: Scalar,
+        b: Bivector,
+        k: Scalar,
+    ) -> (Bivector, [Scalar; 2]) {
+        let largest: Scalar = b.e12.abs().max(b.e13.abs()).max(b.e23.abs());
+        let u = Bivector {
+            e12: b.e12 / largest,
+            e13: b.e13 / largest,
+            e23: b.e23 / largest,
+        };
+        let x: Scalar = -((u.e12 * u.e12 + u.e13 * u.e13) + u.e23 * u.e23);
+        let root = k * math::sqrt(x.abs());
+        (u, [math::atan2(root * largest, c) / root, <Scalar as ::ga_core::Scalar>::ZERO])
     }
     /// The weight w with log(c + P) = w P, where P^2 = p2 is a scalar and c^2 - p2 = 1.
     #[allow(dead_code)]
-    fn log_weight_of_square(
-        c: ::num_dual::Dual64,
-        p2: ::num_dual::Dual64,
-    ) -> ::num_dual::Dual64 {
-        if p2 < <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO {
+    fn log_weight_of_square(c: Scalar, p2: Scalar) -> Scalar {
+        if p2 < <Scalar as ::ga_core::Scalar>::ZERO {
             let m = math::sqrt(-p2);
             math::atan2(m, c) / m
-        } else if p2 > <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO {
+        } else if p2 > <Scalar as ::ga_core::Scalar>::ZERO {
             let m = math::sqrt(p2);
-            if m < <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(0.0001) {
-                <::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-                    - p2 / <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(6.0)
+            if m < <Scalar as ::ga_core::Scalar>::from_f64(0.0001) {
+                <Scalar as ::ga_core::Scalar>::ONE
+                    - p2 / <Scalar as ::ga_core::Scalar>::from_f64(6.0)
             } else {
                 math::asinh(m) / m
             }
         } else {
-            <::num_dual::Dual64 as ::ga_core::Scalar>::ONE / c
+            <Scalar as ::ga_core::Scalar>::ONE / c
         }
     }
     /// For a four-dimensional rotor c0 + P + c4 I with P^2 = p0 + p4 I and I^2 = iota
@@ -17544,51 +17411,45 @@ pub mod g3 {
     /// log = g0 P + g4 P I.
     #[allow(dead_code)]
     fn log_weights_4d(
-        c0: ::num_dual::Dual64,
-        c4: ::num_dual::Dual64,
-        p0: ::num_dual::Dual64,
-        p4: ::num_dual::Dual64,
-        iota: ::num_dual::Dual64,
-    ) -> [::num_dual::Dual64; 2] {
-        if iota < <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO {
+        c0: Scalar,
+        c4: Scalar,
+        p0: Scalar,
+        p4: Scalar,
+        iota: Scalar,
+    ) -> [Scalar; 2] {
+        if iota < <Scalar as ::ga_core::Scalar>::ZERO {
             let modulus = math::hypot(p0, p4);
-            if modulus == <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO {
+            if modulus == <Scalar as ::ga_core::Scalar>::ZERO {
                 return [
-                    <::num_dual::Dual64 as ::ga_core::Scalar>::ONE,
-                    <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO,
+                    <Scalar as ::ga_core::Scalar>::ONE,
+                    <Scalar as ::ga_core::Scalar>::ZERO,
                 ];
             }
             let sr = math::sqrt(
-                (modulus + p0) / <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(2.0),
+                (modulus + p0) / <Scalar as ::ga_core::Scalar>::from_f64(2.0),
             );
             let si = math::sqrt(
-                    (modulus - p0)
-                        / <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(2.0),
+                    (modulus - p0) / <Scalar as ::ga_core::Scalar>::from_f64(2.0),
                 )
                 .copysign(p4);
-            let (dr, di) = (c0 + <::num_dual::Dual64 as ::ga_core::Scalar>::ONE, c4);
+            let (dr, di) = (c0 + <Scalar as ::ga_core::Scalar>::ONE, c4);
             let dd = dr * dr + di * di;
             let (qr, qi) = ((p0 * dr + p4 * di) / dd, (p4 * dr - p0 * di) / dd);
             let (ur, ui) = (qr + sr, qi + si);
-            let yr = <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(0.5)
+            let yr = <Scalar as ::ga_core::Scalar>::from_f64(0.5)
                 * math::ln_1p(
-                    <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(2.0) * ur
-                        + ur * ur + ui * ui,
+                    <Scalar as ::ga_core::Scalar>::from_f64(2.0) * ur + ur * ur + ui * ui,
                 );
-            let yi = math::atan2(
-                ui,
-                <::num_dual::Dual64 as ::ga_core::Scalar>::ONE + ur,
-            );
+            let yi = math::atan2(ui, <Scalar as ::ga_core::Scalar>::ONE + ur);
             let ss = sr * sr + si * si;
             [(yr * sr + yi * si) / ss, (yi * sr - yr * si) / ss]
         } else {
             let g0 = log_weight_of_square(c0, p0);
-            let h = if p0.abs()
-                < <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(0.000000000001)
+            let h = if p0.abs() < <Scalar as ::ga_core::Scalar>::from_f64(0.000000000001)
             {
-                -<::num_dual::Dual64 as ::ga_core::Scalar>::ONE
-                    / <::num_dual::Dual64 as ::ga_core::Scalar>::from_f64(3.0)
-            } else if p0 < <::num_dual::Dual64 as ::ga_core::Scalar>::ZERO {
+                -<Scalar as ::ga_core::Scalar>::ONE
+                    / <Scalar as ::ga_core::Scalar>::from_f64(3.0)
+            } else if p0 < <Scalar as ::ga_core::Scalar>::ZERO {
                 let m = math::sqrt(-p0);
                 let theta = math::atan2(m, c0);
                 (theta * c0 - m) / (m * m * m)

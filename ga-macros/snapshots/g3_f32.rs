@@ -17139,11 +17139,25 @@ pub mod g3 {
                     e23: self.e23,
                 };
                 let [x, root] = square_and_root(p);
-                let [weight, turn] = log_weight(self.s, x, root, p == Bivector::ZERO);
-                Bivector {
-                    e12: weight * p.e12 + turn,
-                    e13: weight * p.e13,
-                    e23: weight * p.e23,
+                if self.s < 0.0 && x < 0.0 {
+                    let (u, [w, _]) = log_past_right_angle(self.s, p, 1.0);
+                    Bivector {
+                        e12: w * u.e12,
+                        e13: w * u.e13,
+                        e23: w * u.e23,
+                    }
+                } else {
+                    let [weight, turn] = log_weight(
+                        self.s,
+                        x,
+                        root,
+                        p == Bivector::ZERO,
+                    );
+                    Bivector {
+                        e12: weight * p.e12 + turn,
+                        e13: weight * p.e13,
+                        e23: weight * p.e23,
+                    }
                 }
             };
             if log.to_array().iter().all(|c| c.is_finite()) { Some(log) } else { None }
@@ -17298,12 +17312,15 @@ pub mod g3 {
     }
     /// `[w, turn]` with `log(c + P) = w P + turn D`, where `P^2` has the sign of `x`,
     /// `m = sqrt |P^2|` and `c^2 - P^2 = 1`; `turn` is pi for `c + P = -1` (`P` zero)
-    /// and `D` the plane chosen for it. NaN where no real logarithm exists (`c < 0`
-    /// with `P^2 >= 0` and `P` not zero).
+    /// and `D` the plane chosen for it, with `w = 1/c` there: `-R = exp(P/c)` to
+    /// first order, so a `P` that is zero but has a derivative (over dual numbers)
+    /// carries it. NaN where no real logarithm exists (`c < 0` with `P^2 >= 0` and
+    /// `P` not zero).
     #[allow(dead_code)]
+    #[inline]
     fn log_weight(c: f32, x: f32, m: f32, p_is_zero: bool) -> [f32; 2] {
         if p_is_zero && c < 0.0 {
-            [0.0, ::core::f32::consts::PI]
+            [1.0 / c, ::core::f32::consts::PI]
         } else if x < 0.0 {
             [math::atan2(m, c) / m, 0.0]
         } else if c < 0.0 {
@@ -17313,6 +17330,28 @@ pub mod g3 {
         } else {
             [1.0 / c, 0.0]
         }
+    }
+    /// `(u, [w, 0])` with `log(c + B) = w u` for `c < 0` and `<B B>_0 < 0` (a rotation
+    /// by more than a right angle): `u` is `B` divided by its largest component (one
+    /// of `u`'s components is then +-1, with a zero derivative over dual numbers), the
+    /// angle `atan2(k |B|, c)` and `w` the angle over `k |u|`; `k` is `sqrt 2` for a
+    /// four-dimensional channel, whose angle is `sqrt 2` times the root of its
+    /// square. Near -1 the plain `atan2(m, c) / m` times `B` differentiates to the
+    /// difference of two terms of size `pi / m`, which loses everything to rounding.
+    /// Out of line, so that `log`, inlined where it is called, stays as small as before
+    /// on the path of a rotation below a right angle.
+    #[allow(dead_code)]
+    #[inline(never)]
+    fn log_past_right_angle(c: f32, b: Bivector, k: f32) -> (Bivector, [f32; 2]) {
+        let largest: f32 = b.e12.abs().max(b.e13.abs()).max(b.e23.abs());
+        let u = Bivector {
+            e12: b.e12 / largest,
+            e13: b.e13 / largest,
+            e23: b.e23 / largest,
+        };
+        let x: f32 = -((u.e12 * u.e12 + u.e13 * u.e13) + u.e23 * u.e23);
+        let root = k * math::sqrt(x.abs());
+        (u, [math::atan2(root * largest, c) / root, 0.0])
     }
     /// The weight w with log(c + P) = w P, where P^2 = p2 is a scalar and c^2 - p2 = 1.
     #[allow(dead_code)]

@@ -26494,8 +26494,16 @@ pub mod g4 {
                 {
                     return None;
                 }
-                let [wp, turn_plus] = log_weight(cp, xp, mp, plus == Bivector::ZERO);
-                let [wm, turn_minus] = log_weight(cm, xm, mm, minus == Bivector::ZERO);
+                let (plus, [wp, turn_plus]) = if cp < 0.0 && xp < 0.0 {
+                    log_past_right_angle(cp, plus, ::core::f64::consts::SQRT_2)
+                } else {
+                    (plus, log_weight(cp, xp, mp, plus == Bivector::ZERO))
+                };
+                let (minus, [wm, turn_minus]) = if cm < 0.0 && xm < 0.0 {
+                    log_past_right_angle(cm, minus, ::core::f64::consts::SQRT_2)
+                } else {
+                    (minus, log_weight(cm, xm, mm, minus == Bivector::ZERO))
+                };
                 Bivector {
                     e12: wp * plus.e12 + wm * minus.e12 + 0.5 * turn_plus
                         + 0.5 * turn_minus,
@@ -26684,12 +26692,15 @@ pub mod g4 {
     }
     /// `[w, turn]` with `log(c + P) = w P + turn D`, where `P^2` has the sign of `x`,
     /// `m = sqrt |P^2|` and `c^2 - P^2 = 1`; `turn` is pi for `c + P = -1` (`P` zero)
-    /// and `D` the plane chosen for it. NaN where no real logarithm exists (`c < 0`
-    /// with `P^2 >= 0` and `P` not zero).
+    /// and `D` the plane chosen for it, with `w = 1/c` there: `-R = exp(P/c)` to
+    /// first order, so a `P` that is zero but has a derivative (over dual numbers)
+    /// carries it. NaN where no real logarithm exists (`c < 0` with `P^2 >= 0` and
+    /// `P` not zero).
     #[allow(dead_code)]
+    #[inline]
     fn log_weight(c: f64, x: f64, m: f64, p_is_zero: bool) -> [f64; 2] {
         if p_is_zero && c < 0.0 {
-            [0.0, ::core::f64::consts::PI]
+            [1.0 / c, ::core::f64::consts::PI]
         } else if x < 0.0 {
             [math::atan2(m, c) / m, 0.0]
         } else if c < 0.0 {
@@ -26699,6 +26710,39 @@ pub mod g4 {
         } else {
             [1.0 / c, 0.0]
         }
+    }
+    /// `(u, [w, 0])` with `log(c + B) = w u` for `c < 0` and `<B B>_0 < 0` (a rotation
+    /// by more than a right angle): `u` is `B` divided by its largest component (one
+    /// of `u`'s components is then +-1, with a zero derivative over dual numbers), the
+    /// angle `atan2(k |B|, c)` and `w` the angle over `k |u|`; `k` is `sqrt 2` for a
+    /// four-dimensional channel, whose angle is `sqrt 2` times the root of its
+    /// square. Near -1 the plain `atan2(m, c) / m` times `B` differentiates to the
+    /// difference of two terms of size `pi / m`, which loses everything to rounding.
+    /// Out of line, so that `log`, inlined where it is called, stays as small as before
+    /// on the path of a rotation below a right angle.
+    #[allow(dead_code)]
+    #[inline(never)]
+    fn log_past_right_angle(c: f64, b: Bivector, k: f64) -> (Bivector, [f64; 2]) {
+        let largest: f64 = b
+            .e12
+            .abs()
+            .max(b.e13.abs())
+            .max(b.e14.abs())
+            .max(b.e23.abs())
+            .max(b.e24.abs())
+            .max(b.e34.abs());
+        let u = Bivector {
+            e12: b.e12 / largest,
+            e13: b.e13 / largest,
+            e14: b.e14 / largest,
+            e23: b.e23 / largest,
+            e24: b.e24 / largest,
+            e34: b.e34 / largest,
+        };
+        let x: f64 = -(((u.e12 * u.e12 + u.e13 * u.e13) + u.e14 * u.e14)
+            + ((u.e23 * u.e23 + u.e24 * u.e24) + u.e34 * u.e34));
+        let root = k * math::sqrt(x.abs());
+        (u, [math::atan2(root * largest, c) / root, 0.0])
     }
     /// The weight w with log(c + P) = w P, where P^2 = p2 is a scalar and c^2 - p2 = 1.
     #[allow(dead_code)]

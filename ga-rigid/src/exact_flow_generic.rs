@@ -13,10 +13,10 @@
 //! zero in value but not in derivative gets the derivative of the flow through the point:
 //! the general formula where it is valid at the point, a first-order expansion where it is
 //! not (each at its branch says which). Those expansions are first order: right for
-//! `Dual64`, not for second derivatives. Not covered: a symmetric body whose momentum is
-//! perpendicular to the symmetry axis, along a derivative that makes the pair of equal
-//! moments unequal (the general frame degenerates there; the symmetric top's derivative
-//! is returned).
+//! `Dual64`, not for second derivatives. A symmetric body whose momentum is perpendicular
+//! to the symmetry axis, moved along a derivative that makes the pair of equal moments
+//! unequal, is one where the general frame degenerates: there the derivative along the gap
+//! comes from the flow linearised about the steady rotation (`perpendicular_gap`).
 //!
 //! `exact_flow.rs` and `special/elliptic.rs` keep their own `f64` code, untouched (the
 //! registry's `exact` and the reference runs use them at full speed). Differences from
@@ -626,12 +626,12 @@ macro_rules! exact_flow_over {
             /// solution is analytic in them through 0 (`m < 0` on one side: the Jacobi
             /// functions continue analytically), so its derivative is the limit from
             /// either side; `jacobi` and `ellip_pi_jacobi` give the first order in `m`
-            /// and `n` at 0. With `u_s = 0` in value that frame degenerates (`d1 = 0`)
-            /// and the derivative along the gap is not carried (see the module).
+            /// and `n` at 0. With `u_s = 0` in value that frame degenerates (`d1 = 0`),
+            /// and [`perpendicular_gap`] adds the derivative along the gap instead.
             fn breaking_flow(i: [S; 3], u0: [S; 3], q0: Quat, t: S, axis: usize) -> (Quat, [S; 3]) {
                 let (q, u) = symmetric_flow(i, u0, q0, t, axis);
                 if u0[axis] == k(0.0) {
-                    return (q, u);
+                    return perpendicular_gap(i, u0, t, axis, q, u);
                 }
                 let (a, b) = ((axis + 1) % 3, (axis + 2) % 3);
                 let d2 = u0[a] * u0[a] * ((i[b] - i[a]) / i[a])
@@ -643,6 +643,61 @@ macro_rules! exact_flow_over {
                     [0, 1, 2, 3].map(|j| with_slope(q[j], qg[j])),
                     [0, 1, 2].map(|j| with_slope(u[j], ug[j])),
                 )
+            }
+
+            /// A symmetric top (`i_a = i_b` in value, `s` the axis, `(s, a, b)` cyclic)
+            /// whose momentum is perpendicular to its axis (`u_s = 0` in value), with
+            /// `(q, u)` its flow from [`symmetric_flow`]: that flow turns steadily about
+            /// `u0` (every axis of the equal pair is principal) and carries the derivative
+            /// of every change that keeps `i_a = i_b`; this adds the first-order response
+            /// to the gap `g = 1/i_b - 1/i_a` (its derivative parts; its value is 0).
+            ///
+            /// With `J` the inverse moments and `w = u0 / i_a` the steady rate, the
+            /// momentum `u0 + x` and attitude `q (1 + eta)` obey, to first order
+            /// (`m' = m x w`, `q' = q w / 2`: `eta' = eta x w + dw / 2`, as in
+            /// [`stationary_flow`]), `x' = u0 x (J x + g u_b e_b) + x x w`, which is
+            /// `x_a' = c u_b x_s`, `x_b' = -c u_a x_s`, `x_s' = g u_a u_b` with
+            /// `c = 1/i_s - 1/i_a`, and `eta' = eta x w + (J x + g u_b e_b) / 2`, from
+            /// `x = 0`, `eta = 0`: a linear system driven by `g`, solved by the matrix
+            /// exponential of its real parts with the constant drive as a seventh state.
+            fn perpendicular_gap(
+                i: [S; 3],
+                u0: [S; 3],
+                t: S,
+                axis: usize,
+                q: Quat,
+                u: [S; 3],
+            ) -> (Quat, [S; 3]) {
+                let (a, b) = ((axis + 1) % 3, (axis + 2) % 3);
+                let gap = k(1.0) / i[b] - k(1.0) / i[a];
+                if gap.is_exact_zero() {
+                    return (q, u);
+                }
+                let (ia, is) = (i[a].re(), i[axis].re());
+                let (ua, ub) = (u0[a].re(), u0[b].re());
+                let (wa, wb) = (ua / ia, ub / ia);
+                let c = 1.0 / is - 1.0 / ia;
+                // The state (x_a, x_b, x_s, eta_a, eta_b, eta_s, 1) for g = 1.
+                let l = [
+                    [0.0, 0.0, c * ub, 0.0, 0.0, 0.0, 0.0],
+                    [0.0, 0.0, -c * ua, 0.0, 0.0, 0.0, 0.0],
+                    [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, ua * ub],
+                    [0.5 / ia, 0.0, 0.0, 0.0, 0.0, -wb, 0.0],
+                    [0.0, 0.5 / ia, 0.0, 0.0, 0.0, wa, 0.5 * ub],
+                    [0.0, 0.0, 0.5 / is, wb, -wa, 0.0, 0.0],
+                    [0.0; 7],
+                ];
+                let e = expm(l, t.re());
+                let z = [0, 1, 2, 3, 4, 5].map(|r| k(e[r][6]) * gap);
+                let mut u = u;
+                u[a] += z[0];
+                u[b] += z[1];
+                u[axis] += z[2];
+                let mut eta = [k(1.0), k(0.0), k(0.0), k(0.0)];
+                eta[1 + a] = z[3];
+                eta[1 + b] = z[4];
+                eta[1 + axis] = z[5];
+                (qmul(q, eta), u)
             }
 
             /// The steady rotation about the principal axis that carries `u0`'s real part.
@@ -679,7 +734,7 @@ macro_rules! exact_flow_over {
                     [0.5 / ia, 0.0, 0.0, spin],
                     [0.0, 0.5 / ib, -spin, 0.0],
                 ];
-                let e = expm4(l, t.re());
+                let e = expm(l, t.re());
                 let x = [0, 1, 2, 3].map(|r| k(e[r][0]) * u0[a] + k(e[r][1]) * u0[b]);
                 let mut u = u0;
                 u[a] = x[0];
@@ -690,12 +745,13 @@ macro_rules! exact_flow_over {
                 (qmul(q, eta), u)
             }
 
-            /// `exp(l t)` for a real 4x4 matrix: scaling and squaring of the Taylor series.
-            fn expm4(l: [[f64; 4]; 4], t: f64) -> [[f64; 4]; 4] {
-                type M4 = [[f64; 4]; 4];
-                let mul = |x: &M4, y: &M4| -> M4 {
+            /// `exp(l t)` for a real square matrix: scaling and squaring of the Taylor
+            /// series.
+            fn expm<const N: usize>(l: [[f64; N]; N], t: f64) -> [[f64; N]; N] {
+                type M<const N: usize> = [[f64; N]; N];
+                let mul = |x: &M<N>, y: &M<N>| -> M<N> {
                     ::core::array::from_fn(|r| {
-                        ::core::array::from_fn(|c| (0..4).map(|j| x[r][j] * y[j][c]).sum())
+                        ::core::array::from_fn(|c| (0..N).map(|j| x[r][j] * y[j][c]).sum())
                     })
                 };
                 let norm = l.iter().map(|row| row.iter().map(|x| x.abs()).sum::<f64>()).fold(0.0, f64::max)
@@ -706,13 +762,13 @@ macro_rules! exact_flow_over {
                     scale *= 0.5;
                     squarings += 1;
                 }
-                let a: M4 = l.map(|row| row.map(|x| x * scale));
-                let identity: M4 = ::core::array::from_fn(|r| ::core::array::from_fn(|c| if r == c { 1.0 } else { 0.0 }));
+                let a: M<N> = l.map(|row| row.map(|x| x * scale));
+                let identity: M<N> = ::core::array::from_fn(|r| ::core::array::from_fn(|c| if r == c { 1.0 } else { 0.0 }));
                 let (mut sum, mut term) = (identity, identity);
                 for n in 1..=20 {
                     term = mul(&term, &a).map(|row| row.map(|x| x / n as f64));
-                    for r in 0..4 {
-                        for c in 0..4 {
+                    for r in 0..N {
+                        for c in 0..N {
                             sum[r][c] += term[r][c];
                         }
                     }

@@ -1,6 +1,7 @@
 //! Derivatives of the exact free flow (`exact_flow_generic::dual64`) at the inputs where it
 //! picks a branch by exact equality: t = 0, m(0) = 0, m(0) on a principal axis, a
-//! symmetric body, a sphere, a state exactly on the separatrix. At each, the `Dual64`
+//! symmetric body (with the momentum perpendicular to its axis too), a sphere, a state
+//! exactly on the separatrix. At each, the `Dual64`
 //! derivative along every moment, every component of m(0) and the time is checked against
 //! Richardson-extrapolated central differences of `exact_flow::exact_free_body` (the `f64`
 //! code, continuous through each of these points), whose steps straddle the branch point.
@@ -278,4 +279,75 @@ fn derivatives_exactly_on_the_separatrix_are_its_limit() {
         },
         &[],
     );
+}
+
+/// The dual run seeded along `dr` in R(0) alone, against Richardson-extrapolated central
+/// differences of `exact_flow` (R(0) is normalised by both).
+fn check_r0(name: &str, p: Point, dr: [f64; 4]) {
+    let moments = p.moments.map(|x| Dual64::new(x, 0.0));
+    let m0 = p.m0.map(|x| Dual64::new(x, 0.0));
+    let r0 = std::array::from_fn(|j| Dual64::new(p.r0[j], dr[j]));
+    let (r, m) = ed::exact_free_body(moments, m0, r0, Dual64::new(p.t, 0.0));
+    let derivative = [r[0], r[1], r[2], r[3], m[0], m[1], m[2]].map(|x| x.eps);
+    let at = |s: f64| {
+        flat(exact_free_body(
+            p.moments,
+            p.m0,
+            std::array::from_fn(|j| p.r0[j] + s * dr[j]),
+            p.t,
+        ))
+    };
+    let h = 1e-3;
+    let (p1, m1, p2, m2) = (at(h), at(-h), at(2.0 * h), at(-2.0 * h));
+    let fd: [f64; 7] =
+        std::array::from_fn(|j| (8.0 * (p1[j] - m1[j]) - (p2[j] - m2[j])) / (12.0 * h));
+    let diff: Vec<f64> = derivative.iter().zip(&fd).map(|(a, b)| a - b).collect();
+    let error = norm(&diff) / norm(&fd).max(1.0);
+    assert!(
+        error <= 1e-8,
+        "{name} along R0 {dr:?}: dual {derivative:?} against differences {fd:?}: {error:e}"
+    );
+}
+
+/// The case the branch rule once left open: a symmetric body whose momentum is
+/// perpendicular to the symmetry axis turns steadily about it (any axis of the equal pair
+/// is principal), and moving one of the equal moments alone tips the momentum out of the
+/// plane, at first order `m_s = g m_a m_b t` with `g = 1/i_b - 1/i_a`.
+#[test]
+fn derivatives_of_a_symmetric_body_with_the_momentum_perpendicular_to_its_axis() {
+    let both = [0.5, -1.0, 0.3, 0.1, 0.0, -0.2, 0.4];
+    let cases = [
+        ("i1 = i2 = 2, i3 = 1", [2.0, 2.0, 1.0], [0.3, 0.8, 0.0], 3.0),
+        ("i1 = i2 = 2, i3 = 3", [2.0, 2.0, 3.0], [0.3, 0.8, 0.0], 3.0),
+        (
+            "i2 = i3 = 2, i1 = 3",
+            [3.0, 2.0, 2.0],
+            [0.0, 0.8, -0.5],
+            3.0,
+        ),
+        (
+            "i1 = i3 = 2, i2 = 1",
+            [2.0, 1.0, 2.0],
+            [0.3, 0.0, -0.5],
+            3.0,
+        ),
+        (
+            "i1 = i2 = 2, i3 = 1, t = 9",
+            [2.0, 2.0, 1.0],
+            [-0.6, 0.2, 0.0],
+            9.0,
+        ),
+    ];
+    for (name, moments, m0, t) in cases {
+        let p = Point {
+            moments,
+            m0,
+            r0: R0,
+            t,
+        };
+        check(name, p, &[both]);
+        for dr in [[1.0, 0.0, 0.0, 0.0], [0.0, 0.3, -0.2, 0.5]] {
+            check_r0(name, p, dr);
+        }
+    }
 }

@@ -247,9 +247,17 @@ pub fn emit_log(plan: &Plan, form: ExpLogForm) -> TokenStream {
             quote! {
                 let p = Bivector { #(#p_fields: self.#p_fields),* };
                 let [x, root] = square_and_root(p);
-                let [weight, turn] = log_weight(self.s, x, root, p == Bivector::ZERO);
-                #no_plane
-                Bivector { #(#terms),* }
+                // Past a right angle `P` is divided by its largest component first, so
+                // that a derivative near -1 is not the difference of two huge terms; the
+                // other branch is the code of before, unchanged.
+                if self.s < 0.0 && x < 0.0 {
+                    let (u, [w, _]) = log_past_right_angle(self.s, p, 1.0);
+                    Bivector { #(#p_fields: w * u.#p_fields),* }
+                } else {
+                    let [weight, turn] = log_weight(self.s, x, root, p == Bivector::ZERO);
+                    #no_plane
+                    Bivector { #(#terms),* }
+                }
             }
         }
         ExpLogForm::Channels => {
@@ -292,8 +300,18 @@ pub fn emit_log(plan: &Plan, form: ExpLogForm) -> TokenStream {
                 if !((np - 1.0).abs() <= #tolerance && (nm - 1.0).abs() <= #tolerance) {
                     return None;
                 }
-                let [wp, turn_plus] = log_weight(cp, xp, mp, plus == Bivector::ZERO);
-                let [wm, turn_minus] = log_weight(cm, xm, mm, minus == Bivector::ZERO);
+                // Past a right angle a channel is divided by its largest component first
+                // (see the plane form).
+                let (plus, [wp, turn_plus]) = if cp < 0.0 && xp < 0.0 {
+                    log_past_right_angle(cp, plus, ::core::#s::consts::SQRT_2)
+                } else {
+                    (plus, log_weight(cp, xp, mp, plus == Bivector::ZERO))
+                };
+                let (minus, [wm, turn_minus]) = if cm < 0.0 && xm < 0.0 {
+                    log_past_right_angle(cm, minus, ::core::#s::consts::SQRT_2)
+                } else {
+                    (minus, log_weight(cm, xm, mm, minus == Bivector::ZERO))
+                };
                 Bivector { #(#terms),* }
             }
         }
@@ -360,6 +378,9 @@ pub fn emit_scalar_functions(plan: &Plan) -> TokenStream {
     let indices: Vec<usize> = (0..grade_blades(plan, 2).len()).collect();
     let largest = super::unary::largest_abs(plan, &b, &indices);
     let descaled = super::unary::descaled(plan, &b, &quote!(largest));
+    // The largest component that enters the square: a null blade's would not bound it.
+    let rotation_indices = super::unary::nondegenerate(plan, TypeId::grade(2));
+    let largest_rotation = super::unary::largest_abs(plan, &b, &rotation_indices);
     let even_series = super::sin_cos::emit_even_series(plan.scalar);
     // f32 channels keep the root and the library's `sincosf`: the series (summed in f64)
     // measured 1.2x the time in batch form for the G4 exp, though faster in a chain.
@@ -379,6 +400,7 @@ pub fn emit_scalar_functions(plan: &Plan) -> TokenStream {
             ("s", &s),
             ("square", &square),
             ("largest", &largest),
+            ("largest_rotation", &largest_rotation),
             ("descaled", &descaled),
             ("unit_square", &unit_square),
             ("channel_series", &channel_series),
@@ -517,12 +539,15 @@ fn exp_weights(s: #s, t: #s) -> [#s; 4] {
 
 /// `[w, turn]` with `log(c + P) = w P + turn D`, where `P^2` has the sign of `x`,
 /// `m = sqrt |P^2|` and `c^2 - P^2 = 1`; `turn` is pi for `c + P = -1` (`P` zero)
-/// and `D` the plane chosen for it. NaN where no real logarithm exists (`c < 0`
-/// with `P^2 >= 0` and `P` not zero).
+/// and `D` the plane chosen for it, with `w = 1/c` there: `-R = exp(P/c)` to
+/// first order, so a `P` that is zero but has a derivative (over dual numbers)
+/// carries it. NaN where no real logarithm exists (`c < 0` with `P^2 >= 0` and
+/// `P` not zero).
 #[allow(dead_code)]
+#[inline]
 fn log_weight(c: #s, x: #s, m: #s, p_is_zero: bool) -> [#s; 2] {
     if p_is_zero && c < 0.0 {
-        [0.0, ::core::#s::consts::PI]
+        [1.0 / c, ::core::#s::consts::PI]
     } else if x < 0.0 {
         [math::atan2(m, c) / m, 0.0]
     } else if c < 0.0 {
@@ -532,6 +557,25 @@ fn log_weight(c: #s, x: #s, m: #s, p_is_zero: bool) -> [#s; 2] {
     } else {
         [1.0 / c, 0.0]
     }
+}
+
+/// `(u, [w, 0])` with `log(c + B) = w u` for `c < 0` and `<B B>_0 < 0` (a rotation
+/// by more than a right angle): `u` is `B` divided by its largest component (one
+/// of `u`'s components is then +-1, with a zero derivative over dual numbers), the
+/// angle `atan2(k |B|, c)` and `w` the angle over `k |u|`; `k` is `sqrt 2` for a
+/// four-dimensional channel, whose angle is `sqrt 2` times the root of its
+/// square. Near -1 the plain `atan2(m, c) / m` times `B` differentiates to the
+/// difference of two terms of size `pi / m`, which loses everything to rounding.
+/// Out of line, so that `log`, inlined where it is called, stays as small as before
+/// on the path of a rotation below a right angle.
+#[allow(dead_code)]
+#[inline(never)]
+fn log_past_right_angle(c: #s, b: Bivector, k: #s) -> (Bivector, [#s; 2]) {
+    let largest: #s = #largest_rotation;
+    let u = #descaled;
+    let x: #s = #unit_square;
+    let root = k * math::sqrt(x.abs());
+    (u, [math::atan2(root * largest, c) / root, 0.0])
 }
 
 /// The weight w with log(c + P) = w P, where P^2 = p2 is a scalar and c^2 - p2 = 1.

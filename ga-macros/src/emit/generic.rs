@@ -4,7 +4,8 @@
 //! to know about a third kind of scalar. The type must implement `ga_core::Scalar`.
 //!
 //! The rewrite, token by token:
-//! - the type `f64` becomes the user's type; `f64::NAME` (`EPSILON`, `INFINITY`, `NAN`,
+//! - the type `f64` becomes the module's alias `Scalar` of the user's type (see
+//!   [`rewrite`]; impl headers name the type itself); `f64::NAME` (`EPSILON`, `INFINITY`, `NAN`,
 //!   `MIN_POSITIVE`, `MAX`) becomes `<S as Scalar>::NAME`; `f64::from(x)`,
 //!   `::core::f64::consts::NAME` and `x as f64` are lifted with `Scalar::from_f64`;
 //! - a float literal becomes `Scalar::ZERO`, `Scalar::ONE` (both usable in constants) or
@@ -95,30 +96,52 @@ pub fn emit_defaults(plan: &Plan) -> TokenStream {
 }
 
 /// The module's items, written for `f64`, rewritten for the scalar type `path`.
+///
+/// Every item names the type through the module's alias `Scalar`, defined through
+/// `ga_core`'s check: `<[S; checked::<S>()] as Element>::Type` is `S` for a type that
+/// implements `ga_core::Scalar`, and for one that does not (`String`, `Vec<f64>`,
+/// `num_dual::Dual32`) the bound of `checked` is the one error, at the user's token, and
+/// the alias an error type about which the compiler says nothing more. Naming `S` directly
+/// gave an error per use: 1106 for G3 over `String`.
 pub fn rewrite(items: TokenStream, path: &syn::Path) -> TokenStream {
     let tr = scalar_trait();
-    let s = quote!(#path);
+    let s = quote!(Scalar);
     let mut constants = Vec::new();
     collect_f64_constants(items.clone(), &mut constants);
+    let user_path = quote!(#path);
     let cx = Rewrite {
         s: &s,
+        path: &user_path,
         tr: &tr,
         constants: &constants,
     };
     let body = cx.stream(items);
-    // One error at the user's path when the type does not implement the trait, before the
-    // many the generated code would give.
     let check = quote::quote_spanned! {syn::spanned::Spanned::span(path)=>
-        const _: fn() = || {
-            fn implements_ga_core_scalar<T: #tr>() {}
-            implements_ga_core_scalar::<#s>();
-        };
+        ::ga_core::__checked_scalar::checked::<#path>()
     };
+    let doc = format!(
+        "The scalar type, `{}`, as this module's items name it (through a check that it \
+         implements `ga_core::Scalar`, so that a type that does not gets one error).",
+        quote!(#path).to_string().replace(' ', "")
+    );
     quote! {
         #[allow(unused_imports)]
         use #tr as _;
-        #check
+        #[doc = #doc]
+        pub type Scalar = <[#path; #check] as ::ga_core::__checked_scalar::Element>::Type;
         #body
+    }
+}
+
+/// Whether a token after `last` begins an item: the first token, or one after an
+/// attribute, a block or a `;` (so that `-> impl Trait` is not an impl header).
+fn starts_item(last: Option<&TokenTree>) -> bool {
+    match last {
+        None => true,
+        Some(TokenTree::Group(g)) => matches!(g.delimiter(), Delimiter::Brace | Delimiter::Bracket),
+        Some(TokenTree::Punct(p)) => p.as_char() == ';',
+        Some(TokenTree::Ident(i)) => i == "unsafe",
+        Some(TokenTree::Literal(_)) => false,
     }
 }
 
@@ -181,6 +204,10 @@ fn collect_f64_constants(stream: TokenStream, names: &mut Vec<String>) {
 /// What the rewrite needs: the scalar type, the trait, the `f64` constants' names.
 struct Rewrite<'a> {
     s: &'a TokenStream,
+    /// The user's path, which impl headers name instead of `s`: `impl From<Scalar> for
+    /// Even` with `Scalar` an error type might overlap `impl<T> From<T> for T`, an error
+    /// more when the scalar is not one.
+    path: &'a TokenStream,
     tr: &'a TokenStream,
     constants: &'a [String],
 }
@@ -191,16 +218,40 @@ impl Rewrite<'_> {
         let tokens: Vec<TokenTree> = input.into_iter().collect();
         let mut out: Vec<TokenTree> = Vec::with_capacity(tokens.len());
         let mut i = 0;
+        // Between an item's `impl` and its body.
+        let mut impl_header = false;
         while i < tokens.len() {
             let token = &tokens[i];
             let next = tokens.get(i + 1);
             match token {
+                TokenTree::Ident(ident) if ident == "impl" && starts_item(out.last()) => {
+                    impl_header = true;
+                    out.push(token.clone());
+                    i += 1;
+                }
+                TokenTree::Ident(ident) if ident == "f64" && impl_header => {
+                    out.extend(self.path.clone());
+                    i += 1;
+                }
                 TokenTree::Group(group) => {
+                    if group.delimiter() == Delimiter::Brace {
+                        impl_header = false;
+                    }
                     let inner = if group.delimiter() == Delimiter::Bracket
                         && is_ident(group.stream().into_iter().next().as_ref(), "derive")
                         && is_punct(out.last(), '#')
                     {
                         without_default(group.stream())
+                    } else if group.delimiter() == Delimiter::Brace
+                        && is_ident(out.get(out.len().wrapping_sub(2)), "mod")
+                    {
+                        // A nested module (`mod math`) names the alias one level up.
+                        let s = self.s;
+                        let inner = Rewrite {
+                            s: &quote!(super::#s),
+                            ..*self
+                        };
+                        inner.stream(group.stream())
                     } else {
                         self.stream(group.stream())
                     };

@@ -748,8 +748,8 @@ const RESERVED_TYPE_NAMES: [(&[&str], &str); 5] = [
     ),
     (
         &["Scalar"],
-        "the name of the scalar operand in `TERM_COUNTS` and of `ga_core::Scalar`, which \
-         modules over a generic scalar use",
+        "the name of the scalar operand in `TERM_COUNTS` and, in a module over a generic \
+         scalar, of the module's scalar type",
     ),
     (
         &[

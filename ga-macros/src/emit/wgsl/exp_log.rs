@@ -145,7 +145,7 @@ fn ga_exp_weights(s: f32, t: f32) -> vec4<f32> {
 const LOG_WEIGHT: &str = "\
 fn ga_log_weight(c: f32, x: f32, m: f32, p_is_zero: bool) -> vec3<f32> {
     if (p_is_zero && c < 0.0) {
-        return vec3<f32>(0.0, 3.141592653589793, 1.0);
+        return vec3<f32>(1.0 / c, 3.141592653589793, 1.0);
     } else if (x < 0.0) {
         return vec3<f32>(atan2(m, c) / m, 0.0, 1.0);
     } else if (c < 0.0) {
@@ -384,6 +384,40 @@ fn full_turn_plane(plan: &Plan) -> Option<Blade> {
         .find(|&bl| plan.metric.geometric(bl, bl).0 < 0)
 }
 
+/// Rust's `log_past_right_angle` written in place: for `{c} < 0` and `{x} < 0`, the
+/// bivector `{of}` divided by its largest rotation component into `var {d}` and the weight
+/// `atan2(k |{of}|, {c}) / (k |{d}|)` into `var {w}` (which the caller declared), so that
+/// `{w}.x * {d}` is the logarithm as the Rust computes it.
+fn past_right_angle(plan: &Plan, [c, x, of, d, w, k]: [&str; 6]) -> Vec<String> {
+    let blades = grade_blades(plan, 2);
+    let names: Vec<String> = crate::emit::unary::nondegenerate(plan, TypeId::grade(2))
+        .into_iter()
+        .map(|i| format!("abs({of}.{})", crate::algebra::blade_name(blades[i])))
+        .collect();
+    let largest = names.iter().skip(1).fold(
+        names.first().cloned().unwrap_or_else(|| "0.0".into()),
+        |acc, n| format!("max({acc}, {n})"),
+    );
+    let divided = value(plan, TypeId::grade(2), |blade| {
+        let f = crate::emit::expr::field_ident(blade);
+        let o: TokenStream = of.parse().unwrap_or_default();
+        Some(quote!(#o.#f / largest))
+    });
+    let d_operand = Operand::new(d.parse().unwrap_or_default(), TypeId::grade(2));
+    vec![
+        format!("var {d} = {of};"),
+        format!("if ({c} < 0.0 && {x} < 0.0) {{"),
+        format!("    let largest = {largest};"),
+        format!("    {d} = {divided};"),
+        format!(
+            "    let root = {k} * sqrt(abs({}));",
+            self_square(plan, &d_operand, 0)
+        ),
+        format!("    {w} = vec3<f32>(atan2(root * largest, {c}) / root, 0.0, 1.0);"),
+        "}".to_owned(),
+    ]
+}
+
 /// `struct Logarithm` and `log_even(a: Even) -> Logarithm`.
 fn log_even(plan: &Plan, form: ExpLogForm) -> String {
     let n = plan.metric.dimension();
@@ -412,13 +446,14 @@ fn log_even(plan: &Plan, form: ExpLogForm) -> String {
         ExpLogForm::Plane => {
             lets.push(format!("let x = {};", self_square(plan, &p, 0)));
             lets.push(format!(
-                "let w = ga_log_weight(a.s, x, sqrt(abs(x)), {});",
+                "var w = ga_log_weight(a.s, x, sqrt(abs(x)), {});",
                 fields
                     .iter()
                     .map(|f| format!("p.{f} == 0.0"))
                     .collect::<Vec<_>>()
                     .join(" && ")
             ));
+            lets.extend(past_right_angle(plan, ["a.s", "x", "p", "d", "w", "1.0"]));
             // Without a plane that squares to -1, -1 is no exponential: no logarithm.
             let no_plane = if turn.is_none() { " || w.y != 0.0" } else { "" };
             lets.push(format!("if (w.z == 0.0{no_plane}) {{"));
@@ -427,9 +462,9 @@ fn log_even(plan: &Plan, form: ExpLogForm) -> String {
             value(plan, bivector, |blade| {
                 let f = crate::emit::expr::field_ident(blade);
                 Some(if Some(blade) == turn {
-                    quote!(w.x * p.#f + w.y)
+                    quote!(w.x * d.#f + w.y)
                 } else {
-                    quote!(w.x * p.#f)
+                    quote!(w.x * d.#f)
                 })
             })
         }
@@ -462,12 +497,21 @@ fn log_even(plan: &Plan, form: ExpLogForm) -> String {
                     .join(" && ")
             };
             lets.push(format!(
-                "let wp = ga_log_weight(cp, xp, mp, {});",
+                "var wp = ga_log_weight(cp, xp, mp, {});",
                 zero_test("plus")
             ));
             lets.push(format!(
-                "let wm = ga_log_weight(cm, xm, mm, {});",
+                "var wm = ga_log_weight(cm, xm, mm, {});",
                 zero_test("minus")
+            ));
+            let root_2 = "1.4142135623730951";
+            lets.extend(past_right_angle(
+                plan,
+                ["cp", "xp", "plus", "dp", "wp", root_2],
+            ));
+            lets.extend(past_right_angle(
+                plan,
+                ["cm", "xm", "minus", "dm", "wm", root_2],
             ));
             lets.push("if (wp.z == 0.0 || wm.z == 0.0) {".to_owned());
             lets.push(format!("    {fail}"));
@@ -483,7 +527,7 @@ fn log_even(plan: &Plan, form: ExpLogForm) -> String {
             };
             value(plan, bivector, |blade| {
                 let f = crate::emit::expr::field_ident(blade);
-                let mut term = quote!(wp.x * plus.#f + wm.x * minus.#f);
+                let mut term = quote!(wp.x * dp.#f + wm.x * dm.#f);
                 if let Some(&(_, tp, tm)) = turns.iter().find(|(b, _, _)| *b == blade) {
                     let (tp, tm) = (float(tp), float(tm));
                     term = quote!(#term + #tp * wp.y + #tm * wm.y);
