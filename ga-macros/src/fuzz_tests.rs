@@ -171,6 +171,35 @@ proptest! {
         }
     }
 
+    /// Any metric of entries 1, -1 and 0 in one to five dimensions (degenerate ones
+    /// included: all null, one null, mixed signs) expands without an error, with the
+    /// default operations or a random few of them (`exp` and `log` only in dimensions 2 to
+    /// 4, where they are emitted; elsewhere asking for them is a documented refusal).
+    #[test]
+    fn every_metric_of_ones_and_zeros_expands(
+        metric in prop::collection::vec(prop::sample::select(&["1", "-1", "0"][..]), 1..6),
+        ops in prop::collection::vec(prop::sample::select(&[
+            "geometric", "outer", "inner", "sandwich", "reverse", "norm", "inverse", "exp",
+            "log", "dual", "regressive", "commutator", "left_contraction",
+        ][..]), 0..4),
+    ) {
+        let closed_form = (2..=4).contains(&metric.len());
+        let ops: Vec<&str> = ops
+            .into_iter()
+            .filter(|op| closed_form || !matches!(*op, "exp" | "log"))
+            .collect();
+        let ops = if ops.is_empty() {
+            String::new()
+        } else {
+            format!(", ops: [{}]", ops.join(", "))
+        };
+        let text = format!("mod g {{ metric: [{}]{ops} }}", metric.join(", "));
+        let raw: crate::spec::RawAlgebra = syn::parse_str(&text).map_err(|e| TestCaseError::fail(format!("{text}: {e}")))?;
+        let expanded = catch_unwind(AssertUnwindSafe(|| crate::expand::algebra(raw)))
+            .map_err(|_| TestCaseError::fail(format!("panicked on: {text}")))?;
+        expanded.map_err(|e| TestCaseError::fail(format!("{text}: {e}")))?;
+    }
+
     #[test]
     fn random_token_soup_never_panics(words in prop::collection::vec(prop::sample::select(WORDS), 0..24)) {
         let text = format!("mod g {{ {} }}", words.join(" "));
