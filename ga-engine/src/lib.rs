@@ -16,7 +16,7 @@
 //!
 //! # What is here
 //! - [`f32`](mod@f32) and [`f64`](mod@f64) (glam 0.32, feature `glam`; `glam_0_29` ...
-//!   `glam_0_32` for the glam a project pins, features `glam-0-29` ...): a [`f32::Body`]
+//!   `glam_0_33` for the glam a project pins, features `glam-0-29` ...): a [`f32::Body`]
 //!   from an inertia tensor in the body frame or from principal moments and their frame,
 //!   diagonalised once; [`f32::step`] (free flow plus kick, second order; the free flow
 //!   split around the Casimir `|L|^2` into three corrected axis turns, derived in the
@@ -151,6 +151,12 @@ pub mod glam_0_31 {
 #[cfg(feature = "glam-0-32")]
 pub mod glam_0_32 {
     engine_api!(glam_0_32);
+}
+
+/// The engine on glam 0.33 (feature `glam-0-33`), the glam of rapier3d 0.36.
+#[cfg(feature = "glam-0-33")]
+pub mod glam_0_33 {
+    engine_api!(glam_0_33);
 }
 
 #[cfg(feature = "glam-0-32")]
