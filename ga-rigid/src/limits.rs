@@ -232,6 +232,13 @@ pub fn check_stability(scene: &Scene, method: Method, step: Step) -> Result<(), 
     // Each sample interval is cut into equal steps of at most `dt`, so no step is longer
     // than the sample spacing.
     let h = h.min(sample_spacing(scene));
+    stable_step(method, h, rate, limit)
+}
+
+/// The stability rule itself, in any dimension: a fixed step `h` at angular speeds up to
+/// `rate` is refused when `h rate` is beyond the method's `limit` (or NaN), naming the limit
+/// and the largest stable step.
+pub(crate) fn stable_step(method: Method, h: f64, rate: f64, limit: f64) -> Result<(), Error> {
     let hw = h * rate;
     if hw.is_nan() || hw > limit {
         return Err(Error::invalid(

@@ -194,21 +194,7 @@ pub fn plan(
         method.stable_step_rate(shape.torque),
         limits.allow_unstable,
     ) {
-        let hw = h * shape.speed;
-        if hw.is_nan() || hw > limit {
-            return Err(Error::invalid(
-                "dt",
-                format!(
-                    "h |w|max = {} is beyond {}'s stability limit {} (|w|max = {}): take dt <= {} \
-                     or pass allow_unstable",
-                    num_short(hw),
-                    method.name(),
-                    num_short(limit),
-                    num_short(shape.speed),
-                    num_short(limit / shape.speed)
-                ),
-            ));
-        }
+        crate::limits::stable_step(method, h, shape.speed, limit)?;
     }
     let steps = match step {
         Step::Fixed(h) => shape.t_end / h + shape.samples,
