@@ -1,16 +1,42 @@
 //! Prints, per scene and method, what ten minutes at 60 Hz in rapier3d measure: the
 //! T-handle's flip period against the exact one and its energy and |L| drift, the top's
 //! energy and conserved momenta, and the cost per body-step.
-//! Run: `cargo run --release -p ga-rapier-example`.
+//! Run: `cargo run --release -p ga-rapier-example`; `-- --quick` runs one minute with
+//! fewer timed bodies (what CI runs, in its debug build, to show the example works: the
+//! figures worth reading come from the release build's ten minutes).
 
 use ga_rapier_example::{
     cost_per_body_step, engine_step_cost, run_t_handle, run_top, t_handle, Method, Scene, DT,
     TEN_MINUTES,
 };
 
-/// Bodies in the world whose steps are timed (one world step's fixed work spread over
-/// them).
-const TIMED_BODIES: usize = 1000;
+/// How long each body is simulated, how many bodies a timed world holds (one world step's
+/// fixed work spread over them) and how many timings the median is taken of.
+struct Settings {
+    steps: usize,
+    timed_bodies: usize,
+    samples: usize,
+}
+
+/// The settings the arguments ask for: none (ten minutes, the figures in BENCHMARKS.md) or
+/// `--quick` (one minute, a smaller world); anything else is refused with its name.
+fn settings(args: &[String]) -> Result<Settings, String> {
+    match args {
+        [] => Ok(Settings {
+            steps: TEN_MINUTES,
+            timed_bodies: 1000,
+            samples: 31,
+        }),
+        [quick] if quick == "--quick" => Ok(Settings {
+            steps: TEN_MINUTES / 10,
+            timed_bodies: 50,
+            samples: 3,
+        }),
+        [other, ..] => Err(format!(
+            "ga-rapier-example: unknown argument `{other}` (the only one is --quick)"
+        )),
+    }
+}
 
 fn cpu() -> String {
     std::fs::read_to_string("/proc/cpuinfo")
@@ -25,14 +51,27 @@ fn cpu() -> String {
 }
 
 fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let Settings {
+        steps,
+        timed_bodies,
+        samples,
+    } = match settings(&args) {
+        Ok(settings) => settings,
+        Err(message) => {
+            eprintln!("{message}");
+            std::process::exit(2);
+        }
+    };
     println!(
         "rapier3d 0.36 with its default IntegrationParameters (dt = {DT:.6} s, {} substeps), \
-         {TEN_MINUTES} steps (10 minutes at 60 Hz), f32; CPU: {}",
+         {steps} steps ({:.0} min at 60 Hz), f32; CPU: {}",
         ga_rapier_example::World::new(Default::default()).substeps(),
+        steps as f64 * DT as f64 / 60.0,
         cpu()
     );
     println!(
-        "cost: median of 31 timings of 20 steps of a world of {TIMED_BODIES} bodies, per body-step"
+        "cost: median of {samples} timings of 20 steps of a world of {timed_bodies} bodies, per body-step"
     );
     println!();
 
@@ -54,8 +93,8 @@ fn main() {
         "ns/body"
     );
     for method in Method::ALL {
-        let r = run_t_handle(method, TEN_MINUTES);
-        let cost = cost_per_body_step(Scene::THandle, method, TIMED_BODIES, 20, 31);
+        let r = run_t_handle(method, steps);
+        let cost = cost_per_body_step(Scene::THandle, method, timed_bodies, 20, samples);
         println!(
             "  {:<24} {:>10.6} s {:>+8.3}% {:>6} {:>+11.2e} {:>11.2e} {:>+11.2e} {:>11.2e} {:>10.0}",
             method.name(),
@@ -72,7 +111,7 @@ fn main() {
             println!(
                 "  (rapier's pose lands within {:.1e} rad of the step's orientation; the step alone: {:.0} ns/body)",
                 r.landing,
-                engine_step_cost(TIMED_BODIES, 20, 31)
+                engine_step_cost(timed_bodies, 20, samples)
             );
         }
     }
@@ -106,8 +145,8 @@ fn main() {
             "ns/body"
         );
         for method in Method::ALL {
-            let r = run_top(scene, method, TEN_MINUTES);
-            let cost = cost_per_body_step(scene, method, TIMED_BODIES, 20, 31);
+            let r = run_top(scene, method, steps);
+            let cost = cost_per_body_step(scene, method, timed_bodies, 20, samples);
             println!(
                 "  {:<10} {:<24} {:>+11.2e} {:>11.2e} {:>+11.2e} {:>11.2e} {:>+11.2e} {:>11.2e} {:>8.1e} m {:>10.0}",
                 title,
