@@ -163,3 +163,17 @@ fn main() {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn arguments_choose_the_run_or_are_refused_by_name() {
+        assert_eq!(settings(&[]).map(|s| s.steps), Ok(TEN_MINUTES));
+        let quick = settings(&["--quick".to_string()]).map(|s| (s.steps, s.samples));
+        assert_eq!(quick, Ok((3_600, 3)));
+        let refused = settings(&["--seconds".to_string(), "5".to_string()]).err();
+        assert!(refused.is_some_and(|m| m.contains("`--seconds`") && m.contains("--quick")));
+    }
+}
