@@ -100,11 +100,14 @@ fn with_run(table: &mut toml::Table, t_end: Option<f64>, samples: Option<i64>) {
     }
 }
 
-/// Parse `table` as scene text from `path`.
-fn parse_table(table: &toml::Table, path: &Path) -> PyResult<Scene> {
+/// Parse `table` as scene text from `path`; `in_file` names the file in its errors (a
+/// scene file whose run was overridden), as `Scene::load` does.
+fn parse_table(table: &toml::Table, path: &Path, in_file: bool) -> PyResult<Scene> {
     let text = toml::to_string(table)
         .map_err(|e| PyValueError::new_err(format!("the scene cannot be written as TOML: {e}")))?;
-    Scene::parse(&text, path).map_err(value_error)
+    Scene::parse(&text, path)
+        .map_err(|e| if in_file { e.in_file(path) } else { e })
+        .map_err(value_error)
 }
 
 /// The scene a dict or a path describes, with the run overridden where given.
@@ -114,7 +117,7 @@ fn scene_of(scene: &Bound<'_, PyAny>, t_end: Option<f64>, samples: Option<i64>) 
             unreachable!("a dict converts to a table")
         };
         with_run(&mut table, t_end, samples);
-        return parse_table(&table, Path::new(DICT_PATH));
+        return parse_table(&table, Path::new(DICT_PATH), false);
     }
     let path: PathBuf = scene.extract().map_err(|_| {
         PyTypeError::new_err(format!(
@@ -136,7 +139,7 @@ fn scene_of(scene: &Bound<'_, PyAny>, t_end: Option<f64>, samples: Option<i64>) 
     let mut table: toml::Table =
         toml::from_str(&text).map_err(|e| PyValueError::new_err(format!("SCENE: {e}")))?;
     with_run(&mut table, t_end, samples);
-    parse_table(&table, &path)
+    parse_table(&table, &path, true)
 }
 
 /// The method of a name, or the error naming the choices.

@@ -97,6 +97,11 @@ def test_scene_errors_name_the_field(tmp_path):
         rigid.simulate(tmp_path / "missing.toml", "exact")
     with pytest.raises(TypeError, match="dict or a path"):
         rigid.simulate(42, "exact")
+    # A file whose run is overridden is read twice; its errors still name it.
+    path = tmp_path / "scene.toml"
+    path.write_text(TEXT)
+    with pytest.raises(ValueError, match="scene.toml.*run.samples"):
+        rigid.simulate(path, "exact", samples=1)
     with pytest.raises(TypeError, match="body.moments"):
         rigid.simulate({**SCENE, "body": {"moments": {1, 2, 3}}}, "exact")
 
