@@ -129,7 +129,8 @@ pub fn run(args: &ReportArgs) -> Result<(), Error> {
     texts.push(report::long_runs_csv(&report.long_runs));
     texts.push(report::engine_runs_csv(&report.engine_runs));
     texts.push(report::nd::nd_csv(&report.nd_scenes));
-    texts.push(report::html(&report, &names[..plots]));
+    let html = report::html(&report, &names[..plots], &texts[..plots]);
+    texts.push(html);
     write_files(&args.out, exists, &names, &inputs, &texts)?;
 
     let mut summary = report::summary(&report);

@@ -121,21 +121,43 @@ fn a_quick_report_writes_csv_plots_and_page() {
                 "{} in the legends",
                 method
             );
+            // Its lines and its legend entries are groups the page can hide and show,
+            // as many as the panels it is drawn in; the legend's text is inside its group.
+            for class in ["ga-series", "ga-legend"] {
+                let tag = format!(r#"<g class="{class}" data-method="{}">"#, method.name());
+                assert_eq!(svg.matches(&tag).count(), expected, "{tag}");
+            }
+            let entry = format!(r#"<g class="ga-legend" data-method="{}">"#, method.name());
+            let inside = svg
+                .split(&entry)
+                .nth(1)
+                .and_then(|g| g.split("</g>").next());
+            assert!(inside.is_some_and(|g| g.contains(&legend_entry)), "{entry}");
         }
+        // Every group closed, and no mark the groups were made from left in the drawing.
+        assert_eq!(svg.matches("<g ").count(), svg.matches("</g>").count());
+        assert!(!svg.contains("@@ga-group"));
         let name = report::svg_name(i, &scene.name);
         std::fs::write(dir.join(&name), &svg).unwrap();
         names.push(name);
     }
-    let html = report::html(&report, &names);
+    let svgs: Vec<String> = names
+        .iter()
+        .map(|name| std::fs::read_to_string(dir.join(name)).unwrap())
+        .collect();
+    let html = report::html(&report, &names, &svgs);
     std::fs::write(dir.join("index.html"), &html).unwrap();
     let page = std::fs::read_to_string(dir.join("index.html")).unwrap();
-    for name in &names {
+    // Each diagram is drawn into the page (its legend works there) and linked as a file.
+    for (name, svg) in names.iter().zip(&svgs) {
+        assert_eq!(page.matches(svg.trim()).count(), 1, "{name}");
         assert_eq!(
-            page.matches(&format!("<img src=\"{name}\"")).count(),
+            page.matches(&format!("<a href=\"{name}\">")).count(),
             1,
             "{name}"
         );
     }
+    assert_eq!(page.matches("<script>").count(), 1);
     assert!(page.contains("Check:") && page.contains("observed order"));
     assert!(page.contains(&report.cpu));
 }

@@ -39,13 +39,27 @@ const STYLE: &str = "body{font-family:sans-serif;max-width:1000px;margin:2em aut
 color:#222;line-height:1.4}table{border-collapse:collapse;margin:.5em 0 1em}\
 td,th{border:1px solid #ccc;padding:.2em .6em;text-align:left;font-size:.92em}\
 th{background:#f3f3f3}td.num{text-align:right;font-variant-numeric:tabular-nums}\
-img{max-width:100%;border:1px solid #ddd}section{margin-bottom:3em}\
+img,section>svg{max-width:100%;height:auto;border:1px solid #ddd}\
+g.ga-legend{cursor:pointer;pointer-events:bounding-box}g.ga-legend.ga-off{opacity:.3}\
+g.ga-series.ga-off{display:none}section{margin-bottom:3em}\
 .swatch{display:inline-block;width:1.4em;height:.5em;margin-right:.4em;vertical-align:middle}\
 .note{color:#555;font-size:.92em}";
 
-/// The page; `svg_names[i]` is the diagram file of `report.scenes[i]`.
+/// Hides and shows a method's lines in every panel of a diagram when its legend entry is
+/// clicked (the groups [`super::plot::svg`] writes); the page needs nothing else to run.
+const SCRIPT: &str = "document.querySelectorAll('svg g.ga-legend').forEach(function (entry) {\
+ entry.addEventListener('click', function () {\
+ var method = entry.getAttribute('data-method');\
+ var off = !entry.classList.contains('ga-off');\
+ entry.ownerSVGElement.querySelectorAll('g[data-method=\"' + method + '\"]')\
+ .forEach(function (g) { g.classList.toggle('ga-off', off); });\
+ });\
+});";
+
+/// The page; `svg_names[i]` is the diagram file of `report.scenes[i]` and `svgs[i]` its
+/// text, drawn into the page so that its legend can hide and show lines.
 #[must_use]
-pub fn html(report: &Report, svg_names: &[String]) -> String {
+pub fn html(report: &Report, svg_names: &[String], svgs: &[String]) -> String {
     let mut out = String::new();
     let size = match report.size {
         Size::Quick => "quick",
@@ -108,7 +122,8 @@ pub fn html(report: &Report, svg_names: &[String]) -> String {
     out.push_str("</p>\n");
     for (i, scene) in report.scenes.iter().enumerate() {
         let name = svg_names.get(i).map_or("", String::as_str);
-        section(&mut out, i, scene, name);
+        let svg = svgs.get(i).map_or("", String::as_str);
+        section(&mut out, i, scene, name, svg);
     }
     if !report.long_runs.is_empty() {
         long_runs_section(&mut out, &report.long_runs);
@@ -119,7 +134,7 @@ pub fn html(report: &Report, svg_names: &[String]) -> String {
     if !report.nd_scenes.is_empty() {
         super::nd::nd_section(&mut out, &report.nd_scenes);
     }
-    out.push_str("</body></html>\n");
+    let _ = write!(out, "<script>{SCRIPT}</script>\n</body></html>\n");
     out
 }
 
@@ -251,17 +266,19 @@ fn summary_section(out: &mut String, report: &Report) {
     out.push_str("</table>\n");
 }
 
-fn section(out: &mut String, index: usize, scene: &SceneResult, svg_name: &str) {
+fn section(out: &mut String, index: usize, scene: &SceneResult, svg_name: &str, svg: &str) {
     let _ = write!(
         out,
-        "<section id=\"s{index}\"><h2>{}</h2>\n<p>{}; t_end = {:e}, |w(0)| = {:.3e} rad/s.</p>\n\
-         <img src=\"{}\" alt=\"work-precision diagram of {}\">\n",
+        "<section id=\"s{index}\"><h2>{}</h2>\n<p>{}; t_end = {:e}, |w(0)| = {:.3e} rad/s. \
+         Click a legend entry to hide or show its method's lines; the diagram alone: \
+         <a href=\"{}\">{}</a>.</p>\n{}\n",
         esc(&scene.name),
         esc(&scene.source),
         scene.t_end,
         scene.rate,
         esc(svg_name),
-        esc(&scene.name),
+        esc(svg_name),
+        svg.trim(),
     );
     let c = &scene.check;
     let _ = writeln!(

@@ -24,11 +24,71 @@ const PANEL: (u32, u32) = (620, 470);
 /// The height of the legend under each chart: four rows of two columns.
 const LEGEND_HEIGHT: u32 = 104;
 
+/// The prefix of the text elements that mark a group's start (`@@ga-group:CLASS:METHOD`)
+/// and end (`@@ga-group-end`) in plotters' output; no text of the diagram starts with it.
+const GROUP_MARK: &str = "@@ga-group";
+
 /// The scene's work-precision diagram as an SVG document.
 pub fn svg(scene: &SceneResult) -> Result<String, Error> {
     let mut text = String::new();
     draw(scene, &mut text).map_err(|e| Error::invalid("plot", e.to_string()))?;
-    Ok(text)
+    Ok(groups_from_marks(&text))
+}
+
+/// `text` with each group mark (a whole `<text ...>` element whose content is a mark)
+/// replaced by the tag it stands for.
+fn groups_from_marks(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut rest = text;
+    while let Some(at) = rest.find(GROUP_MARK) {
+        let (Some(open), Some(close)) = (rest[..at].rfind("<text"), rest[at..].find("</text>"))
+        else {
+            break;
+        };
+        out.push_str(&rest[..open]);
+        let mark = rest[at..at + close].trim();
+        match mark
+            .strip_prefix(GROUP_MARK)
+            .and_then(|m| m.strip_prefix(':'))
+        {
+            Some(class_and_method) => {
+                let (class, method) = class_and_method.split_once(':').unwrap_or(("", ""));
+                out.push_str(&format!("<g class=\"{class}\" data-method=\"{method}\">"));
+            }
+            None => out.push_str("</g>"),
+        }
+        rest = rest[at + close + "</text>".len()..].trim_start_matches('\n');
+        out.push('\n');
+    }
+    out.push_str(rest);
+    out
+}
+
+/// Marks the start of `method`'s group of class `class` in the drawing (see [`svg`]).
+fn begin_group<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    class: &str,
+    method: Method,
+) -> DrawResult
+where
+    DB::ErrorType: 'static,
+{
+    let mark = format!("{GROUP_MARK}:{class}:{}", method.name());
+    area.draw(&Text::new(mark, (0, 0), ("sans-serif", 1)))?;
+    Ok(())
+}
+
+/// Marks the end of the group begun last.
+fn end_group<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>) -> DrawResult
+where
+    DB::ErrorType: 'static,
+{
+    area.draw(&Text::new(
+        format!("{GROUP_MARK}-end"),
+        (0, 0),
+        ("sans-serif", 1),
+    ))?;
+    Ok(())
 }
 
 type DrawResult = Result<(), Box<dyn std::error::Error>>;
@@ -162,6 +222,7 @@ fn draw(scene: &SceneResult, text: &mut String) -> DrawResult {
         for &method in &methods {
             let look = style(method);
             let pts = points(scene, method);
+            begin_group(&chart_area, "ga-series", method)?;
             if look.dashed {
                 chart.draw_series(DashedLineSeries::new(
                     pts.iter().copied(),
@@ -179,6 +240,7 @@ fn draw(scene: &SceneResult, text: &mut String) -> DrawResult {
                 pts.iter()
                     .map(|&p| EmptyElement::at(p) + marker(look.marker, look.colour)),
             )?;
+            end_group(&chart_area)?;
         }
         legend(&legend_area, scene, &methods)?;
     }
@@ -213,6 +275,7 @@ fn legend(
         let (x, y) = (20 + column * (k as i32 / 4), 12 + 22 * (k as i32 % 4));
         let look = style(method);
         let line = look.colour.stroke_width(2);
+        begin_group(area, "ga-legend", method)?;
         if look.dashed {
             area.draw(&PathElement::new(vec![(x, y), (x + 10, y)], line))?;
             area.draw(&PathElement::new(vec![(x + 16, y), (x + 26, y)], line))?;
@@ -230,6 +293,7 @@ fn legend(
             name.push_str(&format!(" ({failed} failed)"));
         }
         area.draw(&Text::new(name, (x + 34, y - 7), font.clone()))?;
+        end_group(area)?;
     }
     Ok(())
 }
