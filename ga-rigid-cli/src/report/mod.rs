@@ -23,8 +23,8 @@ pub use analysis::{
 };
 pub use engine_steps::{
     engine_run, engine_run_on, engine_runs, engine_runs_csv, engine_verdicts, exact_flip_period,
-    EngineBody, EngineRun, ENGINE_BOUNDS, ENGINE_METHODS, ENGINE_RATES, ENGINE_RUNS_CSV_HEADER,
-    ENGINE_STEPS, NEAR_SYMMETRIC, T_HANDLE,
+    EngineBody, EngineRun, ENGINE_BODIES, ENGINE_BOUNDS, ENGINE_METHODS, ENGINE_RATES,
+    ENGINE_RUNS_CSV_HEADER, ENGINE_STEPS, NEAR_SYMMETRIC, T_HANDLE,
 };
 pub use estimate::scene_seconds;
 pub use invariants::{

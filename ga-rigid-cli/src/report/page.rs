@@ -470,21 +470,45 @@ fn long_runs_section(out: &mut String, rows: &[super::LongRun]) {
 /// The table of [`super::engine_runs`]: per method and engine step size, the energy and
 /// momentum errors and the flip period against the exact one.
 fn engine_runs_section(out: &mut String, rows: &[super::EngineRun]) {
-    let exact = super::exact_flip_period();
     let steps = rows.iter().map(|r| r.steps).max().unwrap_or(0);
     let _ = writeln!(
         out,
-        "<section id=\"engine-steps\"><h2>At engine step sizes: the T-handle</h2>\n<p>The \
-         Dzhanibekov body (moments 3, 5, 9; body momentum (0, 2, 0.01)) stepped {steps} times \
-         at <code>h |w(0)|</code> from {} to {}, as an engine steps at a fixed frame rate. \
-         The exact flow flips the handle every {exact:.3} s. Largest relative errors of the \
-         energy and of the space angular momentum over the run; the mean time between flips \
-         against the exact one. Peers (marked) are the engines' gyroscopic Euler steps, \
-         Buss's method, the implicit midpoint rule on the quaternion and the discrete \
-         Moser-Veselov step. Details in \
-         <a href=\"engine_runs.csv\">engine_runs.csv</a>.</p>",
+        "<section id=\"engine-steps\"><h2>At engine step sizes</h2>\n<p>Each body stepped \
+         {steps} times at <code>h |w(0)|</code> from {} to {}, as an engine steps at a fixed \
+         frame rate. Largest relative errors of the energy and of the space angular momentum \
+         over the run; the mean time between flips (sign changes of the body momentum's \
+         second component) against the exact flow's. Peers (marked) are the engines' \
+         gyroscopic Euler steps, Buss's method, the implicit midpoint rule on the quaternion, \
+         the discrete Moser-Veselov step and Spiers's steps (avian's pull request #993). \
+         Details in <a href=\"engine_runs.csv\">engine_runs.csv</a>.</p>",
         super::ENGINE_RATES[0],
         super::ENGINE_RATES[super::ENGINE_RATES.len() - 1],
+    );
+    for body in super::ENGINE_BODIES {
+        let runs: Vec<super::EngineRun> = rows.iter().filter(|r| r.body == body).cloned().collect();
+        if !runs.is_empty() {
+            engine_body_table(out, body, &runs);
+        }
+    }
+    out.push_str("</section>\n");
+}
+
+/// One body's table of [`engine_runs_section`] and the verdicts under it.
+fn engine_body_table(out: &mut String, body: super::EngineBody, rows: &[super::EngineRun]) {
+    let about = if body == super::T_HANDLE {
+        "the Dzhanibekov body, flipping about its middle axis"
+    } else {
+        "the two smaller moments 2 % apart: nearly the symmetric top, for which Spiers's step \
+         is exact"
+    };
+    let _ = writeln!(
+        out,
+        "<h3>{}</h3>\n<p>{about}: moments {:?}, body momentum {:?}; the exact flow flips \
+         every {:.3} s.</p>",
+        esc(body.name),
+        body.moments,
+        body.momentum,
+        body.exact_flip_period(),
     );
     out.push_str(
         "<table><tr><th>method</th><th>h|w|</th><th>energy error, largest \
@@ -528,11 +552,11 @@ fn engine_runs_section(out: &mut String, rows: &[super::EngineRun]) {
          to {energy:e} and the flip period within {}% (times of the runs above, each 10^5 \
          steps or the quick size, in this harness's generic stepping, not the engine's own \
          code). ga_engine steps with splitting-corrected: of the second-order steps within the \
-         bounds, the one with the smallest energy error here.</p>\n<ul>",
+         bounds, the one with the smallest energy error on the T-handle.</p>\n<ul>",
         100.0 * flip
     );
     for line in super::engine_verdicts(rows) {
         let _ = writeln!(out, "<li>{}</li>", esc(&line));
     }
-    out.push_str("</ul></section>\n");
+    out.push_str("</ul>\n");
 }
