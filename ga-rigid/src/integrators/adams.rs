@@ -33,8 +33,9 @@ use super::lie_dop853::LieDop853;
 pub const MIN_ORDER: u32 = 2;
 /// The highest order [`Adams::new`] takes.
 pub const MAX_ORDER: u32 = 12;
-/// The order of the registry's `adams-10`.
-pub const DEFAULT_ORDER: u32 = 10;
+/// The order the registry's race measured fastest to an attitude error of 1e-10
+/// (BENCHMARKS.md): `adams-12`.
+pub const DEFAULT_ORDER: u32 = 12;
 
 /// The most rates a method keeps (`MAX_ORDER - 1`).
 const K_MAX: usize = MAX_ORDER as usize - 1;
@@ -218,10 +219,15 @@ fn rate(body: &RigidBody, t: f64, y: &Y) -> Y {
     [r.s, r.e12, r.e13, r.e23, w.e12, w.e13, w.e23]
 }
 
-/// The rotor components of `y` scaled to unit norm.
+/// The rotor components of `y` scaled to unit norm; NaN where the norm has overflowed or
+/// vanished (an unstable run), so that the end's finiteness check sees it rather than a
+/// rotor divided down to zero.
 #[inline(always)]
 fn normalise(y: &mut Y) {
-    let n = (y[0] * y[0] + y[1] * y[1] + y[2] * y[2] + y[3] * y[3]).sqrt();
+    let mut n = (y[0] * y[0] + y[1] * y[1] + y[2] * y[2] + y[3] * y[3]).sqrt();
+    if !(n.is_finite() && n > 0.0) {
+        n = f64::NAN;
+    }
     for v in &mut y[..4] {
         *v /= n;
     }
