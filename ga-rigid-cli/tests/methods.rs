@@ -393,6 +393,8 @@ fn promises(method: Method) -> Promises {
         | Method::Dopri
         | Method::LieDop853
         | Method::LieDop853Cayley
+        | Method::Adams10
+        | Method::Adams12
         | Method::Dop853Quaternion
         | Method::Dopri5Quaternion
         | Method::EulerGyroExplicit
