@@ -1,7 +1,7 @@
 //! How each method looks in the report: the panel of the work-precision diagram it is
 //! drawn in, and a colour and marker that are its own wherever it appears.
 //!
-//! A diagram of 28 methods in one frame cannot be read, so each scene's diagram is five
+//! A diagram of 30 methods in one frame cannot be read, so each scene's diagram is five
 //! small panels of at most eight lines: our second-order steppers, our fixed-step methods
 //! of order four and up, our adaptive and exact methods, the engines' steps among the
 //! peers and the other peers, each peer panel with our fastest method repeated beside it. Within a panel every method has its own colour (the

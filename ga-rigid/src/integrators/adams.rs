@@ -1,7 +1,7 @@
 //! Adams-Bashforth-Moulton in PECE form with a fixed step (E. Hairer, S. P. Nørsett,
 //! G. Wanner, *Solving Ordinary Differential Equations I*, 2nd ed., Springer 1993,
-//! section III.1: the explicit and implicit Adams methods, their coefficients from the
-//! recurrences (1.7) and (1.9), and the predictor-corrector mode "PECE"), applied to the
+//! section III.1: the explicit and implicit Adams methods, the recurrences of their
+//! coefficients, and the predictor-corrector mode "PECE"), applied to the
 //! rotor's four components and `Omega_B` as seven unknowns, the rotor scaled back to unit
 //! norm after every step (the embedding form; docs/derivations/adams-pece.md says why
 //! not the Lie-group Adams method of Faltinsen, Marthinsen and Munthe-Kaas, and why the
@@ -90,9 +90,9 @@ impl Ratio {
     }
 }
 
-/// The backward-difference coefficients of the explicit (`implicit = false`, `gamma_j`,
-/// HNW III.(1.7): `gamma_j + gamma_{j-1}/2 + ... + gamma_0/(j+1) = 1`) or implicit
-/// (`gamma*_j`, HNW III.(1.9): the same sums equal to 0 for `j >= 1`) Adams methods.
+/// The backward-difference coefficients of the explicit (`implicit = false`, `gamma_j`:
+/// `gamma_j + gamma_{j-1}/2 + ... + gamma_0/(j+1) = 1`) or implicit (`gamma*_j`: the same
+/// sums equal to 0 for `j >= 1`) Adams methods (HNW III.1).
 const fn gammas(implicit: bool) -> [Ratio; MAX_ORDER as usize] {
     let mut g = [Ratio { num: 0, den: 1 }; MAX_ORDER as usize];
     let mut j = 0;
@@ -457,8 +457,7 @@ mod tests {
         Ratio::new(num, den)
     }
 
-    /// The low orders against the values printed in every textbook (HNW Tables III.1.1
-    /// and III.1.2).
+    /// The low orders against the values printed in every textbook (HNW III.1).
     #[test]
     fn low_order_coefficients_are_the_textbook_ones() {
         assert_eq!(bashforth(1)[..1], [r(1, 1)]);
@@ -472,7 +471,7 @@ mod tests {
         assert_eq!(moulton(2)[..2], [r(1, 2), r(1, 2)]);
         assert_eq!(moulton(3)[..3], [r(5, 12), r(8, 12), r(-1, 12)]);
         assert_eq!(moulton(4)[..4], [r(9, 24), r(19, 24), r(-5, 24), r(1, 24)]);
-        // The backward-difference coefficients of HNW III.(1.8) and (1.10).
+        // The backward-difference coefficients as HNW III.1 prints them.
         let g = gammas(false);
         assert_eq!(g[..5], [r(1, 1), r(1, 2), r(5, 12), r(3, 8), r(251, 720)]);
         let g = gammas(true);
