@@ -342,16 +342,21 @@ impl Adams {
         self.start_substeps
     }
 
-    /// Whether the kept history continues at `(t, y)` with sub-step `h` on `body`.
-    fn continues(&self, body: usize, t: f64, y: &Y, h: f64) -> bool {
+    /// The sub-step to continue the kept history with, if it continues at `(t, y)` on
+    /// `body` with `n` sub-steps of `h`: the history's own step, so that the steps stay
+    /// equal to the bit. A caller's sample times are sums and differences of its own
+    /// (`t_k`, `t_{k+1} - t_k`), so the start and the sub-step may differ from the
+    /// history's by roundings of the times; up to 16 of them over the call, which moves its
+    /// end by no more than the rounding of `t`, it continues.
+    fn continued_step(&self, body: usize, t: f64, y: &Y, n: u64, h: f64) -> Option<f64> {
         let hist = &self.history;
-        // The sub-step of the next call is `dt / n` of its own `dt`, which may differ from
-        // the last one by a rounding; a relative change of a few `eps` moves the method by
-        // far less than its local error.
-        hist.body == body
-            && hist.t == t
+        let slack = 16.0 * f64::EPSILON * (t.abs() + (n as f64 * h).abs());
+        (hist.filled > 0
+            && hist.body == body
             && hist.y == *y
-            && (h - hist.h).abs() <= 4.0 * f64::EPSILON * hist.h.abs()
+            && (t - hist.t).abs() <= slack
+            && (n as f64 * (h - hist.h)).abs() <= slack)
+            .then_some(hist.h)
     }
 
     /// `n` steps of `h` from `(t, y)`, for `K = p - 1` kept rates.
@@ -361,11 +366,15 @@ impl Adams {
         let am0 = TABLES.am[p][0];
         let am: [f64; K] = core::array::from_fn(|i| TABLES.am[p][i + 1]);
         let key = body as *const RigidBody as usize;
-        if !self.continues(key, t, &y, h) {
-            self.history.filled = 0;
-            self.history.head = 0;
-            self.history.push(K, rate(body, t, &y));
-        }
+        let h = match self.continued_step(key, t, &y, n, h) {
+            Some(kept) => kept,
+            None => {
+                self.history.filled = 0;
+                self.history.head = 0;
+                self.history.push(K, rate(body, t, &y));
+                h
+            }
+        };
         let (mut t, mut y) = (t, y);
         let hist = &mut self.history;
         for i in 0..n {
