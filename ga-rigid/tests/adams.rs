@@ -217,6 +217,28 @@ fn calls_that_continue_keep_the_history_and_others_restart() {
     assert_eq!(pieces.advance(&body, 0.0, other, 0.0).unwrap(), other);
 }
 
+/// Backward in time: a run to `t` and back to 0 returns to the start within the method's
+/// error at that step, and the backward call does not continue the forward history (its
+/// sub-step has the other sign).
+#[test]
+fn a_run_forward_and_back_returns_to_the_start() {
+    let scene = HAIRER_VILMART;
+    let body = scene.body();
+    let mut method = Adams::new(0.01, 12).unwrap();
+    let there = method.advance(&body, 0.0, scene.state(), 2.0).unwrap();
+    let back = method.advance(&body, 2.0, there, -2.0).unwrap();
+    let fresh_back = Adams::new(0.01, 12)
+        .unwrap()
+        .advance(&body, 2.0, there, -2.0)
+        .unwrap();
+    assert_eq!(back, fresh_back);
+    let gap = attitude_error(back.rotor, scene.state().rotor).max(distance(
+        momentum(&body, &back),
+        momentum(&body, &scene.state()),
+    ));
+    assert!(gap < 1e-12, "forward and back: {gap:e}");
+}
+
 /// A bad step, a bad order and an unstable run are typed errors naming the thing at fault.
 #[test]
 fn bad_steps_and_orders_are_refused_by_name() {
