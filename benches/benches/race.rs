@@ -12,6 +12,10 @@
 //! satellite (T = 4 pi). The reference at the end is the exact flow for free bodies and
 //! the report's reference (Dormand-Prince at 1e-13, checked against lie-rk4 at
 //! `h |w| = 1e-3`) under a torque.
+//!
+//! A short run: `RACE_METHODS=adams-10,dop853-quaternion` races only the named methods,
+//! and `RACE_SCENES=asymmetric` only the scenes whose names contain one of the given
+//! (comma-separated) words; both unset race everything.
 
 use std::time::{Duration, Instant};
 
@@ -35,12 +39,34 @@ const SCENES: [&str; 5] = [
     "gravity-gradient satellite",
 ];
 
+/// Whether the environment variable `var` is unset or one of its comma-separated entries
+/// satisfies `matches`.
+fn listed(var: &str, matches: impl Fn(&str) -> bool) -> bool {
+    std::env::var(var).map_or(true, |list| list.split(',').any(|w| matches(w.trim())))
+}
+
 /// A whole run of `method` at `step` from the scene's start to its end.
 fn run(scene: &TestScene, method: Method, step: Step) -> Option<State> {
     let mut integrator = method.integrator(step).ok()?;
     integrator
         .advance(&scene.body, 0.0, scene.initial, scene.t_end)
         .ok()
+}
+
+/// The steps a whole run takes: the accepted steps of an adaptive method, the fixed
+/// steps of the others (`None` for a solution evaluated at the end).
+fn steps(scene: &TestScene, method: Method, step: Step) -> Option<u64> {
+    match step {
+        Step::Fixed(h) => Some((scene.t_end / h).round() as u64),
+        Step::Tolerance(_) => {
+            let mut integrator = method.integrator(step).ok()?;
+            integrator
+                .advance(&scene.body, 0.0, scene.initial, scene.t_end)
+                .ok()?;
+            integrator.accepted_steps()
+        }
+        Step::AtSamples => None,
+    }
 }
 
 /// The error of a run, or infinity when it failed.
@@ -112,6 +138,7 @@ fn race(c: &mut Criterion) {
         .expect("the suite builds")
         .into_iter()
         .filter(|s| SCENES.contains(&s.name.as_str()))
+        .filter(|s| listed("RACE_SCENES", |word| s.name.contains(word)))
         .collect();
     let mut table = String::new();
     for scene in &scenes {
@@ -124,6 +151,9 @@ fn race(c: &mut Criterion) {
             scene.name, scene.t_end
         );
         for method in methods {
+            if !listed("RACE_METHODS", |name| name == method.name()) {
+                continue;
+            }
             match cheapest(scene, &reference, method) {
                 Some((step, e)) => {
                     let setting = match step {
@@ -132,8 +162,14 @@ fn race(c: &mut Criterion) {
                         Step::AtSamples => "one evaluation".to_string(),
                     };
                     let time = median_time(scene, method, step);
+                    let per_step = steps(scene, method, step).map_or(String::new(), |n| {
+                        format!(
+                            "  {n} steps, {:.0} ns a step",
+                            time.as_secs_f64() * 1e9 / n as f64
+                        )
+                    });
                     println!(
-                        "  {:<20} {setting:<14} error {e:.1e}  median {:.1} us",
+                        "  {:<20} {setting:<14} error {e:.1e}  median {:.1} us{per_step}",
                         method.name(),
                         time.as_secs_f64() * 1e6
                     );

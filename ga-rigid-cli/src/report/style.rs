@@ -1,9 +1,9 @@
 //! How each method looks in the report: the panel of the work-precision diagram it is
 //! drawn in, and a colour and marker that are its own wherever it appears.
 //!
-//! A diagram of 28 methods in one frame cannot be read, so each scene's diagram is five
+//! A diagram of 30 methods in one frame cannot be read, so each scene's diagram is five
 //! small panels of at most eight lines: our second-order steppers, our fixed-step methods
-//! of order four and up, our adaptive and exact methods, the engines' steps among the
+//! of order four and up, our adaptive, multistep (Adams) and exact methods, the engines' steps among the
 //! peers and the other peers, each peer panel with our fastest method repeated beside it. Within a panel every method has its own colour (the
 //! eight colours of Okabe and Ito's palette, which stay apart for colour-blind readers);
 //! each panel has its own marker, so a method's colour and marker together name it in
@@ -20,7 +20,8 @@ pub enum Panel {
     SecondOrder,
     /// Our fixed-step methods of order four and higher.
     HighOrder,
-    /// Our adaptive methods, the exact flow and the closed form.
+    /// Our adaptive methods, the Adams-Bashforth-Moulton methods (fixed step, but the
+    /// panel of order four and up holds eight already), the exact flow and the closed form.
     AdaptiveAndExact,
     /// The engines' steps among the peers (and, drawn beside them, our fastest).
     EnginePeers,
@@ -50,7 +51,7 @@ impl Panel {
         match self {
             Panel::SecondOrder => "ours: second-order steppers",
             Panel::HighOrder => "ours: fixed step, order 4 and up",
-            Panel::AdaptiveAndExact => "ours: adaptive, exact, closed form",
+            Panel::AdaptiveAndExact => "ours: adaptive, Adams, exact, closed form",
             Panel::EnginePeers => "engine steps (dashed) and our fastest to the best peer",
             Panel::Peers => "other peers (dashed) and our fastest to the best peer",
         }
@@ -135,6 +136,8 @@ pub fn panel(method: Method) -> Panel {
         | ExactSplitting => Panel::SecondOrder,
         Rk4 | LieRk4 | Splitting4 | Splitting6 | Splitting8 | ExactSplitting4 | ExactSplitting6
         | ExactSplitting8 => Panel::HighOrder,
+        // Eight colours to a panel: the high-order panel is full.
+        Adams10 | Adams12 => Panel::AdaptiveAndExact,
         _ => Panel::AdaptiveAndExact,
     }
 }

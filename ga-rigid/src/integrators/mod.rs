@@ -1,6 +1,7 @@
 //! Time-stepping methods for the rigid body of [`crate::dynamics`]: one file per method,
 //! each citing the paper it follows, all behind the one [`Integrator`] trait.
 
+pub mod adams;
 mod casimir_splitting;
 mod closed_form;
 mod composed_splitting;
@@ -16,6 +17,7 @@ mod midpoint;
 mod rk4;
 mod splitting;
 
+pub use adams::Adams;
 pub use casimir_splitting::CasimirSplitting;
 pub use closed_form::ClosedForm;
 pub use composed_splitting::ComposedSplitting;
