@@ -7,7 +7,7 @@
 //! are stepped one by one. Each lane rounds as the scalar does, so a body's bits do not
 //! depend on its neighbours, its position in the slice, the group width or the CPU.
 
-use super::inertia::{Inertia, Precision};
+use super::inertia::{Inertia, Perm, Precision};
 use super::parts::{BodyParts, Order, Parts};
 use super::real::{Group, Real};
 use super::rotation::{Q, V};
@@ -33,7 +33,16 @@ pub(crate) fn step_all<T: Precision, S: Parts<T>, G: Group<T, N>, const N: usize
 ) {
     let mut groups = states.chunks_exact_mut(N);
     for group in &mut groups {
-        step_group::<T, S, G, N>(group, h, order);
+        // The turns' axes are compiled in: a group whose bodies turn about different
+        // axes (moments given in different orders) is stepped one body at a time.
+        let axes = group[0].parts().0.axes;
+        if group.iter().all(|state| state.parts().0.axes == axes) {
+            step_group::<T, S, G, N>(group, axes, h, order);
+        } else {
+            for state in group {
+                step_one(state, h, order);
+            }
+        }
     }
     for state in groups.into_remainder() {
         step_one(state, h, order);
@@ -44,6 +53,7 @@ pub(crate) fn step_all<T: Precision, S: Parts<T>, G: Group<T, N>, const N: usize
 #[inline(always)]
 fn step_group<T: Precision, S: Parts<T>, G: Group<T, N>, const N: usize>(
     group: &mut [S],
+    axes: Perm,
     h: T,
     order: Order,
 ) {
@@ -63,7 +73,8 @@ fn step_group<T: Precision, S: Parts<T>, G: Group<T, N>, const N: usize>(
         },
         frame: quaternion(|i| parts[i].0.frame),
         turned: G::pack_mask(core::array::from_fn(|i| parts[i].0.turned)),
-        order: [0, 1, 2],
+        order: Perm::Xyz,
+        axes,
     };
     let (q0, l0, t0) = (
         quaternion(|i| parts[i].1),
