@@ -63,24 +63,13 @@ fn casimir_turn<R: Real, const LIMIT: bool>(rates: &Rates<R>, l: V<R>, l2: R) ->
 /// at an engine's step), the turns are `projective.rs`'s. Otherwise the divided turns
 /// run with their clamps; lanes in the projective range take its result, so a body
 /// gets the same bits in every form.
+///
+/// `O` and `M` are the split's outer and middle axes among the stored ones (the
+/// reference the third; `inertia.axes`).
 // Inlined only when optimised (see "Unoptimised builds" in `splitting.rs`).
 #[cfg_attr(not(debug_assertions), inline(always))]
 #[cfg_attr(debug_assertions, inline)]
-pub(crate) fn free_flow_normalized<R: Real, T: Turning<R>>(
-    inertia: &Inertia<R>,
-    start: T,
-    l: V<R>,
-    h: R,
-) -> T {
-    with_axes!(inertia.axes, O, M => free_flow_about::<R, T, O, M>(inertia, start, l, h))
-}
-
-/// [`free_flow_normalized`] with the split's outer and middle axes `O` and `M` among the
-/// stored axes (the reference the third).
-// Inlined only when optimised (see "Unoptimised builds" in `splitting.rs`).
-#[cfg_attr(not(debug_assertions), inline(always))]
-#[cfg_attr(debug_assertions, inline)]
-fn free_flow_about<R: Real, T: Turning<R>, const O: usize, const M: usize>(
+pub(crate) fn free_flow_normalized<R: Real, T: Turning<R>, const O: usize, const M: usize>(
     inertia: &Inertia<R>,
     start: T,
     l: V<R>,
@@ -321,7 +310,7 @@ mod tests {
             let (h0, m0) = (energy(l), modified(l));
             let (mut worst_h, mut worst_m) = (0.0f64, 0.0f64);
             for _ in 0..(20.0 / h) as usize {
-                q = free_flow_normalized(&inertia, q, l, h);
+                q = free_flow_normalized::<f64, Q<f64>, 0, 1>(&inertia, q, l, h);
                 let m = q.rotate_inv(l);
                 worst_h = worst_h.max((energy(m) / h0 - 1.0).abs());
                 worst_m = worst_m.max((modified(m) / m0 - 1.0).abs());

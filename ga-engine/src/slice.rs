@@ -33,11 +33,11 @@ pub(crate) fn step_all<T: Precision, S: Parts<T>, G: Group<T, N>, const N: usize
 ) {
     let mut groups = states.chunks_exact_mut(N);
     for group in &mut groups {
-        // The turns' axes are compiled in: a group whose bodies turn about different
-        // axes (moments given in different orders) is stepped one body at a time.
-        let axes = group[0].parts().0.axes;
-        if group.iter().all(|state| state.parts().0.axes == axes) {
-            step_group::<T, S, G, N>(group, axes, h, order);
+        // The turns' axes are compiled in, the stored `x, y, z` in the lanes: a group
+        // with a body whose split axes are other ones (moments given out of order
+        // without a frame) is stepped one body at a time, as each body alone.
+        if group.iter().all(|state| state.parts().0.axes == Perm::Xyz) {
+            step_group::<T, S, G, N>(group, h, order);
         } else {
             for state in group {
                 step_one(state, h, order);
@@ -53,7 +53,6 @@ pub(crate) fn step_all<T: Precision, S: Parts<T>, G: Group<T, N>, const N: usize
 #[inline(always)]
 fn step_group<T: Precision, S: Parts<T>, G: Group<T, N>, const N: usize>(
     group: &mut [S],
-    axes: Perm,
     h: T,
     order: Order,
 ) {
@@ -74,7 +73,7 @@ fn step_group<T: Precision, S: Parts<T>, G: Group<T, N>, const N: usize>(
         frame: quaternion(|i| parts[i].0.frame),
         turned: G::pack_mask(core::array::from_fn(|i| parts[i].0.turned)),
         order: Perm::Xyz,
-        axes,
+        axes: Perm::Xyz,
     };
     let (q0, l0, t0) = (
         quaternion(|i| parts[i].1),
@@ -83,8 +82,8 @@ fn step_group<T: Precision, S: Parts<T>, G: Group<T, N>, const N: usize>(
     );
     let h = G::pack([h; N]);
     let (qn, ln) = match order {
-        Order::Two => super::splitting::step2(&inertia, q0, l0, t0, h),
-        Order::Four => super::splitting::step4(&inertia, q0, l0, t0, h),
+        Order::Two => super::splitting::step2_about::<G, Q<G>, 0, 1>(&inertia, q0, l0, t0, h),
+        Order::Four => super::splitting::step4_about::<G, 0, 1>(&inertia, q0, l0, t0, h),
     };
     let (qn, ln) = (
         [qn.x, qn.y, qn.z, qn.w].map(G::unpack),
