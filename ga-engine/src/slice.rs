@@ -36,7 +36,12 @@ pub(crate) fn step_all<T: Precision, S: Parts<T>, G: Group<T, N>, const N: usize
         // The turns' axes are compiled in, the stored `x, y, z` in the lanes: a group
         // with a body whose split axes are other ones (moments given out of order
         // without a frame) is stepped one body at a time, as each body alone.
-        if group.iter().all(|state| state.parts().0.axes == Perm::Xyz) {
+        // (A plain loop: `Iterator::all` stayed a call per body inside the AVX function.)
+        let mut sorted = true;
+        for state in group.iter() {
+            sorted &= state.parts().0.axes == Perm::Xyz;
+        }
+        if sorted {
             step_group::<T, S, G, N>(group, h, order);
         } else {
             for state in group {
