@@ -11,7 +11,7 @@ use super::slice;
 /// Whether this CPU has AVX.
 #[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
 #[inline(always)]
-pub(crate) fn avx_available() -> bool {
+fn avx_available() -> bool {
     #[cfg(target_feature = "avx")]
     {
         true

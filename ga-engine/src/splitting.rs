@@ -103,11 +103,7 @@ fn step2_in_framed<R: Real, T: Turning<R>, const O: usize, const M: usize>(
 }
 
 /// [`step2`] for one `f32` body: its quaternion in one SSE register on x86-64 (`sse.rs`,
-/// the same bits), in components elsewhere. Where the CPU has AVX (checked at run time
-/// with `std`), the same code compiled for it: the same IEEE operations in the VEX
-/// encoding, whose three operands spare the copies between registers that the
-/// two-operand SSE form needs (about a quarter of the step's instructions); no FMA, so
-/// the same bits.
+/// the same bits), in components elsewhere.
 #[inline(always)]
 pub(crate) fn step2_f32(
     inertia: &Inertia<f32>,
@@ -118,74 +114,16 @@ pub(crate) fn step2_f32(
 ) -> (Q<f32>, V<f32>) {
     #[cfg(target_arch = "x86_64")]
     {
-        #[cfg(any(feature = "std", target_feature = "avx"))]
-        if super::dispatch::avx_available() {
-            // SAFETY: the CPU has AVX (checked just above).
-            return unsafe { step2_f32_avx(inertia, q, l, t, h) };
+        if inertia.axes == Perm::Xyz {
+            step2_in_framed::<f32, super::sse::Q4, 0, 1>(inertia, q, l, t, h)
+        } else {
+            step2_f32_permuted(inertia, q, l, t, h)
         }
-        step2_f32_x86(inertia, q, l, t, h)
     }
     #[cfg(not(target_arch = "x86_64"))]
     {
         step2(inertia, q, l, t, h)
     }
-}
-
-/// [`step2_f32`] on x86-64: the sorted axes inline, the others out of line.
-#[cfg(target_arch = "x86_64")]
-#[inline(always)]
-fn step2_f32_x86(
-    inertia: &Inertia<f32>,
-    q: Q<f32>,
-    l: V<f32>,
-    t: V<f32>,
-    h: f32,
-) -> (Q<f32>, V<f32>) {
-    if inertia.axes == Perm::Xyz {
-        step2_in_framed::<f32, super::sse::Q4, 0, 1>(inertia, q, l, t, h)
-    } else {
-        step2_f32_permuted(inertia, q, l, t, h)
-    }
-}
-
-/// [`step2_f32_x86`] compiled for AVX.
-///
-/// # Safety
-/// The CPU must have AVX.
-#[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
-#[target_feature(enable = "avx")]
-unsafe fn step2_f32_avx(
-    inertia: &Inertia<f32>,
-    q: Q<f32>,
-    l: V<f32>,
-    t: V<f32>,
-    h: f32,
-) -> (Q<f32>, V<f32>) {
-    if inertia.axes == Perm::Xyz {
-        step2_in_framed::<f32, super::sse::Q4, 0, 1>(inertia, q, l, t, h)
-    } else {
-        // SAFETY: as for this function.
-        unsafe { step2_f32_permuted_avx(inertia, q, l, t, h) }
-    }
-}
-
-/// [`step2_f32_permuted`] compiled for AVX.
-///
-/// # Safety
-/// The CPU must have AVX.
-#[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
-#[target_feature(enable = "avx")]
-#[inline(never)]
-unsafe fn step2_f32_permuted_avx(
-    inertia: &Inertia<f32>,
-    q: Q<f32>,
-    l: V<f32>,
-    t: V<f32>,
-    h: f32,
-) -> (Q<f32>, V<f32>) {
-    with_axes!(inertia.axes, O, M => {
-        step2_in_framed::<f32, super::sse::Q4, O, M>(inertia, q, l, t, h)
-    })
 }
 
 /// [`step2_f32`] for a body whose split axes are not the stored `x, y, z`, out of line
@@ -383,18 +321,13 @@ mod tests {
                 bits(expected.0, expected.1),
                 "case {case}"
             );
-            // What `step2_f32` runs: the frame's products in the register too, compiled
-            // for AVX where the CPU has it, and for SSE2 alone.
-            for got in [
-                step2_f32(&inertia, q, l, t, h),
-                step2_f32_x86(&inertia, q, l, t, h),
-            ] {
-                assert_eq!(
-                    bits(got.0, got.1),
-                    bits(expected.0, expected.1),
-                    "case {case}"
-                );
-            }
+            // What `step2_f32` runs: the frame's products in the register too.
+            let got = step2_f32(&inertia, q, l, t, h);
+            assert_eq!(
+                bits(got.0, got.1),
+                bits(expected.0, expected.1),
+                "case {case}"
+            );
             compared += 1;
         }
         assert!(compared > 15_000);
