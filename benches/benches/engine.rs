@@ -5,8 +5,7 @@
 //!   Euler step written here directly on glam, the way an engine writes it
 //!   (`glam_explicit_euler`). Targets: `step` at most 1.5x `glam_explicit_euler`.
 //!   `step_framed`: the same bodies with their moments given in another order, which
-//!   the step takes as the order of the axes it turns about (no frame products since
-//!   issue 36; before, two quaternion products more).
+//!   the step reaches through a frame (two quaternion products more).
 //! - `engine/f32/slice`: the same 1024 bodies by `step_slice` (eight lanes with AVX, else
 //!   four). Target: at most 0.5x `glam_explicit_euler` per body.
 //! - `engine/f32/rayon`: 2^20 bodies by `par_step_slice` on 1 and on all threads.

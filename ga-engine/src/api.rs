@@ -53,15 +53,14 @@ macro_rules! precision_api {
         impl Body {
             /// From the inertia tensor in the body frame (symmetric; its symmetric part
             /// is used), diagonalised here in f64 by Jacobi rotations. A diagonal tensor
-            /// keeps its axes in the given order. The step turns about the principal
-            /// axes taken from the smallest moment to the largest. A diagonal tensor
-            /// (moments given in any order: `diag(3, 2, 1)`, a rod along z) is stored
-            /// as it is, with which body axis is the smallest and which the middle
-            /// moment, and the steps turn about those body axes: no frame, and no cost
-            /// for the order. A tensor with off-diagonal entries is stored as its
-            /// principal frame with the axes sorted into that order (the permutation
-            /// folded into the frame, a proper rotation), and each step turns the
-            /// orientation into that frame and back, two quaternion products.
+            /// keeps its axes in the given order. The step works on the principal axes
+            /// ordered from the smallest moment to the largest: where the moments do
+            /// not decrease from x to z (`diag(1, 2, 3)`, a sphere, a flat top spinning
+            /// about z) this costs the steps nothing extra; in another order
+            /// (`diag(3, 2, 1)`, a rod along z)
+            /// each step turns the orientation into that order and back, two quaternion
+            /// products (the engine bench's `step_framed`). Giving the axes in ascending
+            /// order, where a body's frame is free to choose, avoids them.
             ///
             /// # Errors
             /// A non-finite entry ([`BodyError::NotFinite`]), a principal moment that is
@@ -75,10 +74,8 @@ macro_rules! precision_api {
             /// From principal moments and the principal frame: `frame` turns the
             /// principal axes into the body frame (so the tensor is
             /// `R diag(moments) R^T`, `R` the rotation of `frame`; any non-zero finite
-            /// quaternion, of any size, normalised here). The moments may come in any
-            /// order. As in [`Body::from_tensor`], the identity `frame` is stored as
-            /// no frame at all (the steps turn about the body axes of the smallest and
-            /// the middle moment), any other with the axes sorted into it.
+            /// quaternion, of any size, normalised here). The cost of the axes' order is
+            /// as in [`Body::from_tensor`].
             ///
             /// # Errors
             /// As [`Body::from_tensor`], and a zero `frame` ([`BodyError::ZeroFrame`]).

@@ -119,10 +119,7 @@ impl Group<f32, 8> for F32x8 {
     }
     #[inline(always)]
     fn pack_mask(m: [bool; 8]) -> Mask8 {
-        // Written out, not by `array::map`: in the slice's AVX function LLVM left that
-        // map out of line, a call per body.
-        let b = |k: usize| if m[k] { u32::MAX } else { 0 };
-        let bits = [b(0), b(1), b(2), b(3), b(4), b(5), b(6), b(7)];
+        let bits = m.map(|b| if b { u32::MAX } else { 0 });
         // SAFETY: as in `pack`, for `[u32; 8]`.
         Mask8(unsafe { core::mem::transmute::<[u32; 8], __m256>(bits) })
     }

@@ -80,8 +80,7 @@ fn body_turn<R: Real, T: Turning<R>, const K: usize, const N: usize, const CLAMP
     (q.turned_about::<K>(p, b), body, next, norm)
 }
 
-/// The free flow's three turns `o(h/2) m(h) o(h/2)` about the stored axes `O` and `M`
-/// from `q_p` (principal axes in the
+/// The free flow's three turns `x(h/2) y(h) x(h/2)` from `q_p` (principal axes in the
 /// split's order to world, unit) and the body momentum `body` (the world momentum seen
 /// from `q_p`), divided form: the result scaled by a positive number, and the product of
 /// the turns' squared norms. `CLAMP` limits each turn's `b`; the caller may leave it out
@@ -89,13 +88,7 @@ fn body_turn<R: Real, T: Turning<R>, const K: usize, const N: usize, const CLAMP
 // Inlined only when optimised (see "Unoptimised builds" in `splitting.rs`).
 #[cfg_attr(not(debug_assertions), inline(always))]
 #[cfg_attr(debug_assertions, inline)]
-pub(crate) fn free_flow<
-    R: Real,
-    T: Turning<R>,
-    const O: usize,
-    const M: usize,
-    const CLAMP: bool,
->(
+pub(crate) fn free_flow<R: Real, T: Turning<R>, const CLAMP: bool>(
     inertia: &Inertia<R>,
     rates: &Rates<R>,
     q_p: T,
@@ -105,12 +98,12 @@ pub(crate) fn free_flow<
     let (outer_limit, middle_limit) = split.limits();
     let outer = (outer_limit, split.outer_cubic, rates.outer_e);
     let middle = (middle_limit, split.middle_cubic, rates.middle_e);
-    let b1 = rates.outer * body.get(O);
-    let (q, body, b2, n1) = body_turn::<R, T, O, M, CLAMP>(q_p, body, b1, outer, rates.middle);
-    let (q, _, b3, n2) = body_turn::<R, T, M, O, CLAMP>(q, body, b2, middle, rates.outer);
+    let b1 = rates.outer * body.x;
+    let (q, body, b2, n1) = body_turn::<R, T, 0, 1, CLAMP>(q_p, body, b1, outer, rates.middle);
+    let (q, _, b3, n2) = body_turn::<R, T, 1, 0, CLAMP>(q, body, b2, middle, rates.outer);
     // The last turn needs only its quaternion and its norm.
     let (p, b, _, n3) = cayley_turn::<R, CLAMP>(b3, outer.0, outer.1, outer.2);
-    (q.turned_about::<O>(p, b), (n1 * n2) * n3)
+    (q.turned_about::<0>(p, b), (n1 * n2) * n3)
 }
 
 #[cfg(all(test, feature = "std"))]

@@ -63,19 +63,15 @@ fn casimir_turn<R: Real, const LIMIT: bool>(rates: &Rates<R>, l: V<R>, l2: R) ->
 /// at an engine's step), the turns are `projective.rs`'s. Otherwise the divided turns
 /// run with their clamps; lanes in the projective range take its result, so a body
 /// gets the same bits in every form.
-///
-/// `O` and `M` are the split's outer and middle axes among the stored ones (the
-/// reference the third; `inertia.axes`).
 // Inlined only when optimised (see "Unoptimised builds" in `splitting.rs`).
 #[cfg_attr(not(debug_assertions), inline(always))]
 #[cfg_attr(debug_assertions, inline)]
-pub(crate) fn free_flow_normalized<R: Real, T: Turning<R>, const O: usize, const M: usize>(
+pub(crate) fn free_flow_normalized<R: Real, T: Turning<R>>(
     inertia: &Inertia<R>,
     start: T,
     l: V<R>,
     h: R,
 ) -> T {
-    let reference = 3 - O - M;
     // `|L|^2` from the world momentum, beside the turn into the body frame.
     let l2 = l.dot(l);
     let hh_l2 = (h * h) * l2;
@@ -86,18 +82,18 @@ pub(crate) fn free_flow_normalized<R: Real, T: Turning<R>, const O: usize, const
     );
     // `start` is `q_p`: its dot product gives the same bits in either form.
     let q_p2 = start.dot(start);
-    let rates = Rates::new::<false>(inertia, reference, h, hh_l2);
+    let rates = Rates::new::<false>(inertia, h, hh_l2);
     if R::all(projective) {
-        let (q, norm2) = projective::free_flow::<R, T, O, M>(&rates, start, q_p2, body);
+        let (q, norm2) = projective::free_flow::<R, T>(&rates, start, q_p2, body);
         let (w, w2) = casimir_turn::<R, false>(&rates, l, l2);
         return q.turned_by(w).divided_by_norm(norm2 * w2);
     }
-    let limited = Rates::new::<true>(inertia, reference, h, hh_l2);
-    let (q, norm) = divided::free_flow::<R, T, O, M, true>(inertia, &limited, start, body);
+    let limited = Rates::new::<true>(inertia, h, hh_l2);
+    let (q, norm) = divided::free_flow::<R, T, true>(inertia, &limited, start, body);
     let (w, w2) = casimir_turn::<R, true>(&limited, l, l2);
     let divided = q.turned_by(w).normalized_by((q_p2 * norm) * w2, start);
     if R::any(projective) {
-        let (q, norm2) = projective::free_flow::<R, T, O, M>(&rates, start, q_p2, body);
+        let (q, norm2) = projective::free_flow::<R, T>(&rates, start, q_p2, body);
         let (w, w2) = casimir_turn::<R, false>(&rates, l, l2);
         T::select(
             projective,
@@ -146,17 +142,11 @@ mod tests {
     /// hemisphere test, for `q_p` and the world momentum `l`.
     fn projective_flow(inertia: &Inertia<f64>, q: Q<f64>, l: V<f64>, h: f64) -> Q<f64> {
         let l2 = l.dot(l);
-        with_axes!(inertia.axes, O, M => {
-            let rates = Rates::new::<false>(inertia, 3 - O - M, h, h * h * l2);
-            let (turned, norm2) = projective::free_flow::<f64, Q<f64>, O, M>(
-                &rates,
-                q,
-                q.dot(q),
-                q.rotate_inv(l),
-            );
-            let (w, w2) = casimir_turn::<f64, false>(&rates, l, l2);
-            turned.turned_by(w).normalized_by(norm2 * w2, q)
-        })
+        let rates = Rates::new::<false>(inertia, h, h * h * l2);
+        let (turned, norm2) =
+            projective::free_flow::<f64, Q<f64>>(&rates, q, q.dot(q), q.rotate_inv(l));
+        let (w, w2) = casimir_turn::<f64, false>(&rates, l, l2);
+        turned.turned_by(w).normalized_by(norm2 * w2, q)
     }
 
     /// At the edge of the projective range (`h^2 |L|^2 reach` just below 1), the free
@@ -213,31 +203,19 @@ mod tests {
         let (mut worst64, mut worst32) = (0.0f64, 0.0f64);
         fn divided<R: Real>(inertia: &Inertia<R>, q: Q<R>, l: V<R>, h: R) -> Q<R> {
             let l2 = l.dot(l);
-            with_axes!(inertia.axes, O, M => {
-                let rates = Rates::new::<true>(inertia, 3 - O - M, h, h * h * l2);
-                let (turned, norm) = divided::free_flow::<R, Q<R>, O, M, true>(
-                    inertia,
-                    &rates,
-                    q,
-                    q.rotate_inv(l),
-                );
-                let (w, w2) = casimir_turn::<R, true>(&rates, l, l2);
-                turned.turned_by(w).normalized_by((q.dot(q) * norm) * w2, q)
-            })
+            let rates = Rates::new::<true>(inertia, h, h * h * l2);
+            let (turned, norm) =
+                divided::free_flow::<R, Q<R>, true>(inertia, &rates, q, q.rotate_inv(l));
+            let (w, w2) = casimir_turn::<R, true>(&rates, l, l2);
+            turned.turned_by(w).normalized_by((q.dot(q) * norm) * w2, q)
         }
         fn projective<R: Real>(inertia: &Inertia<R>, q: Q<R>, l: V<R>, h: R) -> Q<R> {
             let l2 = l.dot(l);
-            with_axes!(inertia.axes, O, M => {
-                let rates = Rates::new::<false>(inertia, 3 - O - M, h, h * h * l2);
-                let (turned, norm2) = projective::free_flow::<R, Q<R>, O, M>(
-                    &rates,
-                    q,
-                    q.dot(q),
-                    q.rotate_inv(l),
-                );
-                let (w, w2) = casimir_turn::<R, false>(&rates, l, l2);
-                turned.turned_by(w).normalized_by(norm2 * w2, q)
-            })
+            let rates = Rates::new::<false>(inertia, h, h * h * l2);
+            let (turned, norm2) =
+                projective::free_flow::<R, Q<R>>(&rates, q, q.dot(q), q.rotate_inv(l));
+            let (w, w2) = casimir_turn::<R, false>(&rates, l, l2);
+            turned.turned_by(w).normalized_by(norm2 * w2, q)
         }
         let gap = |a: [f64; 4], b: [f64; 4]| (0..4).fold(0.0f64, |m, k| m.max((a[k] - b[k]).abs()));
         for case in 0..5_000 {
@@ -310,7 +288,7 @@ mod tests {
             let (h0, m0) = (energy(l), modified(l));
             let (mut worst_h, mut worst_m) = (0.0f64, 0.0f64);
             for _ in 0..(20.0 / h) as usize {
-                q = free_flow_normalized::<f64, Q<f64>, 0, 1>(&inertia, q, l, h);
+                q = free_flow_normalized(&inertia, q, l, h);
                 let m = q.rotate_inv(l);
                 worst_h = worst_h.max((energy(m) / h0 - 1.0).abs());
                 worst_m = worst_m.max((modified(m) / m0 - 1.0).abs());

@@ -8,78 +8,27 @@ use super::real::Real;
 use super::rotation::{Q, V};
 use super::split::{split_order, Split};
 
-/// Principal moments and the stored frame `p` (the stored principal axes to the user's
-/// body frame: a body-frame vector is `p v p*` of its principal components), and which
-/// stored axes the free flow's split (`split.rs`) takes as its outer, middle and
-/// reference axes.
-///
-/// Where the user's frame is the identity (a diagonal tensor, or principal moments
-/// without a frame), the stored axes are the body's own in the given order, `p` is the
-/// identity, and the split's order is kept in `axes`: the turns are about those body
-/// axes, so moments in any order cost the steps nothing (no frame products). Otherwise
-/// the stored axes are in the split's order (`axes` is `Xyz`) and the permutation is
-/// folded into `p`, a proper rotation.
+/// Principal moments and the frame `p` (principal axes to the user's
+/// body frame: a body-frame vector is `p v p*` of its principal components), the axes in
+/// the free flow's split order (`split.rs`).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Inertia<R: Real> {
-    /// `(I1, I2, I3)` of the stored axes.
+    /// `(I1, I2, I3)`, in the split's order.
     pub(crate) moments: V<R>,
     /// The split's constants.
     pub(crate) split: Split<R>,
-    /// `p`.
+    /// `p`, for the split's order of the axes.
     pub(crate) frame: Q<R>,
     /// Whether `p` is not the identity (then the steps turn the orientation into the
-    /// stored frame and back; otherwise they skip both products).
+    /// principal frame and back; otherwise they skip both products).
     pub(crate) turned: R::Mask,
-    /// Which given principal axis each stored axis is (for the accessors).
-    pub(crate) order: Perm,
-    /// Which stored axes are the split's outer, middle and reference axes.
-    pub(crate) axes: Perm,
+    /// Which given principal axis each of the split's axes is (for the accessors; it
+    /// fills what would be padding).
+    pub(crate) order: Order,
 }
 
-/// A permutation of the three axes, `[a, b, c]` (one byte: the body description stays
-/// small).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[repr(u8)]
-pub(crate) enum Perm {
-    /// `[0, 1, 2]`.
-    Xyz,
-    /// `[0, 2, 1]`.
-    Xzy,
-    /// `[1, 0, 2]`.
-    Yxz,
-    /// `[1, 2, 0]`.
-    Yzx,
-    /// `[2, 0, 1]`.
-    Zxy,
-    /// `[2, 1, 0]`.
-    Zyx,
-}
-
-impl Perm {
-    /// The axes, in order.
-    pub(crate) fn get(self) -> [usize; 3] {
-        match self {
-            Perm::Xyz => [0, 1, 2],
-            Perm::Xzy => [0, 2, 1],
-            Perm::Yxz => [1, 0, 2],
-            Perm::Yzx => [1, 2, 0],
-            Perm::Zxy => [2, 0, 1],
-            Perm::Zyx => [2, 1, 0],
-        }
-    }
-
-    /// From the axes in order (a permutation of `0, 1, 2`).
-    fn of(order: [usize; 3]) -> Self {
-        match order {
-            [0, 1, _] => Perm::Xyz,
-            [0, 2, _] => Perm::Xzy,
-            [1, 0, _] => Perm::Yxz,
-            [1, 2, _] => Perm::Yzx,
-            [2, 0, _] => Perm::Zxy,
-            _ => Perm::Zyx,
-        }
-    }
-}
+/// Which given principal axis each of the split's axes is (`split::split_order`).
+pub(crate) type Order = [u8; 3];
 
 /// A tensor with an entry above this is diagonalised scaled by [`TENSOR_SCALE`].
 const TENSOR_SCALE_ABOVE: f64 = 1e300;
@@ -194,18 +143,8 @@ impl<R: Precision> Inertia<R> {
         }
         let order = split_order(moments.map(|m| 1.0 / m.wide()));
         let ordered = order.map(|k| moments[k]);
-        let is_identity = |p: [f64; 4]| p == [0.0, 0.0, 0.0, 1.0] || p == [0.0, 0.0, 0.0, -1.0];
         let turn = hamilton(frame, permutation(order));
-        // A body in its principal frame with its moments in another order: the turns
-        // take the body's axes in the split's order (`axes`), so that no frame product
-        // is needed. (Folded into `p`, the permutation would be a rotation by a third or
-        // a half turn, which every step would apply and undo.)
-        let (stored, order, axes, turn) = if is_identity(frame) && !is_identity(turn) {
-            (moments, Perm::Xyz, Perm::of(order), frame)
-        } else {
-            (ordered, Perm::of(order), Perm::Xyz, turn)
-        };
-        let identity = is_identity(turn);
+        let identity = turn == [0.0, 0.0, 0.0, 1.0] || turn == [0.0, 0.0, 0.0, -1.0];
         let quaternion = |p: [f64; 4]| Q {
             x: R::splat(p[0]),
             y: R::splat(p[1]),
@@ -214,32 +153,32 @@ impl<R: Precision> Inertia<R> {
         };
         Ok(Inertia {
             moments: V {
-                x: stored[0],
-                y: stored[1],
-                z: stored[2],
+                x: ordered[0],
+                y: ordered[1],
+                z: ordered[2],
             },
             split: Split::new(ordered.map(|m| 1.0 / m.wide())),
             frame: quaternion(turn),
             turned: !identity,
-            order,
-            axes,
+            // Axis indices below 3 fit a byte: the body description stays small.
+            order: order.map(|k| k as u8),
         })
     }
 
     /// The principal moments and frame in the given order of the axes (as the body was
-    /// described): the moments put back, the frame `p s*` for the stored axes' `s`.
+    /// described): the moments put back, the frame `p s*` for the split's `s`.
     pub(crate) fn given(&self) -> (V<R>, Q<R>) {
-        let order = self.order.get();
+        let order = self.order;
         let ordered = [self.moments.x, self.moments.y, self.moments.z];
         let mut moments = ordered;
-        for (stored_axis, &given_axis) in order.iter().enumerate() {
-            moments[given_axis] = ordered[stored_axis];
+        for (split_axis, &given_axis) in order.iter().enumerate() {
+            moments[usize::from(given_axis)] = ordered[split_axis];
         }
         let frame = if order == [0, 1, 2] {
             self.frame
         } else {
             let p = [self.frame.x, self.frame.y, self.frame.z, self.frame.w].map(R::wide);
-            let [x, y, z, w] = permutation(order);
+            let [x, y, z, w] = permutation(order.map(usize::from));
             let [x, y, z, w] = hamilton(p, [-x, -y, -z, w]);
             Q {
                 x: R::splat(x),
@@ -314,61 +253,5 @@ impl<R: Real> Inertia<R> {
     pub(crate) fn energy(&self, q_p: Q<R>, l: V<R>) -> R {
         let b = q_p.rotate_inv(l);
         R::splat(0.5) * b.dot(b.divide(self.moments))
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// A body in its principal frame is stored without a frame whatever the order of its
-    /// moments (the steps then skip the frame's products), with the split's axes and the
-    /// moments as given; a body with a frame gets the sorted axes folded into it.
-    #[test]
-    fn moments_out_of_order_are_stored_as_axes_not_as_a_frame() {
-        let identity = Q {
-            x: 0.0,
-            y: 0.0,
-            z: 0.0,
-            w: 1.0,
-        };
-        let diagonal = |m: [f64; 3]| {
-            let mut t = [[0.0; 3]; 3];
-            for k in 0..3 {
-                t[k][k] = m[k];
-            }
-            t
-        };
-        for (moments, axes) in [
-            ([1.0, 2.0, 3.0], Perm::Xyz),
-            ([3.0, 2.0, 1.0], Perm::Zyx),
-            ([2.0, 3.0, 1.0], Perm::Zxy),
-            ([1.0, 3.0, 2.0], Perm::Xzy),
-        ] {
-            for inertia in [
-                Inertia::<f64>::from_principal(moments, identity).unwrap(),
-                Inertia::<f64>::from_tensor(diagonal(moments)).unwrap(),
-            ] {
-                assert!(!inertia.turned, "{moments:?}");
-                assert_eq!(inertia.axes, axes, "{moments:?}");
-                assert_eq!(inertia.order, Perm::Xyz, "{moments:?}");
-                let m = inertia.moments;
-                assert_eq!([m.x, m.y, m.z], moments);
-                let (given, frame) = inertia.given();
-                assert_eq!([given.x, given.y, given.z], moments);
-                assert_eq!([frame.x, frame.y, frame.z, frame.w], [0.0, 0.0, 0.0, 1.0]);
-            }
-        }
-        let tilted = Q {
-            x: 0.3,
-            y: 0.0,
-            z: 0.0,
-            w: 0.9,
-        };
-        let inertia = Inertia::<f64>::from_principal([3.0, 2.0, 1.0], tilted).unwrap();
-        assert!(inertia.turned);
-        assert_eq!((inertia.axes, inertia.order), (Perm::Xyz, Perm::Zyx));
-        let m = inertia.moments;
-        assert_eq!([m.x, m.y, m.z], [1.0, 2.0, 3.0]);
     }
 }

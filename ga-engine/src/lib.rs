@@ -95,46 +95,6 @@
 
 #![cfg_attr(not(feature = "std"), no_std)]
 
-/// `$body` with the consts `$o` and `$m` the outer and middle axes of `$axes` (an
-/// `inertia::Perm`): one copy of `$body` per order of the axes, so that the turns' axes
-/// are known when compiled (a register shuffle takes its lanes as an immediate).
-macro_rules! with_axes {
-    ($axes:expr, $o:ident, $m:ident => $body:expr) => {
-        match $axes {
-            $crate::inertia::Perm::Xyz => {
-                const $o: usize = 0;
-                const $m: usize = 1;
-                $body
-            }
-            $crate::inertia::Perm::Xzy => {
-                const $o: usize = 0;
-                const $m: usize = 2;
-                $body
-            }
-            $crate::inertia::Perm::Yxz => {
-                const $o: usize = 1;
-                const $m: usize = 0;
-                $body
-            }
-            $crate::inertia::Perm::Yzx => {
-                const $o: usize = 1;
-                const $m: usize = 2;
-                $body
-            }
-            $crate::inertia::Perm::Zxy => {
-                const $o: usize = 2;
-                const $m: usize = 0;
-                $body
-            }
-            $crate::inertia::Perm::Zyx => {
-                const $o: usize = 2;
-                const $m: usize = 1;
-                $body
-            }
-        }
-    };
-}
-
 #[macro_use]
 mod api;
 #[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]

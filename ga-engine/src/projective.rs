@@ -86,7 +86,7 @@ fn turn<R: Real, T: Turning<R>, const K: usize, const N: usize>(
     )
 }
 
-/// The three turns `o(h/2) m(h) o(h/2)` about the stored axes `O` and `M` from `q_p` (unit up to rounding; `q_p2` its
+/// The three turns `x(h/2) y(h) x(h/2)` from `q_p` (unit up to rounding; `q_p2` its
 /// squared norm) and the body momentum `body`: the turned quaternion scaled by a
 /// positive number, and its squared norm, `q_p2` times the turns' `N` (the last turn's
 /// multiplied in last, as it is the last to be known). The caller checks the range
@@ -94,15 +94,15 @@ fn turn<R: Real, T: Turning<R>, const K: usize, const N: usize>(
 // Inlined only when optimised (see "Unoptimised builds" in `splitting.rs`).
 #[cfg_attr(not(debug_assertions), inline(always))]
 #[cfg_attr(debug_assertions, inline)]
-pub(crate) fn free_flow<R: Real, T: Turning<R>, const O: usize, const M: usize>(
+pub(crate) fn free_flow<R: Real, T: Turning<R>>(
     rates: &Rates<R>,
     q_p: T,
     q_p2: R,
     body: V<R>,
 ) -> (T, R) {
     let one = R::splat(1.0);
-    let b1 = (rates.outer * body.get(O), rates.outer_cubic * body.get(O));
-    let (q, x, b2, d2, n1) = turn::<R, T, O, M>(
+    let b1 = (rates.outer * body.x, rates.outer_cubic * body.x);
+    let (q, x, b2, d2, n1) = turn::<R, T, 0, 1>(
         q_p,
         body,
         b1,
@@ -110,7 +110,7 @@ pub(crate) fn free_flow<R: Real, T: Turning<R>, const O: usize, const M: usize>(
         (rates.middle, rates.middle_cubic),
         rates.middle_e,
     );
-    let (q, _, (b3, cubic_b3), (d3, edd3), n2) = turn::<R, T, M, O>(
+    let (q, _, (b3, cubic_b3), (d3, edd3), n2) = turn::<R, T, 1, 0>(
         q,
         x,
         b2,
@@ -123,5 +123,5 @@ pub(crate) fn free_flow<R: Real, T: Turning<R>, const O: usize, const M: usize>(
     let a = (b3 * d3).opaque();
     let n3 = (p * p + a * a).opaque();
     let norm = (q_p2 * (n1 * n2)) * n3;
-    (q.turned_about::<O>(p, a), norm)
+    (q.turned_about::<0>(p, a), norm)
 }

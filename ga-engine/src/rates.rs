@@ -27,17 +27,11 @@ pub(crate) struct Rates<R> {
 }
 
 impl<R: Real> Rates<R> {
-    /// For a step of `h` with `hh_l2 = h^2 |L|^2`, `reference` the split's reference axis
-    /// among the stored ones; with `LIMIT`, each `e` limited to
+    /// For a step of `h` with `hh_l2 = h^2 |L|^2`; with `LIMIT`, each `e` limited to
     /// `[0.5, 1.5]` (NaN to 1.5), which only the divided form's far range reaches (in
     /// the projective range `|1 - e| <= 0.05`, and the limit changes no bit).
     #[inline(always)]
-    pub(crate) fn new<const LIMIT: bool>(
-        inertia: &Inertia<R>,
-        reference: usize,
-        h: R,
-        hh_l2: R,
-    ) -> Self {
+    pub(crate) fn new<const LIMIT: bool>(inertia: &Inertia<R>, h: R, hh_l2: R) -> Self {
         let split = &inertia.split;
         let (outer, middle) = (h * split.outer_rate, h * split.middle_rate);
         let half = R::splat(0.5);
@@ -58,7 +52,7 @@ impl<R: Real> Rates<R> {
             middle_cubic: split.middle_cubic * middle,
             middle_e: e(split.shift * R::splat(-2.0)),
             // `0.5 / I_r` is `(1 / I_r) / 2` exactly: off the chain, a division.
-            casimir: h * (R::splat(0.5) / inertia.moments.get(reference)),
+            casimir: h * (R::splat(0.5) / inertia.moments.z),
         }
     }
 }

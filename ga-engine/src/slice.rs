@@ -7,7 +7,7 @@
 //! are stepped one by one. Each lane rounds as the scalar does, so a body's bits do not
 //! depend on its neighbours, its position in the slice, the group width or the CPU.
 
-use super::inertia::{Inertia, Perm, Precision};
+use super::inertia::{Inertia, Precision};
 use super::parts::{BodyParts, Order, Parts};
 use super::real::{Group, Real};
 use super::rotation::{Q, V};
@@ -33,21 +33,7 @@ pub(crate) fn step_all<T: Precision, S: Parts<T>, G: Group<T, N>, const N: usize
 ) {
     let mut groups = states.chunks_exact_mut(N);
     for group in &mut groups {
-        // The turns' axes are compiled in, the stored `x, y, z` in the lanes: a group
-        // with a body whose split axes are other ones (moments given out of order
-        // without a frame) is stepped one body at a time, as each body alone.
-        // (A plain loop: `Iterator::all` stayed a call per body inside the AVX function.)
-        let mut sorted = true;
-        for state in group.iter() {
-            sorted &= state.parts().0.axes == Perm::Xyz;
-        }
-        if sorted {
-            step_group::<T, S, G, N>(group, h, order);
-        } else {
-            for state in group {
-                step_one(state, h, order);
-            }
-        }
+        step_group::<T, S, G, N>(group, h, order);
     }
     for state in groups.into_remainder() {
         step_one(state, h, order);
@@ -77,8 +63,7 @@ fn step_group<T: Precision, S: Parts<T>, G: Group<T, N>, const N: usize>(
         },
         frame: quaternion(|i| parts[i].0.frame),
         turned: G::pack_mask(core::array::from_fn(|i| parts[i].0.turned)),
-        order: Perm::Xyz,
-        axes: Perm::Xyz,
+        order: [0, 1, 2],
     };
     let (q0, l0, t0) = (
         quaternion(|i| parts[i].1),
@@ -87,8 +72,8 @@ fn step_group<T: Precision, S: Parts<T>, G: Group<T, N>, const N: usize>(
     );
     let h = G::pack([h; N]);
     let (qn, ln) = match order {
-        Order::Two => super::splitting::step2_about::<G, Q<G>, 0, 1>(&inertia, q0, l0, t0, h),
-        Order::Four => super::splitting::step4_about::<G, 0, 1>(&inertia, q0, l0, t0, h),
+        Order::Two => super::splitting::step2(&inertia, q0, l0, t0, h),
+        Order::Four => super::splitting::step4(&inertia, q0, l0, t0, h),
     };
     let (qn, ln) = (
         [qn.x, qn.y, qn.z, qn.w].map(G::unpack),

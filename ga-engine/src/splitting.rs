@@ -22,7 +22,7 @@
 //! With debug assertions on, the turns and free flows are ordinary functions instead.
 
 use super::free_flow::free_flow_normalized;
-use super::inertia::{Inertia, Perm};
+use super::inertia::Inertia;
 use super::real::Real;
 use super::rotation::{Q, V};
 use super::turning::Turning;
@@ -37,25 +37,12 @@ pub(crate) fn step2<R: Real>(
     t: V<R>,
     h: R,
 ) -> (Q<R>, V<R>) {
-    if inertia.axes == Perm::Xyz {
-        step2_about::<R, Q<R>, 0, 1>(inertia, q, l, t, h)
-    } else {
-        step2_permuted(inertia, q, l, t, h)
-    }
+    step2_in::<R, Q<R>>(inertia, q, l, t, h)
 }
 
-/// [`step2`] for a body whose split axes are not the stored `x, y, z` (see
-/// [`Inertia`]): out of line, so that the five other copies of the step are compiled
-/// once, not at every call.
-#[inline(never)]
-fn step2_permuted<R: Real>(inertia: &Inertia<R>, q: Q<R>, l: V<R>, t: V<R>, h: R) -> (Q<R>, V<R>) {
-    with_axes!(inertia.axes, O, M => step2_about::<R, Q<R>, O, M>(inertia, q, l, t, h))
-}
-
-/// [`step2`] with the split's outer and middle axes `O` and `M` among the stored ones,
-/// the turns building up the quaternion in the form `T`.
+/// [`step2`], the turns building up the quaternion in the form `T`.
 #[inline(always)]
-pub(crate) fn step2_about<R: Real, T: Turning<R>, const O: usize, const M: usize>(
+pub(crate) fn step2_in<R: Real, T: Turning<R>>(
     inertia: &Inertia<R>,
     q: Q<R>,
     l: V<R>,
@@ -65,18 +52,18 @@ pub(crate) fn step2_about<R: Real, T: Turning<R>, const O: usize, const M: usize
     let half = h * R::splat(0.5);
     let l = l.add_scaled(half, t);
     let q_p = inertia.principal_orientation(q.unit());
-    let q_p = free_flow_normalized::<R, T, O, M>(inertia, T::pack(q_p), l, h).unpack();
+    let q_p = free_flow_normalized(inertia, T::pack(q_p), l, h).unpack();
     let l = l.add_scaled(half, t);
     (inertia.body_orientation(q_p), l)
 }
 
-/// [`step2_about`] with the frame's products also in the form `T` (one register for one
-/// f32 body), as `Inertia::principal_orientation` and `body_orientation` do them: the
-/// same bits. Kept apart from [`step2_about`], which the lane forms run: written this
-/// way there, the slice form measured slower (BENCHMARKS.md).
+/// [`step2_in`] with the frame's products also in the form `T` (one register for one f32
+/// body), as `Inertia::principal_orientation` and `body_orientation` do them: the same
+/// bits. Kept apart from [`step2_in`], which the lane forms run: written this way there,
+/// the slice form measured slower (BENCHMARKS.md).
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-fn step2_in_framed<R: Real, T: Turning<R>, const O: usize, const M: usize>(
+fn step2_in_framed<R: Real, T: Turning<R>>(
     inertia: &Inertia<R>,
     q: Q<R>,
     l: V<R>,
@@ -92,7 +79,7 @@ fn step2_in_framed<R: Real, T: Turning<R>, const O: usize, const M: usize>(
     } else {
         q
     };
-    let q_p = free_flow_normalized::<R, T, O, M>(inertia, q_p, l, h);
+    let q_p = free_flow_normalized(inertia, q_p, l, h);
     let q = if R::any(turned) {
         T::select(turned, q_p.times(inertia.frame.conj()), q_p)
     } else {
@@ -114,32 +101,12 @@ pub(crate) fn step2_f32(
 ) -> (Q<f32>, V<f32>) {
     #[cfg(target_arch = "x86_64")]
     {
-        if inertia.axes == Perm::Xyz {
-            step2_in_framed::<f32, super::sse::Q4, 0, 1>(inertia, q, l, t, h)
-        } else {
-            step2_f32_permuted(inertia, q, l, t, h)
-        }
+        step2_in_framed::<f32, super::sse::Q4>(inertia, q, l, t, h)
     }
     #[cfg(not(target_arch = "x86_64"))]
     {
         step2(inertia, q, l, t, h)
     }
-}
-
-/// [`step2_f32`] for a body whose split axes are not the stored `x, y, z`, out of line
-/// (as [`step2_permuted`]).
-#[cfg(target_arch = "x86_64")]
-#[inline(never)]
-fn step2_f32_permuted(
-    inertia: &Inertia<f32>,
-    q: Q<f32>,
-    l: V<f32>,
-    t: V<f32>,
-    h: f32,
-) -> (Q<f32>, V<f32>) {
-    with_axes!(inertia.axes, O, M => {
-        step2_in_framed::<f32, super::sse::Q4, O, M>(inertia, q, l, t, h)
-    })
 }
 
 /// One second-order step of `h` under a torque that depends on the orientation:
@@ -152,42 +119,13 @@ pub(crate) fn step2_with<R: Real>(
     q: Q<R>,
     l: V<R>,
     h: R,
-    torque: impl FnMut(Q<R>) -> V<R>,
-) -> (Q<R>, V<R>) {
-    if inertia.axes == Perm::Xyz {
-        step2_with_about::<R, 0, 1>(inertia, q, l, h, torque)
-    } else {
-        step2_with_permuted(inertia, q, l, h, torque)
-    }
-}
-
-/// [`step2_with`] for a body whose split axes are not the stored `x, y, z`, out of line
-/// (as [`step2_permuted`]).
-#[inline(never)]
-fn step2_with_permuted<R: Real>(
-    inertia: &Inertia<R>,
-    q: Q<R>,
-    l: V<R>,
-    h: R,
-    torque: impl FnMut(Q<R>) -> V<R>,
-) -> (Q<R>, V<R>) {
-    with_axes!(inertia.axes, O, M => step2_with_about::<R, O, M>(inertia, q, l, h, torque))
-}
-
-/// [`step2_with`] about the split axes `O` and `M`.
-#[inline(always)]
-fn step2_with_about<R: Real, const O: usize, const M: usize>(
-    inertia: &Inertia<R>,
-    q: Q<R>,
-    l: V<R>,
-    h: R,
     mut torque: impl FnMut(Q<R>) -> V<R>,
 ) -> (Q<R>, V<R>) {
     let half = h * R::splat(0.5);
     let q = q.unit();
     let l = l.add_scaled(half, torque(q));
     let q_p = inertia.principal_orientation(q);
-    let q_p = free_flow_normalized::<R, Q<R>, O, M>(inertia, q_p, l, h);
+    let q_p = free_flow_normalized(inertia, q_p, l, h);
     let q = inertia.body_orientation(q_p);
     let l = l.add_scaled(half, torque(q));
     (q, l)
@@ -208,29 +146,6 @@ pub(crate) fn step4<R: Real>(
     t: V<R>,
     h: R,
 ) -> (Q<R>, V<R>) {
-    if inertia.axes == Perm::Xyz {
-        step4_about::<R, 0, 1>(inertia, q, l, t, h)
-    } else {
-        step4_permuted(inertia, q, l, t, h)
-    }
-}
-
-/// [`step4`] for a body whose split axes are not the stored `x, y, z`, out of line (as
-/// [`step2_permuted`]).
-#[inline(never)]
-fn step4_permuted<R: Real>(inertia: &Inertia<R>, q: Q<R>, l: V<R>, t: V<R>, h: R) -> (Q<R>, V<R>) {
-    with_axes!(inertia.axes, O, M => step4_about::<R, O, M>(inertia, q, l, t, h))
-}
-
-/// [`step4`] about the split axes `O` and `M`.
-#[inline(always)]
-pub(crate) fn step4_about<R: Real, const O: usize, const M: usize>(
-    inertia: &Inertia<R>,
-    q: Q<R>,
-    l: V<R>,
-    t: V<R>,
-    h: R,
-) -> (Q<R>, V<R>) {
     let (h1, h0) = (h * R::splat(G1), h * R::splat(G0));
     let outer_kick = h * R::splat(0.5 * G1);
     let inner_kick = h * R::splat(0.5 * (G1 + G0));
@@ -238,11 +153,11 @@ pub(crate) fn step4_about<R: Real, const O: usize, const M: usize>(
     let l = l.add_scaled(outer_kick, t);
     // Each free flow reads the body momentum through its starting quaternion, which must
     // be unit.
-    let q1 = free_flow_normalized::<R, Q<R>, O, M>(inertia, q_p, l, h1);
+    let q1 = free_flow_normalized(inertia, q_p, l, h1);
     let l = l.add_scaled(inner_kick, t);
-    let q2 = free_flow_normalized::<R, Q<R>, O, M>(inertia, q1, l, h0);
+    let q2 = free_flow_normalized(inertia, q1, l, h0);
     let l = l.add_scaled(inner_kick, t);
-    let q3 = free_flow_normalized::<R, Q<R>, O, M>(inertia, q2, l, h1);
+    let q3 = free_flow_normalized(inertia, q2, l, h1);
     let l = l.add_scaled(outer_kick, t);
     (inertia.body_orientation(q3), l)
 }
@@ -313,9 +228,7 @@ mod tests {
             let h = if case % 7 == 0 { 2.0 } else { 1.0 / 60.0 };
             let (q, _) = step2(&inertia, q, l, t, h);
             let expected = step2(&inertia, q, l, t, h);
-            let got = with_axes!(inertia.axes, O, M => {
-                step2_about::<f32, Q4, O, M>(&inertia, q, l, t, h)
-            });
+            let got = step2_in::<f32, Q4>(&inertia, q, l, t, h);
             assert_eq!(
                 bits(got.0, got.1),
                 bits(expected.0, expected.1),

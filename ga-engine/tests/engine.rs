@@ -61,12 +61,11 @@ fn splitting_converges_to_the_exact_flow_at_order_two_and_four() {
     assert!(e2 < 1e-5);
 }
 
-/// The step orders the principal axes itself (smallest moment first): without a frame by
-/// turning about the body's axes in that order, with one through the frame: for each of
-/// the six orders of the T-handle's moments, with and without a tilted principal frame,
-/// the step converges to the exact flow at order two, in orientation and in the body
-/// momentum. A wrong axis, or a wrong sign in the frame of an odd permutation, would
-/// follow a different body.
+/// The step orders the principal axes itself (smallest moment first), through a frame
+/// when they are not given in that order: for each of the six orders of the T-handle's
+/// moments, and with a tilted principal frame on top, the step converges to the exact
+/// flow at order two, in orientation and in the body momentum. A wrong axis or sign in
+/// the frame of an odd permutation would follow a different body.
 #[test]
 fn every_order_of_the_moments_converges_to_the_exact_flow() {
     let orders = [
@@ -78,8 +77,8 @@ fn every_order_of_the_moments_converges_to_the_exact_flow() {
         [2, 1, 0],
     ];
     let t_end = 2.0;
-    for case in 0..2 * orders.len() {
-        let moments = orders[case / 2].map(|k| T_HANDLE[k]);
+    for (case, order) in orders.into_iter().enumerate() {
+        let moments = order.map(|k| T_HANDLE[k]);
         let frame = if case % 2 == 0 {
             DQuat::IDENTITY
         } else {
