@@ -210,6 +210,24 @@ fn a_quick_report_writes_csv_plots_and_page() {
     }
     assert_eq!(page.matches("<script>").count(), 1);
     assert!(page.contains("Check:") && page.contains("observed order"));
+    // The race: one row per free asymmetric or torqued scene (all three here), each with
+    // a peer that is Dop853 or, where it did not reach the level, Dopri5.
+    let race = page
+        .split("id=\"race\"")
+        .nth(1)
+        .and_then(|r| r.split("</table>").next())
+        .expect("the race table");
+    for scene in &report.scenes {
+        let row = race
+            .split(&format!("<tr><td>{}</td>", scene.name))
+            .nth(1)
+            .and_then(|r| r.split("</tr>").next());
+        let row = row.unwrap_or_else(|| panic!("no race row for {}", scene.name));
+        assert!(
+            row.contains("dop853-quaternion: ") || row.contains("dopri5-quaternion: "),
+            "{row}"
+        );
+    }
     assert!(page.contains(&report.cpu));
 }
 

@@ -13,6 +13,7 @@ mod measure;
 pub mod nd;
 mod page;
 mod plot;
+mod race;
 mod results;
 mod scenes;
 pub mod style;

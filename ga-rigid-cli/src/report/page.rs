@@ -89,6 +89,7 @@ pub fn html(report: &Report, svg_names: &[String], svgs: &[String]) -> String {
         cpu = esc(&report.cpu),
     );
     summary_section(&mut out, report);
+    super::race::race_section(&mut out, report);
     out.push_str("<p>Colours, the same in every plot: ");
     for row in METHODS {
         let c = super::method_colour(row.method);
