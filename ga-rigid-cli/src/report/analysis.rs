@@ -283,50 +283,16 @@ pub fn fastest_over(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::report::{Errors, ReferenceCheck, Sweep, Timing};
-    use std::time::Duration;
+    use crate::report::fixtures;
 
-    /// A finished run of `method` with `steps` steps in `time_us` and largest attitude
-    /// error `attitude`.
+    /// A finished run of `method` with `steps` steps over `t_end = 10` in `time_us` and
+    /// largest attitude error `attitude`.
     fn row(method: Method, steps: u64, time_us: f64, attitude: f64) -> Measurement {
-        let time = Duration::from_secs_f64(time_us * 1e-6);
-        Measurement {
-            method,
-            param_kind: "dt",
-            param: 10.0 / steps as f64,
-            steps,
-            errors: Some(Errors {
-                attitude_end: attitude,
-                attitude_max: attitude,
-                ..Errors::default()
-            }),
-            timing: Some(Timing {
-                median: time,
-                min: time,
-                repeats: 3,
-            }),
-            failure: None,
-            reference: Method::Exact,
-        }
+        fixtures::run(method, 10.0 / steps as f64, steps, time_us, attitude)
     }
 
     fn scene(rows: Vec<Measurement>) -> SceneResult {
-        SceneResult {
-            name: "made up".into(),
-            source: "a test".into(),
-            t_end: 10.0,
-            rate: 1.0,
-            sweep: Sweep::WorkPrecision,
-            kind: SceneKind::FreeAsymmetric,
-            check: ReferenceCheck {
-                primary: "exact".into(),
-                secondary: "dopri".into(),
-                errors: Errors::default(),
-            },
-            rows,
-            left_out: Vec::new(),
-            elapsed: Duration::ZERO,
-        }
+        fixtures::scene(SceneKind::FreeAsymmetric, rows)
     }
 
     /// "Reaches the level" includes a run whose error is exactly the level.

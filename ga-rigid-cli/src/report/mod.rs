@@ -8,6 +8,8 @@
 mod analysis;
 mod engine_steps;
 mod estimate;
+#[cfg(test)]
+mod fixtures;
 mod invariants;
 mod measure;
 pub mod nd;

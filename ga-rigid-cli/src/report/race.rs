@@ -192,57 +192,19 @@ pub(super) fn race_section(out: &mut String, report: &Report) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::report::{Errors, ReferenceCheck, Size, Sweep, Timing};
-    use std::time::Duration;
+    use crate::report::{fixtures, Size};
 
     /// A finished run of `method` at step (or tolerance) `param` in `time_us` with largest
     /// attitude error `attitude`.
     fn row(method: Method, param: f64, time_us: f64, attitude: f64) -> Measurement {
-        let time = Duration::from_secs_f64(time_us * 1e-6);
-        Measurement {
-            method,
-            param_kind: if method.step_kind() == StepKind::Adaptive {
-                "tol"
-            } else {
-                "dt"
-            },
-            param,
-            steps: 100,
-            errors: Some(Errors {
-                attitude_end: attitude,
-                attitude_max: attitude,
-                ..Errors::default()
-            }),
-            timing: Some(Timing {
-                median: time,
-                min: time,
-                repeats: 3,
-            }),
-            failure: None,
-            reference: Method::Exact,
-        }
+        fixtures::run(method, param, 100, time_us, attitude)
     }
 
     fn report(kind: SceneKind, rows: Vec<Measurement>) -> Report {
         Report {
             size: Size::Quick,
             cpu: "a test CPU".into(),
-            scenes: vec![SceneResult {
-                name: "made up".into(),
-                source: "a test".into(),
-                t_end: 10.0,
-                rate: 1.0,
-                sweep: Sweep::WorkPrecision,
-                kind,
-                check: ReferenceCheck {
-                    primary: "dopri".into(),
-                    secondary: "lie-rk4".into(),
-                    errors: Errors::default(),
-                },
-                rows,
-                left_out: Vec::new(),
-                elapsed: Duration::ZERO,
-            }],
+            scenes: vec![fixtures::scene(kind, rows)],
             long_runs: Vec::new(),
             engine_runs: Vec::new(),
             nd_scenes: Vec::new(),
