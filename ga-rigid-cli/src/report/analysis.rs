@@ -18,9 +18,20 @@ const ROUNDING_FLOOR: f64 = 1e-12;
 /// The fastest row (by median time) whose largest attitude error is at most `level`.
 #[must_use]
 pub fn fastest_at(scene: &SceneResult, level: f64) -> Option<&Measurement> {
+    fastest_of(scene, level, |_| true)
+}
+
+/// The fastest of the rows `eligible` picks whose largest attitude error is at most
+/// `level`.
+pub fn fastest_of(
+    scene: &SceneResult,
+    level: f64,
+    eligible: impl Fn(&Measurement) -> bool,
+) -> Option<&Measurement> {
     scene
         .rows
         .iter()
+        .filter(|r| eligible(r))
         .filter(|r| r.errors.is_some_and(|e| e.attitude_max <= level))
         .filter(|r| r.time_us().is_some())
         .min_by(|a, b| {

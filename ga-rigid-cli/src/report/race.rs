@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 
 use ga_rigid::registry::{Method, StepKind, StepLimit};
 
-use super::analysis::SceneKind;
+use super::analysis::{fastest_of, SceneKind};
 use super::page::esc;
 use super::{Measurement, Report, SceneResult};
 
@@ -21,25 +21,6 @@ fn target(kind: SceneKind) -> Option<f64> {
         SceneKind::Torqued => Some(0.5),
         _ => None,
     }
-}
-
-/// The fastest of the runs `eligible` picks that reaches `level` on `scene`.
-fn fastest(
-    scene: &SceneResult,
-    level: f64,
-    eligible: impl Fn(&Measurement) -> bool,
-) -> Option<&Measurement> {
-    scene
-        .rows
-        .iter()
-        .filter(|r| eligible(r))
-        .filter(|r| r.errors.is_some_and(|e| e.attitude_max <= level))
-        .filter(|r| r.time_us().is_some())
-        .min_by(|a, b| {
-            a.time_us()
-                .unwrap_or(0.0)
-                .total_cmp(&b.time_us().unwrap_or(0.0))
-        })
 }
 
 /// The registry's stability limit `h |w|max` of a fixed-step method under a torque or
@@ -99,9 +80,9 @@ pub(super) fn race_section(out: &mut String, report: &Report) {
             esc(&scene.name)
         );
         for level in RACE_LEVELS {
-            let pick = fastest(scene, level, |r| ours(r.method));
-            let peer = fastest(scene, level, |r| r.method == Method::Dop853Quaternion)
-                .or_else(|| fastest(scene, level, |r| r.method == Method::Dopri5Quaternion));
+            let pick = fastest_of(scene, level, |r| ours(r.method));
+            let peer = fastest_of(scene, level, |r| r.method == Method::Dop853Quaternion)
+                .or_else(|| fastest_of(scene, level, |r| r.method == Method::Dopri5Quaternion));
             match pick {
                 Some(o) => {
                     let _ = write!(
@@ -117,7 +98,7 @@ pub(super) fn race_section(out: &mut String, report: &Report) {
                             " <span class=\"note\">(h|w(0)| = {:.4} above its limit {limit}",
                             o.param * scene.rate
                         );
-                        let within = fastest(scene, level, |r| {
+                        let within = fastest_of(scene, level, |r| {
                             ours(r.method) && above_limit(r, scene.rate).is_none()
                         });
                         let peer_time = peer.and_then(Measurement::time_us);
