@@ -393,24 +393,3 @@ pub fn random_inputs(n: usize, count: usize, seed: u64) -> Vec<f32> {
         .map(|_| rng.uniform_f32(-1.0, 1.0))
         .collect()
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn blade_index_reads_the_generators() {
-        assert_eq!(blade_index("s"), 0);
-        assert_eq!(blade_index("e1"), 1);
-        assert_eq!(blade_index("e13"), 0b101);
-        assert_eq!(blade_index("e1234"), 0b1111);
-    }
-
-    #[test]
-    fn random_inputs_are_in_the_unit_interval() {
-        let xs = random_inputs(3, 100, 7);
-        assert_eq!(xs.len(), 1600);
-        assert!(xs.iter().all(|x| (-1.0..1.0).contains(x)));
-        assert!(xs.iter().any(|x| *x < -0.5) && xs.iter().any(|x| *x > 0.5));
-    }
-}

@@ -456,3 +456,24 @@ fn every_g3_and_pga_wgsl_function_on_a_vulkan_device_matches_the_cpu() {
     );
     eprintln!("{g4}");
 }
+
+/// The manifest's field names map to blade bitmaps (generator `k` is bit `k - 1`).
+/// (Here rather than in the library's unit tests, so that CI runs this package's tests as
+/// one test target built with the workspace's features.)
+#[test]
+fn blade_index_reads_the_generators() {
+    assert_eq!(blade_index("s"), 0);
+    assert_eq!(blade_index("e1"), 1);
+    assert_eq!(blade_index("e13"), 0b101);
+    assert_eq!(blade_index("e1234"), 0b1111);
+}
+
+/// The random inputs: `count` pairs of `2^n` components (2 x 100 x 8 at `n = 3`), in
+/// `[-1, 1)` with both signs well represented.
+#[test]
+fn random_inputs_are_in_the_unit_interval() {
+    let xs = random_inputs(3, 100, 7);
+    assert_eq!(xs.len(), 1600);
+    assert!(xs.iter().all(|x| (-1.0..1.0).contains(x)));
+    assert!(xs.iter().any(|x| *x < -0.5) && xs.iter().any(|x| *x > 0.5));
+}
