@@ -7,6 +7,7 @@
 
 mod analysis;
 mod engine_steps;
+mod escape;
 mod estimate;
 #[cfg(test)]
 mod fixtures;

@@ -9,6 +9,7 @@ use super::analysis::{
     cost_per_step_ns, error_floor, fastest_at, fastest_over, order, verdict, Order, SceneKind,
     ERROR_LEVELS, MIN_ORDER_POINTS,
 };
+use super::escape::esc;
 use super::measure::{MIN_REPEATS, MIN_TOTAL_TIME};
 use super::{Report, SceneResult, Size};
 
@@ -25,14 +26,6 @@ pub fn svg_name(index: usize, name: &str) -> String {
         }
     }
     format!("{:02}-{}.svg", index + 1, slug.trim_matches('-'))
-}
-
-/// Text made safe for HTML.
-pub(crate) fn esc(text: &str) -> String {
-    text.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
 }
 
 const STYLE: &str = "body{font-family:sans-serif;max-width:1000px;margin:2em auto;padding:0 1em;\

@@ -7,7 +7,7 @@ use std::fmt::Write as _;
 use ga_rigid::registry::{Method, StepKind, StepLimit};
 
 use super::analysis::{fastest_of, SceneKind};
-use super::page::esc;
+use super::escape::esc;
 use super::{Measurement, Report, SceneResult};
 
 /// The error levels the race is run to.

@@ -9,7 +9,7 @@ use super::methods::NdMethod;
 use super::plot::{nd_colour, nd_svg_name};
 use super::run::{nd_error_floor, nd_order, NdSceneResult};
 use crate::report::analysis::{Order, MIN_ORDER_POINTS};
-use crate::report::page::esc;
+use crate::report::escape::esc;
 
 /// The section, with the diagrams' file names from [`nd_svg_name`].
 pub fn nd_section(out: &mut String, scenes: &[NdSceneResult]) {
