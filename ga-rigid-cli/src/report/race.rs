@@ -102,27 +102,20 @@ pub(super) fn race_section(out: &mut String, report: &Report) {
                             ours(r.method) && above_limit(r, scene.rate).is_none()
                         });
                         let peer_time = peer.and_then(Measurement::time_us);
-                        match (within, peer_time) {
-                            (Some(w), Some(p)) => {
+                        match within {
+                            Some(w) => {
                                 let t = w.time_us().unwrap_or(f64::NAN);
                                 let _ = write!(
                                     out,
-                                    "; within the limits: {} {}: {t:.1} µs, {:.2}x",
+                                    "; within the limits: {} {}: {t:.1} µs",
                                     w.method.name(),
-                                    esc(&w.label()),
-                                    t / p
+                                    esc(&w.label())
                                 );
+                                if let Some(p) = peer_time {
+                                    let _ = write!(out, ", {:.2}x", t / p);
+                                }
                             }
-                            (Some(w), None) => {
-                                let _ = write!(
-                                    out,
-                                    "; within the limits: {} {}: {:.1} µs",
-                                    w.method.name(),
-                                    esc(&w.label()),
-                                    w.time_us().unwrap_or(f64::NAN)
-                                );
-                            }
-                            (None, _) => out.push_str("; none within the limits reached it"),
+                            None => out.push_str("; none within the limits reached it"),
                         }
                         out.push_str(")</span>");
                     }
