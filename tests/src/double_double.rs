@@ -191,39 +191,3 @@ pub fn inverse(algebra: &Algebra, a: &[f64]) -> Option<(Vec<f64>, f64)> {
     let residual_sum = residual.iter().map(|r| r.abs().to_f64()).sum();
     Some((y.iter().map(|v| v.to_f64()).collect(), residual_sum))
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn double_double_keeps_what_f64_loses() {
-        let third = Dd::from_f64(1.0) / Dd::from_f64(3.0);
-        let back = third * Dd::from_f64(3.0) - Dd::from_f64(1.0);
-        assert!(back.to_f64().abs() < 1e-30, "{back:?}");
-        // (1 + 2^-60) - 1 is 2^-60, which f64 rounds away.
-        let tiny = Dd::from_f64(1.0) + Dd::from_f64(2f64.powi(-60)) - Dd::from_f64(1.0);
-        assert_eq!(tiny.to_f64(), 2f64.powi(-60));
-    }
-
-    #[test]
-    fn inverse_of_a_g3_multivector_times_it_is_one() {
-        let algebra = Algebra::new(&[1, 1, 1]);
-        let a = [0.5, 1.0, -2.0, 0.25, 3.0, 0.0, 1.5, -0.75];
-        let (y, residual) = inverse(&algebra, &a).expect("invertible");
-        assert!(residual < 1e-28, "{residual:e}");
-        let product = algebra.geometric(&a, &y);
-        assert!((product[0] - 1.0).abs() < 1e-14);
-        assert!(product[1..].iter().all(|c| c.abs() < 1e-14), "{product:?}");
-    }
-
-    #[test]
-    fn a_zero_divisor_has_no_inverse_or_a_huge_one() {
-        // 1 + e1 is a zero divisor in G3: (1 + e1)(1 - e1) = 0.
-        let algebra = Algebra::new(&[1, 1, 1]);
-        let mut a = algebra.scalar(1.0);
-        a[1] = 1.0;
-        assert!(inverse(&algebra, &a)
-            .is_none_or(|(y, _)| y.iter().any(|v| !v.is_finite() || v.abs() > 1e25)));
-    }
-}

@@ -139,22 +139,3 @@ macro_rules! dense {
         <Multivector as $crate::embed::Embed<Multivector>>::to_reference(Multivector::from($value))
     };
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn debug_text_names_the_blade_of_every_index() {
-        let text = "Odd { e1: 1.0, e2: 2.0, e3: 3.0, e123: 4.0 }";
-        assert_eq!(blades_from_debug(text, 4), [0b001, 0b010, 0b100, 0b111]);
-        let swapped = "Bivector { e12: 2.0, e13: 1.0 }";
-        assert_eq!(blades_from_debug(swapped, 2), [0b101, 0b011]);
-    }
-
-    #[test]
-    #[should_panic(expected = "no field holds 2")]
-    fn a_missing_field_is_reported() {
-        let _ = blades_from_debug("Vector { e1: 1.0, e2: 3.0 }", 3);
-    }
-}
