@@ -7,7 +7,9 @@
 //!   `step_framed`: the same bodies with their moments given in another order, which
 //!   the step reaches through a frame (two quaternion products more).
 //! - `engine/f32/slice`: the same 1024 bodies by `step_slice` (eight lanes with AVX, else
-//!   four). Target: at most 0.5x `glam_explicit_euler` per body.
+//!   four) on `BodyState`s, and by `Bodies::step` (the column store: each component of
+//!   eight bodies side by side, as the lanes take them). Targets (issue 36): at most
+//!   0.4x `glam_explicit_euler` per body.
 //! - `engine/f32/rayon`: 2^20 bodies by `par_step_slice` on 1 and on all threads.
 //!
 //! Times are per body (criterion's throughput is bodies per second).
@@ -18,7 +20,7 @@ use common::config;
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
 use ga_engine::f32::{
     explicit_gyroscopic_euler, implicit_gyroscopic_euler, par_step_slice, step, step_order4,
-    step_slice, Body, BodyState,
+    step_slice, Bodies, Body, BodyState,
 };
 use ga_engine::glam::{Quat, Vec3};
 
@@ -164,6 +166,10 @@ fn engine(c: &mut Criterion) {
     g.bench_function("step_slice", |b| {
         let mut s = states.clone();
         b.iter(|| step_slice(black_box(&mut s), black_box(DT)));
+    });
+    g.bench_function("bodies_step", |b| {
+        let mut bodies: Bodies = states.iter().copied().collect();
+        b.iter(|| black_box(&mut bodies).step(black_box(DT)));
     });
     g.finish();
 

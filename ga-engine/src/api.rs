@@ -5,7 +5,17 @@
 /// `$t` the float, `$step2` the one-body second-order step for it, `$slice_all` the slice
 /// form's stepper.
 macro_rules! precision_api {
-    ($glam:ident, $t:ident, $quat:ident, $vec3:ident, $mat3:ident, $step2:path, $slice_all:path) => {
+    (
+        $glam:ident,
+        $t:ident,
+        $quat:ident,
+        $vec3:ident,
+        $mat3:ident,
+        $step2:path,
+        $slice_all:path,
+        $width:literal,
+        $blocks_all:path
+    ) => {
         use crate::error::BodyError;
         use crate::inertia::Inertia;
         use crate::parts::{Order, Parts};
@@ -369,6 +379,9 @@ macro_rules! precision_api {
         pub fn par_step_slice_order4(states: &mut [BodyState], dt: $t) {
             crate::parallel::for_chunks(states, |chunk| step_slice_order4(chunk, dt));
         }
+
+        #[cfg(feature = "std")]
+        bodies_api!($t, $quat, $vec3, $width, $blocks_all);
     };
 }
 
@@ -387,7 +400,9 @@ macro_rules! engine_api {
                 Vec3,
                 Mat3,
                 crate::splitting::step2_f32,
-                crate::dispatch::step_all_f32
+                crate::dispatch::step_all_f32,
+                8,
+                crate::dispatch::step_blocks_f32
             );
         }
         /// The engine in `f64` (`DQuat`, `DVec3`, `DMat3`).
@@ -399,7 +414,9 @@ macro_rules! engine_api {
                 DVec3,
                 DMat3,
                 crate::splitting::step2,
-                crate::dispatch::step_all_f64
+                crate::dispatch::step_all_f64,
+                4,
+                crate::dispatch::step_blocks_f64
             );
         }
     };

@@ -4,6 +4,8 @@
 
 #[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
 use super::avx::F32x8;
+#[cfg(feature = "std")]
+use super::blocks::Block;
 use super::parts::{Order, Parts};
 use super::real::Lanes;
 use super::slice;
@@ -47,6 +49,46 @@ pub(crate) fn step_all_f32<S: Parts<f32>>(states: &mut [S], h: f32, order: Order
         }
     }
     slice::step_all::<f32, S, Lanes<f32, 4>, 4>(states, h, order);
+}
+
+/// Every block of `f32` bodies, eight lanes in one AVX register.
+///
+/// # Safety
+/// The CPU must have AVX ([`avx_available`]).
+#[cfg(all(target_arch = "x86_64", feature = "std"))]
+#[target_feature(enable = "avx")]
+unsafe fn step_blocks_avx(blocks: &mut [Block<f32, 8>], h: f32, order: Order) {
+    for block in blocks {
+        block.step_lanes::<F32x8, 8>(0, h, order);
+    }
+}
+
+/// Every block of `f32` bodies: one AVX register a component where the CPU has AVX, else
+/// two groups of four. Both give each body the bits it gets alone.
+#[cfg(feature = "std")]
+#[inline(always)]
+pub(crate) fn step_blocks_f32(blocks: &mut [Block<f32, 8>], h: f32, order: Order) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if avx_available() {
+            // SAFETY: the CPU has AVX (checked just above).
+            unsafe { step_blocks_avx(blocks, h, order) };
+            return;
+        }
+    }
+    for block in blocks {
+        block.step_lanes::<Lanes<f32, 4>, 4>(0, h, order);
+        block.step_lanes::<Lanes<f32, 4>, 4>(4, h, order);
+    }
+}
+
+/// Every block of `f64` bodies, four lanes at a time.
+#[cfg(feature = "std")]
+#[inline(always)]
+pub(crate) fn step_blocks_f64(blocks: &mut [Block<f64, 4>], h: f64, order: Order) {
+    for block in blocks {
+        block.step_lanes::<Lanes<f64, 4>, 4>(0, h, order);
+    }
 }
 
 /// Every f64 body of `states`, four at a time.
@@ -201,5 +243,61 @@ mod tests {
             step_all::<f64, _, Lanes<f64, 4>, 4>(&mut four, 0.01, Order::Four);
         }
         assert_eq!(bits(&alone), bits(&four));
+    }
+
+    /// A block of eight f32 bodies stepped as two groups of four (the form without AVX)
+    /// and, with AVX, as one group of eight: each body's bits stepped alone, order 2 and
+    /// 4, both forms of the turns and the clamps among the lanes.
+    #[test]
+    fn every_block_width_gives_the_bits_of_one_body_at_a_time() {
+        for (sizes, h) in [
+            (&[1.0][..], 1.0 / 60.0),
+            (&[1.0, 300.0, 1e5, 1e20][..], 10.0),
+        ] {
+            let mut alone = crowd_of_size(sizes);
+            alone.truncate(16);
+            let lane = |b: &Body<f32>| (b.inertia, b.q, b.l, b.t);
+            let mut blocks: Vec<Block<f32, 8>> = alone
+                .chunks(8)
+                .map(|bodies| {
+                    let mut block = Block::filled(&lane(&bodies[0]));
+                    for (i, b) in bodies.iter().enumerate() {
+                        block.set(i, &lane(b));
+                    }
+                    block
+                })
+                .collect();
+            #[cfg(target_arch = "x86_64")]
+            let mut eight = blocks.clone();
+            for order in [Order::Two, Order::Four] {
+                for _ in 0..20 {
+                    for body in &mut alone {
+                        step_one(body, h, order);
+                    }
+                    for block in &mut blocks {
+                        block.step_lanes::<Lanes<f32, 4>, 4>(0, h, order);
+                        block.step_lanes::<Lanes<f32, 4>, 4>(4, h, order);
+                    }
+                    #[cfg(target_arch = "x86_64")]
+                    if avx_available() {
+                        // SAFETY: the CPU has AVX (checked just above).
+                        unsafe { step_blocks_avx(&mut eight, h, order) };
+                    }
+                }
+                let read = |blocks: &[Block<f32, 8>]| -> Vec<Body<f32>> {
+                    (0..16)
+                        .map(|i| {
+                            let (inertia, q, l, t) = blocks[i / 8].get(i % 8);
+                            Body { inertia, q, l, t }
+                        })
+                        .collect()
+                };
+                assert_eq!(bits(&alone), bits(&read(&blocks)));
+                #[cfg(target_arch = "x86_64")]
+                if avx_available() {
+                    assert_eq!(bits(&alone), bits(&read(&eight)));
+                }
+            }
+        }
     }
 }

@@ -95,10 +95,15 @@
 
 #![cfg_attr(not(feature = "std"), no_std)]
 
+#[cfg(feature = "std")]
+#[macro_use]
+mod bodies;
 #[macro_use]
 mod api;
 #[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
 mod avx;
+#[cfg(feature = "std")]
+mod blocks;
 mod dispatch;
 mod divided;
 mod eigen;

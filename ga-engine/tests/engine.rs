@@ -1211,3 +1211,132 @@ fn a_body_state_made_from_the_velocity_keeps_the_momentum_and_takes_impulses_exa
         body.angular_momentum(state.orientation, w)
     );
 }
+
+/// `Bodies` (the column store) gives each body the bits it gets stepped alone: bodies of
+/// all six moment orders and turned frames, with and without torques, counts that fill
+/// whole blocks and counts that leave a partly filled one (f32 blocks of eight, f64 of
+/// four), order 2 and 4. A lane that read a neighbour's constants, or an empty lane's
+/// result written over a body, would follow another body.
+#[test]
+fn bodies_give_the_bits_of_one_body_at_a_time() {
+    for n in [1, 3, 8, 13, 64] {
+        let mut one = mixed_orders32(n);
+        let mut bodies: e32::Bodies = one.iter().copied().collect();
+        assert_eq!(bodies.len(), n);
+        for round in 0..70 {
+            if round < 60 {
+                one.iter_mut().for_each(|s| s.step(1.0 / 60.0));
+                bodies.step(1.0 / 60.0);
+            } else {
+                one.iter_mut().for_each(|s| s.step_order4(1.0 / 60.0));
+                bodies.step_order4(1.0 / 60.0);
+            }
+        }
+        let stepped: Vec<_> = bodies.iter().collect();
+        assert_eq!(bits32(&one), bits32(&stepped), "f32 n={n}");
+
+        let mut one = crowd64_of(&mixed_orders32(n));
+        let mut bodies: e64::Bodies = one.iter().copied().collect();
+        for _ in 0..60 {
+            one.iter_mut().for_each(|s| s.step(1.0 / 60.0));
+            bodies.step(1.0 / 60.0);
+        }
+        one.iter_mut().for_each(|s| s.step_order4(1.0 / 60.0));
+        bodies.step_order4(1.0 / 60.0);
+        let stepped: Vec<_> = bodies.iter().collect();
+        assert_eq!(bits64(&one), bits64(&stepped), "f64 n={n}");
+    }
+}
+
+/// `Bodies` against a `Vec<BodyState>` doing the same: a seeded run of pushes, swap
+/// removals, whole-body replacements, torques, impulses, written velocities and steps;
+/// after each, every index reads the model's body to the bit (orientation, momentum,
+/// torque, inertia through the velocity), and the index past the end reads `None`.
+#[test]
+fn bodies_behave_as_a_vec_of_body_states() {
+    let pool = mixed_orders32(40);
+    let mut rng = ga_test_rng::Rng::new(0x0bad_cafe_f00d_d00d);
+    let mut model: Vec<e32::BodyState> = Vec::new();
+    let mut bodies = e32::Bodies::with_capacity(4);
+    let (mut removed, mut edited) = (0, 0);
+    for round in 0..2_000 {
+        let pick = rng.next_u64() as usize;
+        let vector = Vec3::new(rng.next_f32(), rng.next_f32(), rng.next_f32()) - 0.5;
+        let n = model.len();
+        match rng.next_u64() % 8 {
+            0 | 1 if n < 30 => {
+                model.push(pool[pick % pool.len()]);
+                bodies.push(pool[pick % pool.len()]);
+            }
+            2 if n > 0 => {
+                let i = pick % n;
+                assert_eq!(
+                    bits32(&[bodies.swap_remove(i).unwrap()]),
+                    bits32(&[model.swap_remove(i)])
+                );
+                removed += 1;
+            }
+            3 if n > 0 => {
+                let (i, other) = (pick % n, pool[(pick / 7) % pool.len()]);
+                model[i] = other;
+                bodies.get_mut(i).unwrap().set(other);
+            }
+            4 if n > 0 => {
+                let i = pick % n;
+                model[i].torque = vector;
+                bodies.get_mut(i).unwrap().set_torque(vector);
+                edited += 1;
+            }
+            5 if n > 0 => {
+                let i = pick % n;
+                model[i].apply_angular_impulse(vector);
+                bodies.get_mut(i).unwrap().apply_angular_impulse(vector);
+            }
+            6 if n > 0 => {
+                let i = pick % n;
+                model[i].set_angular_velocity(vector);
+                bodies.get_mut(i).unwrap().set_angular_velocity(vector);
+            }
+            _ => {
+                model.iter_mut().for_each(|s| s.step(1.0 / 60.0));
+                bodies.step(1.0 / 60.0);
+            }
+        }
+        assert_eq!(bodies.len(), model.len(), "round {round}");
+        assert!(bodies.get(model.len()).is_none() && bodies.get_mut(model.len()).is_none());
+        assert!(bodies.swap_remove(model.len()).is_none());
+        for (i, s) in model.iter().enumerate() {
+            let got = bodies.get(i).unwrap();
+            let view = bodies.get_mut(i).unwrap();
+            assert_eq!(bits32(&[got]), bits32(&[*s]), "round {round}, body {i}");
+            assert_eq!(view.torque().to_array(), s.torque.to_array());
+            assert_eq!(view.orientation(), s.orientation);
+            assert_eq!(view.angular_momentum(), s.angular_momentum);
+            assert_eq!(view.angular_velocity(), s.angular_velocity());
+            assert_eq!(got.body.principal_moments(), s.body.principal_moments());
+            assert_eq!(got.body.principal_frame(), s.body.principal_frame());
+        }
+    }
+    assert!(removed > 100 && edited > 100, "{removed} {edited}");
+}
+
+/// `Bodies::par_step` gives `Bodies::step`'s bits on one thread and on two.
+#[cfg(feature = "rayon")]
+#[test]
+fn bodies_step_in_parallel_as_in_series() {
+    let crowd = crowd32(5_000);
+    let run = |threads: usize| {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        let mut bodies: e32::Bodies = crowd.iter().copied().collect();
+        pool.install(|| (0..20).for_each(|_| bodies.par_step(0.02)));
+        bits32(&bodies.iter().collect::<Vec<_>>())
+    };
+    let mut serial: e32::Bodies = crowd.iter().copied().collect();
+    (0..20).for_each(|_| serial.step(0.02));
+    let serial = bits32(&serial.iter().collect::<Vec<_>>());
+    assert_eq!(run(1), serial);
+    assert_eq!(run(2), serial);
+}
