@@ -7,10 +7,11 @@
 //!   `step_framed`: the same bodies with their moments given in another order, which
 //!   the step reaches through a frame (two quaternion products more).
 //! - `engine/f32/slice`: the same 1024 bodies by `step_slice` (eight lanes with AVX, else
-//!   four) on `BodyState`s, and by `Bodies::step` (the column store: each component of
+//!   four) on `BodyState`s, and by `BodyColumns::step` (the column store: each component of
 //!   eight bodies side by side, as the lanes take them). Targets (issue 36): at most
 //!   0.4x `glam_explicit_euler` per body.
-//! - `engine/f32/rayon`: 2^20 bodies by `par_step_slice` on 1 and on all threads.
+//! - `engine/f32/rayon`: 2^20 bodies by `par_step_slice` and `BodyColumns::par_step` on 1
+//!   and on all threads.
 //!
 //! Times are per body (criterion's throughput is bodies per second).
 
@@ -20,7 +21,7 @@ use common::config;
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
 use ga_engine::f32::{
     explicit_gyroscopic_euler, implicit_gyroscopic_euler, par_step_slice, step, step_order4,
-    step_slice, Bodies, Body, BodyState,
+    step_slice, Body, BodyColumns, BodyState,
 };
 use ga_engine::glam::{Quat, Vec3};
 
@@ -167,8 +168,8 @@ fn engine(c: &mut Criterion) {
         let mut s = states.clone();
         b.iter(|| step_slice(black_box(&mut s), black_box(DT)));
     });
-    g.bench_function("bodies_step", |b| {
-        let mut bodies: Bodies = states.iter().copied().collect();
+    g.bench_function("body_columns_step", |b| {
+        let mut bodies: BodyColumns = states.iter().copied().collect();
         b.iter(|| black_box(&mut bodies).step(black_box(DT)));
     });
     g.finish();
@@ -185,6 +186,10 @@ fn engine(c: &mut Criterion) {
         let mut s = big.clone();
         g.bench_function(format!("par_step_slice/{threads}_threads"), |b| {
             b.iter(|| pool.install(|| par_step_slice(black_box(&mut s), black_box(DT))));
+        });
+        let mut columns: BodyColumns = big.iter().copied().collect();
+        g.bench_function(format!("body_columns_par_step/{threads}_threads"), |b| {
+            b.iter(|| pool.install(|| black_box(&mut columns).par_step(black_box(DT))));
         });
     }
     g.finish();

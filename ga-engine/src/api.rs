@@ -381,7 +381,7 @@ macro_rules! precision_api {
         }
 
         #[cfg(feature = "std")]
-        bodies_api!($t, $quat, $vec3, $width, $blocks_all);
+        columns_api!($t, $quat, $vec3, $width, $blocks_all);
     };
 }
 

@@ -484,7 +484,7 @@ fn slice_form_gives_the_bits_of_one_body_at_a_time() {
     }
 }
 
-/// Bodies whose moments come in each of the six orders (given without a frame: the body
+/// BodyColumns whose moments come in each of the six orders (given without a frame: the body
 /// puts them in order itself), in a seeded order, with bodies from rotated tensors among
 /// them: every lane group mixes orders.
 fn mixed_orders32(n: usize) -> Vec<e32::BodyState> {
@@ -1212,16 +1212,16 @@ fn a_body_state_made_from_the_velocity_keeps_the_momentum_and_takes_impulses_exa
     );
 }
 
-/// `Bodies` (the column store) gives each body the bits it gets stepped alone: bodies of
+/// `BodyColumns` (the column store) gives each body the bits it gets stepped alone: bodies of
 /// all six moment orders and turned frames, with and without torques, counts that fill
 /// whole blocks and counts that leave a partly filled one (f32 blocks of eight, f64 of
 /// four), order 2 and 4. A lane that read a neighbour's constants, or an empty lane's
 /// result written over a body, would follow another body.
 #[test]
-fn bodies_give_the_bits_of_one_body_at_a_time() {
+fn body_columns_give_the_bits_of_one_body_at_a_time() {
     for n in [1, 3, 8, 13, 64] {
         let mut one = mixed_orders32(n);
-        let mut bodies: e32::Bodies = one.iter().copied().collect();
+        let mut bodies: e32::BodyColumns = one.iter().copied().collect();
         assert_eq!(bodies.len(), n);
         for round in 0..70 {
             if round < 60 {
@@ -1236,7 +1236,7 @@ fn bodies_give_the_bits_of_one_body_at_a_time() {
         assert_eq!(bits32(&one), bits32(&stepped), "f32 n={n}");
 
         let mut one = crowd64_of(&mixed_orders32(n));
-        let mut bodies: e64::Bodies = one.iter().copied().collect();
+        let mut bodies: e64::BodyColumns = one.iter().copied().collect();
         for _ in 0..60 {
             one.iter_mut().for_each(|s| s.step(1.0 / 60.0));
             bodies.step(1.0 / 60.0);
@@ -1248,16 +1248,16 @@ fn bodies_give_the_bits_of_one_body_at_a_time() {
     }
 }
 
-/// `Bodies` against a `Vec<BodyState>` doing the same: a seeded run of pushes, swap
+/// `BodyColumns` against a `Vec<BodyState>` doing the same: a seeded run of pushes, swap
 /// removals, whole-body replacements, torques, impulses, written velocities and steps;
 /// after each, every index reads the model's body to the bit (orientation, momentum,
 /// torque, inertia through the velocity), and the index past the end reads `None`.
 #[test]
-fn bodies_behave_as_a_vec_of_body_states() {
+fn body_columns_behave_as_a_vec_of_body_states() {
     let pool = mixed_orders32(40);
     let mut rng = ga_test_rng::Rng::new(0x0bad_cafe_f00d_d00d);
     let mut model: Vec<e32::BodyState> = Vec::new();
-    let mut bodies = e32::Bodies::with_capacity(4);
+    let mut bodies = e32::BodyColumns::with_capacity(4);
     let (mut removed, mut edited) = (0, 0);
     for round in 0..2_000 {
         let pick = rng.next_u64() as usize;
@@ -1320,21 +1320,21 @@ fn bodies_behave_as_a_vec_of_body_states() {
     assert!(removed > 100 && edited > 100, "{removed} {edited}");
 }
 
-/// `Bodies::par_step` gives `Bodies::step`'s bits on one thread and on two.
+/// `BodyColumns::par_step` gives `BodyColumns::step`'s bits on one thread and on two.
 #[cfg(feature = "rayon")]
 #[test]
-fn bodies_step_in_parallel_as_in_series() {
+fn body_columns_step_in_parallel_as_in_series() {
     let crowd = crowd32(5_000);
     let run = |threads: usize| {
         let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(threads)
             .build()
             .unwrap();
-        let mut bodies: e32::Bodies = crowd.iter().copied().collect();
+        let mut bodies: e32::BodyColumns = crowd.iter().copied().collect();
         pool.install(|| (0..20).for_each(|_| bodies.par_step(0.02)));
         bits32(&bodies.iter().collect::<Vec<_>>())
     };
-    let mut serial: e32::Bodies = crowd.iter().copied().collect();
+    let mut serial: e32::BodyColumns = crowd.iter().copied().collect();
     (0..20).for_each(|_| serial.step(0.02));
     let serial = bits32(&serial.iter().collect::<Vec<_>>());
     assert_eq!(run(1), serial);

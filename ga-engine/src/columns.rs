@@ -1,33 +1,33 @@
-//! The public `Bodies`: many bodies stored column-wise (`blocks.rs`), for engines that
+//! The public `BodyColumns`: many bodies stored column-wise (`blocks.rs`), for engines that
 //! keep their bodies' rotation in the engine's own store and step them all each frame.
 //! Written once and stamped out inside each precision's module by `precision_api!`
 //! (`api.rs`), whose `Body`, `BodyState` and glam conversions it uses.
 
-/// `Bodies` and `BodyMut` of one precision: `$t` the float, `$width` the lanes of a
+/// `BodyColumns` and `BodyMut` of one precision: `$t` the float, `$width` the lanes of a
 /// block, `$blocks_all` the stepper of a slice of blocks (`dispatch.rs`).
-macro_rules! bodies_api {
+macro_rules! columns_api {
     ($t:ident, $quat:ident, $vec3:ident, $width:literal, $blocks_all:path) => {
-        /// Lanes in one block of [`Bodies`].
+        /// Lanes in one block of [`BodyColumns`].
         const WIDTH: usize = $width;
 
         /// Many bodies, stored component by component in blocks of eight (`f32`) or
         /// four (`f64`) bodies, the lanes the slice step runs in: stepping them
-        /// ([`Bodies::step`]) loads each component of a block with one instruction,
+        /// ([`BodyColumns::step`]) loads each component of a block with one instruction,
         /// where [`step_slice`] gathers it from each [`BodyState`] and scatters the
         /// results back. Each body gets the bits [`step`] gives it alone.
         ///
         /// An engine keeps its bodies' rotation here for their life (index `i` is the
-        /// `i`-th body pushed; [`Bodies::swap_remove`] moves the last into a hole, as
-        /// `Vec::swap_remove`), reads and changes one through [`Bodies::get_mut`], and
+        /// `i`-th body pushed; [`BodyColumns::swap_remove`] moves the last into a hole, as
+        /// `Vec::swap_remove`), reads and changes one through [`BodyColumns::get_mut`], and
         /// steps all of them once a frame. Indices out of range give `None`, never a
         /// panic.
         ///
         /// ```
-        #[doc = concat!("use ga_engine::", stringify!($t), "::{Bodies, Body, BodyState};")]
+        #[doc = concat!("use ga_engine::", stringify!($t), "::{BodyColumns, Body, BodyState};")]
         #[doc = concat!("use ga_engine::glam::{", stringify!($quat), ", ", stringify!($vec3), "};")]
         ///
         #[doc = concat!("let body = Body::from_principal(", stringify!($vec3), "::new(1.0, 2.0, 3.0), ", stringify!($quat), "::IDENTITY).unwrap();")]
-        /// let mut bodies = Bodies::new();
+        /// let mut bodies = BodyColumns::new();
         /// for k in 0..10 {
         #[doc = concat!("    let momentum = ", stringify!($vec3), "::new(0.01, 2.0, 0.1 * k as ", stringify!($t), ");")]
         #[doc = concat!("    bodies.push(BodyState::new(body, ", stringify!($quat), "::IDENTITY, momentum));")]
@@ -41,24 +41,24 @@ macro_rules! bodies_api {
         /// assert!(bodies.get(10).is_none());
         /// ```
         #[derive(Clone, Debug, Default)]
-        pub struct Bodies {
+        pub struct BodyColumns {
             /// The blocks; lanes at and after `len` in the last are copies, never read.
             blocks: Vec<crate::blocks::Block<$t, WIDTH>>,
-            /// Bodies held.
+            /// BodyColumns held.
             len: usize,
         }
 
-        impl Bodies {
+        impl BodyColumns {
             /// No bodies.
             #[must_use]
             pub fn new() -> Self {
-                Bodies::default()
+                BodyColumns::default()
             }
 
             /// No bodies, room for `n` without reallocating.
             #[must_use]
             pub fn with_capacity(n: usize) -> Self {
-                Bodies {
+                BodyColumns {
                     blocks: Vec::with_capacity(n.div_ceil(WIDTH)),
                     len: 0,
                 }
@@ -76,7 +76,7 @@ macro_rules! bodies_api {
                 self.len == 0
             }
 
-            /// Adds a body at index [`Bodies::len`].
+            /// Adds a body at index [`BodyColumns::len`].
             pub fn push(&mut self, state: BodyState) {
                 let lane = lane_of(&state);
                 let i = self.len % WIDTH;
@@ -136,7 +136,7 @@ macro_rules! bodies_api {
                 $blocks_all(&mut self.blocks, dt, Order::Four);
             }
 
-            /// [`Bodies::step`] on rayon's current pool, in fixed chunks: the results
+            /// [`BodyColumns::step`] on rayon's current pool, in fixed chunks: the results
             /// do not depend on the number of threads.
             #[cfg(feature = "rayon")]
             pub fn par_step(&mut self, dt: $t) {
@@ -145,7 +145,7 @@ macro_rules! bodies_api {
                 });
             }
 
-            /// [`Bodies::step_order4`] on rayon's current pool, likewise.
+            /// [`BodyColumns::step_order4`] on rayon's current pool, likewise.
             #[cfg(feature = "rayon")]
             pub fn par_step_order4(&mut self, dt: $t) {
                 crate::parallel::for_chunks(&mut self.blocks, |chunk| {
@@ -154,15 +154,15 @@ macro_rules! bodies_api {
             }
         }
 
-        impl FromIterator<BodyState> for Bodies {
+        impl FromIterator<BodyState> for BodyColumns {
             fn from_iter<I: IntoIterator<Item = BodyState>>(states: I) -> Self {
-                let mut bodies = Bodies::new();
+                let mut bodies = BodyColumns::new();
                 bodies.extend(states);
                 bodies
             }
         }
 
-        impl Extend<BodyState> for Bodies {
+        impl Extend<BodyState> for BodyColumns {
             fn extend<I: IntoIterator<Item = BodyState>>(&mut self, states: I) {
                 for state in states {
                     self.push(state);
@@ -170,7 +170,7 @@ macro_rules! bodies_api {
             }
         }
 
-        /// One body of [`Bodies`], to read and change in place.
+        /// One body of [`BodyColumns`], to read and change in place.
         #[derive(Debug)]
         pub struct BodyMut<'a> {
             /// Its block.
