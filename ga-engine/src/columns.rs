@@ -43,7 +43,7 @@ macro_rules! columns_api {
         #[derive(Clone, Debug, Default)]
         pub struct BodyColumns {
             /// The blocks; lanes at and after `len` in the last are copies, never read.
-            blocks: Vec<crate::blocks::Block<$t, WIDTH>>,
+            blocks: alloc::vec::Vec<crate::blocks::Block<$t, WIDTH>>,
             /// BodyColumns held.
             len: usize,
         }
@@ -59,7 +59,7 @@ macro_rules! columns_api {
             #[must_use]
             pub fn with_capacity(n: usize) -> Self {
                 BodyColumns {
-                    blocks: Vec::with_capacity(n.div_ceil(WIDTH)),
+                    blocks: alloc::vec::Vec::with_capacity(n.div_ceil(WIDTH)),
                     len: 0,
                 }
             }

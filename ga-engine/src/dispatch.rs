@@ -4,7 +4,6 @@
 
 #[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
 use super::avx::F32x8;
-#[cfg(feature = "std")]
 use super::blocks::Block;
 use super::parts::{Order, Parts};
 use super::real::Lanes;
@@ -55,7 +54,7 @@ pub(crate) fn step_all_f32<S: Parts<f32>>(states: &mut [S], h: f32, order: Order
 ///
 /// # Safety
 /// The CPU must have AVX ([`avx_available`]).
-#[cfg(all(target_arch = "x86_64", feature = "std"))]
+#[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
 #[target_feature(enable = "avx")]
 unsafe fn step_blocks_avx(blocks: &mut [Block<f32, 8>], h: f32, order: Order) {
     for block in blocks {
@@ -65,10 +64,9 @@ unsafe fn step_blocks_avx(blocks: &mut [Block<f32, 8>], h: f32, order: Order) {
 
 /// Every block of `f32` bodies: one AVX register a component where the CPU has AVX, else
 /// two groups of four. Both give each body the bits it gets alone.
-#[cfg(feature = "std")]
 #[inline(always)]
 pub(crate) fn step_blocks_f32(blocks: &mut [Block<f32, 8>], h: f32, order: Order) {
-    #[cfg(target_arch = "x86_64")]
+    #[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
     {
         if avx_available() {
             // SAFETY: the CPU has AVX (checked just above).
@@ -83,7 +81,6 @@ pub(crate) fn step_blocks_f32(blocks: &mut [Block<f32, 8>], h: f32, order: Order
 }
 
 /// Every block of `f64` bodies, four lanes at a time.
-#[cfg(feature = "std")]
 #[inline(always)]
 pub(crate) fn step_blocks_f64(blocks: &mut [Block<f64, 4>], h: f64, order: Order) {
     for block in blocks {

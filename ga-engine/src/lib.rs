@@ -1,5 +1,5 @@
 //! A rotation step an engine can call once per body per frame: glam types in and out,
-//! `f32` or `f64`, no allocation, no `std`, the same bits on every machine.
+//! `f32` or `f64`, no allocation in any step, no `std`, the same bits on every machine.
 //!
 //! ```
 //! use ga_engine::f32::{step, Body};
@@ -25,7 +25,7 @@
 //!   the engines' baselines [`f32::explicit_gyroscopic_euler`] and
 //!   [`f32::implicit_gyroscopic_euler`] on the world angular velocity; the slice forms
 //!   [`f32::step_slice`] and, with feature `rayon`, `par_step_slice`.
-//! - [`f32::BodyColumns`] (feature `std`): many bodies kept column by column, the way the
+//! - [`f32::BodyColumns`]: many bodies kept column by column, the way the
 //!   slice step's lanes take them, and stepped all at once ([`f32::BodyColumns::step`]):
 //!   about 2.4 times as fast a body as [`f32::step_slice`] on `BodyState`s, which spends
 //!   half its time gathering each component from eight structs and scattering the results
@@ -103,14 +103,15 @@
 
 #![cfg_attr(not(feature = "std"), no_std)]
 
-#[cfg(feature = "std")]
+// `BodyColumns` grows in a `Vec`; nothing else allocates.
+extern crate alloc;
+
 #[macro_use]
 mod columns;
 #[macro_use]
 mod api;
 #[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
 mod avx;
-#[cfg(feature = "std")]
 mod blocks;
 mod dispatch;
 mod divided;

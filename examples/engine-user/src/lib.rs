@@ -53,6 +53,23 @@ pub fn tumble_slice_f32(steps: usize, dt: f32) -> Result<[e32::BodyState; 8], Bo
     Ok(states)
 }
 
+/// [`tumble_slice_f32`]'s bodies kept in `BodyColumns` (which allocates, through `alloc`,
+/// without `std`) and stepped there; returns the states.
+///
+/// # Errors
+/// Only if the tensor were invalid.
+pub fn tumble_columns_f32(steps: usize, dt: f32) -> Result<[e32::BodyState; 8], BodyError> {
+    let mut columns: e32::BodyColumns = tumble_slice_f32(0, dt)?.into_iter().collect();
+    for _ in 0..steps {
+        columns.step(dt);
+    }
+    let mut states = tumble_slice_f32(0, dt)?;
+    for (state, stepped) in states.iter_mut().zip(columns.iter()) {
+        *state = stepped;
+    }
+    Ok(states)
+}
+
 /// The principal moments the engine found for [`tilted_box_tensor`], ascending.
 ///
 /// # Errors
