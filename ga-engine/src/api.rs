@@ -359,7 +359,8 @@ macro_rules! precision_api {
         /// Every body by [`step`], several at a time in lanes: the same bits as
         /// stepping each alone. Gathering each body's components into the lanes and
         /// scattering the results back takes about half of its time; where the bodies
-        /// can stay in a [`BodyColumns`], its `step` skips both.
+        /// can stay in a `BodyColumns` (feature `columns`), its `step` skips
+        /// both.
         pub fn step_slice(states: &mut [BodyState], dt: $t) {
             $slice_all(states, dt, Order::Two);
         }
@@ -382,6 +383,7 @@ macro_rules! precision_api {
             crate::parallel::for_chunks(states, |chunk| step_slice_order4(chunk, dt));
         }
 
+        #[cfg(feature = "columns")]
         columns_api!($t, $quat, $vec3, $width, $blocks_all);
     };
 }

@@ -4,6 +4,7 @@
 
 #[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
 use super::avx::F32x8;
+#[cfg(feature = "columns")]
 use super::blocks::Block;
 use super::parts::{Order, Parts};
 use super::real::Lanes;
@@ -54,7 +55,11 @@ pub(crate) fn step_all_f32<S: Parts<f32>>(states: &mut [S], h: f32, order: Order
 ///
 /// # Safety
 /// The CPU must have AVX ([`avx_available`]).
-#[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
+#[cfg(all(
+    feature = "columns",
+    target_arch = "x86_64",
+    any(feature = "std", target_feature = "avx")
+))]
 #[target_feature(enable = "avx")]
 unsafe fn step_blocks_avx(blocks: &mut [Block<f32, 8>], h: f32, order: Order) {
     for block in blocks {
@@ -64,6 +69,7 @@ unsafe fn step_blocks_avx(blocks: &mut [Block<f32, 8>], h: f32, order: Order) {
 
 /// Every block of `f32` bodies: one AVX register a component where the CPU has AVX, else
 /// two groups of four. Both give each body the bits it gets alone.
+#[cfg(feature = "columns")]
 #[inline(always)]
 pub(crate) fn step_blocks_f32(blocks: &mut [Block<f32, 8>], h: f32, order: Order) {
     #[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
@@ -75,12 +81,22 @@ pub(crate) fn step_blocks_f32(blocks: &mut [Block<f32, 8>], h: f32, order: Order
         }
     }
     for block in blocks {
-        block.step_lanes::<Lanes<f32, 4>, 4>(0, h, order);
-        block.step_lanes::<Lanes<f32, 4>, 4>(4, h, order);
+        for from in [0, 4] {
+            step_half(block, from, h, order);
+        }
     }
 }
 
+/// Lanes `from .. from + 4` of a block as one group of four: one copy of the lane code
+/// for both halves (inlined twice, it tripled the crate's release build time).
+#[cfg(feature = "columns")]
+#[inline(never)]
+fn step_half(block: &mut Block<f32, 8>, from: usize, h: f32, order: Order) {
+    block.step_lanes::<Lanes<f32, 4>, 4>(from, h, order);
+}
+
 /// Every block of `f64` bodies, four lanes at a time.
+#[cfg(feature = "columns")]
 #[inline(always)]
 pub(crate) fn step_blocks_f64(blocks: &mut [Block<f64, 4>], h: f64, order: Order) {
     for block in blocks {
@@ -245,6 +261,7 @@ mod tests {
     /// A block of eight f32 bodies stepped as two groups of four (the form without AVX)
     /// and, with AVX, as one group of eight: each body's bits stepped alone, order 2 and
     /// 4, both forms of the turns and the clamps among the lanes.
+    #[cfg(feature = "columns")]
     #[test]
     fn every_block_width_gives_the_bits_of_one_body_at_a_time() {
         for (sizes, h) in [

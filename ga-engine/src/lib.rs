@@ -25,12 +25,13 @@
 //!   the engines' baselines [`f32::explicit_gyroscopic_euler`] and
 //!   [`f32::implicit_gyroscopic_euler`] on the world angular velocity; the slice forms
 //!   [`f32::step_slice`] and, with feature `rayon`, `par_step_slice`.
-//! - [`f32::BodyColumns`]: many bodies kept column by column, the way the
-//!   slice step's lanes take them, and stepped all at once ([`f32::BodyColumns::step`]):
+//! - `f32::BodyColumns` (feature `columns`): many bodies kept column by column, the way the
+//!   slice step's lanes take them, and stepped all at once (`BodyColumns::step`):
 //!   about 2.4 times as fast a body as [`f32::step_slice`] on `BodyState`s, which spends
 //!   half its time gathering each component from eight structs and scattering the results
 //!   back (BENCHMARKS.md, "The engine step"). For an engine that steps the same bodies
-//!   every frame and can keep their rotation there.
+//!   every frame and can keep their rotation there. Off by default: it doubles the crate's
+//!   release build time.
 //! - The state is the world angular momentum, not the velocity: a world torque changes
 //!   it exactly, and the free flow does not change it at all, so `|L|` of a free body is
 //!   kept to the bit. [`f32::Body::angular_velocity`] and
@@ -60,8 +61,8 @@
 //! ([`f32::BodyState::angular_velocity`]), and hands contact and joint impulses back as
 //! momentum ([`f32::BodyState::apply_angular_impulse`], exact) or, where its solver writes
 //! velocities, as a changed velocity ([`f32::BodyState::set_angular_velocity`], one
-//! rounding, only when the velocity really changed). [`f32::BodyColumns`] holds the same
-//! state column by column, with the same calls on each body ([`f32::BodyColumns::get_mut`]).
+//! rounding, only when the velocity really changed). `f32::BodyColumns` (feature `columns`)
+//! holds the same state column by column, with the same calls on each body (`get_mut`).
 //!
 //! # The same bits everywhere: what is promised
 //! The steps use only IEEE-754 `+ - * /` and `sqrt` (each correctly rounded), in a fixed
@@ -83,7 +84,7 @@
 //!
 //! # Errors and panics
 //! Bodies are checked once ([`BodyError`]). The steps never panic and never allocate
-//! (only [`f32::BodyColumns`] allocates, as it grows; an index past its end gives `None`);
+//! (only `BodyColumns` allocates, as it grows; an index past its end gives `None`);
 //! finite input gives finite output unless the numbers overflow (a momentum near
 //! `f32::MAX`). A step so long that its products overflow (`dt` near `f32::MAX`; for
 //! [`f32::step_order4`], whose substeps are 1.35 `dt`, above `f32::MAX / 1.35`) still
@@ -106,12 +107,14 @@
 // `BodyColumns` grows in a `Vec`; nothing else allocates.
 extern crate alloc;
 
+#[cfg(feature = "columns")]
 #[macro_use]
 mod columns;
 #[macro_use]
 mod api;
 #[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
 mod avx;
+#[cfg(feature = "columns")]
 mod blocks;
 mod dispatch;
 mod divided;
