@@ -72,6 +72,21 @@ pub(crate) fn free_flow_normalized<R: Real, T: Turning<R>>(
     l: V<R>,
     h: R,
 ) -> T {
+    free_flow_from(inertia, start, start.dot(start), l, h)
+}
+
+/// [`free_flow_normalized`] with `start`'s squared norm `q_p2` given (the steps have it
+/// from checking that the orientation is unit).
+// Inlined only when optimised (see "Unoptimised builds" in `splitting.rs`).
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline)]
+pub(crate) fn free_flow_from<R: Real, T: Turning<R>>(
+    inertia: &Inertia<R>,
+    start: T,
+    q_p2: R,
+    l: V<R>,
+    h: R,
+) -> T {
     // `|L|^2` from the world momentum, beside the turn into the body frame.
     let l2 = l.dot(l);
     let hh_l2 = (h * h) * l2;
@@ -80,29 +95,40 @@ pub(crate) fn free_flow_normalized<R: Real, T: Turning<R>>(
         (hh_l2 * inertia.split.reach).lt(R::splat(1.0)),
         l2.lt(R::splat(FAST_MOMENTUM2)),
     );
-    // `start` is `q_p`: its dot product gives the same bits in either form.
-    let q_p2 = start.dot(start);
     let rates = Rates::new::<false>(inertia, h, hh_l2);
     if R::all(projective) {
-        let (q, norm2) = projective::free_flow::<R, T>(&rates, start, q_p2, body);
-        let (w, w2) = casimir_turn::<R, false>(&rates, l, l2);
-        return q.turned_by(w).divided_by_norm(norm2 * w2);
+        return projective_flow(&rates, start, q_p2, body, (l, l2));
     }
     let limited = Rates::new::<true>(inertia, h, hh_l2);
     let (q, norm) = divided::free_flow::<R, T, true>(inertia, &limited, start, body);
     let (w, w2) = casimir_turn::<R, true>(&limited, l, l2);
     let divided = q.turned_by(w).normalized_by((q_p2 * norm) * w2, start);
     if R::any(projective) {
-        let (q, norm2) = projective::free_flow::<R, T>(&rates, start, q_p2, body);
-        let (w, w2) = casimir_turn::<R, false>(&rates, l, l2);
         T::select(
             projective,
-            q.turned_by(w).divided_by_norm(norm2 * w2),
+            projective_flow(&rates, start, q_p2, body, (l, l2)),
             divided,
         )
     } else {
         divided
     }
+}
+
+/// The free flow in the projective range: the turn about `l` first (a turn in the world
+/// frame, on the left, commutes with the body turns on the right, and it is known from
+/// the step's start, so it leaves the chain of turns), then the three turns, then one
+/// division by the norm.
+#[inline(always)]
+fn projective_flow<R: Real, T: Turning<R>>(
+    rates: &Rates<R>,
+    start: T,
+    q_p2: R,
+    body: V<R>,
+    (l, l2): (V<R>, R),
+) -> T {
+    let (w, w2) = casimir_turn::<R, false>(rates, l, l2);
+    let (q, norm2) = projective::free_flow::<R, T>(rates, start.turned_by(w), q_p2 * w2, body);
+    q.divided_by_norm(norm2)
 }
 
 #[cfg(all(test, feature = "std"))]

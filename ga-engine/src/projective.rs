@@ -44,13 +44,11 @@ fn turn<R: Real, T: Turning<R>, const K: usize, const N: usize>(
     let s = (p * (a + a).opaque()).opaque();
     let norm = (pp + aa).opaque();
     let turned = turn_body_about(K, c, s, x);
-    // The next angle's numerators from the momentum scaled by its rates before the
-    // turn: the rates' products run beside the turn's, not after it.
-    let scaled = |r: R| V {
-        x: r * x.x,
-        y: r * x.y,
-        z: r * x.z,
-    };
+    // The next angle's numerators are the rates times the turned momentum's component
+    // `N`: two products after the turn rather than the turn applied again to the
+    // momentum scaled by each rate (eight products and two sums more, which cost the
+    // one-body step more than the product's latency on the chain does).
+    let next = turned.get(N);
     let x = match K {
         0 => V {
             x: x.x * norm,
@@ -73,10 +71,9 @@ fn turn<R: Real, T: Turning<R>, const K: usize, const N: usize>(
         y: x.y.opaque(),
         z: x.z.opaque(),
     };
-    let next = turn_body_about(K, c, s, scaled(rate)).get(N).opaque();
-    let cubic_next = turn_body_about(K, c, s, scaled(cubic_rate)).get(N).opaque();
     let d_next = (d * norm).opaque();
-    let edd_next = (((e_next * d).opaque() * norm).opaque() * d_next).opaque();
+    let edd_next = ((e_next * d_next).opaque() * d_next).opaque();
+    let (next, cubic_next) = ((rate * next).opaque(), (cubic_rate * next).opaque());
     (
         q.turned_about::<K>(p, a),
         x,

@@ -228,14 +228,23 @@ impl<R: Real> Q<R> {
     /// rotation.
     #[inline(always)]
     pub(crate) fn unit(self) -> Q<R> {
-        let off = self.dot(self) - R::splat(1.0);
+        self.unit_and_norm2().0
+    }
+
+    /// [`Q::unit`] and its squared norm (`dot(self, self)`, computed once: the free flow
+    /// needs it too).
+    #[inline(always)]
+    pub(crate) fn unit_and_norm2(self) -> (Q<R>, R) {
+        let norm2 = self.dot(self);
+        let off = norm2 - R::splat(1.0);
         let slack = R::splat(UNIT_SLACK * R::EPSILON);
         // False where `off` is NaN: a non-finite orientation goes to `rescaled` too.
         let near = R::and(off.lt(slack), (-off).lt(slack));
         if R::all(near) {
-            self
+            (self, norm2)
         } else {
-            Q::select(near, self, self.rescaled())
+            let q = Q::select(near, self, self.rescaled());
+            (q, q.dot(q))
         }
     }
 

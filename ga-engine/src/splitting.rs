@@ -21,7 +21,7 @@
 //! of over a megabyte (its fourth order two: a test thread's 2 MiB stack overflowed).
 //! With debug assertions on, the turns and free flows are ordinary functions instead.
 
-use super::free_flow::free_flow_normalized;
+use super::free_flow::{free_flow_from, free_flow_normalized};
 use super::inertia::Inertia;
 use super::real::Real;
 use super::rotation::{Q, V};
@@ -51,10 +51,30 @@ pub(crate) fn step2_in<R: Real, T: Turning<R>>(
 ) -> (Q<R>, V<R>) {
     let half = h * R::splat(0.5);
     let l = l.add_scaled(half, t);
-    let q_p = inertia.principal_orientation(q.unit());
-    let q_p = free_flow_normalized(inertia, T::pack(q_p), l, h).unpack();
+    let (q_p, q_p2) = principal(inertia, q);
+    let q_p = free_flow_from(inertia, T::pack(q_p), q_p2, l, h).unpack();
     let l = l.add_scaled(half, t);
     (inertia.body_orientation(q_p), l)
+}
+
+/// The unit orientation in the principal frame, `q p` ([`Inertia::principal_orientation`]),
+/// and its squared norm: the unit check's where the frame is not turned (`Q::dot` and
+/// `Turning::dot` sum in one order, so it is the bits the free flow would compute).
+#[inline(always)]
+fn principal<R: Real>(inertia: &Inertia<R>, q: Q<R>) -> (Q<R>, R) {
+    let (q, q2) = q.unit_and_norm2();
+    principal_of_unit(inertia, q, q2)
+}
+
+/// [`principal`] of a unit `q` whose squared norm is `q2`.
+#[inline(always)]
+fn principal_of_unit<R: Real>(inertia: &Inertia<R>, q: Q<R>, q2: R) -> (Q<R>, R) {
+    if R::any(inertia.turned) {
+        let q_p = inertia.principal_orientation(q);
+        (q_p, q_p.dot(q_p))
+    } else {
+        (q, q2)
+    }
 }
 
 /// [`step2_in`] with the frame's products also in the form `T` (one register for one f32
@@ -73,13 +93,16 @@ fn step2_in_framed<R: Real, T: Turning<R>>(
     let half = h * R::splat(0.5);
     let l = l.add_scaled(half, t);
     let turned = inertia.turned;
-    let q = T::pack(q.unit());
-    let q_p = if R::any(turned) {
-        T::select(turned, q.times(inertia.frame), q)
+    let (q, q2) = q.unit_and_norm2();
+    let q = T::pack(q);
+    // The squared norm from the unit check where the frame is not turned (as `principal`).
+    let (q_p, q_p2) = if R::any(turned) {
+        let q_p = T::select(turned, q.times(inertia.frame), q);
+        (q_p, q_p.dot(q_p))
     } else {
-        q
+        (q, q2)
     };
-    let q_p = free_flow_normalized(inertia, q_p, l, h);
+    let q_p = free_flow_from(inertia, q_p, q_p2, l, h);
     let q = if R::any(turned) {
         T::select(turned, q_p.times(inertia.frame.conj()), q_p)
     } else {
@@ -122,11 +145,10 @@ pub(crate) fn step2_with<R: Real>(
     mut torque: impl FnMut(Q<R>) -> V<R>,
 ) -> (Q<R>, V<R>) {
     let half = h * R::splat(0.5);
-    let q = q.unit();
+    let (q, q2) = q.unit_and_norm2();
     let l = l.add_scaled(half, torque(q));
-    let q_p = inertia.principal_orientation(q);
-    let q_p = free_flow_normalized(inertia, q_p, l, h);
-    let q = inertia.body_orientation(q_p);
+    let (q_p, q_p2) = principal_of_unit(inertia, q, q2);
+    let q = inertia.body_orientation(free_flow_from(inertia, q_p, q_p2, l, h));
     let l = l.add_scaled(half, torque(q));
     (q, l)
 }
@@ -149,11 +171,11 @@ pub(crate) fn step4<R: Real>(
     let (h1, h0) = (h * R::splat(G1), h * R::splat(G0));
     let outer_kick = h * R::splat(0.5 * G1);
     let inner_kick = h * R::splat(0.5 * (G1 + G0));
-    let q_p = inertia.principal_orientation(q.unit());
+    let (q_p, q_p2) = principal(inertia, q);
     let l = l.add_scaled(outer_kick, t);
     // Each free flow reads the body momentum through its starting quaternion, which must
     // be unit.
-    let q1 = free_flow_normalized(inertia, q_p, l, h1);
+    let q1 = free_flow_from(inertia, q_p, q_p2, l, h1);
     let l = l.add_scaled(inner_kick, t);
     let q2 = free_flow_normalized(inertia, q1, l, h0);
     let l = l.add_scaled(inner_kick, t);
