@@ -198,13 +198,13 @@ impl Turning<f32> for Q4 {
     }
 }
 
-/// `a x b` in lanes 0 to 2: `a.yzx b.zxy - a.zxy b.yzx`, as `V::cross` writes each
-/// component.
+/// `a x b` in lanes 0 to 2: `(a b.yzx - a.yzx b).yzx`, which is `a.yzx b.zxy - a.zxy
+/// b.yzx` lane by lane (the same products, subtracted in the same order), as `V::cross`
+/// writes each component, with three shuffles instead of four.
 #[inline(always)]
 unsafe fn cross(a: __m128, b: __m128) -> __m128 {
     let a_yzx = _mm_shuffle_ps::<0b11_00_10_01>(a, a);
-    let b_zxy = _mm_shuffle_ps::<0b11_01_00_10>(b, b);
-    let a_zxy = _mm_shuffle_ps::<0b11_01_00_10>(a, a);
     let b_yzx = _mm_shuffle_ps::<0b11_00_10_01>(b, b);
-    _mm_sub_ps(_mm_mul_ps(a_yzx, b_zxy), _mm_mul_ps(a_zxy, b_yzx))
+    let c = _mm_sub_ps(_mm_mul_ps(a, b_yzx), _mm_mul_ps(a_yzx, b));
+    _mm_shuffle_ps::<0b11_00_10_01>(c, c)
 }
