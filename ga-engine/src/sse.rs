@@ -163,7 +163,9 @@ impl Turning<f32> for Q4 {
         unsafe {
             let u = _mm_xor_ps(self.0, _mm_setr_ps(-0.0, -0.0, -0.0, 0.0));
             let w = _mm_shuffle_ps::<0b11_11_11_11>(self.0, self.0);
-            let v4 = _mm_setr_ps(v.x, v.y, v.z, 0.0);
+            // Lane 3 a copy of `z` (it is unused): the pair `(x, y)` the kick leaves in a
+            // register and a broadcast `z` make it in one shuffle.
+            let v4 = _mm_setr_ps(v.x, v.y, v.z, v.z);
             let t = cross(_mm_add_ps(u, u), v4);
             let r = _mm_add_ps(_mm_add_ps(v4, _mm_mul_ps(w, t)), cross(u, t));
             V {
