@@ -1,7 +1,8 @@
 //! The free flow, normalised: the three turns about body axes in the division-free form
 //! (`projective.rs`) where every lane is in its range (`range.rs`), else in the divided
-//! form (`divided.rs`) with each lane in the range taking the projective result; then the
-//! turn about `L` (the Casimir's flow, which commutes with them); then one normalisation.
+//! form (`divided.rs`) with each lane in the range taking the projective result; and the
+//! turn about `L` (the Casimir's flow, which commutes with them: first in the projective
+//! form, last in the divided one); then one normalisation.
 
 use super::divided;
 use super::inertia::Inertia;
@@ -54,8 +55,8 @@ fn casimir_turn<R: Real, const LIMIT: bool>(rates: &Rates<R>, l: V<R>, l2: R) ->
 
 /// The free flow from the unit `q_p` (`start`, in the form the turns build up) under
 /// the world momentum `l`, normalised (in `start`'s hemisphere; in the projective range
-/// it cannot leave it, see `range::RANGE`): the three turns, then
-/// the turn about `l`, which commutes with them. `q_p`'s own squared norm (1 up to
+/// it cannot leave it, see `range::RANGE`): the three turns and the turn about `l`,
+/// which commutes with them. `q_p`'s own squared norm (1 up to
 /// rounding) times the turns' product gives the result's squared norm without waiting
 /// for the last turn's quaternion.
 ///

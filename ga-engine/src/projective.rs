@@ -12,8 +12,9 @@
 //! - `C = P^2 - A^2` and `S = 2 P A` are `cos` and `sin` times `D^4 n`, and
 //!   `N = P^2 + A^2` is `D^4 n`;
 //! - the turned components are `C X_i + S X_j`, the untouched one `N X_K`, all over the
-//!   new denominator `D N`, and the next angle's numerators are `C (r X_i) + S (r X_j)`
-//!   and the same with `lambda r` (so that `lambda B^2` is one product, not two).
+//!   new denominator `D N`, and the next angle's numerators are the turned component the
+//!   next turn reads times `r` and times `lambda r` (so that `lambda B^2` is one product,
+//!   not two).
 
 use super::rates::Rates;
 use super::real::Real;
