@@ -12,26 +12,21 @@ use super::rates::Rates;
 use super::real::Real;
 use super::rotation::{Q, V};
 use super::split::MAX_HALF_ANGLE;
-use super::turning::Turning;
+use super::turning::{Momentum, Turning};
 
 /// The turn about the world momentum `l` by the Casimir's flow, `(1 - w^2/3) + k l` for
-/// `k = rates.casimir`, `w^2 = k^2 |L|^2`, and its squared norm. `w` is limited to 64
-/// (its angle is saturated there) where `w^2` is not below `64^2` (or is NaN), with `l`'s
-/// direction from `|L|`, when `LIMIT`; without it (the projective range) the plain form.
+/// `k = rates.casimir`, `w^2 = k^2 |L|^2`: its scalar part, its `k`, and its squared norm.
+/// `w` is limited to 64 (its angle is saturated there) where `w^2` is not below `64^2`
+/// (or is NaN), with `l`'s direction from `|L|`, when `LIMIT`; without it (the projective
+/// range) the plain form.
 #[inline(always)]
-fn casimir_turn<R: Real, const LIMIT: bool>(rates: &Rates<R>, l: V<R>, l2: R) -> (Q<R>, R) {
+fn casimir_turn<R: Real, const LIMIT: bool>(rates: &Rates<R>, l: V<R>, l2: R) -> (R, R, R) {
     let k = rates.casimir;
     let w2 = (k * k) * l2;
     let third = R::splat(1.0 / 3.0);
     if !LIMIT {
         let p = R::splat(1.0) - w2 * third;
-        let w = Q {
-            x: k * l.x,
-            y: k * l.y,
-            z: k * l.z,
-            w: p,
-        };
-        return (w, p * p + w2);
+        return (p, k, p * p + w2);
     }
     let limit = R::splat(MAX_HALF_ANGLE);
     let inside = w2.lt(limit * limit);
@@ -50,7 +45,7 @@ fn casimir_turn<R: Real, const LIMIT: bool>(rates: &Rates<R>, l: V<R>, l2: R) ->
         z: f * l.z,
         w: R::splat(1.0) - capped * third,
     };
-    (w, w.dot(w))
+    (w.w, f, w.dot(w))
 }
 
 /// The free flow from the unit `q_p` (`start`, in the form the turns build up) under
@@ -70,7 +65,7 @@ fn casimir_turn<R: Real, const LIMIT: bool>(rates: &Rates<R>, l: V<R>, l2: R) ->
 pub(crate) fn free_flow_normalized<R: Real, T: Turning<R>>(
     inertia: &Inertia<R>,
     start: T,
-    l: V<R>,
+    l: T::Momentum,
     h: R,
 ) -> T {
     free_flow_from(inertia, start, start.dot(start), l, h)
@@ -85,11 +80,11 @@ pub(crate) fn free_flow_from<R: Real, T: Turning<R>>(
     inertia: &Inertia<R>,
     start: T,
     q_p2: R,
-    l: V<R>,
+    l: T::Momentum,
     h: R,
 ) -> T {
     // `|L|^2` from the world momentum, beside the turn into the body frame.
-    let l2 = l.dot(l);
+    let l2 = l.norm2();
     let hh_l2 = (h * h) * l2;
     let body = start.rotate_inv(l);
     let projective = R::and(
@@ -102,8 +97,10 @@ pub(crate) fn free_flow_from<R: Real, T: Turning<R>>(
     }
     let limited = Rates::new::<true>(inertia, h, hh_l2);
     let (q, norm) = divided::free_flow::<R, T, true>(inertia, &limited, start, body);
-    let (w, w2) = casimir_turn::<R, true>(&limited, l, l2);
-    let divided = q.turned_by(w).normalized_by((q_p2 * norm) * w2, start);
+    let (p, k, w2) = casimir_turn::<R, true>(&limited, l.unpack(), l2);
+    let divided = q
+        .turned_about_momentum(p, k, l)
+        .normalized_by((q_p2 * norm) * w2, start);
     if R::any(projective) {
         T::select(
             projective,
@@ -125,10 +122,11 @@ fn projective_flow<R: Real, T: Turning<R>>(
     start: T,
     q_p2: R,
     body: V<R>,
-    (l, l2): (V<R>, R),
+    (l, l2): (T::Momentum, R),
 ) -> T {
-    let (w, w2) = casimir_turn::<R, false>(rates, l, l2);
-    let (q, norm2) = projective::free_flow::<R, T>(rates, start.turned_by(w), q_p2 * w2, body);
+    let (p, k, w2) = casimir_turn::<R, false>(rates, l.unpack(), l2);
+    let start = start.turned_about_momentum(p, k, l);
+    let (q, norm2) = projective::free_flow::<R, T>(rates, start, q_p2 * w2, body);
     q.divided_by_norm(norm2)
 }
 
@@ -172,8 +170,10 @@ mod tests {
         let rates = Rates::new::<false>(inertia, h, h * h * l2);
         let (turned, norm2) =
             projective::free_flow::<f64, Q<f64>>(&rates, q, q.dot(q), q.rotate_inv(l));
-        let (w, w2) = casimir_turn::<f64, false>(&rates, l, l2);
-        turned.turned_by(w).normalized_by(norm2 * w2, q)
+        let (p, k, w2) = casimir_turn::<f64, false>(&rates, l, l2);
+        turned
+            .turned_about_momentum(p, k, l)
+            .normalized_by(norm2 * w2, q)
     }
 
     /// At the edge of the projective range (`h^2 |L|^2 reach` just below 1), the free
@@ -233,16 +233,20 @@ mod tests {
             let rates = Rates::new::<true>(inertia, h, h * h * l2);
             let (turned, norm) =
                 divided::free_flow::<R, Q<R>, true>(inertia, &rates, q, q.rotate_inv(l));
-            let (w, w2) = casimir_turn::<R, true>(&rates, l, l2);
-            turned.turned_by(w).normalized_by((q.dot(q) * norm) * w2, q)
+            let (p, k, w2) = casimir_turn::<R, true>(&rates, l, l2);
+            turned
+                .turned_about_momentum(p, k, l)
+                .normalized_by((q.dot(q) * norm) * w2, q)
         }
         fn projective<R: Real>(inertia: &Inertia<R>, q: Q<R>, l: V<R>, h: R) -> Q<R> {
             let l2 = l.dot(l);
             let rates = Rates::new::<false>(inertia, h, h * h * l2);
             let (turned, norm2) =
                 projective::free_flow::<R, Q<R>>(&rates, q, q.dot(q), q.rotate_inv(l));
-            let (w, w2) = casimir_turn::<R, false>(&rates, l, l2);
-            turned.turned_by(w).normalized_by(norm2 * w2, q)
+            let (p, k, w2) = casimir_turn::<R, false>(&rates, l, l2);
+            turned
+                .turned_about_momentum(p, k, l)
+                .normalized_by(norm2 * w2, q)
         }
         let gap = |a: [f64; 4], b: [f64; 4]| (0..4).fold(0.0f64, |m, k| m.max((a[k] - b[k]).abs()));
         for case in 0..5_000 {

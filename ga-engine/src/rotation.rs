@@ -236,16 +236,23 @@ impl<R: Real> Q<R> {
     #[inline(always)]
     pub(crate) fn unit_and_norm2(self) -> (Q<R>, R) {
         let norm2 = self.dot(self);
-        let off = norm2 - R::splat(1.0);
-        let slack = R::splat(UNIT_SLACK * R::EPSILON);
-        // False where `off` is NaN: a non-finite orientation goes to `rescaled` too.
-        let near = R::and(off.lt(slack), (-off).lt(slack));
+        let near = Q::unit_norm2(norm2);
         if R::all(near) {
             (self, norm2)
         } else {
             let q = Q::select(near, self, self.rescaled());
             (q, q.dot(q))
         }
+    }
+
+    /// Whether a quaternion whose squared norm is `norm2` is taken as unit (within
+    /// [`UNIT_SLACK`] rounding errors of 1); false where `norm2` is NaN, so that a
+    /// non-finite orientation is rescaled too.
+    #[inline(always)]
+    pub(crate) fn unit_norm2(norm2: R) -> R::Mask {
+        let off = norm2 - R::splat(1.0);
+        let slack = R::splat(UNIT_SLACK * R::EPSILON);
+        R::and(off.lt(slack), (-off).lt(slack))
     }
 
     /// `self / |self|`, divided first by its largest component's size so that the

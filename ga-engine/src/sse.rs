@@ -1,4 +1,5 @@
-//! One `f32` body's quaternion in one SSE register, for the one-body step on x86-64.
+//! One `f32` body's quaternion, and its world momentum and torque, each in one SSE
+//! register, for the one-body step on x86-64.
 //!
 //! The one-body step is bound by its chain of three dependent turns, and by how many
 //! bodies' instructions the core can hold at once to overlap one body's chain with the
@@ -7,9 +8,11 @@
 //! vectors with shuffles (BENCHMARKS.md, issue 19). Here the quaternion is one register
 //! from the start, and a turn `q (c + s e_K)` is `q c + perm_K(q) (±s)`: one shuffle for
 //! the permutation, two broadcasts, a sign flip, two products and a sum. The angles,
-//! norms and body momentum stay scalar, as in the component form. The turn about `L` is a
-//! left product `w q`: four products of broadcast, pre-signed `w` lanes (known from the
-//! step's start) with three shuffles of `q`.
+//! norms and body momentum stay scalar, as in the component form. The world momentum
+//! `[x, y, z, 0]` is one register too ([`V4`]): the kicks, `|L|^2` and the turn into the
+//! body frame read it without assembling it from components. The turn about `L` is a
+//! left product `w q`: four products of broadcast, pre-signed `w` lanes (`k L` in one
+//! product, known from the step's start) with three shuffles of `q`.
 //!
 //! Every lane does the IEEE operations the component form does, on the same operands:
 //! `w c - x s` is `w c + (-x) s`, exactly (negation is exact, and `+` and `*` commute
@@ -18,12 +21,13 @@
 
 use core::arch::x86_64::{
     __m128, _mm_add_ps, _mm_add_ss, _mm_cvtss_f32, _mm_div_ps, _mm_movehl_ps, _mm_mul_ps,
-    _mm_set1_ps, _mm_setr_ps, _mm_shuffle_ps, _mm_storeu_ps, _mm_sub_ps, _mm_xor_ps,
+    _mm_set1_ps, _mm_setr_ps, _mm_shuffle_ps, _mm_storeu_ps, _mm_sub_ps, _mm_unpackhi_ps,
+    _mm_unpacklo_ps, _mm_xor_ps,
 };
 
 use super::real::Real;
 use super::rotation::{Q, V};
-use super::turning::Turning;
+use super::turning::{Momentum, Turning};
 
 /// A quaternion `[x, y, z, w]`, lane 0 first (glam's `Quat` layout).
 #[derive(Clone, Copy, Debug)]
@@ -131,20 +135,28 @@ impl Turning<f32> for Q4 {
         Q4(unsafe { _mm_div_ps(self.0, _mm_set1_ps(Real::sqrt(norm2))) })
     }
 
+    type Momentum = V4;
+
     #[inline(always)]
-    fn turned_by(self, w: Q<f32>) -> Self {
-        // `Q::mul(w, self)` lane by lane: each lane is `(w_w b0 + w_x b1) + (w_y b2 +
-        // w_z b3)` with the component form's pairs (a difference there is a sum of a
-        // negated product here, the same IEEE result). The `w` lanes are known early;
-        // only the three shuffles of `self` wait for the turns.
+    fn turned_about_momentum(self, p: f32, k: f32, l: V4) -> Self {
+        // `Q::mul(w, self)` for `w = (k l, p)`, lane by lane: each lane is `(w_w b0 +
+        // w_x b1) + (w_y b2 + w_z b3)` with the component form's pairs (a difference
+        // there is a sum of a negated product here, the same IEEE result). The `w` lanes
+        // are known early; only the three shuffles of `self` wait for the turns.
         // SAFETY: SSE2 is part of x86-64.
         unsafe {
             let b = self.0;
-            let signed = |a: f32, signs: __m128| _mm_xor_ps(_mm_set1_ps(a), signs);
-            let aw = _mm_set1_ps(w.w);
-            let ax = signed(w.x, _mm_setr_ps(0.0, -0.0, 0.0, -0.0));
-            let ay = signed(w.y, _mm_setr_ps(0.0, 0.0, -0.0, -0.0));
-            let az = signed(w.z, _mm_setr_ps(-0.0, 0.0, 0.0, -0.0));
+            // `k l` in one product, then each component broadcast with its signs from
+            // the pairs `(w_i, -w_i)`.
+            let kl = _mm_mul_ps(_mm_set1_ps(k), l.0);
+            let negated = _mm_xor_ps(kl, _mm_set1_ps(-0.0));
+            let xy = _mm_unpacklo_ps(kl, negated);
+            let zw = _mm_unpackhi_ps(kl, negated);
+            let aw = _mm_set1_ps(p);
+            // (w_x, -w_x, w_x, -w_x), (w_y, w_y, -w_y, -w_y), (-w_z, w_z, w_z, -w_z).
+            let ax = _mm_shuffle_ps::<0b01_00_01_00>(xy, xy);
+            let ay = _mm_shuffle_ps::<0b11_11_10_10>(xy, xy);
+            let az = _mm_shuffle_ps::<0b01_00_00_01>(zw, zw);
             let b1 = _mm_shuffle_ps::<0b00_01_10_11>(b, b);
             let b2 = _mm_shuffle_ps::<0b01_00_11_10>(b, b);
             let b3 = _mm_shuffle_ps::<0b10_11_00_01>(b, b);
@@ -156,16 +168,14 @@ impl Turning<f32> for Q4 {
     }
 
     #[inline(always)]
-    fn rotate_inv(self, v: V<f32>) -> V<f32> {
+    fn rotate_inv(self, v: V4) -> V<f32> {
         // `Q::rotate` for `q*`: u = -(x, y, z); t = (2u) x v; (v + w t) + u x t, lane by
         // lane in the component form's order. Lane 3 carries nothing of use.
         // SAFETY: SSE2 is part of x86-64.
         unsafe {
             let u = _mm_xor_ps(self.0, _mm_setr_ps(-0.0, -0.0, -0.0, 0.0));
             let w = _mm_shuffle_ps::<0b11_11_11_11>(self.0, self.0);
-            // Lane 3 a copy of `z` (it is unused): the pair `(x, y)` the kick leaves in a
-            // register and a broadcast `z` make it in one shuffle.
-            let v4 = _mm_setr_ps(v.x, v.y, v.z, v.z);
+            let v4 = v.0;
             let t = cross(_mm_add_ps(u, u), v4);
             let r = _mm_add_ps(_mm_add_ps(v4, _mm_mul_ps(w, t)), cross(u, t));
             V {
@@ -191,6 +201,52 @@ impl Turning<f32> for Q4 {
         // SAFETY: SSE2 is part of x86-64.
         unsafe {
             let products = _mm_mul_ps(self.0, b.0);
+            let pairs = _mm_add_ps(
+                products,
+                _mm_shuffle_ps::<0b10_11_00_01>(products, products),
+            );
+            _mm_cvtss_f32(_mm_add_ss(pairs, _mm_movehl_ps(pairs, pairs)))
+        }
+    }
+}
+
+/// A vector `[x, y, z, 0]`, lane 0 first: the world momentum and torque of one body.
+#[derive(Clone, Copy, Debug)]
+#[repr(transparent)]
+pub(crate) struct V4(__m128);
+
+impl Momentum<f32> for V4 {
+    #[inline(always)]
+    fn pack(v: V<f32>) -> Self {
+        // SAFETY: SSE2 is part of x86-64.
+        V4(unsafe { _mm_setr_ps(v.x, v.y, v.z, 0.0) })
+    }
+
+    #[inline(always)]
+    fn unpack(self) -> V<f32> {
+        // SAFETY: SSE2 is part of x86-64.
+        unsafe {
+            V {
+                x: _mm_cvtss_f32(self.0),
+                y: _mm_cvtss_f32(_mm_shuffle_ps::<0b01_01_01_01>(self.0, self.0)),
+                z: _mm_cvtss_f32(_mm_movehl_ps(self.0, self.0)),
+            }
+        }
+    }
+
+    #[inline(always)]
+    fn add_scaled(self, s: f32, t: Self) -> Self {
+        // SAFETY: SSE2 is part of x86-64.
+        V4(unsafe { _mm_add_ps(self.0, _mm_mul_ps(_mm_set1_ps(s), t.0)) })
+    }
+
+    #[inline(always)]
+    fn norm2(self) -> f32 {
+        // `(x x + y y) + (z z + 0)`: `V::dot`'s `(x x + y y) + z z`, as `z z + 0` is `z z`
+        // (it is not `-0`).
+        // SAFETY: SSE2 is part of x86-64.
+        unsafe {
+            let products = _mm_mul_ps(self.0, self.0);
             let pairs = _mm_add_ps(
                 products,
                 _mm_shuffle_ps::<0b10_11_00_01>(products, products),
