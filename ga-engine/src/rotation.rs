@@ -42,6 +42,16 @@ impl<R: Real> V<R> {
         }
     }
 
+    /// `s self`.
+    #[inline(always)]
+    pub(crate) fn scale_all(self, s: R) -> V<R> {
+        V {
+            x: s * self.x,
+            y: s * self.y,
+            z: s * self.z,
+        }
+    }
+
     /// `self + s v`.
     #[inline(always)]
     pub(crate) fn add_scaled(self, s: R, v: V<R>) -> V<R> {

@@ -210,7 +210,8 @@ impl Turning<f32> for Q4 {
     }
 }
 
-/// A vector `[x, y, z, 0]`, lane 0 first: the world momentum and torque of one body.
+/// A vector `[x, y, z, z]`, lane 0 first (lane 3 unused): the world momentum and torque
+/// of one body.
 #[derive(Clone, Copy, Debug)]
 #[repr(transparent)]
 pub(crate) struct V4(__m128);
@@ -218,8 +219,10 @@ pub(crate) struct V4(__m128);
 impl Momentum<f32> for V4 {
     #[inline(always)]
     fn pack(v: V<f32>) -> Self {
+        // Lane 3 a copy of `z` (it is unused): a pair `(x, y)` and a broadcast `z` make
+        // it in one shuffle.
         // SAFETY: SSE2 is part of x86-64.
-        V4(unsafe { _mm_setr_ps(v.x, v.y, v.z, 0.0) })
+        V4(unsafe { _mm_setr_ps(v.x, v.y, v.z, v.z) })
     }
 
     #[inline(always)]
@@ -242,17 +245,22 @@ impl Momentum<f32> for V4 {
 
     #[inline(always)]
     fn norm2(self) -> f32 {
-        // `(x x + y y) + (z z + 0)`: `V::dot`'s `(x x + y y) + z z`, as `z z + 0` is `z z`
-        // (it is not `-0`).
+        // `(x x + y y) + z z`, `V::dot`'s sums in its order.
         // SAFETY: SSE2 is part of x86-64.
         unsafe {
             let products = _mm_mul_ps(self.0, self.0);
-            let pairs = _mm_add_ps(
+            let xy = _mm_add_ss(
                 products,
-                _mm_shuffle_ps::<0b10_11_00_01>(products, products),
+                _mm_shuffle_ps::<0b01_01_01_01>(products, products),
             );
-            _mm_cvtss_f32(_mm_add_ss(pairs, _mm_movehl_ps(pairs, pairs)))
+            _mm_cvtss_f32(_mm_add_ss(xy, _mm_movehl_ps(products, products)))
         }
+    }
+
+    #[inline(always)]
+    fn scaled(self, s: f32) -> Self {
+        // SAFETY: SSE2 is part of x86-64.
+        V4(unsafe { _mm_mul_ps(_mm_set1_ps(s), self.0) })
     }
 }
 

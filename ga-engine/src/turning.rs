@@ -96,6 +96,8 @@ pub(crate) trait Momentum<R: Real>: Copy {
     fn add_scaled(self, s: R, t: Self) -> Self;
     /// `|self|^2`, as [`V::dot`].
     fn norm2(self) -> R;
+    /// `s self`, as [`V::scale_all`].
+    fn scaled(self, s: R) -> Self;
 }
 
 impl<R: Real> Momentum<R> for V<R> {
@@ -114,5 +116,9 @@ impl<R: Real> Momentum<R> for V<R> {
     #[inline(always)]
     fn norm2(self) -> R {
         self.dot(self)
+    }
+    #[inline(always)]
+    fn scaled(self, s: R) -> Self {
+        self.scale_all(s)
     }
 }
