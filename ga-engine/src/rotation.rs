@@ -296,9 +296,9 @@ impl<R: Real> Q<R> {
     }
 }
 
-#[cfg(test)]
 impl<R: Real> Q<R> {
-    /// The identity, for the unit tests.
+    /// The identity.
+    #[inline(always)]
     pub(crate) fn identity() -> Q<R> {
         let (zero, one) = (R::splat(0.0), R::splat(1.0));
         Q {

@@ -51,6 +51,14 @@ fn step_group<T: Precision, S: Parts<T>, G: Group<T, N>, const N: usize>(
     // values, not a loop filling arrays in memory: read back as one vector, such arrays
     // stall on store forwarding).
     let parts: [BodyParts<'_, T>; N] = core::array::from_fn(|i| group[i].parts());
+    let turned = G::pack_mask(core::array::from_fn(|i| parts[i].0.turned));
+    // A body whose frame is not turned has the identity there: the frames are gathered
+    // only for a group with a turned one (most bodies have none).
+    let frame = if G::any(turned) {
+        quaternion(|i| parts[i].0.frame)
+    } else {
+        Q::identity()
+    };
     let inertia = Inertia::<G> {
         moments: vector(|i| parts[i].0.moments),
         split: Split {
@@ -61,8 +69,8 @@ fn step_group<T: Precision, S: Parts<T>, G: Group<T, N>, const N: usize>(
             shift: lane(|i| parts[i].0.split.shift),
             reach: lane(|i| parts[i].0.split.reach),
         },
-        frame: quaternion(|i| parts[i].0.frame),
-        turned: G::pack_mask(core::array::from_fn(|i| parts[i].0.turned)),
+        frame,
+        turned,
         order: [0, 1, 2],
     };
     let (q0, l0, t0) = (
