@@ -14,7 +14,8 @@
 use core::arch::x86_64::{
     __m256, _mm256_add_ps, _mm256_and_ps, _mm256_andnot_ps, _mm256_cmp_ps, _mm256_div_ps,
     _mm256_max_ps, _mm256_min_ps, _mm256_movemask_ps, _mm256_mul_ps, _mm256_or_ps, _mm256_set1_ps,
-    _mm256_sqrt_ps, _mm256_sub_ps, _mm256_xor_ps, _CMP_LT_OQ,
+    _mm256_set_m128, _mm256_shuffle_ps, _mm256_sqrt_ps, _mm256_sub_ps, _mm256_unpackhi_ps,
+    _mm256_unpacklo_ps, _mm256_xor_ps, _mm_setr_ps, _CMP_LT_OQ,
 };
 use core::ops::{Add, Div, Mul, Neg, Sub};
 
@@ -127,5 +128,29 @@ impl Group<f32, 8> for F32x8 {
     fn unpack(self) -> [f32; 8] {
         // SAFETY: as in `pack`.
         unsafe { core::mem::transmute::<__m256, [f32; 8]>(self.0) }
+    }
+
+    #[inline(always)]
+    fn columns(rows: [[f32; 4]; 8]) -> [Self; 4] {
+        // Rows `i` and `i + 4` in the two halves of one register (each row one load
+        // where its values lie side by side), then a 4 x 4 transpose within each half:
+        // twelve shuffles for four columns, where filling lane by lane takes seven each.
+        // SAFETY: the caller has AVX (`F32x8` is stepped only inside `step_all_avx` and
+        // `step_blocks_avx`, which enable it).
+        unsafe {
+            let row = |i: usize| _mm_setr_ps(rows[i][0], rows[i][1], rows[i][2], rows[i][3]);
+            let pair = |i: usize| _mm256_set_m128(row(i + 4), row(i));
+            let (r0, r1, r2, r3) = (pair(0), pair(1), pair(2), pair(3));
+            // Per half: (r0_0, r1_0, r0_1, r1_1) and (r2_0, r3_0, r2_1, r3_1), then the
+            // same of values 2 and 3; each column takes two values from each.
+            let (t0, t1) = (_mm256_unpacklo_ps(r0, r1), _mm256_unpacklo_ps(r2, r3));
+            let (t2, t3) = (_mm256_unpackhi_ps(r0, r1), _mm256_unpackhi_ps(r2, r3));
+            [
+                F32x8(_mm256_shuffle_ps::<0b01_00_01_00>(t0, t1)),
+                F32x8(_mm256_shuffle_ps::<0b11_10_11_10>(t0, t1)),
+                F32x8(_mm256_shuffle_ps::<0b01_00_01_00>(t2, t3)),
+                F32x8(_mm256_shuffle_ps::<0b11_10_11_10>(t2, t3)),
+            ]
+        }
     }
 }

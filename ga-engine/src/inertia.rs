@@ -11,7 +11,10 @@ use super::split::{split_order, Split};
 /// Principal moments and the frame `p` (principal axes to the user's
 /// body frame: a body-frame vector is `p v p*` of its principal components), the axes in
 /// the free flow's split order (`split.rs`).
+/// `repr(C)`: its fields in this order, so that the slice form reads the reference
+/// moment and the split's constants as rows of four side by side (`slice.rs`).
 #[derive(Clone, Copy, Debug)]
+#[repr(C)]
 pub(crate) struct Inertia<R: Real> {
     /// `(I1, I2, I3)`, in the split's order.
     pub(crate) moments: V<R>,

@@ -246,6 +246,16 @@ pub(crate) trait Group<T, const N: usize>: Real {
     fn pack_mask(m: [bool; N]) -> Self::Mask;
     /// The lanes as an array, lane 0 first.
     fn unpack(self) -> [T; N];
+    /// Four lane vectors from `N` rows of four values (row `i` lane `i`'s): column `k` is
+    /// every row's value `k`. Lane by lane here; by transposing registers where a form
+    /// has them (AVX: a row is one load where its values lie side by side in memory).
+    #[inline(always)]
+    fn columns(rows: [[T; 4]; N]) -> [Self; 4]
+    where
+        T: Copy,
+    {
+        [0, 1, 2, 3].map(|k| Self::pack(core::array::from_fn(|i| rows[i][k])))
+    }
 }
 
 impl<T: Real<Mask = bool>, const N: usize> Group<T, N> for Lanes<T, N> {

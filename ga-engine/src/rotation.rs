@@ -14,8 +14,10 @@ use super::real::Real;
 /// momentum with a relative error below twice this, the size of rounding.
 pub(crate) const UNIT_SLACK: f64 = 16.0;
 
-/// A quaternion `w + x i + y j + z k`.
+/// A quaternion `w + x i + y j + z k`; `repr(C)`: `x, y, z, w` in this order (see
+/// [`Inertia`](super::inertia::Inertia)).
 #[derive(Clone, Copy, Debug)]
+#[repr(C)]
 pub(crate) struct Q<R> {
     pub(crate) x: R,
     pub(crate) y: R,
@@ -24,7 +26,9 @@ pub(crate) struct Q<R> {
 }
 
 /// A 3-vector.
+/// `repr(C)`: `x, y, z` in this order (see [`Inertia`](super::inertia::Inertia)).
 #[derive(Clone, Copy, Debug)]
+#[repr(C)]
 pub(crate) struct V<R> {
     pub(crate) x: R,
     pub(crate) y: R,

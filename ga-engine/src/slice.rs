@@ -59,24 +59,69 @@ fn step_group<T: Precision, S: Parts<T>, G: Group<T, N>, const N: usize>(
     } else {
         Q::identity()
     };
+    // Four values a row, each row's side by side in memory where the layout allows
+    // (`Inertia` is `repr(C)`: the split's constants follow the moments, then the
+    // frame; the torque follows the momentum in the states rustc lays out so far), so
+    // that a form with registers to transpose reads each row at once ([`Group::columns`]);
+    // the values a row only fills are not read.
+    let [q_x, q_y, q_z, q_w] = G::columns(core::array::from_fn(|i| {
+        let q = parts[i].1;
+        [q.x, q.y, q.z, q.w]
+    }));
+    let [moment, outer_rate, middle_rate, outer_cubic] = G::columns(core::array::from_fn(|i| {
+        let (m, s) = (parts[i].0.moments, &parts[i].0.split);
+        [m.z, s.outer_rate, s.middle_rate, s.outer_cubic]
+    }));
+    let [middle_cubic, shift, reach, _] = G::columns(core::array::from_fn(|i| {
+        let (s, frame) = (&parts[i].0.split, parts[i].0.frame);
+        [s.middle_cubic, s.shift, s.reach, frame.x]
+    }));
+    let [l_x, l_y, l_z, t_x] = G::columns(core::array::from_fn(|i| {
+        let (l, t) = (parts[i].2, parts[i].3);
+        [l.x, l.y, l.z, t.x]
+    }));
+    let [_, _, t_y, t_z] = G::columns(core::array::from_fn(|i| {
+        let (l, t) = (parts[i].2, parts[i].3);
+        [l.y, l.z, t.y, t.z]
+    }));
     let inertia = Inertia::<G> {
-        moments: vector(|i| parts[i].0.moments),
+        // The steps read only the reference moment `z` (the turn about `L`); the other
+        // two are the baselines' and the accessors'. The tests comparing a slice with
+        // one body at a time would tell if a step came to read them.
+        moments: V {
+            x: moment,
+            y: moment,
+            z: moment,
+        },
         split: Split {
-            outer_rate: lane(|i| parts[i].0.split.outer_rate),
-            middle_rate: lane(|i| parts[i].0.split.middle_rate),
-            outer_cubic: lane(|i| parts[i].0.split.outer_cubic),
-            middle_cubic: lane(|i| parts[i].0.split.middle_cubic),
-            shift: lane(|i| parts[i].0.split.shift),
-            reach: lane(|i| parts[i].0.split.reach),
+            outer_rate,
+            middle_rate,
+            outer_cubic,
+            middle_cubic,
+            shift,
+            reach,
         },
         frame,
         turned,
         order: [0, 1, 2],
     };
-    let (q0, l0, t0) = (
-        quaternion(|i| parts[i].1),
-        vector(|i| parts[i].2),
-        vector(|i| parts[i].3),
+    let q0 = Q {
+        x: q_x,
+        y: q_y,
+        z: q_z,
+        w: q_w,
+    };
+    let (l0, t0) = (
+        V {
+            x: l_x,
+            y: l_y,
+            z: l_z,
+        },
+        V {
+            x: t_x,
+            y: t_y,
+            z: t_z,
+        },
     );
     let h = G::pack([h; N]);
     let (qn, ln) = match order {
@@ -108,16 +153,6 @@ fn step_group<T: Precision, S: Parts<T>, G: Group<T, N>, const N: usize>(
 #[inline(always)]
 fn lane<T, G: Group<T, N>, const N: usize>(f: impl Fn(usize) -> T) -> G {
     G::pack(core::array::from_fn(f))
-}
-
-/// A vector of lanes, `f(i)` the vector of lane `i`.
-#[inline(always)]
-fn vector<T: Copy, G: Group<T, N>, const N: usize>(f: impl Fn(usize) -> V<T>) -> V<G> {
-    V {
-        x: lane(|i| f(i).x),
-        y: lane(|i| f(i).y),
-        z: lane(|i| f(i).z),
-    }
 }
 
 /// A quaternion of lanes, `f(i)` the quaternion of lane `i`.

@@ -25,7 +25,9 @@ const MAX_CUBIC_TERM: f64 = 1365.0;
 /// The per-body constants of the free flow for the principal axes in the split's order:
 /// outer `x`, middle `y`, reference `z` (the turn about `L` takes its rate from the
 /// inverse moments, `k_r / 2`). Kept small: a slice of bodies streams them every step.
+/// `repr(C)`: the fields in this order (see [`Inertia`](super::inertia::Inertia)).
 #[derive(Clone, Copy, Debug)]
+#[repr(C)]
 pub(crate) struct Split<R> {
     /// `alpha / 4`: times `h`, the rate of the outer turns (over `h/2` each).
     pub(crate) outer_rate: R,
