@@ -12,10 +12,11 @@
 //! before it is called.
 
 use core::arch::x86_64::{
-    __m256, _mm256_add_ps, _mm256_and_ps, _mm256_andnot_ps, _mm256_cmp_ps, _mm256_div_ps,
-    _mm256_max_ps, _mm256_min_ps, _mm256_movemask_ps, _mm256_mul_ps, _mm256_or_ps, _mm256_set1_ps,
-    _mm256_set_m128, _mm256_shuffle_ps, _mm256_sqrt_ps, _mm256_sub_ps, _mm256_unpackhi_ps,
-    _mm256_unpacklo_ps, _mm256_xor_ps, _mm_setr_ps, _CMP_LT_OQ,
+    __m128, __m256, _mm256_add_ps, _mm256_and_ps, _mm256_andnot_ps, _mm256_castps256_ps128,
+    _mm256_cmp_ps, _mm256_div_ps, _mm256_extractf128_ps, _mm256_max_ps, _mm256_min_ps,
+    _mm256_movemask_ps, _mm256_mul_ps, _mm256_or_ps, _mm256_set1_ps, _mm256_set_m128,
+    _mm256_shuffle_ps, _mm256_sqrt_ps, _mm256_sub_ps, _mm256_unpackhi_ps, _mm256_unpacklo_ps,
+    _mm256_xor_ps, _mm_setr_ps, _CMP_LT_OQ,
 };
 use core::ops::{Add, Div, Mul, Neg, Sub};
 
@@ -151,6 +152,33 @@ impl Group<f32, 8> for F32x8 {
                 F32x8(_mm256_shuffle_ps::<0b01_00_01_00>(t2, t3)),
                 F32x8(_mm256_shuffle_ps::<0b11_10_11_10>(t2, t3)),
             ]
+        }
+    }
+
+    #[inline(always)]
+    fn rows(columns: [Self; 4]) -> [[f32; 4]; 8] {
+        // The same transpose within each half (it is its own inverse) gives rows `i` and
+        // `i + 4` in the halves of register `i`.
+        // SAFETY: as for `columns`.
+        unsafe {
+            let [c0, c1, c2, c3] = columns.map(|c| c.0);
+            let (t0, t1) = (_mm256_unpacklo_ps(c0, c1), _mm256_unpacklo_ps(c2, c3));
+            let (t2, t3) = (_mm256_unpackhi_ps(c0, c1), _mm256_unpackhi_ps(c2, c3));
+            let pairs = [
+                _mm256_shuffle_ps::<0b01_00_01_00>(t0, t1),
+                _mm256_shuffle_ps::<0b11_10_11_10>(t0, t1),
+                _mm256_shuffle_ps::<0b01_00_01_00>(t2, t3),
+                _mm256_shuffle_ps::<0b11_10_11_10>(t2, t3),
+            ];
+            let row = |r: __m128| core::mem::transmute::<__m128, [f32; 4]>(r);
+            core::array::from_fn(|i| {
+                let pair = pairs[i % 4];
+                if i < 4 {
+                    row(_mm256_castps256_ps128(pair))
+                } else {
+                    row(_mm256_extractf128_ps::<1>(pair))
+                }
+            })
         }
     }
 }

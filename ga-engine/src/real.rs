@@ -256,6 +256,15 @@ pub(crate) trait Group<T, const N: usize>: Real {
     {
         [0, 1, 2, 3].map(|k| Self::pack(core::array::from_fn(|i| rows[i][k])))
     }
+    /// The inverse of [`Group::columns`]: `N` rows of four values from four lane vectors.
+    #[inline(always)]
+    fn rows(columns: [Self; 4]) -> [[T; 4]; N]
+    where
+        T: Copy,
+    {
+        let columns = columns.map(Self::unpack);
+        core::array::from_fn(|i| [0, 1, 2, 3].map(|k| columns[k][i]))
+    }
 }
 
 impl<T: Real<Mask = bool>, const N: usize> Group<T, N> for Lanes<T, N> {

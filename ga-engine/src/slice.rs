@@ -128,22 +128,21 @@ fn step_group<T: Precision, S: Parts<T>, G: Group<T, N>, const N: usize>(
         Order::Two => super::splitting::step2(&inertia, q0, l0, t0, h),
         Order::Four => super::splitting::step4(&inertia, q0, l0, t0, h),
     };
-    let (qn, ln) = (
-        [qn.x, qn.y, qn.z, qn.w].map(G::unpack),
-        [ln.x, ln.y, ln.z].map(G::unpack),
-    );
-    for (i, state) in group.iter_mut().enumerate() {
+    // Back as rows of four, transposed in registers where the form has them.
+    let q_rows = G::rows([qn.x, qn.y, qn.z, qn.w]);
+    let l_rows = G::rows([ln.x, ln.y, ln.z, ln.z]);
+    for ((state, q), l) in group.iter_mut().zip(q_rows).zip(l_rows) {
         state.store(
             Q {
-                x: qn[0][i],
-                y: qn[1][i],
-                z: qn[2][i],
-                w: qn[3][i],
+                x: q[0],
+                y: q[1],
+                z: q[2],
+                w: q[3],
             },
             V {
-                x: ln[0][i],
-                y: ln[1][i],
-                z: ln[2][i],
+                x: l[0],
+                y: l[1],
+                z: l[2],
             },
         );
     }
