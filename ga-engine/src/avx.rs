@@ -131,7 +131,9 @@ impl Group<f32, 8> for F32x8 {
         unsafe { core::mem::transmute::<__m256, [f32; 8]>(self.0) }
     }
 
-    #[inline(always)]
+    // Inlined only when optimised (see "Unoptimised builds" in `splitting.rs`).
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn columns(rows: [[f32; 4]; 8]) -> [Self; 4] {
         // Rows `i` and `i + 4` in the two halves of one register (each row one load
         // where its values lie side by side), then a 4 x 4 transpose within each half:
@@ -155,7 +157,9 @@ impl Group<f32, 8> for F32x8 {
         }
     }
 
-    #[inline(always)]
+    // Inlined only when optimised (see "Unoptimised builds" in `splitting.rs`).
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn rows(columns: [Self; 4]) -> [[f32; 4]; 8] {
         // The same transpose within each half (it is its own inverse) gives rows `i` and
         // `i + 4` in the halves of register `i`.

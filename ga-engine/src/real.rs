@@ -159,7 +159,10 @@ hidden!(hidden64, f64);
 scalar_real!(f32, sqrt32, hidden32);
 scalar_real!(f64, sqrt64, hidden64);
 
-/// `N` floats stepped side by side, each exactly as the scalar would be.
+/// `N` floats stepped side by side, each exactly as the scalar would be. Its operations
+/// are inlined only when optimised: unoptimised, each inlined operation's loop keeps its
+/// iterators in the caller's frame, and the slice form's free flow needed over 100 KiB
+/// (see "Unoptimised builds" in `splitting.rs`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[repr(transparent)]
 pub(crate) struct Lanes<T, const N: usize>(pub(crate) [T; N]);
@@ -168,7 +171,8 @@ macro_rules! lane_op {
     ($trait:ident, $method:ident, $op:tt) => {
         impl<T: Real, const N: usize> $trait for Lanes<T, N> {
             type Output = Self;
-            #[inline(always)]
+            #[cfg_attr(not(debug_assertions), inline(always))]
+            #[cfg_attr(debug_assertions, inline)]
             fn $method(self, other: Self) -> Self {
                 let mut out = self.0;
                 for (o, b) in out.iter_mut().zip(other.0) {
@@ -186,7 +190,8 @@ lane_op!(Div, div, /);
 
 impl<T: Real, const N: usize> Neg for Lanes<T, N> {
     type Output = Self;
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn neg(self) -> Self {
         Lanes(self.0.map(|x| -x))
     }
@@ -195,15 +200,18 @@ impl<T: Real, const N: usize> Neg for Lanes<T, N> {
 impl<T: Real<Mask = bool>, const N: usize> Real for Lanes<T, N> {
     type Mask = [bool; N];
     const EPSILON: f64 = T::EPSILON;
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn splat(x: f64) -> Self {
         Lanes([T::splat(x); N])
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn sqrt(self) -> Self {
         Lanes(self.0.map(T::sqrt))
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn lt(self, other: Self) -> [bool; N] {
         let mut m = [false; N];
         for ((m, a), b) in m.iter_mut().zip(self.0).zip(other.0) {
@@ -211,7 +219,8 @@ impl<T: Real<Mask = bool>, const N: usize> Real for Lanes<T, N> {
         }
         m
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn select(mask: [bool; N], yes: Self, no: Self) -> Self {
         let mut out = no.0;
         for ((o, m), y) in out.iter_mut().zip(mask).zip(yes.0) {
@@ -219,15 +228,18 @@ impl<T: Real<Mask = bool>, const N: usize> Real for Lanes<T, N> {
         }
         Lanes(out)
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn any(mask: [bool; N]) -> bool {
         mask.iter().any(|&m| m)
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn all(mask: [bool; N]) -> bool {
         mask.iter().all(|&m| m)
     }
-    #[inline(always)]
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn and(a: [bool; N], b: [bool; N]) -> [bool; N] {
         let mut out = a;
         for (o, m) in out.iter_mut().zip(b) {
@@ -249,7 +261,9 @@ pub(crate) trait Group<T, const N: usize>: Real {
     /// Four lane vectors from `N` rows of four values (row `i` lane `i`'s): column `k` is
     /// every row's value `k`. Lane by lane here; by transposing registers where a form
     /// has them (AVX: a row is one load where its values lie side by side in memory).
-    #[inline(always)]
+    // Inlined only when optimised (see "Unoptimised builds" in `splitting.rs`).
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn columns(rows: [[T; 4]; N]) -> [Self; 4]
     where
         T: Copy,
@@ -257,7 +271,9 @@ pub(crate) trait Group<T, const N: usize>: Real {
         [0, 1, 2, 3].map(|k| Self::pack(core::array::from_fn(|i| rows[i][k])))
     }
     /// The inverse of [`Group::columns`]: `N` rows of four values from four lane vectors.
-    #[inline(always)]
+    // Inlined only when optimised (see "Unoptimised builds" in `splitting.rs`).
+    #[cfg_attr(not(debug_assertions), inline(always))]
+    #[cfg_attr(debug_assertions, inline)]
     fn rows(columns: [Self; 4]) -> [[T; 4]; N]
     where
         T: Copy,

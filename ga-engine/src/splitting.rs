@@ -19,7 +19,9 @@
 //! optimiser sees one body's (or one lane group's) whole chain, but unoptimised, each
 //! inlined temporary keeps its own stack slot, and the slice form's AVX loop had a frame
 //! of over a megabyte (its fourth order two: a test thread's 2 MiB stack overflowed).
-//! With debug assertions on, the turns and free flows are ordinary functions instead.
+//! With debug assertions on, the turns, the free flows and each order's step are ordinary
+//! functions instead (CI's tests build through clippy, which also turns MIR's own
+//! optimisations off, so their frames are larger still than a plain `cargo test`'s).
 
 use super::free_flow::{free_flow_from, free_flow_normalized};
 use super::inertia::Inertia;
@@ -29,7 +31,10 @@ use super::turning::{Momentum, Turning};
 
 /// One second-order step of `h`: body orientation `q` (body to world), world momentum
 /// `l`, world torque `t` held over the step.
-#[inline(always)]
+// Inlined only when optimised (see "Unoptimised builds" above): unoptimised, the slice
+// form's loop would hold the stack slots of both orders at once.
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline)]
 pub(crate) fn step2<R: Real>(
     inertia: &Inertia<R>,
     q: Q<R>,
@@ -172,7 +177,10 @@ const G0: f64 = 1.0 - 2.0 * G1;
 
 /// One fourth-order step of `h`: three second-order steps of `g1 h, g0 h, g1 h`, their
 /// adjacent half-kicks merged into one.
-#[inline(always)]
+// Inlined only when optimised (see "Unoptimised builds" above): unoptimised, the slice
+// form's loop would hold the stack slots of both orders at once.
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline)]
 pub(crate) fn step4<R: Real>(
     inertia: &Inertia<R>,
     q: Q<R>,
