@@ -86,11 +86,12 @@ fn step_group<T: Precision, S: Parts<T>, G: Group<T, N>, const N: usize>(
     }));
     let inertia = Inertia::<G> {
         // The steps read only the reference moment `z` (the turn about `L`); the other
-        // two are the baselines' and the accessors'. The tests comparing a slice with
-        // one body at a time would tell if a step came to read them.
+        // two are the baselines' and the accessors', not gathered. NaN, not a plausible
+        // value, so that a step that came to read them would fail the tests comparing a
+        // slice with one body at a time loudly.
         moments: V {
-            x: moment,
-            y: moment,
+            x: G::splat(f64::NAN),
+            y: G::splat(f64::NAN),
             z: moment,
         },
         split: Split {
