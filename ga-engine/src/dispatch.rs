@@ -1,9 +1,12 @@
 //! Which group width steps a slice: for `f32` on x86-64, eight bodies in one AVX register
 //! where the CPU has AVX (checked at run time with `std`, or enabled at compile time),
-//! else four; for `f64`, four. Every width gives each body the bits it gets alone.
+//! else four; for `f64`, four, in one AVX register where the CPU has AVX. Every width and
+//! form gives each body the bits it gets alone.
 
 #[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
 use super::avx::F32x8;
+#[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
+use super::avx64::F64x4;
 #[cfg(feature = "columns")]
 use super::blocks::Block;
 use super::parts::{Order, Parts};
@@ -95,18 +98,64 @@ fn step_half(block: &mut Block<f32, 8>, from: usize, h: f32, order: Order) {
     block.step_lanes::<Lanes<f32, 4>, 4>(from, h, order);
 }
 
-/// Every block of `f64` bodies, four lanes at a time.
+/// Every block of `f64` bodies, four lanes in one AVX register.
+///
+/// # Safety
+/// The CPU must have AVX ([`avx_available`]).
+#[cfg(all(
+    feature = "columns",
+    target_arch = "x86_64",
+    any(feature = "std", target_feature = "avx")
+))]
+#[target_feature(enable = "avx")]
+unsafe fn step_blocks_avx64(blocks: &mut [Block<f64, 4>], h: f64, order: Order) {
+    for block in blocks {
+        block.step_lanes::<F64x4, 4>(0, h, order);
+    }
+}
+
+/// Every block of `f64` bodies, four lanes at a time: in one AVX register where the CPU
+/// has AVX, else in two SSE registers a value. Both give each body the bits it gets alone.
 #[cfg(feature = "columns")]
 #[inline(always)]
 pub(crate) fn step_blocks_f64(blocks: &mut [Block<f64, 4>], h: f64, order: Order) {
+    #[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
+    {
+        if avx_available() {
+            // SAFETY: the CPU has AVX (checked just above).
+            unsafe { step_blocks_avx64(blocks, h, order) };
+            return;
+        }
+    }
     for block in blocks {
         block.step_lanes::<Lanes<f64, 4>, 4>(0, h, order);
     }
 }
 
-/// Every f64 body of `states`, four at a time.
+/// Every `f64` body of `states`, four at a time in one AVX register.
+///
+/// # Safety
+/// The CPU must have AVX ([`avx_available`]).
+#[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
+#[target_feature(enable = "avx")]
+unsafe fn step_all_avx64<S: Parts<f64>>(states: &mut [S], h: f64, order: Order) {
+    slice::step_all::<f64, S, F64x4, 4>(states, h, order);
+}
+
+/// Every f64 body of `states`, four at a time: in one AVX register where the CPU has AVX
+/// (without it, LLVM stepped part of the lanes with scalar instructions: the slice took
+/// longer than one body at a time), else in arrays of four. Both give each body the bits
+/// it gets alone.
 #[inline(always)]
 pub(crate) fn step_all_f64<S: Parts<f64>>(states: &mut [S], h: f64, order: Order) {
+    #[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
+    {
+        if avx_available() {
+            // SAFETY: the CPU has AVX (checked just above).
+            unsafe { step_all_avx64(states, h, order) };
+            return;
+        }
+    }
     slice::step_all::<f64, S, Lanes<f64, 4>, 4>(states, h, order);
 }
 
@@ -246,16 +295,99 @@ mod tests {
         // Both forms of the turns in one group: projective (small momenta) and divided
         // (with its clamps); each lane must get the form one body alone gets.
         widths_against_one_body(crowd_of_size(&[1.0, 300.0, 1e5]), h32, 50);
-        // f64, order 4, four lanes.
-        let mut alone = crowd::<f64>(21);
-        let mut four = alone.clone();
-        for _ in 0..50 {
-            for body in &mut alone {
-                step_one(body, 0.01, Order::Four);
+        // f64, order 2 and 4, four lanes in arrays and (with AVX) in one register: both
+        // forms of the turns in one group, and the divided form's clamps among the lanes
+        // (momenta whose squares overflow, near the largest f64).
+        let sized = |sizes: &[f64]| {
+            let mut bodies = crowd::<f64>(21);
+            for (i, body) in bodies.iter_mut().enumerate() {
+                let size = sizes[i % sizes.len()];
+                body.l = V {
+                    x: size,
+                    y: -size,
+                    z: 0.5 * size,
+                };
             }
-            step_all::<f64, _, Lanes<f64, 4>, 4>(&mut four, 0.01, Order::Four);
+            bodies
+        };
+        let wide = sized(&[1.0, 300.0, 1e5, 1e20, 1e200, 1e307]);
+        for (start, h, order) in [
+            (crowd::<f64>(21), 0.01, Order::Four),
+            (crowd::<f64>(21), 0.01, Order::Two),
+            (sized(&[1.0, 300.0, 1e5]), 1.0 / 60.0, Order::Two),
+            (wide.clone(), 10.0, Order::Two),
+            (wide, 1e160, Order::Two),
+        ] {
+            let mut alone = start;
+            let mut four = alone.clone();
+            #[cfg(target_arch = "x86_64")]
+            let mut avx = alone.clone();
+            for _ in 0..50 {
+                for body in &mut alone {
+                    step_one(body, h, order);
+                }
+                step_all::<f64, _, Lanes<f64, 4>, 4>(&mut four, h, order);
+                #[cfg(target_arch = "x86_64")]
+                if avx_available() {
+                    // SAFETY: the CPU has AVX (checked just above).
+                    unsafe { step_all_avx64(&mut avx, h, order) };
+                }
+            }
+            assert_eq!(bits(&alone), bits(&four));
+            #[cfg(target_arch = "x86_64")]
+            if avx_available() {
+                assert_eq!(bits(&alone), bits(&avx));
+            }
         }
-        assert_eq!(bits(&alone), bits(&four));
+    }
+
+    /// Blocks of four f64 bodies stepped in arrays and (with AVX) in one register: each
+    /// body's bits stepped alone, order 2 and 4, with turned frames among the lanes.
+    #[cfg(feature = "columns")]
+    #[test]
+    fn every_f64_block_form_gives_the_bits_of_one_body_at_a_time() {
+        let mut alone = crowd::<f64>(8);
+        let lane = |b: &Body<f64>| (b.inertia, b.q, b.l, b.t);
+        let mut blocks: Vec<Block<f64, 4>> = alone
+            .chunks(4)
+            .map(|bodies| {
+                let mut block = Block::filled(&lane(&bodies[0]));
+                for (i, b) in bodies.iter().enumerate() {
+                    block.set(i, &lane(b));
+                }
+                block
+            })
+            .collect();
+        #[cfg(target_arch = "x86_64")]
+        let mut avx = blocks.clone();
+        for order in [Order::Two, Order::Four] {
+            for _ in 0..20 {
+                for body in &mut alone {
+                    step_one(body, 0.01, order);
+                }
+                for block in &mut blocks {
+                    block.step_lanes::<Lanes<f64, 4>, 4>(0, 0.01, order);
+                }
+                #[cfg(target_arch = "x86_64")]
+                if avx_available() {
+                    // SAFETY: the CPU has AVX (checked just above).
+                    unsafe { step_blocks_avx64(&mut avx, 0.01, order) };
+                }
+            }
+            let read = |blocks: &[Block<f64, 4>]| -> Vec<Body<f64>> {
+                (0..8)
+                    .map(|i| {
+                        let (inertia, q, l, t) = blocks[i / 4].get(i % 4);
+                        Body { inertia, q, l, t }
+                    })
+                    .collect()
+            };
+            assert_eq!(bits(&alone), bits(&read(&blocks)));
+            #[cfg(target_arch = "x86_64")]
+            if avx_available() {
+                assert_eq!(bits(&alone), bits(&read(&avx)));
+            }
+        }
     }
 
     /// A block of eight f32 bodies stepped as two groups of four (the form without AVX)

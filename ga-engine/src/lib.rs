@@ -114,6 +114,8 @@ mod columns;
 mod api;
 #[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
 mod avx;
+#[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
+mod avx64;
 #[cfg(feature = "columns")]
 mod blocks;
 mod dispatch;

@@ -193,7 +193,13 @@ impl<T: Real, const N: usize> Neg for Lanes<T, N> {
     #[cfg_attr(not(debug_assertions), inline(always))]
     #[cfg_attr(debug_assertions, inline)]
     fn neg(self) -> Self {
-        Lanes(self.0.map(|x| -x))
+        // A loop, as the other lane operations: `array::map` was left out of line in the
+        // f64 slice step (a call a lane vector, its lanes through memory).
+        let mut out = self.0;
+        for o in &mut out {
+            *o = -*o;
+        }
+        Lanes(out)
     }
 }
 
@@ -208,7 +214,12 @@ impl<T: Real<Mask = bool>, const N: usize> Real for Lanes<T, N> {
     #[cfg_attr(not(debug_assertions), inline(always))]
     #[cfg_attr(debug_assertions, inline)]
     fn sqrt(self) -> Self {
-        Lanes(self.0.map(T::sqrt))
+        // A loop, not `array::map` (see `neg`).
+        let mut out = self.0;
+        for o in &mut out {
+            *o = o.sqrt();
+        }
+        Lanes(out)
     }
     #[cfg_attr(not(debug_assertions), inline(always))]
     #[cfg_attr(debug_assertions, inline)]
@@ -268,7 +279,9 @@ pub(crate) trait Group<T, const N: usize>: Real {
     where
         T: Copy,
     {
-        [0, 1, 2, 3].map(|k| Self::pack(core::array::from_fn(|i| rows[i][k])))
+        // Indexed, not `array::map`: that was left out of line in the f64 slice step.
+        let column = |k: usize| Self::pack(core::array::from_fn(|i| rows[i][k]));
+        [column(0), column(1), column(2), column(3)]
     }
     /// The inverse of [`Group::columns`]: `N` rows of four values from four lane vectors.
     // Inlined only when optimised (see "Unoptimised builds" in `splitting.rs`).
@@ -278,8 +291,10 @@ pub(crate) trait Group<T, const N: usize>: Real {
     where
         T: Copy,
     {
-        let columns = columns.map(Self::unpack);
-        core::array::from_fn(|i| [0, 1, 2, 3].map(|k| columns[k][i]))
+        // Indexed, not `array::map` (see `columns`).
+        let [a, b, c, d] = columns;
+        let columns = [a.unpack(), b.unpack(), c.unpack(), d.unpack()];
+        core::array::from_fn(|i| [columns[0][i], columns[1][i], columns[2][i], columns[3][i]])
     }
 }
 

@@ -20,9 +20,9 @@
 //! slice form and other targets run; a unit test in `splitting.rs` compares them.
 
 use core::arch::x86_64::{
-    __m128, _mm_add_ps, _mm_add_ss, _mm_cvtss_f32, _mm_div_ps, _mm_movehl_ps, _mm_movelh_ps, _mm_set_ss, _mm_mul_ps,
-    _mm_set1_ps, _mm_setr_ps, _mm_shuffle_ps, _mm_storeu_ps, _mm_sub_ps, _mm_unpackhi_ps,
-    _mm_unpacklo_ps, _mm_xor_ps,
+    __m128, _mm_add_ps, _mm_add_ss, _mm_cvtss_f32, _mm_div_ps, _mm_movehl_ps, _mm_movelh_ps,
+    _mm_mul_ps, _mm_set1_ps, _mm_set_ss, _mm_setr_ps, _mm_shuffle_ps, _mm_storeu_ps, _mm_sub_ps,
+    _mm_unpackhi_ps, _mm_unpacklo_ps, _mm_xor_ps,
 };
 
 use super::real::Real;
