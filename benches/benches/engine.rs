@@ -5,11 +5,17 @@
 //!   Euler step written here directly on glam, the way an engine writes it
 //!   (`glam_explicit_euler`). Targets: `step` at most 1.5x `glam_explicit_euler`.
 //!   `step_framed`: the same bodies with their moments given in another order, which
-//!   the step reaches through a frame (two quaternion products more).
+//!   the step reaches through a frame (two quaternion products more). `step_tensor`: the
+//!   same bodies built from their inertia tensors turned by a seeded rotation (a body from a
+//!   mesh or a rotated collider: a general frame), against the same Euler step on glam with
+//!   the body-frame tensor and its inverse as `Mat3` (`glam_explicit_euler_tensor`).
 //! - `engine/f32/slice`: the same 1024 bodies by `step_slice` (eight lanes with AVX, else
 //!   four) on `BodyState`s, and by `BodyColumns::step` (the column store: each component of
 //!   eight bodies side by side, as the lanes take them). Targets (issue 36): at most
 //!   0.4x `glam_explicit_euler` per body.
+//! - `engine/f64/slice`: the same 1024 bodies in f64, one at a time (`step`), by
+//!   `step_slice` (four lanes, in one AVX register where the CPU has AVX) and by
+//!   `BodyColumns::step`.
 //! - `engine/f32/rayon`: 2^20 bodies by `par_step_slice` and `BodyColumns::par_step` on 1
 //!   and on all threads.
 //!
@@ -23,7 +29,7 @@ use ga_engine::f32::{
     explicit_gyroscopic_euler, implicit_gyroscopic_euler, par_step_slice, step, step_order4,
     step_slice, Body, BodyColumns, BodyState,
 };
-use ga_engine::glam::{Quat, Vec3};
+use ga_engine::glam::{DQuat, Mat3, Quat, Vec3};
 
 /// Bodies per batch.
 const BODIES: usize = 1024;
@@ -56,6 +62,23 @@ fn crowd_in_order(n: usize, order: [usize; 3]) -> Vec<BodyState> {
         .collect()
 }
 
+/// [`crowd`]'s bodies, each built from its inertia tensor turned by a seeded rotation
+/// (`R diag(I) R^T`), so that its principal frame is a general rotation; with the tensor.
+fn crowd_of_tensors(n: usize) -> Vec<(BodyState, Mat3)> {
+    let mut rng = ga_test_rng::Rng::new(0x2545_f491_4f6c_dd1d);
+    let mut next = move || rng.next_f32() - 0.5;
+    crowd(n)
+        .into_iter()
+        .map(|mut s| {
+            let turn = Quat::from_xyzw(next(), next(), next(), next()).normalize();
+            let r = Mat3::from_quat(turn);
+            let tensor = r * Mat3::from_diagonal(s.body.principal_moments()) * r.transpose();
+            s.body = Body::from_tensor(tensor).expect("positive");
+            (s, tensor)
+        })
+        .collect()
+}
+
 /// Explicit gyroscopic Euler on glam: body-frame Euler equations, then the orientation by
 /// the new world angular velocity, normalised. `i` principal moments (diagonal inertia).
 #[inline]
@@ -64,6 +87,26 @@ fn glam_explicit_euler(i: Vec3, inv_i: Vec3, q: Quat, w: Vec3, t: Vec3, h: f32) 
     let wb = q_inv * w;
     let tb = q_inv * t;
     let wb = wb + h * (tb - wb.cross(i * wb)) * inv_i;
+    let w = q * wb;
+    let q = (q + Quat::from_vec4((0.5 * h * w).extend(0.0)) * q).normalize();
+    (q, w)
+}
+
+/// [`glam_explicit_euler`] for a body whose tensor `i` (and its inverse) is a full matrix
+/// in the body frame, as an engine writes it for a body that is not in its principal axes.
+#[inline]
+fn glam_explicit_euler_tensor(
+    i: &Mat3,
+    inv_i: &Mat3,
+    q: Quat,
+    w: Vec3,
+    t: Vec3,
+    h: f32,
+) -> (Quat, Vec3) {
+    let q_inv = q.conjugate();
+    let wb = q_inv * w;
+    let tb = q_inv * t;
+    let wb = wb + h * (*inv_i * (tb - wb.cross(*i * wb)));
     let w = q * wb;
     let q = (q + Quat::from_vec4((0.5 * h * w).extend(0.0)) * q).normalize();
     (q, w)
@@ -122,6 +165,34 @@ fn engine(c: &mut Criterion) {
             black_box(&ql);
         });
     });
+    let (tensors, matrices): (Vec<BodyState>, Vec<(Mat3, Mat3)>) = crowd_of_tensors(BODIES)
+        .into_iter()
+        .map(|(s, i)| (s, (i, i.inverse())))
+        .unzip();
+    g.bench_function("glam_explicit_euler_tensor", |b| {
+        let mut qw: Vec<(Quat, Vec3)> = tensors
+            .iter()
+            .map(|s| (s.orientation, s.angular_velocity()))
+            .collect();
+        b.iter(|| {
+            for ((q, w), (s, (i, inv))) in qw.iter_mut().zip(tensors.iter().zip(&matrices)) {
+                (*q, *w) = glam_explicit_euler_tensor(i, inv, *q, *w, s.torque, black_box(DT));
+            }
+            black_box(&qw);
+        });
+    });
+    g.bench_function("step_tensor", |b| {
+        let mut ql: Vec<(Quat, Vec3)> = tensors
+            .iter()
+            .map(|s| (s.orientation, s.angular_momentum))
+            .collect();
+        b.iter(|| {
+            for ((q, l), s) in ql.iter_mut().zip(&tensors) {
+                (*q, *l) = step(&s.body, *q, *l, s.torque, black_box(DT));
+            }
+            black_box(&ql);
+        });
+    });
     g.bench_function("step_order4", |b| {
         let mut ql: Vec<(Quat, Vec3)> = states
             .iter()
@@ -171,6 +242,40 @@ fn engine(c: &mut Criterion) {
     g.bench_function("body_columns_step", |b| {
         let mut bodies: BodyColumns = states.iter().copied().collect();
         b.iter(|| black_box(&mut bodies).step(black_box(DT)));
+    });
+    g.finish();
+
+    let wide: Vec<ga_engine::f64::BodyState> = states
+        .iter()
+        .map(|s| {
+            let m = s.body.principal_moments().as_dvec3();
+            let body = ga_engine::f64::Body::from_principal(m, DQuat::IDENTITY).expect("positive");
+            let mut w = ga_engine::f64::BodyState::new(
+                body,
+                s.orientation.as_dquat().normalize(),
+                s.angular_momentum.as_dvec3(),
+            );
+            w.torque = s.torque.as_dvec3();
+            w
+        })
+        .collect();
+    let mut g = c.benchmark_group("engine/f64/slice");
+    g.throughput(Throughput::Elements(BODIES as u64));
+    g.bench_function("step", |b| {
+        let mut s = wide.clone();
+        b.iter(|| {
+            for s in black_box(&mut s).iter_mut() {
+                s.step(black_box(1.0 / 60.0));
+            }
+        });
+    });
+    g.bench_function("step_slice", |b| {
+        let mut s = wide.clone();
+        b.iter(|| ga_engine::f64::step_slice(black_box(&mut s), black_box(1.0 / 60.0)));
+    });
+    g.bench_function("body_columns_step", |b| {
+        let mut bodies: ga_engine::f64::BodyColumns = wide.iter().copied().collect();
+        b.iter(|| black_box(&mut bodies).step(black_box(1.0 / 60.0)));
     });
     g.finish();
 
