@@ -341,15 +341,12 @@ mod tests {
         }
     }
 
-    /// Blocks of four f64 bodies stepped in arrays and (with AVX) in one register: each
-    /// body's bits stepped alone, order 2 and 4, with turned frames among the lanes.
+    /// `bodies` in blocks of `N` lanes.
     #[cfg(feature = "columns")]
-    #[test]
-    fn every_f64_block_form_gives_the_bits_of_one_body_at_a_time() {
-        let mut alone = crowd::<f64>(8);
-        let lane = |b: &Body<f64>| (b.inertia, b.q, b.l, b.t);
-        let mut blocks: Vec<Block<f64, 4>> = alone
-            .chunks(4)
+    fn blocks_of<T: Precision, const N: usize>(bodies: &[Body<T>]) -> Vec<Block<T, N>> {
+        let lane = |b: &Body<T>| (b.inertia, b.q, b.l, b.t);
+        bodies
+            .chunks(N)
             .map(|bodies| {
                 let mut block = Block::filled(&lane(&bodies[0]));
                 for (i, b) in bodies.iter().enumerate() {
@@ -357,7 +354,27 @@ mod tests {
                 }
                 block
             })
-            .collect();
+            .collect()
+    }
+
+    /// The first `n` bodies of `blocks`.
+    #[cfg(feature = "columns")]
+    fn bodies_of<T: Precision, const N: usize>(blocks: &[Block<T, N>], n: usize) -> Vec<Body<T>> {
+        (0..n)
+            .map(|i| {
+                let (inertia, q, l, t) = blocks[i / N].get(i % N);
+                Body { inertia, q, l, t }
+            })
+            .collect()
+    }
+
+    /// Blocks of four f64 bodies stepped in arrays and (with AVX) in one register: each
+    /// body's bits stepped alone, order 2 and 4, with turned frames among the lanes.
+    #[cfg(feature = "columns")]
+    #[test]
+    fn every_f64_block_form_gives_the_bits_of_one_body_at_a_time() {
+        let mut alone = crowd::<f64>(8);
+        let mut blocks = blocks_of::<f64, 4>(&alone);
         #[cfg(target_arch = "x86_64")]
         let mut avx = blocks.clone();
         for order in [Order::Two, Order::Four] {
@@ -374,18 +391,10 @@ mod tests {
                     unsafe { step_blocks_avx64(&mut avx, 0.01, order) };
                 }
             }
-            let read = |blocks: &[Block<f64, 4>]| -> Vec<Body<f64>> {
-                (0..8)
-                    .map(|i| {
-                        let (inertia, q, l, t) = blocks[i / 4].get(i % 4);
-                        Body { inertia, q, l, t }
-                    })
-                    .collect()
-            };
-            assert_eq!(bits(&alone), bits(&read(&blocks)));
+            assert_eq!(bits(&alone), bits(&bodies_of(&blocks, 8)));
             #[cfg(target_arch = "x86_64")]
             if avx_available() {
-                assert_eq!(bits(&alone), bits(&read(&avx)));
+                assert_eq!(bits(&alone), bits(&bodies_of(&avx, 8)));
             }
         }
     }
@@ -402,17 +411,7 @@ mod tests {
         ] {
             let mut alone = crowd_of_size(sizes);
             alone.truncate(16);
-            let lane = |b: &Body<f32>| (b.inertia, b.q, b.l, b.t);
-            let mut blocks: Vec<Block<f32, 8>> = alone
-                .chunks(8)
-                .map(|bodies| {
-                    let mut block = Block::filled(&lane(&bodies[0]));
-                    for (i, b) in bodies.iter().enumerate() {
-                        block.set(i, &lane(b));
-                    }
-                    block
-                })
-                .collect();
+            let mut blocks = blocks_of::<f32, 8>(&alone);
             #[cfg(target_arch = "x86_64")]
             let mut eight = blocks.clone();
             for order in [Order::Two, Order::Four] {
@@ -430,18 +429,10 @@ mod tests {
                         unsafe { step_blocks_avx(&mut eight, h, order) };
                     }
                 }
-                let read = |blocks: &[Block<f32, 8>]| -> Vec<Body<f32>> {
-                    (0..16)
-                        .map(|i| {
-                            let (inertia, q, l, t) = blocks[i / 8].get(i % 8);
-                            Body { inertia, q, l, t }
-                        })
-                        .collect()
-                };
-                assert_eq!(bits(&alone), bits(&read(&blocks)));
+                assert_eq!(bits(&alone), bits(&bodies_of(&blocks, 16)));
                 #[cfg(target_arch = "x86_64")]
                 if avx_available() {
-                    assert_eq!(bits(&alone), bits(&read(&eight)));
+                    assert_eq!(bits(&alone), bits(&bodies_of(&eight, 16)));
                 }
             }
         }
