@@ -12,6 +12,8 @@ use super::blocks::Block;
 use super::parts::{Order, Parts};
 use super::real::Lanes;
 use super::slice;
+#[cfg(target_arch = "x86_64")]
+use super::sse64::F64x2;
 
 /// Whether this CPU has AVX.
 #[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
@@ -142,10 +144,10 @@ unsafe fn step_all_avx64<S: Parts<f64>>(states: &mut [S], h: f64, order: Order) 
     slice::step_all::<f64, S, F64x4, 4>(states, h, order);
 }
 
-/// Every f64 body of `states`, four at a time: in one AVX register where the CPU has AVX
-/// (without it, LLVM stepped part of the lanes with scalar instructions: the slice took
-/// longer than one body at a time), else in arrays of four. Both give each body the bits
-/// it gets alone.
+/// Every f64 body of `states`: four at a time in one AVX register where the CPU has AVX,
+/// else two at a time in one SSE2 register on x86-64 (in arrays of four, LLVM stepped part
+/// of the lanes with scalar instructions: the slice took longer than one body at a time),
+/// else four at a time in arrays. All give each body the bits it gets alone.
 #[inline(always)]
 pub(crate) fn step_all_f64<S: Parts<f64>>(states: &mut [S], h: f64, order: Order) {
     #[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
@@ -156,6 +158,9 @@ pub(crate) fn step_all_f64<S: Parts<f64>>(states: &mut [S], h: f64, order: Order
             return;
         }
     }
+    #[cfg(target_arch = "x86_64")]
+    slice::step_all::<f64, S, F64x2, 2>(states, h, order);
+    #[cfg(not(target_arch = "x86_64"))]
     slice::step_all::<f64, S, Lanes<f64, 4>, 4>(states, h, order);
 }
 
@@ -295,7 +300,8 @@ mod tests {
         // Both forms of the turns in one group: projective (small momenta) and divided
         // (with its clamps); each lane must get the form one body alone gets.
         widths_against_one_body(crowd_of_size(&[1.0, 300.0, 1e5]), h32, 50);
-        // f64, order 2 and 4, four lanes in arrays and (with AVX) in one register: both
+        // f64, order 2 and 4, four lanes in arrays, two in an SSE2 register and (with AVX)
+        // four in one register: both
         // forms of the turns in one group, and the divided form's clamps among the lanes
         // (momenta whose squares overflow, near the largest f64).
         let sized = |sizes: &[f64]| {
@@ -321,12 +327,14 @@ mod tests {
             let mut alone = start;
             let mut four = alone.clone();
             #[cfg(target_arch = "x86_64")]
-            let mut avx = alone.clone();
+            let (mut two, mut avx) = (alone.clone(), alone.clone());
             for _ in 0..50 {
                 for body in &mut alone {
                     step_one(body, h, order);
                 }
                 step_all::<f64, _, Lanes<f64, 4>, 4>(&mut four, h, order);
+                #[cfg(target_arch = "x86_64")]
+                step_all::<f64, _, F64x2, 2>(&mut two, h, order);
                 #[cfg(target_arch = "x86_64")]
                 if avx_available() {
                     // SAFETY: the CPU has AVX (checked just above).
@@ -334,6 +342,8 @@ mod tests {
                 }
             }
             assert_eq!(bits(&alone), bits(&four));
+            #[cfg(target_arch = "x86_64")]
+            assert_eq!(bits(&alone), bits(&two));
             #[cfg(target_arch = "x86_64")]
             if avx_available() {
                 assert_eq!(bits(&alone), bits(&avx));

@@ -69,9 +69,9 @@
 //! order: no fused multiply-add (Rust never contracts `a * b + c`, with or without
 //! `-C target-cpu=native`), no `sin`/`cos` at all (rational turns), no reassociation. The
 //! one run-time CPU check is the slice forms': with AVX an f32 slice steps eight bodies in
-//! one register instead of four, an f64 slice its four in one register instead of two, each
-//! lane doing the scalar's operations in the scalar's order, so the bits are the same
-//! either way (unit tests compare every form with one body at a time). So on every target where
+//! one register instead of four, an f64 slice four in one register instead of two in an
+//! SSE2 register, each lane doing the scalar's operations in the scalar's order, so the
+//! bits are the same either way (unit tests compare every form with one body at a time). So on every target where
 //! `f32`/`f64` are IEEE binary32/binary64 with round-to-nearest and no flush of
 //! subnormals (x86-64 with SSE2, AVX2 or AVX-512; AArch64; wasm32), the same inputs give
 //! the same bits, in the one-body, slice and parallel forms alike
@@ -138,6 +138,8 @@ mod split;
 mod splitting;
 #[cfg(target_arch = "x86_64")]
 mod sse;
+#[cfg(target_arch = "x86_64")]
+mod sse64;
 mod turning;
 
 pub use error::BodyError;
