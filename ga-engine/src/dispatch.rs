@@ -1,7 +1,8 @@
 //! Which group width steps a slice: for `f32` on x86-64, eight bodies in one AVX register
 //! where the CPU has AVX (checked at run time with `std`, or enabled at compile time),
-//! else four; for `f64`, four, in one AVX register where the CPU has AVX. Every width and
-//! form gives each body the bits it gets alone.
+//! else four; for `f64`, four in one AVX register where the CPU has AVX, else two in one
+//! SSE2 register on x86-64 (four in arrays elsewhere). Every width and form gives each
+//! body the bits it gets alone.
 
 #[cfg(all(target_arch = "x86_64", any(feature = "std", target_feature = "avx")))]
 use super::avx::F32x8;
@@ -117,7 +118,7 @@ unsafe fn step_blocks_avx64(blocks: &mut [Block<f64, 4>], h: f64, order: Order) 
 }
 
 /// Every block of `f64` bodies, four lanes at a time: in one AVX register where the CPU
-/// has AVX, else in two SSE registers a value. Both give each body the bits it gets alone.
+/// has AVX, else in arrays (columns load them whole, so arrays of four are fast there). Both give each body the bits it gets alone.
 #[cfg(feature = "columns")]
 #[inline(always)]
 pub(crate) fn step_blocks_f64(blocks: &mut [Block<f64, 4>], h: f64, order: Order) {
@@ -246,14 +247,14 @@ mod tests {
     }
 
     /// 21 bodies whose momenta take the sizes of `sizes` in turn.
-    fn crowd_of_size(sizes: &[f32]) -> Vec<Body<f32>> {
-        let mut bodies = crowd::<f32>(21);
+    fn crowd_of_size<T: Precision>(sizes: &[f64]) -> Vec<Body<T>> {
+        let mut bodies = crowd::<T>(21);
         for (i, body) in bodies.iter_mut().enumerate() {
             let size = sizes[i % sizes.len()];
             body.l = V {
-                x: size,
-                y: -size,
-                z: 0.5 * size,
+                x: T::splat(size),
+                y: T::splat(-size),
+                z: T::splat(0.5 * size),
             };
         }
         bodies
@@ -301,26 +302,14 @@ mod tests {
         // (with its clamps); each lane must get the form one body alone gets.
         widths_against_one_body(crowd_of_size(&[1.0, 300.0, 1e5]), h32, 50);
         // f64, order 2 and 4, four lanes in arrays, two in an SSE2 register and (with AVX)
-        // four in one register: both
-        // forms of the turns in one group, and the divided form's clamps among the lanes
-        // (momenta whose squares overflow, near the largest f64).
-        let sized = |sizes: &[f64]| {
-            let mut bodies = crowd::<f64>(21);
-            for (i, body) in bodies.iter_mut().enumerate() {
-                let size = sizes[i % sizes.len()];
-                body.l = V {
-                    x: size,
-                    y: -size,
-                    z: 0.5 * size,
-                };
-            }
-            bodies
-        };
-        let wide = sized(&[1.0, 300.0, 1e5, 1e20, 1e200, 1e307]);
+        // four in one register: both forms of the turns in one group, and the divided
+        // form's clamps among the lanes (momenta whose squares overflow, near the largest
+        // f64).
+        let wide = crowd_of_size::<f64>(&[1.0, 300.0, 1e5, 1e20, 1e200, 1e307]);
         for (start, h, order) in [
             (crowd::<f64>(21), 0.01, Order::Four),
             (crowd::<f64>(21), 0.01, Order::Two),
-            (sized(&[1.0, 300.0, 1e5]), 1.0 / 60.0, Order::Two),
+            (crowd_of_size(&[1.0, 300.0, 1e5]), 1.0 / 60.0, Order::Two),
             (wide.clone(), 10.0, Order::Two),
             (wide, 1e160, Order::Two),
         ] {
