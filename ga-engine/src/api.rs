@@ -138,7 +138,13 @@ macro_rules! precision_api {
         /// non-zero finite quaternion: it is stepped as the unit one (see "Orientations"
         /// in the crate docs; zero or NaN gives a NaN orientation).
         #[must_use]
-        #[inline]
+        // Inlined into the caller's loop when optimised (about 2.5 KB of code): called
+        // out of line, its arguments and results went through memory and the step cost
+        // about a tenth more (BENCHMARKS.md, "The one-body step inline"); `#[inline]`
+        // alone left it out of line. Unoptimised, an ordinary call (see "Unoptimised
+        // builds" in `splitting.rs`).
+        #[cfg_attr(not(debug_assertions), inline(always))]
+        #[cfg_attr(debug_assertions, inline)]
         pub fn step(
             body: &Body,
             orientation: $quat,
@@ -312,10 +318,17 @@ macro_rules! precision_api {
                 self.angular_momentum = self.body.angular_momentum(self.orientation, velocity);
             }
 
-            /// [`step`] in place.
-            #[inline]
+            /// [`step`] in place (the same call, inlined as it is).
+            #[cfg_attr(not(debug_assertions), inline(always))]
+            #[cfg_attr(debug_assertions, inline)]
             pub fn step(&mut self, dt: $t) {
-                slice::step_one(self, dt, Order::Two);
+                (self.orientation, self.angular_momentum) = step(
+                    &self.body,
+                    self.orientation,
+                    self.angular_momentum,
+                    self.torque,
+                    dt,
+                );
             }
 
             /// [`step_order4`] in place.
