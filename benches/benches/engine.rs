@@ -1,7 +1,7 @@
 //! `ga_engine` against the step engines use today (issue 19), f32, 60 Hz:
 //!
 //! - `engine/f32/one_body`: 1024 different bodies, each stepped once by a one-body call
-//!   (`step`, `step_order4`, the module's own baselines) against the explicit gyroscopic
+//!   (`step`, `step_order4`, `step_with` with the torque held, the module's own baselines) against the explicit gyroscopic
 //!   Euler step written here directly on glam, the way an engine writes it
 //!   (`glam_explicit_euler`). Targets: `step` at most 1.5x `glam_explicit_euler` (issue
 //!   19), then at most 1.0x (issue 36).
@@ -28,7 +28,7 @@ use common::config;
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
 use ga_engine::f32::{
     explicit_gyroscopic_euler, implicit_gyroscopic_euler, par_step_slice, step, step_order4,
-    step_slice, Body, BodyColumns, BodyState,
+    step_slice, step_with, Body, BodyColumns, BodyState,
 };
 use ga_engine::glam::{DQuat, Mat3, Quat, Vec3};
 
@@ -202,6 +202,22 @@ fn engine(c: &mut Criterion) {
         b.iter(|| {
             for ((q, l), s) in ql.iter_mut().zip(&states) {
                 (*q, *l) = step_order4(&s.body, *q, *l, s.torque, black_box(DT));
+            }
+            black_box(&ql);
+        });
+    });
+    // The torque function returns the held torque, so that the row measures the step's
+    // own cost beside `step` (a torque function's work, such as gravity's lever arm, is
+    // the caller's and comes on top).
+    g.bench_function("step_with", |b| {
+        let mut ql: Vec<(Quat, Vec3)> = states
+            .iter()
+            .map(|s| (s.orientation, s.angular_momentum))
+            .collect();
+        b.iter(|| {
+            for ((q, l), s) in ql.iter_mut().zip(&states) {
+                let torque = s.torque;
+                (*q, *l) = step_with(&s.body, *q, *l, |_| torque, black_box(DT));
             }
             black_box(&ql);
         });

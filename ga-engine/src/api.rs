@@ -2,8 +2,9 @@
 //! enabled glam version and both precisions.
 
 /// The items of one precision on one glam: `$glam` is that glam (the dependency renamed `glam_0_NN`),
-/// `$t` the float, `$step2` the one-body second-order step for it, `$slice_all` the slice
-/// form's stepper.
+/// `$t` the float, `$step2`, `$step2_with` and `$step4` the one-body steps for it (second
+/// order, with a torque read at both ends, fourth order), `$slice_all` the slice form's
+/// stepper.
 macro_rules! precision_api {
     (
         $glam:ident,
@@ -12,6 +13,8 @@ macro_rules! precision_api {
         $vec3:ident,
         $mat3:ident,
         $step2:path,
+        $step2_with:path,
+        $step4:path,
         $slice_all:path,
         $width:literal,
         $blocks_all:path
@@ -20,7 +23,6 @@ macro_rules! precision_api {
         use crate::inertia::Inertia;
         use crate::parts::{Order, Parts};
         use crate::rotation::{Q, V};
-        use crate::slice;
         use ::$glam::{$mat3, $quat, $vec3};
 
         #[inline(always)]
@@ -178,13 +180,9 @@ macro_rules! precision_api {
             mut torque: impl FnMut($quat) -> $vec3,
             dt: $t,
         ) -> ($quat, $vec3) {
-            let (q, l) = crate::splitting::step2_with(
-                &body.inertia,
-                q_in(orientation),
-                v_in(momentum),
-                dt,
-                |q| v_in(torque(q_out(q))),
-            );
+            let (q, l) = $step2_with(&body.inertia, q_in(orientation), v_in(momentum), dt, |q| {
+                v_in(torque(q_out(q)))
+            });
             (q_out(q), v_out(l))
         }
 
@@ -211,7 +209,7 @@ macro_rules! precision_api {
             torque: $vec3,
             dt: $t,
         ) -> ($quat, $vec3) {
-            let (q, l) = crate::splitting::step4(
+            let (q, l) = $step4(
                 &body.inertia,
                 q_in(orientation),
                 v_in(momentum),
@@ -331,10 +329,16 @@ macro_rules! precision_api {
                 );
             }
 
-            /// [`step_order4`] in place.
+            /// [`step_order4`] in place (the same call).
             #[inline]
             pub fn step_order4(&mut self, dt: $t) {
-                slice::step_one(self, dt, Order::Four);
+                (self.orientation, self.angular_momentum) = step_order4(
+                    &self.body,
+                    self.orientation,
+                    self.angular_momentum,
+                    self.torque,
+                    dt,
+                );
             }
 
             /// The world angular velocity.
@@ -416,6 +420,8 @@ macro_rules! engine_api {
                 Vec3,
                 Mat3,
                 crate::splitting::step2_f32,
+                crate::splitting::step2_with_f32,
+                crate::splitting::step4_f32,
                 crate::dispatch::step_all_f32,
                 8,
                 crate::dispatch::step_blocks_f32
@@ -430,6 +436,8 @@ macro_rules! engine_api {
                 DVec3,
                 DMat3,
                 crate::splitting::step2,
+                crate::splitting::step2_with,
+                crate::splitting::step4,
                 crate::dispatch::step_all_f64,
                 4,
                 crate::dispatch::step_blocks_f64
