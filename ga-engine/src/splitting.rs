@@ -192,7 +192,7 @@ fn into_principal<R: Real, T: Turning<R>>(inertia: &Inertia<R>, q: T, q2: R) -> 
 fn out_of_principal<R: Real, T: Turning<R>>(inertia: &Inertia<R>, q_p: T) -> T {
     let turned = inertia.turned;
     if R::any(turned) {
-        T::select(turned, q_p.times(inertia.frame.conj()), q_p)
+        T::select(turned, q_p.times_conj(inertia.frame), q_p)
     } else {
         q_p
     }

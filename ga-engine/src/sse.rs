@@ -96,37 +96,20 @@ impl Turning<f32> for Q4 {
 
     #[inline(always)]
     fn times(self, b: Q<f32>) -> Self {
-        // `Q::mul(self, b)` lane by lane: `(a_w B_w + a_x B_x) + (a_y B_y + a_z B_z)`
-        // with `a`'s components broadcast (the only operations on the chain are the four
-        // shuffles) and `B_k` the lanes of `b` each takes, signed, known beforehand.
         // SAFETY: SSE2 is part of x86-64.
-        unsafe {
-            let a = self.0;
-            let b4 = _mm_setr_ps(b.x, b.y, b.z, b.w);
-            let signed = |lanes: __m128, signs: __m128| _mm_xor_ps(lanes, signs);
-            // B_x = (b_w, -b_z, b_y, -b_x), B_y = (b_z, b_w, -b_x, -b_y),
-            // B_z = (-b_y, b_x, b_w, -b_z).
-            let bx = signed(
-                _mm_shuffle_ps::<0b00_01_10_11>(b4, b4),
-                _mm_setr_ps(0.0, -0.0, 0.0, -0.0),
-            );
-            let by = signed(
-                _mm_shuffle_ps::<0b01_00_11_10>(b4, b4),
-                _mm_setr_ps(0.0, 0.0, -0.0, -0.0),
-            );
-            let bz = signed(
-                _mm_shuffle_ps::<0b10_11_00_01>(b4, b4),
-                _mm_setr_ps(-0.0, 0.0, 0.0, -0.0),
-            );
-            let aw = _mm_shuffle_ps::<0b11_11_11_11>(a, a);
-            let ax = _mm_shuffle_ps::<0b00_00_00_00>(a, a);
-            let ay = _mm_shuffle_ps::<0b01_01_01_01>(a, a);
-            let az = _mm_shuffle_ps::<0b10_10_10_10>(a, a);
-            Q4(_mm_add_ps(
-                _mm_add_ps(_mm_mul_ps(aw, b4), _mm_mul_ps(ax, bx)),
-                _mm_add_ps(_mm_mul_ps(ay, by), _mm_mul_ps(az, bz)),
-            ))
-        }
+        self.times_lanes(unsafe { _mm_setr_ps(b.x, b.y, b.z, b.w) })
+    }
+
+    #[inline(always)]
+    fn times_conj(self, b: Q<f32>) -> Self {
+        // `b*` from `b`'s four lanes by one sign flip (exact), not component by component.
+        // SAFETY: SSE2 is part of x86-64.
+        self.times_lanes(unsafe {
+            _mm_xor_ps(
+                _mm_setr_ps(b.x, b.y, b.z, b.w),
+                _mm_setr_ps(-0.0, -0.0, -0.0, 0.0),
+            )
+        })
     }
 
     #[inline(always)]
@@ -206,6 +189,43 @@ impl Turning<f32> for Q4 {
                 _mm_shuffle_ps::<0b10_11_00_01>(products, products),
             );
             _mm_cvtss_f32(_mm_add_ss(pairs, _mm_movehl_ps(pairs, pairs)))
+        }
+    }
+}
+
+impl Q4 {
+    /// `self b` for `b` in lanes `[x, y, z, w]`, as `Q::mul`.
+    #[inline(always)]
+    fn times_lanes(self, b4: __m128) -> Self {
+        // `Q::mul(self, b)` lane by lane: `(a_w B_w + a_x B_x) + (a_y B_y + a_z B_z)`
+        // with `a`'s components broadcast (the only operations on the chain are the four
+        // shuffles) and `B_k` the lanes of `b` each takes, signed, known beforehand.
+        // SAFETY: SSE2 is part of x86-64.
+        unsafe {
+            let a = self.0;
+            let signed = |lanes: __m128, signs: __m128| _mm_xor_ps(lanes, signs);
+            // B_x = (b_w, -b_z, b_y, -b_x), B_y = (b_z, b_w, -b_x, -b_y),
+            // B_z = (-b_y, b_x, b_w, -b_z).
+            let bx = signed(
+                _mm_shuffle_ps::<0b00_01_10_11>(b4, b4),
+                _mm_setr_ps(0.0, -0.0, 0.0, -0.0),
+            );
+            let by = signed(
+                _mm_shuffle_ps::<0b01_00_11_10>(b4, b4),
+                _mm_setr_ps(0.0, 0.0, -0.0, -0.0),
+            );
+            let bz = signed(
+                _mm_shuffle_ps::<0b10_11_00_01>(b4, b4),
+                _mm_setr_ps(-0.0, 0.0, 0.0, -0.0),
+            );
+            let aw = _mm_shuffle_ps::<0b11_11_11_11>(a, a);
+            let ax = _mm_shuffle_ps::<0b00_00_00_00>(a, a);
+            let ay = _mm_shuffle_ps::<0b01_01_01_01>(a, a);
+            let az = _mm_shuffle_ps::<0b10_10_10_10>(a, a);
+            Q4(_mm_add_ps(
+                _mm_add_ps(_mm_mul_ps(aw, b4), _mm_mul_ps(ax, bx)),
+                _mm_add_ps(_mm_mul_ps(ay, by), _mm_mul_ps(az, bz)),
+            ))
         }
     }
 }

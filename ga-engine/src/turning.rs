@@ -21,6 +21,11 @@ pub(crate) trait Turning<R: Real>: Copy {
     fn turned_about_momentum(self, p: R, k: R, l: Self::Momentum) -> Self;
     /// `self b`, as [`Q::mul`].
     fn times(self, b: Q<R>) -> Self;
+    /// `self b*`, as [`Q::mul`] of [`Q::conj`].
+    #[inline(always)]
+    fn times_conj(self, b: Q<R>) -> Self {
+        self.times(b.conj())
+    }
     /// As [`Q::normalized_by`].
     fn normalized_by(self, norm2: R, reference: Self) -> Self;
     /// As [`Q::divided_by_norm`].
