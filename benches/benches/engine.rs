@@ -9,7 +9,9 @@
 //!   the step reaches through a frame (two quaternion products more). `step_tensor`: the
 //!   same bodies built from their inertia tensors turned by a seeded rotation (a body from a
 //!   mesh or a rotated collider: a general frame), against the same Euler step on glam with
-//!   the body-frame tensor and its inverse as `Mat3` (`glam_explicit_euler_tensor`).
+//!   the body-frame tensor and its inverse as `Mat3` (`glam_explicit_euler_tensor`), and
+//!   with the principal moments and frame as rapier keeps such a body, one quaternion
+//!   product a step (`glam_explicit_euler_principal`).
 //! - `engine/f32/slice`: the same 1024 bodies by `step_slice` (eight lanes with AVX, else
 //!   four) on `BodyState`s, and by `BodyColumns::step` (the column store: each component of
 //!   eight bodies side by side, as the lanes take them). Targets (issue 36): at most
@@ -113,6 +115,30 @@ fn glam_explicit_euler_tensor(
     (q, w)
 }
 
+/// [`glam_explicit_euler`] for a body kept as its principal moments `i` and principal frame
+/// `p` (principal axes to body frame), as rapier keeps a body that is not in its principal
+/// axes: the orientation of the principal axes `q p` each step (one quaternion product),
+/// the diagonal Euler equations in them, and the orientation by the world velocity.
+#[inline]
+fn glam_explicit_euler_principal(
+    p: Quat,
+    i: Vec3,
+    inv_i: Vec3,
+    q: Quat,
+    w: Vec3,
+    t: Vec3,
+    h: f32,
+) -> (Quat, Vec3) {
+    let q_p = q * p;
+    let q_inv = q_p.conjugate();
+    let wb = q_inv * w;
+    let tb = q_inv * t;
+    let wb = wb + h * (tb - wb.cross(i * wb)) * inv_i;
+    let w = q_p * wb;
+    let q = (q + Quat::from_vec4((0.5 * h * w).extend(0.0)) * q).normalize();
+    (q, w)
+}
+
 fn engine(c: &mut Criterion) {
     let states = crowd(BODIES);
     let velocities: Vec<Vec3> = states.iter().map(BodyState::angular_velocity).collect();
@@ -178,6 +204,26 @@ fn engine(c: &mut Criterion) {
         b.iter(|| {
             for ((q, w), (s, (i, inv))) in qw.iter_mut().zip(tensors.iter().zip(&matrices)) {
                 (*q, *w) = glam_explicit_euler_tensor(i, inv, *q, *w, s.torque, black_box(DT));
+            }
+            black_box(&qw);
+        });
+    });
+    let principal: Vec<(Quat, Vec3, Vec3)> = tensors
+        .iter()
+        .map(|s| {
+            let i = s.body.principal_moments();
+            (s.body.principal_frame(), i, i.recip())
+        })
+        .collect();
+    g.bench_function("glam_explicit_euler_principal", |b| {
+        let mut qw: Vec<(Quat, Vec3)> = tensors
+            .iter()
+            .map(|s| (s.orientation, s.angular_velocity()))
+            .collect();
+        b.iter(|| {
+            for ((q, w), (s, &(p, i, inv))) in qw.iter_mut().zip(tensors.iter().zip(&principal)) {
+                (*q, *w) =
+                    glam_explicit_euler_principal(p, i, inv, *q, *w, s.torque, black_box(DT));
             }
             black_box(&qw);
         });
