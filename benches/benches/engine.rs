@@ -18,7 +18,8 @@
 //!   0.4x `glam_explicit_euler` per body.
 //! - `engine/f64/slice`: the same 1024 bodies in f64, one at a time (`step`), by
 //!   `step_slice` (four lanes, in one AVX register where the CPU has AVX) and by
-//!   `BodyColumns::step`.
+//!   `BodyColumns::step`, against the explicit gyroscopic Euler step on glam's `DQuat` and
+//!   `DVec3` (`glam_explicit_euler`), the peer of an engine that runs in f64.
 //! - `engine/f32/rayon`: 2^20 bodies by `par_step_slice` and `BodyColumns::par_step` on 1
 //!   and on all threads.
 //!
@@ -32,7 +33,7 @@ use ga_engine::f32::{
     explicit_gyroscopic_euler, implicit_gyroscopic_euler, par_step_slice, step, step_order4,
     step_slice, step_with, Body, BodyColumns, BodyState,
 };
-use ga_engine::glam::{DQuat, Mat3, Quat, Vec3};
+use ga_engine::glam::{DQuat, DVec3, Mat3, Quat, Vec3};
 
 /// Bodies per batch.
 const BODIES: usize = 1024;
@@ -82,18 +83,27 @@ fn crowd_of_tensors(n: usize) -> Vec<(BodyState, Mat3)> {
         .collect()
 }
 
-/// Explicit gyroscopic Euler on glam: body-frame Euler equations, then the orientation by
-/// the new world angular velocity, normalised. `i` principal moments (diagonal inertia).
-#[inline]
-fn glam_explicit_euler(i: Vec3, inv_i: Vec3, q: Quat, w: Vec3, t: Vec3, h: f32) -> (Quat, Vec3) {
-    let q_inv = q.conjugate();
-    let wb = q_inv * w;
-    let tb = q_inv * t;
-    let wb = wb + h * (tb - wb.cross(i * wb)) * inv_i;
-    let w = q * wb;
-    let q = (q + Quat::from_vec4((0.5 * h * w).extend(0.0)) * q).normalize();
-    (q, w)
+/// Stamps the explicit gyroscopic Euler step on glam in one precision (the same lines for
+/// `Quat` and `DQuat`).
+macro_rules! glam_explicit_euler_in {
+    ($name:ident, $quat:ty, $vec3:ty, $t:ty) => {
+        /// Explicit gyroscopic Euler on glam: body-frame Euler equations, then the
+        /// orientation by the new world angular velocity, normalised. `i` principal
+        /// moments (diagonal inertia).
+        #[inline]
+        fn $name(i: $vec3, inv_i: $vec3, q: $quat, w: $vec3, t: $vec3, h: $t) -> ($quat, $vec3) {
+            let q_inv = q.conjugate();
+            let wb = q_inv * w;
+            let tb = q_inv * t;
+            let wb = wb + h * (tb - wb.cross(i * wb)) * inv_i;
+            let w = q * wb;
+            let q = (q + <$quat>::from_vec4((0.5 * h * w).extend(0.0)) * q).normalize();
+            (q, w)
+        }
+    };
 }
+glam_explicit_euler_in!(glam_explicit_euler, Quat, Vec3, f32);
+glam_explicit_euler_in!(glam_explicit_euler_f64, DQuat, DVec3, f64);
 
 /// [`glam_explicit_euler`] for a body whose tensor `i` (and its inverse) is a full matrix
 /// in the body frame, as an engine writes it for a body that is not in its principal axes.
@@ -324,6 +334,25 @@ fn engine(c: &mut Criterion) {
         .collect();
     let mut g = c.benchmark_group("engine/f64/slice");
     g.throughput(Throughput::Elements(BODIES as u64));
+    g.bench_function("glam_explicit_euler", |b| {
+        let mut qw: Vec<(DQuat, DVec3)> = wide
+            .iter()
+            .map(|s| (s.orientation, s.angular_velocity()))
+            .collect();
+        let moments: Vec<(DVec3, DVec3)> = wide
+            .iter()
+            .map(|s| {
+                let i = s.body.principal_moments();
+                (i, i.recip())
+            })
+            .collect();
+        b.iter(|| {
+            for ((q, w), (s, &(i, inv))) in qw.iter_mut().zip(wide.iter().zip(&moments)) {
+                (*q, *w) = glam_explicit_euler_f64(i, inv, *q, *w, s.torque, black_box(1.0 / 60.0));
+            }
+            black_box(&qw);
+        });
+    });
     g.bench_function("step", |b| {
         let mut s = wide.clone();
         b.iter(|| {
