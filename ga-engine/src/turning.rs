@@ -20,8 +20,12 @@ pub(crate) trait Turning<R: Real>: Copy {
     /// of `Q { x: k l.x, y: k l.y, z: k l.z, w: p }`.
     fn turned_about_momentum(self, p: R, k: R, l: Self::Momentum) -> Self;
     /// `self b`, as [`Q::mul`].
+    // Only the register forms' steps (x86-64) call it.
+    #[cfg(target_arch = "x86_64")]
     fn times(self, b: Q<R>) -> Self;
     /// `self b*`, as [`Q::mul`] of [`Q::conj`].
+    // Only the register forms' steps (x86-64) call it.
+    #[cfg(target_arch = "x86_64")]
     #[inline(always)]
     fn times_conj(self, b: Q<R>) -> Self {
         self.times(b.conj())
@@ -62,6 +66,7 @@ impl<R: Real> Turning<R> for Q<R> {
         };
         w.mul(self)
     }
+    #[cfg(target_arch = "x86_64")]
     #[inline(always)]
     fn times(self, b: Q<R>) -> Self {
         self.mul(b)
@@ -98,10 +103,14 @@ pub(crate) trait Momentum<R: Real>: Copy {
     /// To components.
     fn unpack(self) -> V<R>;
     /// `self + s t`, as [`V::add_scaled`].
+    // Only the register forms' steps (x86-64) call it.
+    #[cfg(target_arch = "x86_64")]
     fn add_scaled(self, s: R, t: Self) -> Self;
     /// `|self|^2`, as [`V::dot`].
     fn norm2(self) -> R;
     /// `s self`, as [`V::scale_all`].
+    // Only the register forms' steps (x86-64) call it.
+    #[cfg(target_arch = "x86_64")]
     fn scaled(self, s: R) -> Self;
 }
 
@@ -114,6 +123,7 @@ impl<R: Real> Momentum<R> for V<R> {
     fn unpack(self) -> V<R> {
         self
     }
+    #[cfg(target_arch = "x86_64")]
     #[inline(always)]
     fn add_scaled(self, s: R, t: Self) -> Self {
         V::add_scaled(self, s, t)
@@ -122,6 +132,7 @@ impl<R: Real> Momentum<R> for V<R> {
     fn norm2(self) -> R {
         self.dot(self)
     }
+    #[cfg(target_arch = "x86_64")]
     #[inline(always)]
     fn scaled(self, s: R) -> Self {
         self.scale_all(s)
