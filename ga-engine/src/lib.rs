@@ -103,6 +103,17 @@
 //! NaN), never a panic; the momentum is still kicked by the torque.
 
 #![cfg_attr(not(feature = "std"), no_std)]
+// Without a glam feature the build stops at the one error below; its macros go unused then.
+#![cfg_attr(
+    not(any(
+        feature = "glam-0-29",
+        feature = "glam-0-30",
+        feature = "glam-0-31",
+        feature = "glam-0-32",
+        feature = "glam-0-33"
+    )),
+    allow(unused_macros)
+)]
 
 // `BodyColumns` grows in a `Vec`; nothing else allocates.
 extern crate alloc;
@@ -143,6 +154,21 @@ mod sse64;
 mod turning;
 
 pub use error::BodyError;
+
+// Without a glam the steps have no types to take: one error that says which features to
+// turn on, not a crate of unused items (a `default-features = false` that dropped `glam`
+// with `std`).
+#[cfg(not(any(
+    feature = "glam-0-29",
+    feature = "glam-0-30",
+    feature = "glam-0-31",
+    feature = "glam-0-32",
+    feature = "glam-0-33"
+)))]
+compile_error!(
+    "ga-engine needs one of its glam features: `glam` (glam 0.32, at `ga_engine::f32` and \
+     `ga_engine::f64`) or `glam-0-29` ... `glam-0-33`; its steps take and return glam's types"
+);
 
 // The README's example, run as a doctest so that it stays true.
 #[cfg(doctest)]
