@@ -103,17 +103,6 @@
 //! NaN), never a panic; the momentum is still kicked by the torque.
 
 #![cfg_attr(not(feature = "std"), no_std)]
-// Without a glam feature the build stops at the one error below; its macros go unused then.
-#![cfg_attr(
-    not(any(
-        feature = "glam-0-29",
-        feature = "glam-0-30",
-        feature = "glam-0-31",
-        feature = "glam-0-32",
-        feature = "glam-0-33"
-    )),
-    allow(unused_macros)
-)]
 
 // `BodyColumns` grows in a `Vec`; nothing else allocates.
 extern crate alloc;
