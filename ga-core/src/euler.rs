@@ -140,7 +140,8 @@ glam_euler_conversions!(
     "glam-0-29" => glam_0_29,
     "glam-0-30" => glam_0_30,
     "glam-0-31" => glam_0_31,
-    "glam-0-32" => glam_0_32
+    "glam-0-32" => glam_0_32,
+    "glam-0-33" => glam_0_33
 );
 
 // Unused when no precision is on.

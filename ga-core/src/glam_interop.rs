@@ -90,3 +90,4 @@ glam_version!("glam-0-29", glam_0_29);
 glam_version!("glam-0-30", glam_0_30);
 glam_version!("glam-0-31", glam_0_31);
 glam_version!("glam-0-32", glam_0_32);
+glam_version!("glam-0-33", glam_0_33);

@@ -20,7 +20,7 @@
 //! (`f64::g3` needs both `f64` and `g3`; default `g3`, `f32`, `f64`); `batch` adds the
 //! structure-of-arrays modules on `wide`; `serde`, `bytemuck`, `approx`, `mint` add those
 //! crates' traits to every type (re-exported here under the same names); `glam` (glam
-//! 0.32, re-exported as `ga_core::glam`) and `glam-0-29` to `glam-0-32` add glam conversions.
+//! 0.32, re-exported as `ga_core::glam`) and `glam-0-29` to `glam-0-33` add glam conversions.
 #![deny(missing_docs)]
 #![cfg_attr(not(feature = "std"), no_std)]
 
@@ -144,6 +144,10 @@ pub use glam_0_31;
 /// glam 0.32 (feature `glam-0-32`; `glam` turns it on).
 #[cfg(feature = "glam-0-32")]
 pub use glam_0_32;
+
+/// glam 0.33 (feature `glam-0-33`), for a project on the newest glam (rapier 0.36 is on it).
+#[cfg(feature = "glam-0-33")]
+pub use glam_0_33;
 
 /// One algebra module, with the batch modules when the `batch` feature is on and the
 /// WGSL constant when `wgsl` is (the macro's `lanes` and `shaders` keys cannot carry a

@@ -88,7 +88,8 @@ glam_rotation_matrices!(
     "glam-0-29" => glam_0_29,
     "glam-0-30" => glam_0_30,
     "glam-0-31" => glam_0_31,
-    "glam-0-32" => glam_0_32
+    "glam-0-32" => glam_0_32,
+    "glam-0-33" => glam_0_33
 );
 
 /// Without the standard library, the float functions the toolkit calls come from libm

@@ -92,12 +92,18 @@ fn rotor_products_compose_like_quaternion_products() {
     }
 }
 
-/// The older glam majors behind `glam-0-29` ... `glam-0-31` convert exactly as the newest
+/// The other glam majors behind `glam-0-29` ... `glam-0-31` and `glam-0-33` convert exactly
+/// as the default one (0.32), Euler orders included
 /// (compiled only where one of them is on, as in CI's `--all-features` run: without them
 /// it would check nothing).
-#[cfg(any(feature = "glam-0-29", feature = "glam-0-30", feature = "glam-0-31"))]
+#[cfg(any(
+    feature = "glam-0-29",
+    feature = "glam-0-30",
+    feature = "glam-0-31",
+    feature = "glam-0-33"
+))]
 #[test]
-fn older_glam_versions_convert_like_the_newest() {
+fn other_glam_versions_convert_like_the_default() {
     let r = (d3::Bivector::new(0.2, -0.7, 0.5) * -0.45).exp();
     let v = d3::Vector::new(1.0, -2.0, 0.5);
     let q: DQuat = r.into();
@@ -114,10 +120,24 @@ fn older_glam_versions_convert_like_the_newest() {
                 let m: ga_core::$glam::Mat3 = s3::Rotor::from(old.as_quat()).into();
                 let m_new: Mat3 = s3::Rotor::from(q.as_quat()).into();
                 assert_eq!(m.to_cols_array(), m_new.to_cols_array());
+                // Each order means that version's order: its own quaternion from the
+                // angles is ours (intrinsic, extrinsic, proper Euler).
+                use ga_core::$glam::EulerRot as Old;
+                for order in [Old::YXZ, Old::ZYXEx, Old::XZX, Old::YZYEx] {
+                    let ours = d3::Rotor::from_euler(order.into(), 0.3, -1.2, 2.0);
+                    let theirs = ga_core::$glam::DQuat::from_euler(order, 0.3, -1.2, 2.0);
+                    let back: Old = ga_core::EulerRot::from(order).into();
+                    assert_eq!(back, order);
+                    assert!(
+                        (ours - d3::Rotor::from(theirs)).norm() < 1e-14,
+                        "{order:?}: {ours} vs {theirs:?}"
+                    );
+                }
             }
         };
     }
     same!("glam-0-29", glam_0_29);
     same!("glam-0-30", glam_0_30);
     same!("glam-0-31", glam_0_31);
+    same!("glam-0-33", glam_0_33);
 }
