@@ -89,6 +89,8 @@ pub mod dual64 {
 #[cfg(feature = "g3")]
 mod euler;
 #[cfg(feature = "g3")]
+mod glam_componentwise;
+#[cfg(feature = "g3")]
 mod glam_interop;
 #[cfg(feature = "g3")]
 mod glam_vocabulary;

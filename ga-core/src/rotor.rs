@@ -104,6 +104,22 @@ pub(crate) mod no_std_math {
         fn sin_cos(self) -> (Self, Self);
         fn atan2(self, other: Self) -> Self;
         fn acos(self) -> Self;
+        fn floor(self) -> Self;
+        fn ceil(self) -> Self;
+        fn round(self) -> Self;
+        fn trunc(self) -> Self;
+        fn exp(self) -> Self;
+        fn exp2(self) -> Self;
+        fn ln(self) -> Self;
+        fn log2(self) -> Self;
+        fn powf(self, n: Self) -> Self;
+        fn sin(self) -> Self;
+        fn cos(self) -> Self;
+        fn mul_add(self, a: Self, b: Self) -> Self;
+        /// As std's: `self % rhs`, moved into `[0, |rhs|)`.
+        fn rem_euclid(self, rhs: Self) -> Self;
+        /// As std's: the quotient that goes with `rem_euclid`.
+        fn div_euclid(self, rhs: Self) -> Self;
     }
 
     impl Real for f64 {
@@ -119,6 +135,57 @@ pub(crate) mod no_std_math {
         fn acos(self) -> f64 {
             crate::libm::acos(self)
         }
+        fn floor(self) -> f64 {
+            crate::libm::floor(self)
+        }
+        fn ceil(self) -> f64 {
+            crate::libm::ceil(self)
+        }
+        fn round(self) -> f64 {
+            crate::libm::round(self)
+        }
+        fn trunc(self) -> f64 {
+            crate::libm::trunc(self)
+        }
+        fn exp(self) -> f64 {
+            crate::libm::exp(self)
+        }
+        fn exp2(self) -> f64 {
+            crate::libm::exp2(self)
+        }
+        fn ln(self) -> f64 {
+            crate::libm::log(self)
+        }
+        fn log2(self) -> f64 {
+            crate::libm::log2(self)
+        }
+        fn sin(self) -> f64 {
+            crate::libm::sin(self)
+        }
+        fn cos(self) -> f64 {
+            crate::libm::cos(self)
+        }
+        fn powf(self, n: f64) -> f64 {
+            crate::libm::pow(self, n)
+        }
+        fn mul_add(self, a: f64, b: f64) -> f64 {
+            crate::libm::fma(self, a, b)
+        }
+        fn rem_euclid(self, rhs: f64) -> f64 {
+            let r = self % rhs;
+            if r < 0.0 {
+                r + rhs.abs()
+            } else {
+                r
+            }
+        }
+        fn div_euclid(self, rhs: f64) -> f64 {
+            let q = Real::trunc(self / rhs);
+            if self % rhs < 0.0 {
+                return if rhs > 0.0 { q - 1.0 } else { q + 1.0 };
+            }
+            q
+        }
     }
 
     impl Real for f32 {
@@ -133,6 +200,57 @@ pub(crate) mod no_std_math {
         }
         fn acos(self) -> f32 {
             crate::libm::acosf(self)
+        }
+        fn floor(self) -> f32 {
+            crate::libm::floorf(self)
+        }
+        fn ceil(self) -> f32 {
+            crate::libm::ceilf(self)
+        }
+        fn round(self) -> f32 {
+            crate::libm::roundf(self)
+        }
+        fn trunc(self) -> f32 {
+            crate::libm::truncf(self)
+        }
+        fn exp(self) -> f32 {
+            crate::libm::expf(self)
+        }
+        fn exp2(self) -> f32 {
+            crate::libm::exp2f(self)
+        }
+        fn ln(self) -> f32 {
+            crate::libm::logf(self)
+        }
+        fn log2(self) -> f32 {
+            crate::libm::log2f(self)
+        }
+        fn sin(self) -> f32 {
+            crate::libm::sinf(self)
+        }
+        fn cos(self) -> f32 {
+            crate::libm::cosf(self)
+        }
+        fn powf(self, n: f32) -> f32 {
+            crate::libm::powf(self, n)
+        }
+        fn mul_add(self, a: f32, b: f32) -> f32 {
+            crate::libm::fmaf(self, a, b)
+        }
+        fn rem_euclid(self, rhs: f32) -> f32 {
+            let r = self % rhs;
+            if r < 0.0 {
+                r + rhs.abs()
+            } else {
+                r
+            }
+        }
+        fn div_euclid(self, rhs: f32) -> f32 {
+            let q = Real::trunc(self / rhs);
+            if self % rhs < 0.0 {
+                return if rhs > 0.0 { q - 1.0 } else { q + 1.0 };
+            }
+            q
         }
     }
 }

@@ -1156,6 +1156,17 @@ macro_rules! engine_code {
             scalars.push(position.max_element() + position.length() + velocity.dot(axis));
             scalars.push(Vec3::splat(2.0).length_squared());
             scalars.push(combined.xyz().length() + view.conjugate().length_recip());
+
+            // Gameplay helpers: speed limits, steering, grid snapping, masks.
+            let capped = (velocity * 40.0).clamp_length_max(5.0).with_y(0.0);
+            vectors.push(capped);
+            vectors.push(eye.move_towards(target, 0.5).midpoint(target));
+            vectors.push((position * 3.3).round().clamp(Vec3::NEG_ONE * 2.0, Vec3::splat(2.0)));
+            vectors.push(velocity.signum().mul_add(velocity.abs().sqrt(), position.fract_gl()));
+            vectors.push((target - eye).try_normalize().unwrap_or(Vec3::Y));
+            vectors.push(Vec3::X.slerp(velocity, 0.4));
+            vectors.push(Vec3::select(position.cmplt(eye), position, eye));
+            scalars.push(position.element_sum() + capped.max_position() as $s);
             Frame { rotations, vectors, scalars }
         }
     };
