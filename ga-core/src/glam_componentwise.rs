@@ -6,6 +6,21 @@
 //! operation (`v.exp()` is not the exponential of the vector), which is why these live
 //! apart, under glam's names only.
 
+/// Methods of `Vector` that apply one function of the scalar to each component, each
+/// with its doc line: `name => function;`.
+macro_rules! each_component {
+    ($($(#[$doc:meta])* $name:ident => $f:expr;)*) => {
+        $(
+            $(#[$doc])*
+            #[inline]
+            #[must_use]
+            pub fn $name(self) -> Vector {
+                each(self, $f)
+            }
+        )*
+    };
+}
+
 // Unused when no precision is on.
 #[allow(unused_macros)]
 macro_rules! glam_componentwise {
@@ -36,33 +51,35 @@ macro_rules! glam_componentwise {
         }
 
         impl Vector {
-            /// Each component rounded down (glam's `floor`).
-            #[inline]
-            #[must_use]
-            pub fn floor(self) -> Vector {
-                each(self, $s::floor)
-            }
-
-            /// Each component rounded up (glam's `ceil`).
-            #[inline]
-            #[must_use]
-            pub fn ceil(self) -> Vector {
-                each(self, $s::ceil)
-            }
-
-            /// Each component rounded to the nearest integer, halves away from zero
-            /// (glam's `round`).
-            #[inline]
-            #[must_use]
-            pub fn round(self) -> Vector {
-                each(self, $s::round)
-            }
-
-            /// Each component's integer part, towards zero (glam's `trunc`).
-            #[inline]
-            #[must_use]
-            pub fn trunc(self) -> Vector {
-                each(self, $s::trunc)
+            each_component! {
+                /// Each component rounded down (glam's `floor`).
+                floor => $s::floor;
+                /// Each component rounded up (glam's `ceil`).
+                ceil => $s::ceil;
+                /// Each component rounded to the nearest integer, halves away from zero
+                /// (glam's `round`).
+                round => $s::round;
+                /// Each component's integer part, towards zero (glam's `trunc`).
+                trunc => $s::trunc;
+                /// Each component's sign: `1`, `-1` (for `-0.0` too) or NaN (glam's `signum`).
+                signum => $s::signum;
+                /// `1 / c` for each component (glam's `recip`).
+                recip => |c| 1.0 / c;
+                /// Each component's square root (glam's `sqrt`).
+                sqrt => $s::sqrt;
+                /// `e^c` for each component (glam's `exp`; not a geometric exponential,
+                /// such as `Bivector::exp`, the rotor of a plane and angle).
+                exp => $s::exp;
+                /// `2^c` for each component (glam's `exp2`).
+                exp2 => $s::exp2;
+                /// The natural logarithm of each component (glam's `ln`).
+                ln => $s::ln;
+                /// The base-2 logarithm of each component (glam's `log2`).
+                log2 => $s::log2;
+                /// The sine of each component (glam's `sin`).
+                sin => $s::sin;
+                /// The cosine of each component (glam's `cos`).
+                cos => $s::cos;
             }
 
             /// `self - self.trunc()` (glam's `fract`, Rust's convention: negative for
@@ -80,13 +97,6 @@ macro_rules! glam_componentwise {
                 self - self.floor()
             }
 
-            /// Each component's sign: `1`, `-1` (for `-0.0` too) or NaN (glam's `signum`).
-            #[inline]
-            #[must_use]
-            pub fn signum(self) -> Vector {
-                each(self, $s::signum)
-            }
-
             /// Each component's magnitude with the sign of `rhs`'s (glam's `copysign`).
             #[inline]
             #[must_use]
@@ -94,68 +104,11 @@ macro_rules! glam_componentwise {
                 pairs(self, rhs, $s::copysign)
             }
 
-            /// `1 / c` for each component (glam's `recip`).
-            #[inline]
-            #[must_use]
-            pub fn recip(self) -> Vector {
-                each(self, |c| 1.0 / c)
-            }
-
-            /// Each component's square root (glam's `sqrt`).
-            #[inline]
-            #[must_use]
-            pub fn sqrt(self) -> Vector {
-                each(self, $s::sqrt)
-            }
-
-            /// `e^c` for each component (glam's `exp`; not a geometric exponential,
-            /// such as `Bivector::exp`, the rotor of a plane and angle).
-            #[inline]
-            #[must_use]
-            pub fn exp(self) -> Vector {
-                each(self, $s::exp)
-            }
-
-            /// `2^c` for each component (glam's `exp2`).
-            #[inline]
-            #[must_use]
-            pub fn exp2(self) -> Vector {
-                each(self, $s::exp2)
-            }
-
-            /// The natural logarithm of each component (glam's `ln`).
-            #[inline]
-            #[must_use]
-            pub fn ln(self) -> Vector {
-                each(self, $s::ln)
-            }
-
-            /// The base-2 logarithm of each component (glam's `log2`).
-            #[inline]
-            #[must_use]
-            pub fn log2(self) -> Vector {
-                each(self, $s::log2)
-            }
-
             /// `c^n` for each component (glam's `powf`).
             #[inline]
             #[must_use]
             pub fn powf(self, n: $s) -> Vector {
                 each(self, |c| c.powf(n))
-            }
-
-            /// The sine of each component (glam's `sin`).
-            #[inline]
-            #[must_use]
-            pub fn sin(self) -> Vector {
-                each(self, $s::sin)
-            }
-
-            /// The cosine of each component (glam's `cos`).
-            #[inline]
-            #[must_use]
-            pub fn cos(self) -> Vector {
-                each(self, $s::cos)
             }
 
             /// The sines and the cosines of the components (glam's `sin_cos`).
