@@ -48,10 +48,19 @@ pub mod libm {
         };
     }
     stand_ins!(
-        sqrt sin cos cosh sinh asinh log1p acos sqrtf sinf cosf coshf sinhf asinhf log1pf acosf;
-        atan2 hypot atan2f hypotf;
+        sqrt sin cos cosh sinh asinh log1p acos sqrtf sinf cosf coshf sinhf asinhf log1pf acosf
+        floor ceil round trunc exp exp2 log log2 floorf ceilf roundf truncf expf exp2f logf log2f;
+        atan2 hypot atan2f hypotf pow powf;
         sincos sincosf
     );
+    /// `fma`'s stand-in.
+    pub fn fma<T>(x: T, _: T, _: T) -> T {
+        x
+    }
+    /// `fmaf`'s stand-in.
+    pub fn fmaf<T>(x: T, _: T, _: T) -> T {
+        x
+    }
 }
 
 // The generated modules name `::ga_core::Scalar`; this lets ga-core's own do so too.
