@@ -8,6 +8,8 @@
 
 /// Methods of `Vector` that apply one function of the scalar to each component, each
 /// with its doc line: `name => function;`.
+// Unused when no precision is on.
+#[allow(unused_macros)]
 macro_rules! each_component {
     ($($(#[$doc:meta])* $name:ident => $f:expr;)*) => {
         $(
