@@ -122,137 +122,90 @@ pub(crate) mod no_std_math {
         fn div_euclid(self, rhs: Self) -> Self;
     }
 
-    impl Real for f64 {
-        fn sqrt(self) -> f64 {
-            crate::libm::sqrt(self)
-        }
-        fn sin_cos(self) -> (f64, f64) {
-            crate::libm::sincos(self)
-        }
-        fn atan2(self, other: f64) -> f64 {
-            crate::libm::atan2(self, other)
-        }
-        fn acos(self) -> f64 {
-            crate::libm::acos(self)
-        }
-        fn floor(self) -> f64 {
-            crate::libm::floor(self)
-        }
-        fn ceil(self) -> f64 {
-            crate::libm::ceil(self)
-        }
-        fn round(self) -> f64 {
-            crate::libm::round(self)
-        }
-        fn trunc(self) -> f64 {
-            crate::libm::trunc(self)
-        }
-        fn exp(self) -> f64 {
-            crate::libm::exp(self)
-        }
-        fn exp2(self) -> f64 {
-            crate::libm::exp2(self)
-        }
-        fn ln(self) -> f64 {
-            crate::libm::log(self)
-        }
-        fn log2(self) -> f64 {
-            crate::libm::log2(self)
-        }
-        fn sin(self) -> f64 {
-            crate::libm::sin(self)
-        }
-        fn cos(self) -> f64 {
-            crate::libm::cos(self)
-        }
-        fn powf(self, n: f64) -> f64 {
-            crate::libm::pow(self, n)
-        }
-        fn mul_add(self, a: f64, b: f64) -> f64 {
-            crate::libm::fma(self, a, b)
-        }
-        fn rem_euclid(self, rhs: f64) -> f64 {
-            let r = self % rhs;
-            if r < 0.0 {
-                r + rhs.abs()
-            } else {
-                r
+    /// `Real` for one float type from libm's functions of that type, named in the trait's
+    /// order.
+    macro_rules! libm_real {
+        (
+            $t:ident: $sqrt:ident, $sincos:ident, $atan2:ident, $acos:ident, $floor:ident,
+            $ceil:ident, $round:ident, $trunc:ident, $exp:ident, $exp2:ident, $ln:ident,
+            $log2:ident, $pow:ident, $sin:ident, $cos:ident, $fma:ident
+        ) => {
+            impl Real for $t {
+                fn sqrt(self) -> $t {
+                    crate::libm::$sqrt(self)
+                }
+                fn sin_cos(self) -> ($t, $t) {
+                    crate::libm::$sincos(self)
+                }
+                fn atan2(self, other: $t) -> $t {
+                    crate::libm::$atan2(self, other)
+                }
+                fn acos(self) -> $t {
+                    crate::libm::$acos(self)
+                }
+                fn floor(self) -> $t {
+                    crate::libm::$floor(self)
+                }
+                fn ceil(self) -> $t {
+                    crate::libm::$ceil(self)
+                }
+                fn round(self) -> $t {
+                    crate::libm::$round(self)
+                }
+                fn trunc(self) -> $t {
+                    crate::libm::$trunc(self)
+                }
+                fn exp(self) -> $t {
+                    crate::libm::$exp(self)
+                }
+                fn exp2(self) -> $t {
+                    crate::libm::$exp2(self)
+                }
+                fn ln(self) -> $t {
+                    crate::libm::$ln(self)
+                }
+                fn log2(self) -> $t {
+                    crate::libm::$log2(self)
+                }
+                fn powf(self, n: $t) -> $t {
+                    crate::libm::$pow(self, n)
+                }
+                fn sin(self) -> $t {
+                    crate::libm::$sin(self)
+                }
+                fn cos(self) -> $t {
+                    crate::libm::$cos(self)
+                }
+                fn mul_add(self, a: $t, b: $t) -> $t {
+                    crate::libm::$fma(self, a, b)
+                }
+                fn rem_euclid(self, rhs: $t) -> $t {
+                    let r = self % rhs;
+                    if r < 0.0 {
+                        r + rhs.abs()
+                    } else {
+                        r
+                    }
+                }
+                fn div_euclid(self, rhs: $t) -> $t {
+                    let q = Real::trunc(self / rhs);
+                    if self % rhs < 0.0 {
+                        return if rhs > 0.0 { q - 1.0 } else { q + 1.0 };
+                    }
+                    q
+                }
             }
-        }
-        fn div_euclid(self, rhs: f64) -> f64 {
-            let q = Real::trunc(self / rhs);
-            if self % rhs < 0.0 {
-                return if rhs > 0.0 { q - 1.0 } else { q + 1.0 };
-            }
-            q
-        }
+        };
     }
 
-    impl Real for f32 {
-        fn sqrt(self) -> f32 {
-            crate::libm::sqrtf(self)
-        }
-        fn sin_cos(self) -> (f32, f32) {
-            crate::libm::sincosf(self)
-        }
-        fn atan2(self, other: f32) -> f32 {
-            crate::libm::atan2f(self, other)
-        }
-        fn acos(self) -> f32 {
-            crate::libm::acosf(self)
-        }
-        fn floor(self) -> f32 {
-            crate::libm::floorf(self)
-        }
-        fn ceil(self) -> f32 {
-            crate::libm::ceilf(self)
-        }
-        fn round(self) -> f32 {
-            crate::libm::roundf(self)
-        }
-        fn trunc(self) -> f32 {
-            crate::libm::truncf(self)
-        }
-        fn exp(self) -> f32 {
-            crate::libm::expf(self)
-        }
-        fn exp2(self) -> f32 {
-            crate::libm::exp2f(self)
-        }
-        fn ln(self) -> f32 {
-            crate::libm::logf(self)
-        }
-        fn log2(self) -> f32 {
-            crate::libm::log2f(self)
-        }
-        fn sin(self) -> f32 {
-            crate::libm::sinf(self)
-        }
-        fn cos(self) -> f32 {
-            crate::libm::cosf(self)
-        }
-        fn powf(self, n: f32) -> f32 {
-            crate::libm::powf(self, n)
-        }
-        fn mul_add(self, a: f32, b: f32) -> f32 {
-            crate::libm::fmaf(self, a, b)
-        }
-        fn rem_euclid(self, rhs: f32) -> f32 {
-            let r = self % rhs;
-            if r < 0.0 {
-                r + rhs.abs()
-            } else {
-                r
-            }
-        }
-        fn div_euclid(self, rhs: f32) -> f32 {
-            let q = Real::trunc(self / rhs);
-            if self % rhs < 0.0 {
-                return if rhs > 0.0 { q - 1.0 } else { q + 1.0 };
-            }
-            q
-        }
-    }
+    libm_real!(
+        f64: sqrt, sincos, atan2, acos, floor, ceil, round, trunc, exp, exp2, log, log2, pow, sin,
+        cos, fma
+    );
+    libm_real!(
+        f32: sqrtf, sincosf, atan2f, acosf, floorf, ceilf, roundf, truncf, expf, exp2f, logf,
+        log2f, powf, sinf, cosf, fmaf
+    );
 }
 
 #[cfg(feature = "g3")]
