@@ -83,7 +83,8 @@ pub(super) fn estrin(coefficients: &[TokenStream]) -> TokenStream {
 /// The limit of `cosh_sinhc_series`: `|<B B>| <= 2.5`, a half-angle of up to 1.58, so a
 /// rotation of up to 3.16 radians, just over a half turn: every rotor of a rotation by at
 /// most pi takes it. (Ten terms would reach `|<B B>| <= 10` in `f32`, every half-angle up
-/// to pi, but cost the G3 `f32` exp 1.35x the time in batch form.)
+/// to pi, but measured slower for the G3 `f32` exp in batch form: BENCHMARKS.md, "Choices in
+/// the generated code".)
 const SERIES_MAX: f64 = 2.5;
 
 /// `1/(2k + parity)!` for `k = 0..terms` (no signs: the series are in `x = -r^2`, which

@@ -299,8 +299,9 @@ fn commutator_scalar_body(
 /// The pieces of the expanded sandwich: `let`s for the products of pairs of the versor's
 /// components, and for each output blade and component `k` of `x` the coefficient of
 /// `x_k`: a signed sum of those products. Its sums are running sums, not the balanced
-/// trees of the products: measured on a chain of G3 rotations, the trees made the
-/// sandwich's latency 30% worse (f32), the sums being short and off the path through `x`.
+/// trees of the products: on a chain of G3 rotations the trees made the sandwich's latency
+/// worse (BENCHMARKS.md, "Choices in the generated code"), the sums being short and off the
+/// path through `x`.
 /// A pair whose coefficients are all even is computed as `(v_i + v_i) * v_j`: the factor 2
 /// costs an add once per component instead of a multiply per use. Partial sums that
 /// several coefficients share are computed once ([`CollectedSums`]). See
@@ -390,9 +391,9 @@ fn fused_parts(plan: &Plan, v: TypeId, sums: &CollectedSums) -> FusedParts {
 /// SLP vectoriser pairs them into one register in a chain of rotations. A coefficient whose
 /// summands are all negative is subtracted as a positive sum, `- (p + q) x`, which saves
 /// its negation, except as an output's first term, which is `-(p + q) * x` (the negated
-/// sum times `x`) so that the order holds. Measured on AMD Zen 5 for the G3 `f64` rotor on
-/// a vector, that first term written `(-p - q) * x` made LLVM pair the outputs so that a
-/// chain of rotations took 1.7x as long.
+/// sum times `x`) so that the order holds: for the G3 `f64` rotor on a vector, that first
+/// term written `(-p - q) * x` made LLVM pair the outputs so that a chain of rotations took
+/// much longer (BENCHMARKS.md, "Choices in the generated code").
 fn fused_body(plan: &Plan, v: TypeId, x: TypeId, sums: &CollectedSums) -> TokenStream {
     let (lets, value) = fused_body_in(Syntax::Rust, plan, v, x, sums);
     quote! {

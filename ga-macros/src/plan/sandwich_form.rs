@@ -366,9 +366,9 @@ fn sum_depth(terms: usize) -> usize {
 /// with the best throughput on the worse of the two port layouts. Latency leads because a
 /// chain of sandwiches cannot hide it, while LLVM packs the collected form's last stage
 /// (a small matrix times `x`) into vector instructions itself, which this count does not
-/// see: measured on AMD Zen 5, the collected G3 `f32` form took 1.73 ns a rotation in a
-/// batch and the commutator form in lanes 2.44 ns, though the count favours the lanes
-/// (BENCHMARKS.md, issue 7).
+/// see: the collected G3 `f32` form measured faster in a batch than the commutator form in
+/// lanes, though the count favours the lanes (BENCHMARKS.md, "Choices in the generated
+/// code").
 fn pick(candidates: Vec<(FormCost, SandwichForm)>) -> Option<SandwichForm> {
     let throughput = |c: &FormCost| {
         c.counts

@@ -14,9 +14,10 @@
 //! for the rigid body", J. Comput. Phys. 189, 2003) discuss this split: the non-commuting
 //! parts `c_o`, `c_c` are differences of inverse moments, small where the body is near
 //! symmetric, and the split is exact for a symmetric body (one `c` vanishes). Against the
-//! five-turn DLM splitting on the report's T-handle (moments 3 : 5 : 9) over 10^5 steps
-//! at `h |w| = 0.5`, the flip period is off by +0.33% instead of +2.3% and the energy
-//! error is 2.3e-3 instead of 1.0e-3 (bounded in both).
+//! five-turn DLM splitting on the report's T-handle (moments 3 : 5 : 9) at `h |w| = 0.5`,
+//! its flip period is many times closer to the exact one and its energy error of the same
+//! order, bounded in both (BENCHMARKS.md, "Library methods at engine step sizes", has the
+//! figures; the report's engine table measures them again).
 //!
 //! Every turn is rational (`splitting::cayley_turn`: no sine or cosine, one division per
 //! axis turn, none for the Casimir turn) and the rotor is normalised once a step. A
