@@ -1,10 +1,10 @@
 //! The public, glam-typed face of the engine, written once and stamped out for each
 //! enabled glam version and both precisions.
 
-/// The items of one precision on one glam: `$glam` is that glam (the dependency renamed `glam_0_NN`),
-/// `$t` the float, `$step2`, `$step2_with` and `$step4` the one-body steps for it (second
-/// order, with a torque read at both ends, fourth order), `$slice_all` the slice form's
-/// stepper.
+/// The items of one precision on one glam: `$glam` is that glam (the dependency renamed
+/// `glam_0_NN`), `$t` the float, `$step2`, `$step2_with` and `$step4` the one-body steps
+/// for it (second order, with a torque read at both ends, fourth order), `$slice_all` the
+/// slice form's stepper.
 macro_rules! precision_api {
     (
         $glam:ident,

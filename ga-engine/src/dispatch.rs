@@ -117,8 +117,9 @@ unsafe fn step_blocks_avx64(blocks: &mut [Block<f64, 4>], h: f64, order: Order) 
     }
 }
 
-/// Every block of `f64` bodies, four lanes at a time: in one AVX register where the CPU
-/// has AVX, else in arrays (columns load them whole, so arrays of four are fast there). Both give each body the bits it gets alone.
+/// Every block of `f64` bodies, four lanes at a time: in one AVX register where the CPU has
+/// AVX, else in arrays (columns load them whole, so arrays of four are fast there). Both
+/// give each body the bits it gets alone.
 #[cfg(feature = "columns")]
 #[inline(always)]
 pub(crate) fn step_blocks_f64(blocks: &mut [Block<f64, 4>], h: f64, order: Order) {

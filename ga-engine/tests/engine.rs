@@ -1126,8 +1126,9 @@ fn a_slice_steps_each_body_by_its_own_range() {
 /// Where each step is the better choice, as the docs say: on a T-handle spun near its
 /// middle axis (`|w| = 1`, so `h |w| = h`), over 3000 steps, the fourth-order step's
 /// largest energy excursion is far below `step`'s at `h |w| = 0.1` and far above it at
-/// `h |w| = 2`; the implicit gyroscopic Euler step only loses energy at `h |w| = 0.05`,
-/// and gains half again and more at 2. The energy is computed here from the body momentum on glam.
+/// `h |w| = 2`; the implicit gyroscopic Euler step only loses energy at `h |w| = 0.05`, and
+/// gains half again and more at 2. The energy is computed here from the body momentum on
+/// glam.
 #[test]
 fn step_order4_is_the_better_choice_only_for_small_steps() {
     let moments = DVec3::from(T_HANDLE);

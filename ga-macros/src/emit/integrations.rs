@@ -118,7 +118,8 @@ fn serde(plan: &Plan) -> TokenStream {
     )
 }
 
-/// The visitor that reads a type by blade names or in canonical order, and each type's impls (`#impls`).
+/// The visitor that reads a type by blade names or in canonical order, and each type's
+/// impls (`#impls`).
 const SERDE_VISITOR: &str = r#"
 /// Reads the components of one type, by blade name or in canonical order.
 struct __GaBlades<const N: usize> {

@@ -4,12 +4,13 @@
 //! `|x| <= 2.5`, which holds every rotor's half-angle up to a half turn; and `sin_cos`, one
 //! reduction by pi/2 and two polynomials, for the larger `f64` angles.
 //!
-//! The C library's `sincos` was most of the time of a G3 exp. Here the reduction is Cody and Waite's (W. J. Cody, W. Waite,
-//! *Software Manual for the Elementary Functions*, Prentice-Hall 1980): `x - n pi/2` with
-//! pi/2 split into pieces of 33 bits, so that `n` times each of the first two is exact for
-//! `|n| < 2^20`; the polynomials are the Taylor series, long enough that the first term
-//! left out is below half an ulp on `|r| <= pi/4`. Beyond `2^19` (and for NaN and
-//! infinities) the library's own `sin_cos` runs, which reduces any finite angle exactly.
+//! The C library's `sincos` was most of the time of a G3 exp. Here the reduction is Cody
+//! and Waite's (W. J. Cody, W. Waite, *Software Manual for the Elementary Functions*,
+//! Prentice-Hall 1980): `x - n pi/2` with pi/2 split into pieces of 33 bits, so that `n`
+//! times each of the first two is exact for `|n| < 2^20`; the polynomials are the Taylor
+//! series, long enough that the first term left out is below half an ulp on `|r| <= pi/4`.
+//! Beyond `2^19` (and for NaN and infinities) the library's own `sin_cos` runs, which
+//! reduces any finite angle exactly.
 //! `f32` keeps the library's `sincosf` for the larger angles: it measured faster than this
 //! kernel evaluated in `f64`.
 

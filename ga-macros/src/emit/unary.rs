@@ -400,7 +400,8 @@ pub fn emit_multivector_inverse(plan: &Plan) -> TokenStream {
     )
 }
 
-/// The general inverse in `f64`: the product table `LEFT`, the tolerance, and the solve with its one refinement.
+/// The general inverse in `f64`: the product table `LEFT`, the tolerance, and the solve
+/// with its one refinement.
 const INVERSE_SOLVER: &str = r#"
 /// `LEFT[i][j] = (k, sign)`: `e_i e_j = sign e_k` by component index. Used only by
 /// the general inverse, never by a product.

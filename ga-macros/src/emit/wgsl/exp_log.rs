@@ -1,8 +1,8 @@
 //! `exp_bivector` and `log_even` in WGSL: the closed forms of `Bivector::exp` and
 //! `Even::log` (`emit/exp_log.rs`) in the plan's form ([`ExpLogForm`], the one the Rust
-//! takes), the same squares (the planner's quadratic forms) and the same scalar weights, ported to
-//! WGSL's built-ins. The scalar weights are `ga_*` functions emitted once beside them;
-//! they are helpers, not API (docs/generated-api.md).
+//! takes), the same squares (the planner's quadratic forms) and the same scalar weights,
+//! ported to WGSL's built-ins. The scalar weights are `ga_*` functions emitted once beside
+//! them; they are helpers, not API (docs/generated-api.md).
 //!
 //! Rust's `Option` has no WGSL counterpart: `log_even` returns `Logarithm { value, ok }`,
 //! `ok` false exactly where the Rust returns `None` (not a rotor by the same tolerance,
