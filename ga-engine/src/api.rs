@@ -401,7 +401,7 @@ macro_rules! precision_api {
         }
 
         #[cfg(feature = "columns")]
-        columns_api!($t, $quat, $vec3, $width, $blocks_all);
+        columns_api!($glam, $t, $quat, $vec3, $width, $blocks_all);
     };
 }
 

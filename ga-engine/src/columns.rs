@@ -3,10 +3,11 @@
 //! Written once and stamped out inside each precision's module by `precision_api!`
 //! (`api.rs`), whose `Body`, `BodyState` and glam conversions it uses.
 
-/// `BodyColumns` and `BodyMut` of one precision: `$t` the float, `$width` the lanes of a
-/// block, `$blocks_all` the stepper of a slice of blocks (`dispatch.rs`).
+/// `BodyColumns` and `BodyMut` of one precision on one glam: `$glam` that glam (its module
+/// name, as in `precision_api!`), `$t` the float, `$width` the lanes of a block,
+/// `$blocks_all` the stepper of a slice of blocks (`dispatch.rs`).
 macro_rules! columns_api {
-    ($t:ident, $quat:ident, $vec3:ident, $width:literal, $blocks_all:path) => {
+    ($glam:ident, $t:ident, $quat:ident, $vec3:ident, $width:literal, $blocks_all:path) => {
         /// Lanes in one block of [`BodyColumns`].
         const WIDTH: usize = $width;
 
@@ -23,8 +24,11 @@ macro_rules! columns_api {
         /// panic.
         ///
         /// ```
-        #[doc = concat!("use ga_engine::", stringify!($t), "::{BodyColumns, Body, BodyState};")]
-        #[doc = concat!("use ga_engine::glam::{", stringify!($quat), ", ", stringify!($vec3), "};")]
+        // The module of this glam and this precision, and that glam as the user's crate
+        // names it (`glam`; here ga-engine's renamed dependency, in a hidden line).
+        #[doc = concat!("# use ", stringify!($glam), " as glam;")]
+        #[doc = concat!("use ga_engine::", stringify!($glam), "::", stringify!($t), "::{BodyColumns, Body, BodyState};")]
+        #[doc = concat!("use glam::{", stringify!($quat), ", ", stringify!($vec3), "};")]
         ///
         #[doc = concat!("let body = Body::from_principal(", stringify!($vec3), "::new(1.0, 2.0, 3.0), ", stringify!($quat), "::IDENTITY).unwrap();")]
         /// let mut bodies = BodyColumns::new();
