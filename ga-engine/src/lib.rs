@@ -66,20 +66,22 @@
 //!
 //! # The same bits everywhere: what is promised
 //! The steps use only IEEE-754 `+ - * /` and `sqrt` (each correctly rounded), in a fixed
-//! order: no fused multiply-add (Rust never contracts `a * b + c`, with or without `-C
-//! target-cpu=native`), no `sin`/`cos` at all (rational turns), no reassociation. The one
-//! run-time CPU check is the slice forms': with AVX an f32 slice steps eight bodies in one
-//! register instead of four, an f64 slice four in one register instead of two in an SSE2
-//! register, each lane doing the scalar's operations in the scalar's order, so the bits are
-//! the same either way (unit tests compare every form with one body at a time). So on every
-//! target where `f32`/`f64` are IEEE binary32/binary64 with round-to-nearest and no flush
-//! of subnormals (x86-64 with SSE2, AVX2 or AVX-512; AArch64; wasm32), the same inputs give
-//! the same bits, in the one-body, slice and parallel forms alike (`tests/engine.rs`
-//! compares golden bit patterns of 10^4 steps). Not promised: 32-bit x86 without SSE2 (x87
-//! keeps extra precision), a flush-to-zero mode set by the caller, and NaN payloads. glam's
-//! own operations (which may round differently between its SIMD and scalar builds) are used
-//! only to move values in and out. Building the body description
-//! ([`f32::Body::from_tensor`]) uses `libm`'s `sqrt`, also correctly rounded, in f64.
+//! order: no fused multiply-add (Rust never contracts `a * b + c`, with or without
+//! `-C target-cpu=native`), no `sin`/`cos` at all (rational turns), no reassociation. The
+//! one run-time CPU check is the slice forms': with AVX an f32 slice steps eight bodies in
+//! one register instead of four, an f64 slice four in one register instead of two in an
+//! SSE2 register, each lane doing the scalar's operations in the scalar's order, so the
+//! bits are the same either way (unit tests compare every form with one body at a time). So
+//! on every target where `f32`/`f64` are IEEE binary32/binary64 with round-to-nearest and
+//! no flush of subnormals (x86-64 with SSE2, AVX2 or AVX-512; AArch64; wasm32), the same
+//! inputs give the same bits, in the one-body, slice and parallel forms alike
+//! (`tests/engine.rs` compares golden bit patterns of 10^4 steps; CI runs it on x86-64,
+//! built for the baseline and for the CPU's own instructions, and as AArch64 code under
+//! qemu). Not promised: 32-bit x86 without SSE2 (x87 keeps extra precision), a
+//! flush-to-zero mode set by the caller, and NaN payloads. glam's own operations (which may
+//! round differently between its SIMD and scalar builds) are used only to move values in
+//! and out. Building the body description ([`f32::Body::from_tensor`]) uses `libm`'s
+//! `sqrt`, also correctly rounded, in f64.
 //!
 //! # Errors and panics
 //! Bodies are checked once ([`BodyError`]). The steps never panic and never allocate
