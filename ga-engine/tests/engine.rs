@@ -375,7 +375,6 @@ fn the_implicit_baseline_solves_its_equation_to_first_order_and_loses_energy() {
     assert!(e < 0.99 * e0, "{e} {e0}");
 }
 
-/// A mixed crowd: different tensors (diagonal and turned), orientations, torques.
 /// The unit quaternion `(1 - t^2, 2 t e)/(1 + t^2)` about the axis `e` (a turn by
 /// `4 atan t`), from `+ - * /` alone: the same bits on every target, where glam's
 /// `normalize` (SSE on x86-64, NEON on AArch64, summing in different orders) and the C
