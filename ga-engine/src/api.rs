@@ -376,8 +376,7 @@ macro_rules! precision_api {
         /// Every body by [`step`], several at a time in lanes: the same bits as
         /// stepping each alone. Gathering each body's components into the lanes and
         /// scattering the results back takes about half of its time; where the bodies
-        /// can stay in a `BodyColumns` (feature `columns`), its `step` skips
-        /// both.
+        /// can stay in a `BodyColumns` (feature `columns`), its `step` skips both.
         pub fn step_slice(states: &mut [BodyState], dt: $t) {
             $slice_all(states, dt, Order::Two);
         }

@@ -1,6 +1,5 @@
 //! `simulate`'s record of a run: the JSON sidecar of `--out FILE` and the note on the step
-//! control. The run itself, in the body's principal frame and back, is
-//! [`ga_rigid::run`].
+//! control. The run itself, in the body's principal frame and back, is [`ga_rigid::run`].
 
 use ga_rigid::limits::StepSource;
 use ga_rigid::registry::{Method, Step};

@@ -95,9 +95,8 @@ pub fn blade_name(blade: usize) -> String {
     format!("e{digits}")
 }
 
-/// The blade named by a field: `s` is the scalar, `e13` is `0b101`. The indices
-/// are single digits from 1 to 9 in strictly ascending order; anything else is
-/// `None`.
+/// The blade named by a field: `s` is the scalar, `e13` is `0b101`. The indices are
+/// single digits from 1 to 9 in strictly ascending order; anything else is `None`.
 #[must_use]
 pub fn blade_from_name(name: &str) -> Option<usize> {
     if name == "s" {
