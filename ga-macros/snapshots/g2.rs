@@ -6637,6 +6637,256 @@ pub mod g2 {
             iter.fold(Multivector::ONE, |total, x| total * *x)
         }
     }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Vector
+    where
+        Vector: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Vector as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Vector
+    where
+        Vector: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Vector as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Vector
+    where
+        Vector: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Vector as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Vector
+    where
+        Vector: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Vector as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Vector
+    where
+        Vector: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Vector as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Bivector
+    where
+        Bivector: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Bivector as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Bivector
+    where
+        Bivector: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Bivector as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Bivector
+    where
+        Bivector: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Bivector as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Bivector
+    where
+        Bivector: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Bivector as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Bivector
+    where
+        Bivector: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Bivector as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Even
+    where
+        Even: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Even as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Even
+    where
+        Even: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Even as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Even
+    where
+        Even: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Even as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Even
+    where
+        Even: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Even as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Even
+    where
+        Even: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Even as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Odd
+    where
+        Odd: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Odd as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Odd
+    where
+        Odd: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Odd as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Odd
+    where
+        Odd: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Odd as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Odd
+    where
+        Odd: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Odd as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Odd
+    where
+        Odd: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Odd as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Multivector
+    where
+        Multivector: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Multivector as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Multivector
+    where
+        Multivector: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Multivector as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Multivector
+    where
+        Multivector: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Multivector as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Multivector
+    where
+        Multivector: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Multivector as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Multivector
+    where
+        Multivector: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Multivector as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
     impl ::core::ops::Mul<&Vector> for &f64 {
         type Output = <f64 as ::core::ops::Mul<Vector>>::Output;
         #[inline]
@@ -7162,39 +7412,11 @@ pub mod g2 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&f64> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<f64> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&f64> for Vector {
         type Output = <Vector as ::core::ops::Mul<f64>>::Output;
         #[inline]
         fn mul(self, rhs: &f64) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&f64> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<f64> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&f64> for Vector {
@@ -7204,39 +7426,11 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&f64> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<f64> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&f64> for Vector {
         type Output = <Vector as ::core::ops::BitOr<f64>>::Output;
         #[inline]
         fn bitor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&f64> for &Vector {
-        type Output = <Vector as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<f64> for &Vector {
-        type Output = <Vector as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: f64) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&f64> for Vector {
@@ -7246,39 +7440,11 @@ pub mod g2 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&f64> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<f64> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&f64> for Vector {
         type Output = <Vector as ::core::ops::Sub<f64>>::Output;
         #[inline]
         fn sub(self, rhs: &f64) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Vector> for Vector {
@@ -7288,39 +7454,11 @@ pub mod g2 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Vector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Vector> for Vector {
         type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Vector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for Vector {
@@ -7330,39 +7468,11 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Vector> for Vector {
         type Output = <Vector as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for Vector {
@@ -7384,39 +7494,11 @@ pub mod g2 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Bivector> for Vector {
         type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for Vector {
@@ -7426,39 +7508,11 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Bivector> for Vector {
         type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for Vector {
@@ -7468,39 +7522,11 @@ pub mod g2 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Bivector> for Vector {
         type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Even> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Even> for Vector {
@@ -7510,39 +7536,11 @@ pub mod g2 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Even> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Even> for Vector {
         type Output = <Vector as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Even> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for Vector {
@@ -7552,39 +7550,11 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Even> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Even> for Vector {
         type Output = <Vector as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Even> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for Vector {
@@ -7594,39 +7564,11 @@ pub mod g2 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Odd> for Vector {
         type Output = <Vector as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Odd> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for Vector {
@@ -7636,20 +7578,6 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Odd> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Odd> for Vector {
         type Output = <Vector as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
@@ -7657,39 +7585,11 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Odd> for Vector {
         type Output = <Vector as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for Vector {
@@ -7711,39 +7611,11 @@ pub mod g2 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Multivector> for Vector {
         type Output = <Vector as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for Vector {
@@ -7753,39 +7625,11 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Multivector> for Vector {
         type Output = <Vector as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Multivector> for Vector {
@@ -7795,39 +7639,11 @@ pub mod g2 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Multivector> for Vector {
         type Output = <Vector as ::core::ops::Sub<Multivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&f64> for Bivector {
@@ -7837,39 +7653,11 @@ pub mod g2 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&f64> for Bivector {
         type Output = <Bivector as ::core::ops::BitXor<f64>>::Output;
         #[inline]
         fn bitxor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&f64> for Bivector {
@@ -7879,39 +7667,11 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: f64) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&f64> for Bivector {
         type Output = <Bivector as ::core::ops::Add<f64>>::Output;
         #[inline]
         fn add(self, rhs: &f64) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&f64> for Bivector {
@@ -7921,39 +7681,11 @@ pub mod g2 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Vector> for Bivector {
         type Output = <Bivector as ::core::ops::Mul<Vector>>::Output;
         #[inline]
         fn mul(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Vector> for Bivector {
@@ -7963,39 +7695,11 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Vector> for Bivector {
         type Output = <Bivector as ::core::ops::BitOr<Vector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Vector> for Bivector {
@@ -8005,39 +7709,11 @@ pub mod g2 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Vector> for Bivector {
         type Output = <Bivector as ::core::ops::Sub<Vector>>::Output;
         #[inline]
         fn sub(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Bivector> for Bivector {
@@ -8047,39 +7723,11 @@ pub mod g2 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Bivector> for Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Bivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Bivector> for Bivector {
@@ -8089,39 +7737,11 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Bivector> for Bivector {
         type Output = <Bivector as ::core::ops::Add<Bivector>>::Output;
         #[inline]
         fn add(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Bivector> for Bivector {
@@ -8143,39 +7763,11 @@ pub mod g2 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Even> for Bivector {
         type Output = <Bivector as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for Bivector {
@@ -8185,39 +7777,11 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Even> for Bivector {
         type Output = <Bivector as ::core::ops::BitOr<Even>>::Output;
         #[inline]
         fn bitor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Even> for Bivector {
@@ -8227,39 +7791,11 @@ pub mod g2 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Even> for Bivector {
         type Output = <Bivector as ::core::ops::Sub<Even>>::Output;
         #[inline]
         fn sub(self, rhs: &Even) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Odd> for Bivector {
@@ -8269,39 +7805,11 @@ pub mod g2 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Odd> for Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Odd>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Odd> for Bivector {
@@ -8311,39 +7819,11 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Odd> for Bivector {
         type Output = <Bivector as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for Bivector {
@@ -8353,39 +7833,11 @@ pub mod g2 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Multivector> for Bivector {
         type Output = <Bivector as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for Bivector {
@@ -8395,39 +7847,11 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Multivector> for Bivector {
         type Output = <Bivector as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Multivector> for Bivector {
@@ -8437,39 +7861,11 @@ pub mod g2 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Multivector> for Bivector {
         type Output = <Bivector as ::core::ops::Sub<Multivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&f64> for &Even {
-        type Output = <Even as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<f64> for &Even {
-        type Output = <Even as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&f64> for Even {
@@ -8479,39 +7875,11 @@ pub mod g2 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&f64> for &Even {
-        type Output = <Even as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<f64> for &Even {
-        type Output = <Even as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&f64> for Even {
         type Output = <Even as ::core::ops::BitXor<f64>>::Output;
         #[inline]
         fn bitxor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&f64> for &Even {
-        type Output = <Even as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<f64> for &Even {
-        type Output = <Even as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&f64> for Even {
@@ -8521,39 +7889,11 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&f64> for &Even {
-        type Output = <Even as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<f64> for &Even {
-        type Output = <Even as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: f64) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&f64> for Even {
         type Output = <Even as ::core::ops::Add<f64>>::Output;
         #[inline]
         fn add(self, rhs: &f64) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&f64> for &Even {
-        type Output = <Even as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<f64> for &Even {
-        type Output = <Even as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&f64> for Even {
@@ -8575,39 +7915,11 @@ pub mod g2 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Vector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Vector> for Even {
         type Output = <Even as ::core::ops::Mul<Vector>>::Output;
         #[inline]
         fn mul(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Vector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Vector> for Even {
@@ -8617,39 +7929,11 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Vector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Vector> for Even {
         type Output = <Even as ::core::ops::BitOr<Vector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Vector> for &Even {
-        type Output = <Even as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Even {
-        type Output = <Even as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Vector> for Even {
@@ -8659,39 +7943,11 @@ pub mod g2 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Vector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Vector> for Even {
         type Output = <Even as ::core::ops::Sub<Vector>>::Output;
         #[inline]
         fn sub(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Bivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Bivector> for Even {
@@ -8701,39 +7957,11 @@ pub mod g2 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Bivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Bivector> for Even {
         type Output = <Even as ::core::ops::BitXor<Bivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Bivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Bivector> for Even {
@@ -8743,39 +7971,11 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Bivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Bivector> for Even {
         type Output = <Even as ::core::ops::Add<Bivector>>::Output;
         #[inline]
         fn add(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Bivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Bivector> for Even {
@@ -8797,39 +7997,11 @@ pub mod g2 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Even> for &Even {
-        type Output = <Even as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Even {
-        type Output = <Even as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Even> for Even {
         type Output = <Even as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Even> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for Even {
@@ -8839,20 +8011,6 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Even> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Even> for Even {
         type Output = <Even as ::core::ops::BitOr<Even>>::Output;
         #[inline]
@@ -8860,39 +8018,11 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Even> for &Even {
-        type Output = <Even as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Even {
-        type Output = <Even as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Even> for Even {
         type Output = <Even as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Even> for &Even {
-        type Output = <Even as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Even {
-        type Output = <Even as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for Even {
@@ -8914,39 +8044,11 @@ pub mod g2 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Odd> for &Even {
-        type Output = <Even as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Even {
-        type Output = <Even as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Odd> for Even {
         type Output = <Even as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Odd> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for Even {
@@ -8956,39 +8058,11 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Odd> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Odd> for Even {
         type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Odd> for &Even {
-        type Output = <Even as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Even {
-        type Output = <Even as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for Even {
@@ -8998,39 +8072,11 @@ pub mod g2 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Odd> for &Even {
-        type Output = <Even as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Even {
-        type Output = <Even as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Odd> for Even {
         type Output = <Even as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Multivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Multivector> for Even {
@@ -9040,39 +8086,11 @@ pub mod g2 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Multivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Multivector> for Even {
         type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Multivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for Even {
@@ -9082,39 +8100,11 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Multivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Multivector> for Even {
         type Output = <Even as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Multivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for Even {
@@ -9124,39 +8114,11 @@ pub mod g2 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&f64> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<f64> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&f64> for Odd {
         type Output = <Odd as ::core::ops::Mul<f64>>::Output;
         #[inline]
         fn mul(self, rhs: &f64) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&f64> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<f64> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&f64> for Odd {
@@ -9166,39 +8128,11 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&f64> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<f64> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&f64> for Odd {
         type Output = <Odd as ::core::ops::BitOr<f64>>::Output;
         #[inline]
         fn bitor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&f64> for &Odd {
-        type Output = <Odd as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<f64> for &Odd {
-        type Output = <Odd as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: f64) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&f64> for Odd {
@@ -9208,39 +8142,11 @@ pub mod g2 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&f64> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<f64> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&f64> for Odd {
         type Output = <Odd as ::core::ops::Sub<f64>>::Output;
         #[inline]
         fn sub(self, rhs: &f64) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Vector> for Odd {
@@ -9250,39 +8156,11 @@ pub mod g2 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Vector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Vector> for Odd {
         type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Vector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for Odd {
@@ -9292,39 +8170,11 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Vector> for Odd {
         type Output = <Odd as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for Odd {
@@ -9346,39 +8196,11 @@ pub mod g2 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Bivector> for Odd {
         type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for Odd {
@@ -9388,39 +8210,11 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Bivector> for Odd {
         type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for Odd {
@@ -9430,39 +8224,11 @@ pub mod g2 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Bivector> for Odd {
         type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Even> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Even> for Odd {
@@ -9472,39 +8238,11 @@ pub mod g2 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Even> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Even> for Odd {
         type Output = <Odd as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Even> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for Odd {
@@ -9514,39 +8252,11 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Even> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Even> for Odd {
         type Output = <Odd as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Even> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for Odd {
@@ -9556,39 +8266,11 @@ pub mod g2 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Odd> for Odd {
         type Output = <Odd as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Odd> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for Odd {
@@ -9598,20 +8280,6 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Odd> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Odd> for Odd {
         type Output = <Odd as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
@@ -9619,39 +8287,11 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Odd> for Odd {
         type Output = <Odd as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for Odd {
@@ -9673,39 +8313,11 @@ pub mod g2 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Multivector> for Odd {
         type Output = <Odd as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for Odd {
@@ -9715,39 +8327,11 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Multivector> for Odd {
         type Output = <Odd as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Multivector> for Odd {
@@ -9757,39 +8341,11 @@ pub mod g2 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Multivector> for Odd {
         type Output = <Odd as ::core::ops::Sub<Multivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&f64> for Multivector {
@@ -9799,39 +8355,11 @@ pub mod g2 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&f64> for Multivector {
         type Output = <Multivector as ::core::ops::BitXor<f64>>::Output;
         #[inline]
         fn bitxor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&f64> for Multivector {
@@ -9841,39 +8369,11 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: f64) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&f64> for Multivector {
         type Output = <Multivector as ::core::ops::Add<f64>>::Output;
         #[inline]
         fn add(self, rhs: &f64) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&f64> for Multivector {
@@ -9895,39 +8395,11 @@ pub mod g2 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Vector> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Vector>>::Output;
         #[inline]
         fn mul(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Vector> for Multivector {
@@ -9937,20 +8409,6 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Vector> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Vector>>::Output;
         #[inline]
@@ -9958,39 +8416,11 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Vector> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for Multivector {
@@ -10012,39 +8442,11 @@ pub mod g2 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Bivector> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for Multivector {
@@ -10054,20 +8456,6 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Bivector> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
@@ -10075,39 +8463,11 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Bivector> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Bivector>>::Output;
         #[inline]
         fn add(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Bivector> for Multivector {
@@ -10129,39 +8489,11 @@ pub mod g2 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Even> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for Multivector {
@@ -10171,20 +8503,6 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Even> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
         #[inline]
@@ -10192,39 +8510,11 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Even> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for Multivector {
@@ -10246,39 +8536,11 @@ pub mod g2 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Odd> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for Multivector {
@@ -10288,20 +8550,6 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Odd> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
@@ -10309,39 +8557,11 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Odd> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for Multivector {
@@ -10363,39 +8583,11 @@ pub mod g2 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Multivector> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for Multivector {
@@ -10405,20 +8597,6 @@ pub mod g2 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Multivector> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
@@ -10426,39 +8604,11 @@ pub mod g2 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Multivector> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for Multivector {

@@ -10348,6 +10348,306 @@ pub mod g3 {
             iter.fold(Multivector::ONE, |total, x| total * *x)
         }
     }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Vector
+    where
+        Vector: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Vector as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Vector
+    where
+        Vector: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Vector as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Vector
+    where
+        Vector: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Vector as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Vector
+    where
+        Vector: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Vector as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Vector
+    where
+        Vector: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Vector as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Bivector
+    where
+        Bivector: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Bivector as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Bivector
+    where
+        Bivector: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Bivector as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Bivector
+    where
+        Bivector: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Bivector as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Bivector
+    where
+        Bivector: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Bivector as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Bivector
+    where
+        Bivector: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Bivector as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Trivector
+    where
+        Trivector: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Trivector as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Trivector
+    where
+        Trivector: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Trivector as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Trivector
+    where
+        Trivector: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Trivector as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Trivector
+    where
+        Trivector: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Trivector as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Trivector
+    where
+        Trivector: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Trivector as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Even
+    where
+        Even: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Even as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Even
+    where
+        Even: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Even as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Even
+    where
+        Even: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Even as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Even
+    where
+        Even: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Even as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Even
+    where
+        Even: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Even as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Odd
+    where
+        Odd: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Odd as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Odd
+    where
+        Odd: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Odd as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Odd
+    where
+        Odd: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Odd as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Odd
+    where
+        Odd: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Odd as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Odd
+    where
+        Odd: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Odd as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Multivector
+    where
+        Multivector: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Multivector as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Multivector
+    where
+        Multivector: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Multivector as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Multivector
+    where
+        Multivector: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Multivector as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Multivector
+    where
+        Multivector: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Multivector as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Multivector
+    where
+        Multivector: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Multivector as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
     impl ::core::ops::Mul<&Vector> for &f64 {
         type Output = <f64 as ::core::ops::Mul<Vector>>::Output;
         #[inline]
@@ -10978,39 +11278,11 @@ pub mod g3 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&f64> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<f64> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&f64> for Vector {
         type Output = <Vector as ::core::ops::Mul<f64>>::Output;
         #[inline]
         fn mul(self, rhs: &f64) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&f64> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<f64> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&f64> for Vector {
@@ -11020,39 +11292,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&f64> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<f64> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&f64> for Vector {
         type Output = <Vector as ::core::ops::BitOr<f64>>::Output;
         #[inline]
         fn bitor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&f64> for &Vector {
-        type Output = <Vector as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<f64> for &Vector {
-        type Output = <Vector as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: f64) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&f64> for Vector {
@@ -11062,39 +11306,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&f64> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<f64> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&f64> for Vector {
         type Output = <Vector as ::core::ops::Sub<f64>>::Output;
         #[inline]
         fn sub(self, rhs: &f64) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Vector> for Vector {
@@ -11104,39 +11320,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Vector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Vector> for Vector {
         type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Vector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for Vector {
@@ -11146,39 +11334,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Vector> for Vector {
         type Output = <Vector as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for Vector {
@@ -11200,39 +11360,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Bivector> for Vector {
         type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for Vector {
@@ -11242,39 +11374,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Bivector> for Vector {
         type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for Vector {
@@ -11284,39 +11388,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Bivector> for Vector {
         type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Trivector> for Vector {
@@ -11326,39 +11402,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Trivector> for Vector {
         type Output = <Vector as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for Vector {
@@ -11368,39 +11416,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Trivector> for Vector {
         type Output = <Vector as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for Vector {
@@ -11410,39 +11430,11 @@ pub mod g3 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Even> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Even> for Vector {
         type Output = <Vector as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Even> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for Vector {
@@ -11452,39 +11444,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Even> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Even> for Vector {
         type Output = <Vector as ::core::ops::BitOr<Even>>::Output;
         #[inline]
         fn bitor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Even> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Even> for Vector {
@@ -11494,39 +11458,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Even> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Even> for Vector {
         type Output = <Vector as ::core::ops::Sub<Even>>::Output;
         #[inline]
         fn sub(self, rhs: &Even) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Odd> for Vector {
@@ -11536,39 +11472,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Odd> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Odd> for Vector {
         type Output = <Vector as ::core::ops::BitXor<Odd>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Odd> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Odd> for Vector {
@@ -11578,39 +11486,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Odd> for Vector {
         type Output = <Vector as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for Vector {
@@ -11620,39 +11500,11 @@ pub mod g3 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Multivector> for Vector {
         type Output = <Vector as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for Vector {
@@ -11662,39 +11514,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Multivector> for Vector {
         type Output = <Vector as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Multivector> for Vector {
@@ -11704,39 +11528,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Multivector> for Vector {
         type Output = <Vector as ::core::ops::Sub<Multivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&f64> for Bivector {
@@ -11746,39 +11542,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&f64> for Bivector {
         type Output = <Bivector as ::core::ops::BitXor<f64>>::Output;
         #[inline]
         fn bitxor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&f64> for Bivector {
@@ -11788,39 +11556,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: f64) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&f64> for Bivector {
         type Output = <Bivector as ::core::ops::Add<f64>>::Output;
         #[inline]
         fn add(self, rhs: &f64) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&f64> for Bivector {
@@ -11830,39 +11570,11 @@ pub mod g3 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Vector> for Bivector {
         type Output = <Bivector as ::core::ops::Mul<Vector>>::Output;
         #[inline]
         fn mul(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Vector> for Bivector {
@@ -11872,39 +11584,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Vector> for Bivector {
         type Output = <Bivector as ::core::ops::BitOr<Vector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Vector> for Bivector {
@@ -11914,39 +11598,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Vector> for Bivector {
         type Output = <Bivector as ::core::ops::Sub<Vector>>::Output;
         #[inline]
         fn sub(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Bivector> for Bivector {
@@ -11956,39 +11612,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Bivector> for Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Bivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Bivector> for Bivector {
@@ -11998,39 +11626,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Bivector> for Bivector {
         type Output = <Bivector as ::core::ops::Add<Bivector>>::Output;
         #[inline]
         fn add(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Bivector> for Bivector {
@@ -12052,39 +11652,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Trivector> for Bivector {
         type Output = <Bivector as ::core::ops::Mul<Trivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Trivector> for Bivector {
@@ -12094,39 +11666,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Trivector> for Bivector {
         type Output = <Bivector as ::core::ops::BitOr<Trivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Trivector> for Bivector {
@@ -12136,39 +11680,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Trivector> for Bivector {
         type Output = <Bivector as ::core::ops::Sub<Trivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Even> for Bivector {
@@ -12178,39 +11694,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Even> for Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for Bivector {
@@ -12220,39 +11708,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Even> for Bivector {
         type Output = <Bivector as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for Bivector {
@@ -12262,39 +11722,11 @@ pub mod g3 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Odd> for Bivector {
         type Output = <Bivector as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for Bivector {
@@ -12304,39 +11736,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Odd> for Bivector {
         type Output = <Bivector as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for Bivector {
@@ -12346,39 +11750,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Odd> for Bivector {
         type Output = <Bivector as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Multivector> for Bivector {
@@ -12388,39 +11764,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Multivector> for Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for Bivector {
@@ -12430,39 +11778,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Multivector> for Bivector {
         type Output = <Bivector as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for Bivector {
@@ -12472,39 +11792,11 @@ pub mod g3 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&f64> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<f64> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&f64> for Trivector {
         type Output = <Trivector as ::core::ops::Mul<f64>>::Output;
         #[inline]
         fn mul(self, rhs: &f64) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&f64> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<f64> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&f64> for Trivector {
@@ -12514,39 +11806,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&f64> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<f64> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&f64> for Trivector {
         type Output = <Trivector as ::core::ops::BitOr<f64>>::Output;
         #[inline]
         fn bitor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&f64> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<f64> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: f64) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&f64> for Trivector {
@@ -12556,39 +11820,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&f64> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<f64> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&f64> for Trivector {
         type Output = <Trivector as ::core::ops::Sub<f64>>::Output;
         #[inline]
         fn sub(self, rhs: &f64) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Vector> for Trivector {
@@ -12598,39 +11834,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Vector> for Trivector {
         type Output = <Trivector as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for Trivector {
@@ -12640,39 +11848,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Vector> for Trivector {
         type Output = <Trivector as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for Trivector {
@@ -12682,39 +11862,11 @@ pub mod g3 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Bivector> for Trivector {
         type Output = <Trivector as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for Trivector {
@@ -12724,39 +11876,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Bivector> for Trivector {
         type Output = <Trivector as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for Trivector {
@@ -12766,39 +11890,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Bivector> for Trivector {
         type Output = <Trivector as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Trivector> for Trivector {
@@ -12808,39 +11904,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Trivector> for Trivector {
         type Output = <Trivector as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for Trivector {
@@ -12850,39 +11918,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Trivector> for Trivector {
         type Output = <Trivector as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for Trivector {
@@ -12904,39 +11944,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Even> for Trivector {
         type Output = <Trivector as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for Trivector {
@@ -12946,39 +11958,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Even> for Trivector {
         type Output = <Trivector as ::core::ops::BitOr<Even>>::Output;
         #[inline]
         fn bitor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Even> for Trivector {
@@ -12988,39 +11972,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Even> for Trivector {
         type Output = <Trivector as ::core::ops::Sub<Even>>::Output;
         #[inline]
         fn sub(self, rhs: &Even) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Odd> for Trivector {
@@ -13030,39 +11986,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Odd> for Trivector {
         type Output = <Trivector as ::core::ops::BitXor<Odd>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Odd> for Trivector {
@@ -13072,39 +12000,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Odd> for Trivector {
         type Output = <Trivector as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for Trivector {
@@ -13114,39 +12014,11 @@ pub mod g3 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Multivector> for Trivector {
         type Output = <Trivector as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for Trivector {
@@ -13156,39 +12028,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Multivector> for Trivector {
         type Output = <Trivector as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Multivector> for Trivector {
@@ -13198,39 +12042,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Multivector> for Trivector {
         type Output = <Trivector as ::core::ops::Sub<Multivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&f64> for &Even {
-        type Output = <Even as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<f64> for &Even {
-        type Output = <Even as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&f64> for Even {
@@ -13240,39 +12056,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&f64> for &Even {
-        type Output = <Even as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<f64> for &Even {
-        type Output = <Even as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&f64> for Even {
         type Output = <Even as ::core::ops::BitXor<f64>>::Output;
         #[inline]
         fn bitxor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&f64> for &Even {
-        type Output = <Even as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<f64> for &Even {
-        type Output = <Even as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&f64> for Even {
@@ -13282,39 +12070,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&f64> for &Even {
-        type Output = <Even as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<f64> for &Even {
-        type Output = <Even as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: f64) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&f64> for Even {
         type Output = <Even as ::core::ops::Add<f64>>::Output;
         #[inline]
         fn add(self, rhs: &f64) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&f64> for &Even {
-        type Output = <Even as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<f64> for &Even {
-        type Output = <Even as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&f64> for Even {
@@ -13336,39 +12096,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Vector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Vector> for Even {
         type Output = <Even as ::core::ops::Mul<Vector>>::Output;
         #[inline]
         fn mul(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Vector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Vector> for Even {
@@ -13378,39 +12110,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Vector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Vector> for Even {
         type Output = <Even as ::core::ops::BitOr<Vector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Vector> for &Even {
-        type Output = <Even as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Even {
-        type Output = <Even as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Vector> for Even {
@@ -13420,39 +12124,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Vector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Vector> for Even {
         type Output = <Even as ::core::ops::Sub<Vector>>::Output;
         #[inline]
         fn sub(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Bivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Bivector> for Even {
@@ -13462,39 +12138,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Bivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Bivector> for Even {
         type Output = <Even as ::core::ops::BitXor<Bivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Bivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Bivector> for Even {
@@ -13504,39 +12152,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Bivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Bivector> for Even {
         type Output = <Even as ::core::ops::Add<Bivector>>::Output;
         #[inline]
         fn add(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Bivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Bivector> for Even {
@@ -13558,39 +12178,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Trivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Trivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Trivector> for Even {
         type Output = <Even as ::core::ops::Mul<Trivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Trivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Trivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Trivector> for Even {
@@ -13600,39 +12192,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Trivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Trivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Trivector> for Even {
         type Output = <Even as ::core::ops::BitOr<Trivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Trivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Trivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Trivector> for Even {
@@ -13642,39 +12206,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Trivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Trivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Trivector> for Even {
         type Output = <Even as ::core::ops::Sub<Trivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Even> for &Even {
-        type Output = <Even as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Even {
-        type Output = <Even as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Even> for Even {
@@ -13684,39 +12220,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Even> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Even> for Even {
         type Output = <Even as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Even> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for Even {
@@ -13726,39 +12234,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Even> for &Even {
-        type Output = <Even as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Even {
-        type Output = <Even as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Even> for Even {
         type Output = <Even as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Even> for &Even {
-        type Output = <Even as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Even {
-        type Output = <Even as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for Even {
@@ -13780,39 +12260,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Odd> for &Even {
-        type Output = <Even as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Even {
-        type Output = <Even as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Odd> for Even {
         type Output = <Even as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Odd> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for Even {
@@ -13822,39 +12274,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Odd> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Odd> for Even {
         type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Odd> for &Even {
-        type Output = <Even as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Even {
-        type Output = <Even as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for Even {
@@ -13864,39 +12288,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Odd> for &Even {
-        type Output = <Even as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Even {
-        type Output = <Even as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Odd> for Even {
         type Output = <Even as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Multivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Multivector> for Even {
@@ -13906,39 +12302,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Multivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Multivector> for Even {
         type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Multivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for Even {
@@ -13948,39 +12316,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Multivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Multivector> for Even {
         type Output = <Even as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Multivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for Even {
@@ -13990,39 +12330,11 @@ pub mod g3 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&f64> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<f64> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&f64> for Odd {
         type Output = <Odd as ::core::ops::Mul<f64>>::Output;
         #[inline]
         fn mul(self, rhs: &f64) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&f64> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<f64> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&f64> for Odd {
@@ -14032,39 +12344,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&f64> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<f64> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&f64> for Odd {
         type Output = <Odd as ::core::ops::BitOr<f64>>::Output;
         #[inline]
         fn bitor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&f64> for &Odd {
-        type Output = <Odd as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<f64> for &Odd {
-        type Output = <Odd as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: f64) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&f64> for Odd {
@@ -14074,39 +12358,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&f64> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<f64> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&f64> for Odd {
         type Output = <Odd as ::core::ops::Sub<f64>>::Output;
         #[inline]
         fn sub(self, rhs: &f64) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Vector> for Odd {
@@ -14116,39 +12372,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Vector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Vector> for Odd {
         type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Vector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for Odd {
@@ -14158,39 +12386,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Vector> for Odd {
         type Output = <Odd as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for Odd {
@@ -14212,39 +12412,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Bivector> for Odd {
         type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for Odd {
@@ -14254,39 +12426,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Bivector> for Odd {
         type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for Odd {
@@ -14296,39 +12440,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Bivector> for Odd {
         type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Trivector> for Odd {
@@ -14338,39 +12454,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Trivector> for Odd {
         type Output = <Odd as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for Odd {
@@ -14380,39 +12468,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Trivector> for Odd {
         type Output = <Odd as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for Odd {
@@ -14434,39 +12494,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Even> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Even> for Odd {
         type Output = <Odd as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Even> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for Odd {
@@ -14476,39 +12508,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Even> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Even> for Odd {
         type Output = <Odd as ::core::ops::BitOr<Even>>::Output;
         #[inline]
         fn bitor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Even> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Even> for Odd {
@@ -14518,39 +12522,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Even> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Even> for Odd {
         type Output = <Odd as ::core::ops::Sub<Even>>::Output;
         #[inline]
         fn sub(self, rhs: &Even) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Odd> for Odd {
@@ -14560,39 +12536,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Odd> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Odd> for Odd {
         type Output = <Odd as ::core::ops::BitXor<Odd>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Odd> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Odd> for Odd {
@@ -14602,39 +12550,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Odd> for Odd {
         type Output = <Odd as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for Odd {
@@ -14656,39 +12576,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Multivector> for Odd {
         type Output = <Odd as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for Odd {
@@ -14698,39 +12590,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Multivector> for Odd {
         type Output = <Odd as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Multivector> for Odd {
@@ -14740,39 +12604,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Multivector> for Odd {
         type Output = <Odd as ::core::ops::Sub<Multivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&f64> for Multivector {
@@ -14782,39 +12618,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&f64> for Multivector {
         type Output = <Multivector as ::core::ops::BitXor<f64>>::Output;
         #[inline]
         fn bitxor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&f64> for Multivector {
@@ -14824,39 +12632,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: f64) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&f64> for Multivector {
         type Output = <Multivector as ::core::ops::Add<f64>>::Output;
         #[inline]
         fn add(self, rhs: &f64) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&f64> for Multivector {
@@ -14878,39 +12658,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Vector> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Vector>>::Output;
         #[inline]
         fn mul(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Vector> for Multivector {
@@ -14920,20 +12672,6 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Vector> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Vector>>::Output;
         #[inline]
@@ -14941,39 +12679,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Vector> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for Multivector {
@@ -14995,39 +12705,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Bivector> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for Multivector {
@@ -15037,20 +12719,6 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Bivector> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
@@ -15058,39 +12726,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Bivector> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Bivector>>::Output;
         #[inline]
         fn add(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Bivector> for Multivector {
@@ -15112,39 +12752,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Trivector> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Trivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Trivector> for Multivector {
@@ -15154,20 +12766,6 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Trivector> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Trivector>>::Output;
         #[inline]
@@ -15175,39 +12773,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Trivector> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for Multivector {
@@ -15229,39 +12799,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Even> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for Multivector {
@@ -15271,20 +12813,6 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Even> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
         #[inline]
@@ -15292,39 +12820,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Even> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for Multivector {
@@ -15346,39 +12846,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Odd> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for Multivector {
@@ -15388,20 +12860,6 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Odd> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
@@ -15409,39 +12867,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Odd> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for Multivector {
@@ -15463,39 +12893,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Multivector> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for Multivector {
@@ -15505,20 +12907,6 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Multivector> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
@@ -15526,39 +12914,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Multivector> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for Multivector {

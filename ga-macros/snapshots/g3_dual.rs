@@ -10629,6 +10629,306 @@ pub mod g3 {
             iter.fold(Multivector::ONE, |total, x| total * *x)
         }
     }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Vector
+    where
+        Vector: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Vector as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Vector
+    where
+        Vector: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Vector as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Vector
+    where
+        Vector: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Vector as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Vector
+    where
+        Vector: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Vector as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Vector
+    where
+        Vector: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Vector as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Bivector
+    where
+        Bivector: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Bivector as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Bivector
+    where
+        Bivector: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Bivector as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Bivector
+    where
+        Bivector: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Bivector as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Bivector
+    where
+        Bivector: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Bivector as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Bivector
+    where
+        Bivector: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Bivector as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Trivector
+    where
+        Trivector: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Trivector as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Trivector
+    where
+        Trivector: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Trivector as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Trivector
+    where
+        Trivector: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Trivector as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Trivector
+    where
+        Trivector: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Trivector as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Trivector
+    where
+        Trivector: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Trivector as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Even
+    where
+        Even: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Even as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Even
+    where
+        Even: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Even as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Even
+    where
+        Even: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Even as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Even
+    where
+        Even: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Even as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Even
+    where
+        Even: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Even as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Odd
+    where
+        Odd: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Odd as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Odd
+    where
+        Odd: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Odd as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Odd
+    where
+        Odd: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Odd as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Odd
+    where
+        Odd: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Odd as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Odd
+    where
+        Odd: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Odd as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Multivector
+    where
+        Multivector: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Multivector as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Multivector
+    where
+        Multivector: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Multivector as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Multivector
+    where
+        Multivector: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Multivector as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Multivector
+    where
+        Multivector: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Multivector as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Multivector
+    where
+        Multivector: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Multivector as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
     impl ::core::ops::Mul<&Vector> for &::num_dual::Dual64 {
         type Output = <Scalar as ::core::ops::Mul<Vector>>::Output;
         #[inline]
@@ -11259,39 +11559,11 @@ pub mod g3 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&::num_dual::Dual64> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Scalar>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<::num_dual::Dual64> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Scalar>>::Output;
-        #[inline]
-        fn mul(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&::num_dual::Dual64> for Vector {
         type Output = <Vector as ::core::ops::Mul<Scalar>>::Output;
         #[inline]
         fn mul(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&::num_dual::Dual64> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Scalar>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<::num_dual::Dual64> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Scalar>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&::num_dual::Dual64> for Vector {
@@ -11301,39 +11573,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&::num_dual::Dual64> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Scalar>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<::num_dual::Dual64> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Scalar>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&::num_dual::Dual64> for Vector {
         type Output = <Vector as ::core::ops::BitOr<Scalar>>::Output;
         #[inline]
         fn bitor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&::num_dual::Dual64> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Scalar>>::Output;
-        #[inline]
-        fn add(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<::num_dual::Dual64> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Scalar>>::Output;
-        #[inline]
-        fn add(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&::num_dual::Dual64> for Vector {
@@ -11343,39 +11587,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&::num_dual::Dual64> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Scalar>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<::num_dual::Dual64> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Scalar>>::Output;
-        #[inline]
-        fn sub(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&::num_dual::Dual64> for Vector {
         type Output = <Vector as ::core::ops::Sub<Scalar>>::Output;
         #[inline]
         fn sub(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Vector> for Vector {
@@ -11385,39 +11601,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Vector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Vector> for Vector {
         type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Vector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for Vector {
@@ -11427,39 +11615,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Vector> for Vector {
         type Output = <Vector as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for Vector {
@@ -11481,39 +11641,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Bivector> for Vector {
         type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for Vector {
@@ -11523,39 +11655,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Bivector> for Vector {
         type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for Vector {
@@ -11565,39 +11669,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Bivector> for Vector {
         type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Trivector> for Vector {
@@ -11607,39 +11683,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Trivector> for Vector {
         type Output = <Vector as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for Vector {
@@ -11649,39 +11697,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Trivector> for Vector {
         type Output = <Vector as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for Vector {
@@ -11691,39 +11711,11 @@ pub mod g3 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Even> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Even> for Vector {
         type Output = <Vector as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Even> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for Vector {
@@ -11733,39 +11725,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Even> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Even> for Vector {
         type Output = <Vector as ::core::ops::BitOr<Even>>::Output;
         #[inline]
         fn bitor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Even> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Even> for Vector {
@@ -11775,39 +11739,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Even> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Even> for Vector {
         type Output = <Vector as ::core::ops::Sub<Even>>::Output;
         #[inline]
         fn sub(self, rhs: &Even) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Odd> for Vector {
@@ -11817,39 +11753,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Odd> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Odd> for Vector {
         type Output = <Vector as ::core::ops::BitXor<Odd>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Odd> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Odd> for Vector {
@@ -11859,39 +11767,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Odd> for Vector {
         type Output = <Vector as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for Vector {
@@ -11901,39 +11781,11 @@ pub mod g3 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Multivector> for Vector {
         type Output = <Vector as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for Vector {
@@ -11943,39 +11795,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Multivector> for Vector {
         type Output = <Vector as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Multivector> for Vector {
@@ -11985,39 +11809,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Multivector> for Vector {
         type Output = <Vector as ::core::ops::Sub<Multivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&::num_dual::Dual64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Scalar>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<::num_dual::Dual64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Scalar>>::Output;
-        #[inline]
-        fn mul(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&::num_dual::Dual64> for Bivector {
@@ -12027,39 +11823,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&::num_dual::Dual64> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Scalar>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<::num_dual::Dual64> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Scalar>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&::num_dual::Dual64> for Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Scalar>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&::num_dual::Dual64> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Scalar>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<::num_dual::Dual64> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Scalar>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&::num_dual::Dual64> for Bivector {
@@ -12069,39 +11837,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&::num_dual::Dual64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Scalar>>::Output;
-        #[inline]
-        fn add(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<::num_dual::Dual64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Scalar>>::Output;
-        #[inline]
-        fn add(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&::num_dual::Dual64> for Bivector {
         type Output = <Bivector as ::core::ops::Add<Scalar>>::Output;
         #[inline]
         fn add(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&::num_dual::Dual64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Scalar>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<::num_dual::Dual64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Scalar>>::Output;
-        #[inline]
-        fn sub(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&::num_dual::Dual64> for Bivector {
@@ -12111,39 +11851,11 @@ pub mod g3 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Vector> for Bivector {
         type Output = <Bivector as ::core::ops::Mul<Vector>>::Output;
         #[inline]
         fn mul(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Vector> for Bivector {
@@ -12153,39 +11865,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Vector> for Bivector {
         type Output = <Bivector as ::core::ops::BitOr<Vector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Vector> for Bivector {
@@ -12195,39 +11879,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Vector> for Bivector {
         type Output = <Bivector as ::core::ops::Sub<Vector>>::Output;
         #[inline]
         fn sub(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Bivector> for Bivector {
@@ -12237,39 +11893,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Bivector> for Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Bivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Bivector> for Bivector {
@@ -12279,39 +11907,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Bivector> for Bivector {
         type Output = <Bivector as ::core::ops::Add<Bivector>>::Output;
         #[inline]
         fn add(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Bivector> for Bivector {
@@ -12333,39 +11933,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Trivector> for Bivector {
         type Output = <Bivector as ::core::ops::Mul<Trivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Trivector> for Bivector {
@@ -12375,39 +11947,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Trivector> for Bivector {
         type Output = <Bivector as ::core::ops::BitOr<Trivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Trivector> for Bivector {
@@ -12417,39 +11961,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Trivector> for Bivector {
         type Output = <Bivector as ::core::ops::Sub<Trivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Even> for Bivector {
@@ -12459,39 +11975,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Even> for Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for Bivector {
@@ -12501,39 +11989,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Even> for Bivector {
         type Output = <Bivector as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for Bivector {
@@ -12543,39 +12003,11 @@ pub mod g3 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Odd> for Bivector {
         type Output = <Bivector as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for Bivector {
@@ -12585,39 +12017,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Odd> for Bivector {
         type Output = <Bivector as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for Bivector {
@@ -12627,39 +12031,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Odd> for Bivector {
         type Output = <Bivector as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Multivector> for Bivector {
@@ -12669,39 +12045,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Multivector> for Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for Bivector {
@@ -12711,39 +12059,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Multivector> for Bivector {
         type Output = <Bivector as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for Bivector {
@@ -12753,39 +12073,11 @@ pub mod g3 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&::num_dual::Dual64> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Scalar>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<::num_dual::Dual64> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Scalar>>::Output;
-        #[inline]
-        fn mul(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&::num_dual::Dual64> for Trivector {
         type Output = <Trivector as ::core::ops::Mul<Scalar>>::Output;
         #[inline]
         fn mul(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&::num_dual::Dual64> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Scalar>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<::num_dual::Dual64> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Scalar>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&::num_dual::Dual64> for Trivector {
@@ -12795,39 +12087,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&::num_dual::Dual64> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Scalar>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<::num_dual::Dual64> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Scalar>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&::num_dual::Dual64> for Trivector {
         type Output = <Trivector as ::core::ops::BitOr<Scalar>>::Output;
         #[inline]
         fn bitor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&::num_dual::Dual64> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Scalar>>::Output;
-        #[inline]
-        fn add(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<::num_dual::Dual64> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Scalar>>::Output;
-        #[inline]
-        fn add(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&::num_dual::Dual64> for Trivector {
@@ -12837,39 +12101,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&::num_dual::Dual64> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Scalar>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<::num_dual::Dual64> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Scalar>>::Output;
-        #[inline]
-        fn sub(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&::num_dual::Dual64> for Trivector {
         type Output = <Trivector as ::core::ops::Sub<Scalar>>::Output;
         #[inline]
         fn sub(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Vector> for Trivector {
@@ -12879,39 +12115,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Vector> for Trivector {
         type Output = <Trivector as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for Trivector {
@@ -12921,39 +12129,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Vector> for Trivector {
         type Output = <Trivector as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for Trivector {
@@ -12963,39 +12143,11 @@ pub mod g3 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Bivector> for Trivector {
         type Output = <Trivector as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for Trivector {
@@ -13005,39 +12157,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Bivector> for Trivector {
         type Output = <Trivector as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for Trivector {
@@ -13047,39 +12171,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Bivector> for Trivector {
         type Output = <Trivector as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Trivector> for Trivector {
@@ -13089,39 +12185,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Trivector> for Trivector {
         type Output = <Trivector as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for Trivector {
@@ -13131,39 +12199,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Trivector> for Trivector {
         type Output = <Trivector as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for Trivector {
@@ -13185,39 +12225,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Even> for Trivector {
         type Output = <Trivector as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for Trivector {
@@ -13227,39 +12239,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Even> for Trivector {
         type Output = <Trivector as ::core::ops::BitOr<Even>>::Output;
         #[inline]
         fn bitor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Even> for Trivector {
@@ -13269,39 +12253,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Even> for Trivector {
         type Output = <Trivector as ::core::ops::Sub<Even>>::Output;
         #[inline]
         fn sub(self, rhs: &Even) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Odd> for Trivector {
@@ -13311,39 +12267,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Odd> for Trivector {
         type Output = <Trivector as ::core::ops::BitXor<Odd>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Odd> for Trivector {
@@ -13353,39 +12281,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Odd> for Trivector {
         type Output = <Trivector as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for Trivector {
@@ -13395,39 +12295,11 @@ pub mod g3 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Multivector> for Trivector {
         type Output = <Trivector as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for Trivector {
@@ -13437,39 +12309,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Multivector> for Trivector {
         type Output = <Trivector as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Multivector> for Trivector {
@@ -13479,39 +12323,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Multivector> for Trivector {
         type Output = <Trivector as ::core::ops::Sub<Multivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&::num_dual::Dual64> for &Even {
-        type Output = <Even as ::core::ops::Mul<Scalar>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<::num_dual::Dual64> for &Even {
-        type Output = <Even as ::core::ops::Mul<Scalar>>::Output;
-        #[inline]
-        fn mul(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&::num_dual::Dual64> for Even {
@@ -13521,39 +12337,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&::num_dual::Dual64> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Scalar>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<::num_dual::Dual64> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Scalar>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&::num_dual::Dual64> for Even {
         type Output = <Even as ::core::ops::BitXor<Scalar>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&::num_dual::Dual64> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Scalar>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<::num_dual::Dual64> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Scalar>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&::num_dual::Dual64> for Even {
@@ -13563,39 +12351,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&::num_dual::Dual64> for &Even {
-        type Output = <Even as ::core::ops::Add<Scalar>>::Output;
-        #[inline]
-        fn add(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<::num_dual::Dual64> for &Even {
-        type Output = <Even as ::core::ops::Add<Scalar>>::Output;
-        #[inline]
-        fn add(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&::num_dual::Dual64> for Even {
         type Output = <Even as ::core::ops::Add<Scalar>>::Output;
         #[inline]
         fn add(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&::num_dual::Dual64> for &Even {
-        type Output = <Even as ::core::ops::Sub<Scalar>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<::num_dual::Dual64> for &Even {
-        type Output = <Even as ::core::ops::Sub<Scalar>>::Output;
-        #[inline]
-        fn sub(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&::num_dual::Dual64> for Even {
@@ -13617,39 +12377,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Vector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Vector> for Even {
         type Output = <Even as ::core::ops::Mul<Vector>>::Output;
         #[inline]
         fn mul(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Vector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Vector> for Even {
@@ -13659,39 +12391,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Vector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Vector> for Even {
         type Output = <Even as ::core::ops::BitOr<Vector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Vector> for &Even {
-        type Output = <Even as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Even {
-        type Output = <Even as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Vector> for Even {
@@ -13701,39 +12405,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Vector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Vector> for Even {
         type Output = <Even as ::core::ops::Sub<Vector>>::Output;
         #[inline]
         fn sub(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Bivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Bivector> for Even {
@@ -13743,39 +12419,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Bivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Bivector> for Even {
         type Output = <Even as ::core::ops::BitXor<Bivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Bivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Bivector> for Even {
@@ -13785,39 +12433,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Bivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Bivector> for Even {
         type Output = <Even as ::core::ops::Add<Bivector>>::Output;
         #[inline]
         fn add(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Bivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Bivector> for Even {
@@ -13839,39 +12459,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Trivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Trivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Trivector> for Even {
         type Output = <Even as ::core::ops::Mul<Trivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Trivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Trivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Trivector> for Even {
@@ -13881,39 +12473,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Trivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Trivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Trivector> for Even {
         type Output = <Even as ::core::ops::BitOr<Trivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Trivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Trivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Trivector> for Even {
@@ -13923,39 +12487,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Trivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Trivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Trivector> for Even {
         type Output = <Even as ::core::ops::Sub<Trivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Even> for &Even {
-        type Output = <Even as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Even {
-        type Output = <Even as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Even> for Even {
@@ -13965,39 +12501,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Even> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Even> for Even {
         type Output = <Even as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Even> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for Even {
@@ -14007,39 +12515,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Even> for &Even {
-        type Output = <Even as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Even {
-        type Output = <Even as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Even> for Even {
         type Output = <Even as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Even> for &Even {
-        type Output = <Even as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Even {
-        type Output = <Even as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for Even {
@@ -14061,39 +12541,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Odd> for &Even {
-        type Output = <Even as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Even {
-        type Output = <Even as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Odd> for Even {
         type Output = <Even as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Odd> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for Even {
@@ -14103,39 +12555,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Odd> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Odd> for Even {
         type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Odd> for &Even {
-        type Output = <Even as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Even {
-        type Output = <Even as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for Even {
@@ -14145,39 +12569,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Odd> for &Even {
-        type Output = <Even as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Even {
-        type Output = <Even as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Odd> for Even {
         type Output = <Even as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Multivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Multivector> for Even {
@@ -14187,39 +12583,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Multivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Multivector> for Even {
         type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Multivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for Even {
@@ -14229,39 +12597,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Multivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Multivector> for Even {
         type Output = <Even as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Multivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for Even {
@@ -14271,39 +12611,11 @@ pub mod g3 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&::num_dual::Dual64> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Scalar>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<::num_dual::Dual64> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Scalar>>::Output;
-        #[inline]
-        fn mul(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&::num_dual::Dual64> for Odd {
         type Output = <Odd as ::core::ops::Mul<Scalar>>::Output;
         #[inline]
         fn mul(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&::num_dual::Dual64> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Scalar>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<::num_dual::Dual64> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Scalar>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&::num_dual::Dual64> for Odd {
@@ -14313,39 +12625,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&::num_dual::Dual64> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Scalar>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<::num_dual::Dual64> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Scalar>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&::num_dual::Dual64> for Odd {
         type Output = <Odd as ::core::ops::BitOr<Scalar>>::Output;
         #[inline]
         fn bitor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&::num_dual::Dual64> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Scalar>>::Output;
-        #[inline]
-        fn add(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<::num_dual::Dual64> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Scalar>>::Output;
-        #[inline]
-        fn add(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&::num_dual::Dual64> for Odd {
@@ -14355,39 +12639,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&::num_dual::Dual64> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Scalar>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<::num_dual::Dual64> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Scalar>>::Output;
-        #[inline]
-        fn sub(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&::num_dual::Dual64> for Odd {
         type Output = <Odd as ::core::ops::Sub<Scalar>>::Output;
         #[inline]
         fn sub(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Vector> for Odd {
@@ -14397,39 +12653,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Vector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Vector> for Odd {
         type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Vector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for Odd {
@@ -14439,39 +12667,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Vector> for Odd {
         type Output = <Odd as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for Odd {
@@ -14493,39 +12693,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Bivector> for Odd {
         type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for Odd {
@@ -14535,39 +12707,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Bivector> for Odd {
         type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for Odd {
@@ -14577,39 +12721,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Bivector> for Odd {
         type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Trivector> for Odd {
@@ -14619,39 +12735,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Trivector> for Odd {
         type Output = <Odd as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for Odd {
@@ -14661,39 +12749,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Trivector> for Odd {
         type Output = <Odd as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for Odd {
@@ -14715,39 +12775,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Even> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Even> for Odd {
         type Output = <Odd as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Even> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for Odd {
@@ -14757,39 +12789,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Even> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Even> for Odd {
         type Output = <Odd as ::core::ops::BitOr<Even>>::Output;
         #[inline]
         fn bitor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Even> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Even> for Odd {
@@ -14799,39 +12803,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Even> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Even> for Odd {
         type Output = <Odd as ::core::ops::Sub<Even>>::Output;
         #[inline]
         fn sub(self, rhs: &Even) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Odd> for Odd {
@@ -14841,39 +12817,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Odd> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Odd> for Odd {
         type Output = <Odd as ::core::ops::BitXor<Odd>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Odd> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Odd> for Odd {
@@ -14883,39 +12831,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Odd> for Odd {
         type Output = <Odd as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for Odd {
@@ -14937,39 +12857,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Multivector> for Odd {
         type Output = <Odd as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for Odd {
@@ -14979,39 +12871,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Multivector> for Odd {
         type Output = <Odd as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Multivector> for Odd {
@@ -15021,39 +12885,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Multivector> for Odd {
         type Output = <Odd as ::core::ops::Sub<Multivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&::num_dual::Dual64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Scalar>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<::num_dual::Dual64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Scalar>>::Output;
-        #[inline]
-        fn mul(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&::num_dual::Dual64> for Multivector {
@@ -15063,39 +12899,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&::num_dual::Dual64> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Scalar>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<::num_dual::Dual64> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Scalar>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&::num_dual::Dual64> for Multivector {
         type Output = <Multivector as ::core::ops::BitXor<Scalar>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&::num_dual::Dual64> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Scalar>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<::num_dual::Dual64> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Scalar>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&::num_dual::Dual64> for Multivector {
@@ -15105,39 +12913,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&::num_dual::Dual64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Scalar>>::Output;
-        #[inline]
-        fn add(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<::num_dual::Dual64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Scalar>>::Output;
-        #[inline]
-        fn add(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&::num_dual::Dual64> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Scalar>>::Output;
         #[inline]
         fn add(self, rhs: &Scalar) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&::num_dual::Dual64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Scalar>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Scalar) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<::num_dual::Dual64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Scalar>>::Output;
-        #[inline]
-        fn sub(self, rhs: Scalar) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&::num_dual::Dual64> for Multivector {
@@ -15159,39 +12939,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Vector> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Vector>>::Output;
         #[inline]
         fn mul(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Vector> for Multivector {
@@ -15201,20 +12953,6 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Vector> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Vector>>::Output;
         #[inline]
@@ -15222,39 +12960,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Vector> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for Multivector {
@@ -15276,39 +12986,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Bivector> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for Multivector {
@@ -15318,20 +13000,6 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Bivector> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
@@ -15339,39 +13007,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Bivector> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Bivector>>::Output;
         #[inline]
         fn add(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Bivector> for Multivector {
@@ -15393,39 +13033,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Trivector> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Trivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Trivector> for Multivector {
@@ -15435,20 +13047,6 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Trivector> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Trivector>>::Output;
         #[inline]
@@ -15456,39 +13054,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Trivector> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for Multivector {
@@ -15510,39 +13080,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Even> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for Multivector {
@@ -15552,20 +13094,6 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Even> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
         #[inline]
@@ -15573,39 +13101,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Even> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for Multivector {
@@ -15627,39 +13127,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Odd> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for Multivector {
@@ -15669,20 +13141,6 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Odd> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
@@ -15690,39 +13148,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Odd> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for Multivector {
@@ -15744,39 +13174,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Multivector> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for Multivector {
@@ -15786,20 +13188,6 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Multivector> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
@@ -15807,39 +13195,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Multivector> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for Multivector {

@@ -10783,6 +10783,306 @@ pub mod g3 {
             iter.fold(Multivector::ONE, |total, x| total * *x)
         }
     }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Vector
+    where
+        Vector: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Vector as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Vector
+    where
+        Vector: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Vector as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Vector
+    where
+        Vector: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Vector as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Vector
+    where
+        Vector: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Vector as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Vector
+    where
+        Vector: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Vector as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Bivector
+    where
+        Bivector: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Bivector as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Bivector
+    where
+        Bivector: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Bivector as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Bivector
+    where
+        Bivector: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Bivector as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Bivector
+    where
+        Bivector: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Bivector as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Bivector
+    where
+        Bivector: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Bivector as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Trivector
+    where
+        Trivector: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Trivector as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Trivector
+    where
+        Trivector: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Trivector as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Trivector
+    where
+        Trivector: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Trivector as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Trivector
+    where
+        Trivector: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Trivector as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Trivector
+    where
+        Trivector: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Trivector as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Even
+    where
+        Even: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Even as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Even
+    where
+        Even: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Even as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Even
+    where
+        Even: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Even as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Even
+    where
+        Even: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Even as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Even
+    where
+        Even: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Even as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Odd
+    where
+        Odd: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Odd as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Odd
+    where
+        Odd: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Odd as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Odd
+    where
+        Odd: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Odd as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Odd
+    where
+        Odd: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Odd as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Odd
+    where
+        Odd: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Odd as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Multivector
+    where
+        Multivector: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Multivector as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Multivector
+    where
+        Multivector: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Multivector as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Multivector
+    where
+        Multivector: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Multivector as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Multivector
+    where
+        Multivector: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Multivector as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Multivector
+    where
+        Multivector: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Multivector as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
     impl ::core::ops::Mul<&Vector> for &f32 {
         type Output = <f32 as ::core::ops::Mul<Vector>>::Output;
         #[inline]
@@ -11413,39 +11713,11 @@ pub mod g3 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&f32> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<f32>>::Output;
-        #[inline]
-        fn mul(self, rhs: &f32) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<f32> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<f32>>::Output;
-        #[inline]
-        fn mul(self, rhs: f32) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&f32> for Vector {
         type Output = <Vector as ::core::ops::Mul<f32>>::Output;
         #[inline]
         fn mul(self, rhs: &f32) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&f32> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<f32>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &f32) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<f32> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<f32>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: f32) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&f32> for Vector {
@@ -11455,39 +11727,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&f32> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<f32>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &f32) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<f32> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<f32>>::Output;
-        #[inline]
-        fn bitor(self, rhs: f32) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&f32> for Vector {
         type Output = <Vector as ::core::ops::BitOr<f32>>::Output;
         #[inline]
         fn bitor(self, rhs: &f32) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&f32> for &Vector {
-        type Output = <Vector as ::core::ops::Add<f32>>::Output;
-        #[inline]
-        fn add(self, rhs: &f32) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<f32> for &Vector {
-        type Output = <Vector as ::core::ops::Add<f32>>::Output;
-        #[inline]
-        fn add(self, rhs: f32) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&f32> for Vector {
@@ -11497,39 +11741,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&f32> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<f32>>::Output;
-        #[inline]
-        fn sub(self, rhs: &f32) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<f32> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<f32>>::Output;
-        #[inline]
-        fn sub(self, rhs: f32) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&f32> for Vector {
         type Output = <Vector as ::core::ops::Sub<f32>>::Output;
         #[inline]
         fn sub(self, rhs: &f32) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Vector> for Vector {
@@ -11539,39 +11755,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Vector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Vector> for Vector {
         type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Vector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for Vector {
@@ -11581,39 +11769,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Vector> for Vector {
         type Output = <Vector as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for Vector {
@@ -11635,39 +11795,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Bivector> for Vector {
         type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for Vector {
@@ -11677,39 +11809,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Bivector> for Vector {
         type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for Vector {
@@ -11719,39 +11823,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Bivector> for Vector {
         type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Trivector> for Vector {
@@ -11761,39 +11837,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Trivector> for Vector {
         type Output = <Vector as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for Vector {
@@ -11803,39 +11851,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Trivector> for Vector {
         type Output = <Vector as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for Vector {
@@ -11845,39 +11865,11 @@ pub mod g3 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Even> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Even> for Vector {
         type Output = <Vector as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Even> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for Vector {
@@ -11887,39 +11879,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Even> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Even> for Vector {
         type Output = <Vector as ::core::ops::BitOr<Even>>::Output;
         #[inline]
         fn bitor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Even> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Even> for Vector {
@@ -11929,39 +11893,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Even> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Even> for Vector {
         type Output = <Vector as ::core::ops::Sub<Even>>::Output;
         #[inline]
         fn sub(self, rhs: &Even) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Odd> for Vector {
@@ -11971,39 +11907,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Odd> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Odd> for Vector {
         type Output = <Vector as ::core::ops::BitXor<Odd>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Odd> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Odd> for Vector {
@@ -12013,39 +11921,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Odd> for Vector {
         type Output = <Vector as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for Vector {
@@ -12055,39 +11935,11 @@ pub mod g3 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Multivector> for Vector {
         type Output = <Vector as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for Vector {
@@ -12097,39 +11949,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Multivector> for Vector {
         type Output = <Vector as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Multivector> for Vector {
@@ -12139,39 +11963,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Multivector> for Vector {
         type Output = <Vector as ::core::ops::Sub<Multivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&f32> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<f32>>::Output;
-        #[inline]
-        fn mul(self, rhs: &f32) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<f32> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<f32>>::Output;
-        #[inline]
-        fn mul(self, rhs: f32) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&f32> for Bivector {
@@ -12181,39 +11977,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&f32> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<f32>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &f32) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<f32> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<f32>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: f32) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&f32> for Bivector {
         type Output = <Bivector as ::core::ops::BitXor<f32>>::Output;
         #[inline]
         fn bitxor(self, rhs: &f32) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&f32> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<f32>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &f32) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<f32> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<f32>>::Output;
-        #[inline]
-        fn bitor(self, rhs: f32) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&f32> for Bivector {
@@ -12223,39 +11991,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&f32> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<f32>>::Output;
-        #[inline]
-        fn add(self, rhs: &f32) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<f32> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<f32>>::Output;
-        #[inline]
-        fn add(self, rhs: f32) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&f32> for Bivector {
         type Output = <Bivector as ::core::ops::Add<f32>>::Output;
         #[inline]
         fn add(self, rhs: &f32) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&f32> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<f32>>::Output;
-        #[inline]
-        fn sub(self, rhs: &f32) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<f32> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<f32>>::Output;
-        #[inline]
-        fn sub(self, rhs: f32) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&f32> for Bivector {
@@ -12265,39 +12005,11 @@ pub mod g3 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Vector> for Bivector {
         type Output = <Bivector as ::core::ops::Mul<Vector>>::Output;
         #[inline]
         fn mul(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Vector> for Bivector {
@@ -12307,39 +12019,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Vector> for Bivector {
         type Output = <Bivector as ::core::ops::BitOr<Vector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Vector> for Bivector {
@@ -12349,39 +12033,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Vector> for Bivector {
         type Output = <Bivector as ::core::ops::Sub<Vector>>::Output;
         #[inline]
         fn sub(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Bivector> for Bivector {
@@ -12391,39 +12047,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Bivector> for Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Bivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Bivector> for Bivector {
@@ -12433,39 +12061,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Bivector> for Bivector {
         type Output = <Bivector as ::core::ops::Add<Bivector>>::Output;
         #[inline]
         fn add(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Bivector> for Bivector {
@@ -12487,39 +12087,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Trivector> for Bivector {
         type Output = <Bivector as ::core::ops::Mul<Trivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Trivector> for Bivector {
@@ -12529,39 +12101,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Trivector> for Bivector {
         type Output = <Bivector as ::core::ops::BitOr<Trivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Trivector> for Bivector {
@@ -12571,39 +12115,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Trivector> for Bivector {
         type Output = <Bivector as ::core::ops::Sub<Trivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Even> for Bivector {
@@ -12613,39 +12129,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Even> for Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for Bivector {
@@ -12655,39 +12143,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Even> for Bivector {
         type Output = <Bivector as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for Bivector {
@@ -12697,39 +12157,11 @@ pub mod g3 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Odd> for Bivector {
         type Output = <Bivector as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for Bivector {
@@ -12739,39 +12171,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Odd> for Bivector {
         type Output = <Bivector as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for Bivector {
@@ -12781,39 +12185,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Odd> for Bivector {
         type Output = <Bivector as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Multivector> for Bivector {
@@ -12823,39 +12199,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Multivector> for Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for Bivector {
@@ -12865,39 +12213,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Multivector> for Bivector {
         type Output = <Bivector as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for Bivector {
@@ -12907,39 +12227,11 @@ pub mod g3 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&f32> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<f32>>::Output;
-        #[inline]
-        fn mul(self, rhs: &f32) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<f32> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<f32>>::Output;
-        #[inline]
-        fn mul(self, rhs: f32) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&f32> for Trivector {
         type Output = <Trivector as ::core::ops::Mul<f32>>::Output;
         #[inline]
         fn mul(self, rhs: &f32) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&f32> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<f32>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &f32) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<f32> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<f32>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: f32) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&f32> for Trivector {
@@ -12949,39 +12241,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&f32> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<f32>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &f32) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<f32> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<f32>>::Output;
-        #[inline]
-        fn bitor(self, rhs: f32) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&f32> for Trivector {
         type Output = <Trivector as ::core::ops::BitOr<f32>>::Output;
         #[inline]
         fn bitor(self, rhs: &f32) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&f32> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<f32>>::Output;
-        #[inline]
-        fn add(self, rhs: &f32) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<f32> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<f32>>::Output;
-        #[inline]
-        fn add(self, rhs: f32) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&f32> for Trivector {
@@ -12991,39 +12255,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&f32> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<f32>>::Output;
-        #[inline]
-        fn sub(self, rhs: &f32) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<f32> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<f32>>::Output;
-        #[inline]
-        fn sub(self, rhs: f32) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&f32> for Trivector {
         type Output = <Trivector as ::core::ops::Sub<f32>>::Output;
         #[inline]
         fn sub(self, rhs: &f32) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Vector> for Trivector {
@@ -13033,39 +12269,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Vector> for Trivector {
         type Output = <Trivector as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for Trivector {
@@ -13075,39 +12283,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Vector> for Trivector {
         type Output = <Trivector as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for Trivector {
@@ -13117,39 +12297,11 @@ pub mod g3 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Bivector> for Trivector {
         type Output = <Trivector as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for Trivector {
@@ -13159,39 +12311,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Bivector> for Trivector {
         type Output = <Trivector as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for Trivector {
@@ -13201,39 +12325,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Bivector> for Trivector {
         type Output = <Trivector as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Trivector> for Trivector {
@@ -13243,39 +12339,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Trivector> for Trivector {
         type Output = <Trivector as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for Trivector {
@@ -13285,39 +12353,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Trivector> for Trivector {
         type Output = <Trivector as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for Trivector {
@@ -13339,39 +12379,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Even> for Trivector {
         type Output = <Trivector as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for Trivector {
@@ -13381,39 +12393,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Even> for Trivector {
         type Output = <Trivector as ::core::ops::BitOr<Even>>::Output;
         #[inline]
         fn bitor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Even> for Trivector {
@@ -13423,39 +12407,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Even> for Trivector {
         type Output = <Trivector as ::core::ops::Sub<Even>>::Output;
         #[inline]
         fn sub(self, rhs: &Even) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Odd> for Trivector {
@@ -13465,39 +12421,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Odd> for Trivector {
         type Output = <Trivector as ::core::ops::BitXor<Odd>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Odd> for Trivector {
@@ -13507,39 +12435,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Odd> for Trivector {
         type Output = <Trivector as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for Trivector {
@@ -13549,39 +12449,11 @@ pub mod g3 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Multivector> for Trivector {
         type Output = <Trivector as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for Trivector {
@@ -13591,39 +12463,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Multivector> for Trivector {
         type Output = <Trivector as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Multivector> for Trivector {
@@ -13633,39 +12477,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Multivector> for Trivector {
         type Output = <Trivector as ::core::ops::Sub<Multivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&f32> for &Even {
-        type Output = <Even as ::core::ops::Mul<f32>>::Output;
-        #[inline]
-        fn mul(self, rhs: &f32) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<f32> for &Even {
-        type Output = <Even as ::core::ops::Mul<f32>>::Output;
-        #[inline]
-        fn mul(self, rhs: f32) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&f32> for Even {
@@ -13675,39 +12491,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&f32> for &Even {
-        type Output = <Even as ::core::ops::BitXor<f32>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &f32) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<f32> for &Even {
-        type Output = <Even as ::core::ops::BitXor<f32>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: f32) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&f32> for Even {
         type Output = <Even as ::core::ops::BitXor<f32>>::Output;
         #[inline]
         fn bitxor(self, rhs: &f32) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&f32> for &Even {
-        type Output = <Even as ::core::ops::BitOr<f32>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &f32) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<f32> for &Even {
-        type Output = <Even as ::core::ops::BitOr<f32>>::Output;
-        #[inline]
-        fn bitor(self, rhs: f32) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&f32> for Even {
@@ -13717,39 +12505,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&f32> for &Even {
-        type Output = <Even as ::core::ops::Add<f32>>::Output;
-        #[inline]
-        fn add(self, rhs: &f32) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<f32> for &Even {
-        type Output = <Even as ::core::ops::Add<f32>>::Output;
-        #[inline]
-        fn add(self, rhs: f32) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&f32> for Even {
         type Output = <Even as ::core::ops::Add<f32>>::Output;
         #[inline]
         fn add(self, rhs: &f32) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&f32> for &Even {
-        type Output = <Even as ::core::ops::Sub<f32>>::Output;
-        #[inline]
-        fn sub(self, rhs: &f32) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<f32> for &Even {
-        type Output = <Even as ::core::ops::Sub<f32>>::Output;
-        #[inline]
-        fn sub(self, rhs: f32) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&f32> for Even {
@@ -13771,39 +12531,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Vector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Vector> for Even {
         type Output = <Even as ::core::ops::Mul<Vector>>::Output;
         #[inline]
         fn mul(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Vector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Vector> for Even {
@@ -13813,39 +12545,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Vector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Vector> for Even {
         type Output = <Even as ::core::ops::BitOr<Vector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Vector> for &Even {
-        type Output = <Even as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Even {
-        type Output = <Even as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Vector> for Even {
@@ -13855,39 +12559,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Vector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Vector> for Even {
         type Output = <Even as ::core::ops::Sub<Vector>>::Output;
         #[inline]
         fn sub(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Bivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Bivector> for Even {
@@ -13897,39 +12573,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Bivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Bivector> for Even {
         type Output = <Even as ::core::ops::BitXor<Bivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Bivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Bivector> for Even {
@@ -13939,39 +12587,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Bivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Bivector> for Even {
         type Output = <Even as ::core::ops::Add<Bivector>>::Output;
         #[inline]
         fn add(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Bivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Bivector> for Even {
@@ -13993,39 +12613,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Trivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Trivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Trivector> for Even {
         type Output = <Even as ::core::ops::Mul<Trivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Trivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Trivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Trivector> for Even {
@@ -14035,39 +12627,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Trivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Trivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Trivector> for Even {
         type Output = <Even as ::core::ops::BitOr<Trivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Trivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Trivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Trivector> for Even {
@@ -14077,39 +12641,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Trivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Trivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Trivector> for Even {
         type Output = <Even as ::core::ops::Sub<Trivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Even> for &Even {
-        type Output = <Even as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Even {
-        type Output = <Even as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Even> for Even {
@@ -14119,39 +12655,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Even> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Even> for Even {
         type Output = <Even as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Even> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for Even {
@@ -14161,39 +12669,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Even> for &Even {
-        type Output = <Even as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Even {
-        type Output = <Even as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Even> for Even {
         type Output = <Even as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Even> for &Even {
-        type Output = <Even as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Even {
-        type Output = <Even as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for Even {
@@ -14215,39 +12695,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Odd> for &Even {
-        type Output = <Even as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Even {
-        type Output = <Even as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Odd> for Even {
         type Output = <Even as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Odd> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for Even {
@@ -14257,39 +12709,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Odd> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Odd> for Even {
         type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Odd> for &Even {
-        type Output = <Even as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Even {
-        type Output = <Even as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for Even {
@@ -14299,39 +12723,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Odd> for &Even {
-        type Output = <Even as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Even {
-        type Output = <Even as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Odd> for Even {
         type Output = <Even as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Multivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Multivector> for Even {
@@ -14341,39 +12737,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Multivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Multivector> for Even {
         type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Multivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for Even {
@@ -14383,39 +12751,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Multivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Multivector> for Even {
         type Output = <Even as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Multivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for Even {
@@ -14425,39 +12765,11 @@ pub mod g3 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&f32> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<f32>>::Output;
-        #[inline]
-        fn mul(self, rhs: &f32) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<f32> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<f32>>::Output;
-        #[inline]
-        fn mul(self, rhs: f32) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&f32> for Odd {
         type Output = <Odd as ::core::ops::Mul<f32>>::Output;
         #[inline]
         fn mul(self, rhs: &f32) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&f32> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<f32>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &f32) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<f32> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<f32>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: f32) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&f32> for Odd {
@@ -14467,39 +12779,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&f32> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<f32>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &f32) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<f32> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<f32>>::Output;
-        #[inline]
-        fn bitor(self, rhs: f32) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&f32> for Odd {
         type Output = <Odd as ::core::ops::BitOr<f32>>::Output;
         #[inline]
         fn bitor(self, rhs: &f32) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&f32> for &Odd {
-        type Output = <Odd as ::core::ops::Add<f32>>::Output;
-        #[inline]
-        fn add(self, rhs: &f32) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<f32> for &Odd {
-        type Output = <Odd as ::core::ops::Add<f32>>::Output;
-        #[inline]
-        fn add(self, rhs: f32) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&f32> for Odd {
@@ -14509,39 +12793,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&f32> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<f32>>::Output;
-        #[inline]
-        fn sub(self, rhs: &f32) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<f32> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<f32>>::Output;
-        #[inline]
-        fn sub(self, rhs: f32) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&f32> for Odd {
         type Output = <Odd as ::core::ops::Sub<f32>>::Output;
         #[inline]
         fn sub(self, rhs: &f32) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Vector> for Odd {
@@ -14551,39 +12807,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Vector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Vector> for Odd {
         type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Vector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for Odd {
@@ -14593,39 +12821,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Vector> for Odd {
         type Output = <Odd as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for Odd {
@@ -14647,39 +12847,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Bivector> for Odd {
         type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for Odd {
@@ -14689,39 +12861,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Bivector> for Odd {
         type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for Odd {
@@ -14731,39 +12875,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Bivector> for Odd {
         type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Trivector> for Odd {
@@ -14773,39 +12889,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Trivector> for Odd {
         type Output = <Odd as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for Odd {
@@ -14815,39 +12903,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Trivector> for Odd {
         type Output = <Odd as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for Odd {
@@ -14869,39 +12929,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Even> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Even> for Odd {
         type Output = <Odd as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Even> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for Odd {
@@ -14911,39 +12943,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Even> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Even> for Odd {
         type Output = <Odd as ::core::ops::BitOr<Even>>::Output;
         #[inline]
         fn bitor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Even> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Even> for Odd {
@@ -14953,39 +12957,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Even> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Even> for Odd {
         type Output = <Odd as ::core::ops::Sub<Even>>::Output;
         #[inline]
         fn sub(self, rhs: &Even) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Odd> for Odd {
@@ -14995,39 +12971,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Odd> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Odd> for Odd {
         type Output = <Odd as ::core::ops::BitXor<Odd>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Odd> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Odd> for Odd {
@@ -15037,39 +12985,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Odd> for Odd {
         type Output = <Odd as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for Odd {
@@ -15091,39 +13011,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Multivector> for Odd {
         type Output = <Odd as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for Odd {
@@ -15133,39 +13025,11 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Multivector> for Odd {
         type Output = <Odd as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Multivector> for Odd {
@@ -15175,39 +13039,11 @@ pub mod g3 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Multivector> for Odd {
         type Output = <Odd as ::core::ops::Sub<Multivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&f32> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<f32>>::Output;
-        #[inline]
-        fn mul(self, rhs: &f32) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<f32> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<f32>>::Output;
-        #[inline]
-        fn mul(self, rhs: f32) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&f32> for Multivector {
@@ -15217,39 +13053,11 @@ pub mod g3 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&f32> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<f32>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &f32) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<f32> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<f32>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: f32) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&f32> for Multivector {
         type Output = <Multivector as ::core::ops::BitXor<f32>>::Output;
         #[inline]
         fn bitxor(self, rhs: &f32) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&f32> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<f32>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &f32) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<f32> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<f32>>::Output;
-        #[inline]
-        fn bitor(self, rhs: f32) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&f32> for Multivector {
@@ -15259,39 +13067,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&f32> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<f32>>::Output;
-        #[inline]
-        fn add(self, rhs: &f32) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<f32> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<f32>>::Output;
-        #[inline]
-        fn add(self, rhs: f32) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&f32> for Multivector {
         type Output = <Multivector as ::core::ops::Add<f32>>::Output;
         #[inline]
         fn add(self, rhs: &f32) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&f32> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<f32>>::Output;
-        #[inline]
-        fn sub(self, rhs: &f32) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<f32> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<f32>>::Output;
-        #[inline]
-        fn sub(self, rhs: f32) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&f32> for Multivector {
@@ -15313,39 +13093,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Vector> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Vector>>::Output;
         #[inline]
         fn mul(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Vector> for Multivector {
@@ -15355,20 +13107,6 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Vector> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Vector>>::Output;
         #[inline]
@@ -15376,39 +13114,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Vector> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for Multivector {
@@ -15430,39 +13140,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Bivector> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for Multivector {
@@ -15472,20 +13154,6 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Bivector> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
@@ -15493,39 +13161,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Bivector> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Bivector>>::Output;
         #[inline]
         fn add(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Bivector> for Multivector {
@@ -15547,39 +13187,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Trivector> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Trivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Trivector> for Multivector {
@@ -15589,20 +13201,6 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Trivector> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Trivector>>::Output;
         #[inline]
@@ -15610,39 +13208,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Trivector> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for Multivector {
@@ -15664,39 +13234,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Even> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for Multivector {
@@ -15706,20 +13248,6 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Even> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
         #[inline]
@@ -15727,39 +13255,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Even> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for Multivector {
@@ -15781,39 +13281,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Odd> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for Multivector {
@@ -15823,20 +13295,6 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Odd> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
@@ -15844,39 +13302,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Odd> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for Multivector {
@@ -15898,39 +13328,11 @@ pub mod g3 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Multivector> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for Multivector {
@@ -15940,20 +13342,6 @@ pub mod g3 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Multivector> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
@@ -15961,39 +13349,11 @@ pub mod g3 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Multivector> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for Multivector {

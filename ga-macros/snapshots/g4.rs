@@ -18287,6 +18287,356 @@ pub mod g4 {
             iter.fold(Multivector::ONE, |total, x| total * *x)
         }
     }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Vector
+    where
+        Vector: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Vector as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Vector
+    where
+        Vector: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Vector as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Vector
+    where
+        Vector: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Vector as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Vector
+    where
+        Vector: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Vector as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Vector
+    where
+        Vector: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Vector as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Bivector
+    where
+        Bivector: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Bivector as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Bivector
+    where
+        Bivector: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Bivector as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Bivector
+    where
+        Bivector: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Bivector as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Bivector
+    where
+        Bivector: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Bivector as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Bivector
+    where
+        Bivector: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Bivector as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Trivector
+    where
+        Trivector: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Trivector as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Trivector
+    where
+        Trivector: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Trivector as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Trivector
+    where
+        Trivector: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Trivector as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Trivector
+    where
+        Trivector: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Trivector as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Trivector
+    where
+        Trivector: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Trivector as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Quadvector
+    where
+        Quadvector: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Quadvector as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Quadvector
+    where
+        Quadvector: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Quadvector as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Quadvector
+    where
+        Quadvector: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Quadvector as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Quadvector
+    where
+        Quadvector: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Quadvector as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Quadvector
+    where
+        Quadvector: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Quadvector as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Even
+    where
+        Even: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Even as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Even
+    where
+        Even: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Even as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Even
+    where
+        Even: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Even as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Even
+    where
+        Even: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Even as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Even
+    where
+        Even: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Even as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Odd
+    where
+        Odd: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Odd as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Odd
+    where
+        Odd: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Odd as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Odd
+    where
+        Odd: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Odd as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Odd
+    where
+        Odd: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Odd as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Odd
+    where
+        Odd: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Odd as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Mul<Rhs> for &Multivector
+    where
+        Multivector: ::core::ops::Mul<Rhs>,
+    {
+        type Output = <Multivector as ::core::ops::Mul<Rhs>>::Output;
+        #[inline]
+        fn mul(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Mul::mul(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitXor<Rhs> for &Multivector
+    where
+        Multivector: ::core::ops::BitXor<Rhs>,
+    {
+        type Output = <Multivector as ::core::ops::BitXor<Rhs>>::Output;
+        #[inline]
+        fn bitxor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitXor::bitxor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::BitOr<Rhs> for &Multivector
+    where
+        Multivector: ::core::ops::BitOr<Rhs>,
+    {
+        type Output = <Multivector as ::core::ops::BitOr<Rhs>>::Output;
+        #[inline]
+        fn bitor(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::BitOr::bitor(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Add<Rhs> for &Multivector
+    where
+        Multivector: ::core::ops::Add<Rhs>,
+    {
+        type Output = <Multivector as ::core::ops::Add<Rhs>>::Output;
+        #[inline]
+        fn add(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Add::add(*self, rhs)
+        }
+    }
+    impl<Rhs> ::core::ops::Sub<Rhs> for &Multivector
+    where
+        Multivector: ::core::ops::Sub<Rhs>,
+    {
+        type Output = <Multivector as ::core::ops::Sub<Rhs>>::Output;
+        #[inline]
+        fn sub(self, rhs: Rhs) -> Self::Output {
+            ::core::ops::Sub::sub(*self, rhs)
+        }
+    }
     impl ::core::ops::Mul<&Vector> for &f64 {
         type Output = <f64 as ::core::ops::Mul<Vector>>::Output;
         #[inline]
@@ -19022,39 +19372,11 @@ pub mod g4 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&f64> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<f64> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&f64> for Vector {
         type Output = <Vector as ::core::ops::Mul<f64>>::Output;
         #[inline]
         fn mul(self, rhs: &f64) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&f64> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<f64> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&f64> for Vector {
@@ -19064,39 +19386,11 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&f64> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<f64> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&f64> for Vector {
         type Output = <Vector as ::core::ops::BitOr<f64>>::Output;
         #[inline]
         fn bitor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&f64> for &Vector {
-        type Output = <Vector as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<f64> for &Vector {
-        type Output = <Vector as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: f64) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&f64> for Vector {
@@ -19106,39 +19400,11 @@ pub mod g4 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&f64> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<f64> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&f64> for Vector {
         type Output = <Vector as ::core::ops::Sub<f64>>::Output;
         #[inline]
         fn sub(self, rhs: &f64) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Vector> for Vector {
@@ -19148,39 +19414,11 @@ pub mod g4 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Vector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Vector> for Vector {
         type Output = <Vector as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Vector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for Vector {
@@ -19190,39 +19428,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Vector> for Vector {
         type Output = <Vector as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for Vector {
@@ -19244,39 +19454,11 @@ pub mod g4 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Bivector> for Vector {
         type Output = <Vector as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for Vector {
@@ -19286,39 +19468,11 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Bivector> for Vector {
         type Output = <Vector as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for Vector {
@@ -19328,39 +19482,11 @@ pub mod g4 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Bivector> for Vector {
         type Output = <Vector as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Trivector> for Vector {
@@ -19370,39 +19496,11 @@ pub mod g4 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Trivector> for Vector {
         type Output = <Vector as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for Vector {
@@ -19412,39 +19510,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Trivector> for Vector {
         type Output = <Vector as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Trivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for Vector {
@@ -19454,39 +19524,11 @@ pub mod g4 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Quadvector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Quadvector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Quadvector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Quadvector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Quadvector> for Vector {
         type Output = <Vector as ::core::ops::Mul<Quadvector>>::Output;
         #[inline]
         fn mul(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Quadvector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Quadvector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Quadvector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Quadvector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Quadvector> for Vector {
@@ -19496,39 +19538,11 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Quadvector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Quadvector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Quadvector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Quadvector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Quadvector> for Vector {
         type Output = <Vector as ::core::ops::BitOr<Quadvector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Quadvector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Quadvector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Quadvector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Quadvector>>::Output;
-        #[inline]
-        fn add(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Quadvector> for Vector {
@@ -19538,39 +19552,11 @@ pub mod g4 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Quadvector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Quadvector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Quadvector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Quadvector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Quadvector> for Vector {
         type Output = <Vector as ::core::ops::Sub<Quadvector>>::Output;
         #[inline]
         fn sub(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Even> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Even> for Vector {
@@ -19580,39 +19566,11 @@ pub mod g4 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Even> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Even> for Vector {
         type Output = <Vector as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Even> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for Vector {
@@ -19622,39 +19580,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Even> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Even> for Vector {
         type Output = <Vector as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Even> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for Vector {
@@ -19664,39 +19594,11 @@ pub mod g4 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Odd> for Vector {
         type Output = <Vector as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Odd> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for Vector {
@@ -19706,39 +19608,11 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Odd> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Odd> for Vector {
         type Output = <Vector as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for Vector {
@@ -19748,39 +19622,11 @@ pub mod g4 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Odd> for Vector {
         type Output = <Vector as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Multivector> for Vector {
@@ -19790,39 +19636,11 @@ pub mod g4 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Multivector> for Vector {
         type Output = <Vector as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for Vector {
@@ -19832,39 +19650,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Multivector> for Vector {
         type Output = <Vector as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Vector {
-        type Output = <Vector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for Vector {
@@ -19874,39 +19664,11 @@ pub mod g4 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&f64> for Bivector {
         type Output = <Bivector as ::core::ops::Mul<f64>>::Output;
         #[inline]
         fn mul(self, rhs: &f64) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&f64> for Bivector {
@@ -19916,39 +19678,11 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&f64> for Bivector {
         type Output = <Bivector as ::core::ops::BitOr<f64>>::Output;
         #[inline]
         fn bitor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: f64) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&f64> for Bivector {
@@ -19958,39 +19692,11 @@ pub mod g4 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<f64> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&f64> for Bivector {
         type Output = <Bivector as ::core::ops::Sub<f64>>::Output;
         #[inline]
         fn sub(self, rhs: &f64) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Vector> for Bivector {
@@ -20000,39 +19706,11 @@ pub mod g4 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Vector> for Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for Bivector {
@@ -20042,39 +19720,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Vector> for Bivector {
         type Output = <Bivector as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for Bivector {
@@ -20084,39 +19734,11 @@ pub mod g4 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Bivector> for Bivector {
         type Output = <Bivector as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for Bivector {
@@ -20126,20 +19748,6 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Bivector> for Bivector {
         type Output = <Bivector as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
@@ -20147,39 +19755,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Bivector> for Bivector {
         type Output = <Bivector as ::core::ops::Add<Bivector>>::Output;
         #[inline]
         fn add(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Bivector> for Bivector {
@@ -20201,39 +19781,11 @@ pub mod g4 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Trivector> for Bivector {
         type Output = <Bivector as ::core::ops::Mul<Trivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Trivector> for Bivector {
@@ -20243,39 +19795,11 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Trivector> for Bivector {
         type Output = <Bivector as ::core::ops::BitOr<Trivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Trivector> for Bivector {
@@ -20285,39 +19809,11 @@ pub mod g4 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Trivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Trivector> for Bivector {
         type Output = <Bivector as ::core::ops::Sub<Trivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Quadvector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Quadvector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Quadvector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Quadvector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Quadvector> for Bivector {
@@ -20327,39 +19823,11 @@ pub mod g4 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Quadvector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Quadvector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Quadvector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Quadvector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Quadvector> for Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Quadvector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Quadvector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Quadvector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Quadvector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Quadvector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Quadvector> for Bivector {
@@ -20369,39 +19837,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Quadvector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Quadvector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Quadvector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Quadvector>>::Output;
-        #[inline]
-        fn add(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Quadvector> for Bivector {
         type Output = <Bivector as ::core::ops::Add<Quadvector>>::Output;
         #[inline]
         fn add(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Quadvector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Quadvector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Quadvector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Quadvector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Quadvector> for Bivector {
@@ -20411,39 +19851,11 @@ pub mod g4 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Even> for Bivector {
         type Output = <Bivector as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for Bivector {
@@ -20453,39 +19865,11 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Even> for Bivector {
         type Output = <Bivector as ::core::ops::BitOr<Even>>::Output;
         #[inline]
         fn bitor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Even> for Bivector {
@@ -20495,39 +19879,11 @@ pub mod g4 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Even> for Bivector {
         type Output = <Bivector as ::core::ops::Sub<Even>>::Output;
         #[inline]
         fn sub(self, rhs: &Even) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Odd> for Bivector {
@@ -20537,39 +19893,11 @@ pub mod g4 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Odd> for Bivector {
         type Output = <Bivector as ::core::ops::BitXor<Odd>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Odd> for Bivector {
@@ -20579,39 +19907,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Odd> for Bivector {
         type Output = <Bivector as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for Bivector {
@@ -20621,39 +19921,11 @@ pub mod g4 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Multivector> for Bivector {
         type Output = <Bivector as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for Bivector {
@@ -20663,39 +19935,11 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Multivector> for Bivector {
         type Output = <Bivector as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Multivector> for Bivector {
@@ -20705,39 +19949,11 @@ pub mod g4 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Bivector {
-        type Output = <Bivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Multivector> for Bivector {
         type Output = <Bivector as ::core::ops::Sub<Multivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&f64> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<f64> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&f64> for Trivector {
@@ -20747,39 +19963,11 @@ pub mod g4 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&f64> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<f64> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&f64> for Trivector {
         type Output = <Trivector as ::core::ops::BitXor<f64>>::Output;
         #[inline]
         fn bitxor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&f64> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<f64> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&f64> for Trivector {
@@ -20789,39 +19977,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&f64> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<f64> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: f64) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&f64> for Trivector {
         type Output = <Trivector as ::core::ops::Add<f64>>::Output;
         #[inline]
         fn add(self, rhs: &f64) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&f64> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<f64> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&f64> for Trivector {
@@ -20831,39 +19991,11 @@ pub mod g4 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Vector> for Trivector {
         type Output = <Trivector as ::core::ops::Mul<Vector>>::Output;
         #[inline]
         fn mul(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Vector> for Trivector {
@@ -20873,39 +20005,11 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Vector> for Trivector {
         type Output = <Trivector as ::core::ops::BitOr<Vector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Vector> for Trivector {
@@ -20915,39 +20019,11 @@ pub mod g4 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Vector> for Trivector {
         type Output = <Trivector as ::core::ops::Sub<Vector>>::Output;
         #[inline]
         fn sub(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Bivector> for Trivector {
@@ -20957,39 +20033,11 @@ pub mod g4 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Bivector> for Trivector {
         type Output = <Trivector as ::core::ops::BitXor<Bivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Bivector> for Trivector {
@@ -20999,39 +20047,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Bivector> for Trivector {
         type Output = <Trivector as ::core::ops::Add<Bivector>>::Output;
         #[inline]
         fn add(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Bivector> for Trivector {
@@ -21041,39 +20061,11 @@ pub mod g4 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Trivector> for Trivector {
         type Output = <Trivector as ::core::ops::Mul<Trivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Trivector> for Trivector {
@@ -21083,20 +20075,6 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Trivector> for Trivector {
         type Output = <Trivector as ::core::ops::BitOr<Trivector>>::Output;
         #[inline]
@@ -21104,39 +20082,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Trivector> for Trivector {
         type Output = <Trivector as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Trivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for Trivector {
@@ -21158,39 +20108,11 @@ pub mod g4 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Quadvector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Quadvector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Quadvector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Quadvector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Quadvector> for Trivector {
         type Output = <Trivector as ::core::ops::Mul<Quadvector>>::Output;
         #[inline]
         fn mul(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Quadvector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Quadvector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Quadvector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Quadvector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Quadvector> for Trivector {
@@ -21200,39 +20122,11 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Quadvector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Quadvector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Quadvector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Quadvector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Quadvector> for Trivector {
         type Output = <Trivector as ::core::ops::BitOr<Quadvector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Quadvector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Quadvector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Quadvector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Quadvector>>::Output;
-        #[inline]
-        fn add(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Quadvector> for Trivector {
@@ -21242,39 +20136,11 @@ pub mod g4 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Quadvector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Quadvector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Quadvector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Quadvector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Quadvector> for Trivector {
         type Output = <Trivector as ::core::ops::Sub<Quadvector>>::Output;
         #[inline]
         fn sub(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Even> for Trivector {
@@ -21284,39 +20150,11 @@ pub mod g4 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Even> for Trivector {
         type Output = <Trivector as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for Trivector {
@@ -21326,39 +20164,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Even> for Trivector {
         type Output = <Trivector as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for Trivector {
@@ -21368,39 +20178,11 @@ pub mod g4 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Odd> for Trivector {
         type Output = <Trivector as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for Trivector {
@@ -21410,39 +20192,11 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Odd> for Trivector {
         type Output = <Trivector as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for Trivector {
@@ -21452,39 +20206,11 @@ pub mod g4 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Odd> for Trivector {
         type Output = <Trivector as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Multivector> for Trivector {
@@ -21494,39 +20220,11 @@ pub mod g4 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Multivector> for Trivector {
         type Output = <Trivector as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for Trivector {
@@ -21536,39 +20234,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Multivector> for Trivector {
         type Output = <Trivector as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Trivector {
-        type Output = <Trivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for Trivector {
@@ -21578,39 +20248,11 @@ pub mod g4 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&f64> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<f64> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&f64> for Quadvector {
         type Output = <Quadvector as ::core::ops::Mul<f64>>::Output;
         #[inline]
         fn mul(self, rhs: &f64) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&f64> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<f64> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&f64> for Quadvector {
@@ -21620,39 +20262,11 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&f64> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<f64> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&f64> for Quadvector {
         type Output = <Quadvector as ::core::ops::BitOr<f64>>::Output;
         #[inline]
         fn bitor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&f64> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<f64> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: f64) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&f64> for Quadvector {
@@ -21662,39 +20276,11 @@ pub mod g4 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&f64> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<f64> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&f64> for Quadvector {
         type Output = <Quadvector as ::core::ops::Sub<f64>>::Output;
         #[inline]
         fn sub(self, rhs: &f64) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Vector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Vector> for Quadvector {
@@ -21704,39 +20290,11 @@ pub mod g4 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Vector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Vector> for Quadvector {
         type Output = <Quadvector as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Vector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for Quadvector {
@@ -21746,39 +20304,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Vector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Vector> for Quadvector {
         type Output = <Quadvector as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Vector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for Quadvector {
@@ -21788,39 +20318,11 @@ pub mod g4 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Bivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Bivector> for Quadvector {
         type Output = <Quadvector as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Bivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for Quadvector {
@@ -21830,39 +20332,11 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Bivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Bivector> for Quadvector {
         type Output = <Quadvector as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Bivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for Quadvector {
@@ -21872,39 +20346,11 @@ pub mod g4 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Bivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Bivector> for Quadvector {
         type Output = <Quadvector as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Trivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Trivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Trivector> for Quadvector {
@@ -21914,39 +20360,11 @@ pub mod g4 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Trivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Trivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Trivector> for Quadvector {
         type Output = <Quadvector as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Trivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Trivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for Quadvector {
@@ -21956,39 +20374,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Trivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Trivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Trivector> for Quadvector {
         type Output = <Quadvector as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Trivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Trivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for Quadvector {
@@ -21998,39 +20388,11 @@ pub mod g4 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Quadvector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Mul<Quadvector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Quadvector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Mul<Quadvector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Quadvector> for Quadvector {
         type Output = <Quadvector as ::core::ops::Mul<Quadvector>>::Output;
         #[inline]
         fn mul(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Quadvector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitXor<Quadvector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Quadvector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitXor<Quadvector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Quadvector> for Quadvector {
@@ -22040,20 +20402,6 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Quadvector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitOr<Quadvector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Quadvector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitOr<Quadvector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Quadvector> for Quadvector {
         type Output = <Quadvector as ::core::ops::BitOr<Quadvector>>::Output;
         #[inline]
@@ -22061,39 +20409,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Quadvector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Add<Quadvector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Quadvector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Add<Quadvector>>::Output;
-        #[inline]
-        fn add(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Quadvector> for Quadvector {
         type Output = <Quadvector as ::core::ops::Add<Quadvector>>::Output;
         #[inline]
         fn add(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Quadvector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Sub<Quadvector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Quadvector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Sub<Quadvector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Quadvector> for Quadvector {
@@ -22115,39 +20435,11 @@ pub mod g4 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Even> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Even> for Quadvector {
         type Output = <Quadvector as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Even> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for Quadvector {
@@ -22157,39 +20449,11 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Even> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Even> for Quadvector {
         type Output = <Quadvector as ::core::ops::BitOr<Even>>::Output;
         #[inline]
         fn bitor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Even> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Even> for Quadvector {
@@ -22199,39 +20463,11 @@ pub mod g4 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Even> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Even> for Quadvector {
         type Output = <Quadvector as ::core::ops::Sub<Even>>::Output;
         #[inline]
         fn sub(self, rhs: &Even) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Odd> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Odd> for Quadvector {
@@ -22241,39 +20477,11 @@ pub mod g4 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Odd> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Odd> for Quadvector {
         type Output = <Quadvector as ::core::ops::BitXor<Odd>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Odd> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Odd> for Quadvector {
@@ -22283,39 +20491,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Odd> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Odd> for Quadvector {
         type Output = <Quadvector as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Odd> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for Quadvector {
@@ -22325,39 +20505,11 @@ pub mod g4 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Multivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Multivector> for Quadvector {
         type Output = <Quadvector as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Multivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for Quadvector {
@@ -22367,39 +20519,11 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Multivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Multivector> for Quadvector {
         type Output = <Quadvector as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Multivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Multivector> for Quadvector {
@@ -22409,39 +20533,11 @@ pub mod g4 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Multivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Quadvector {
-        type Output = <Quadvector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Multivector> for Quadvector {
         type Output = <Quadvector as ::core::ops::Sub<Multivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&f64> for &Even {
-        type Output = <Even as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<f64> for &Even {
-        type Output = <Even as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&f64> for Even {
@@ -22451,39 +20547,11 @@ pub mod g4 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&f64> for &Even {
-        type Output = <Even as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<f64> for &Even {
-        type Output = <Even as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&f64> for Even {
         type Output = <Even as ::core::ops::BitXor<f64>>::Output;
         #[inline]
         fn bitxor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&f64> for &Even {
-        type Output = <Even as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<f64> for &Even {
-        type Output = <Even as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&f64> for Even {
@@ -22493,39 +20561,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&f64> for &Even {
-        type Output = <Even as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<f64> for &Even {
-        type Output = <Even as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: f64) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&f64> for Even {
         type Output = <Even as ::core::ops::Add<f64>>::Output;
         #[inline]
         fn add(self, rhs: &f64) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&f64> for &Even {
-        type Output = <Even as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<f64> for &Even {
-        type Output = <Even as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&f64> for Even {
@@ -22547,39 +20587,11 @@ pub mod g4 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Vector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Vector> for Even {
         type Output = <Even as ::core::ops::Mul<Vector>>::Output;
         #[inline]
         fn mul(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Vector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Vector> for Even {
@@ -22589,39 +20601,11 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Vector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Vector> for Even {
         type Output = <Even as ::core::ops::BitOr<Vector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Vector> for &Even {
-        type Output = <Even as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Even {
-        type Output = <Even as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Vector> for Even {
@@ -22631,39 +20615,11 @@ pub mod g4 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Vector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Vector> for Even {
         type Output = <Even as ::core::ops::Sub<Vector>>::Output;
         #[inline]
         fn sub(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Bivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Bivector> for Even {
@@ -22673,39 +20629,11 @@ pub mod g4 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Bivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Bivector> for Even {
         type Output = <Even as ::core::ops::BitXor<Bivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Bivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Bivector> for Even {
@@ -22715,39 +20643,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Bivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Bivector> for Even {
         type Output = <Even as ::core::ops::Add<Bivector>>::Output;
         #[inline]
         fn add(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Bivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Bivector> for Even {
@@ -22769,39 +20669,11 @@ pub mod g4 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Trivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Trivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Trivector> for Even {
         type Output = <Even as ::core::ops::Mul<Trivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Trivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Trivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Trivector> for Even {
@@ -22811,39 +20683,11 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Trivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Trivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Trivector> for Even {
         type Output = <Even as ::core::ops::BitOr<Trivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Trivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Trivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Trivector> for Even {
@@ -22853,39 +20697,11 @@ pub mod g4 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Trivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Trivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Trivector> for Even {
         type Output = <Even as ::core::ops::Sub<Trivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Quadvector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Quadvector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Quadvector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Quadvector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Quadvector> for Even {
@@ -22895,39 +20711,11 @@ pub mod g4 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Quadvector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Quadvector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Quadvector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Quadvector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Quadvector> for Even {
         type Output = <Even as ::core::ops::BitXor<Quadvector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Quadvector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Quadvector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Quadvector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Quadvector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Quadvector> for Even {
@@ -22937,39 +20725,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Quadvector> for &Even {
-        type Output = <Even as ::core::ops::Add<Quadvector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Quadvector> for &Even {
-        type Output = <Even as ::core::ops::Add<Quadvector>>::Output;
-        #[inline]
-        fn add(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Quadvector> for Even {
         type Output = <Even as ::core::ops::Add<Quadvector>>::Output;
         #[inline]
         fn add(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Quadvector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Quadvector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Quadvector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Quadvector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Quadvector> for Even {
@@ -22991,39 +20751,11 @@ pub mod g4 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Even> for &Even {
-        type Output = <Even as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Even {
-        type Output = <Even as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Even> for Even {
         type Output = <Even as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Even> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for Even {
@@ -23033,20 +20765,6 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Even> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Even> for Even {
         type Output = <Even as ::core::ops::BitOr<Even>>::Output;
         #[inline]
@@ -23054,39 +20772,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Even> for &Even {
-        type Output = <Even as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Even {
-        type Output = <Even as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Even> for Even {
         type Output = <Even as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Even> for &Even {
-        type Output = <Even as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Even {
-        type Output = <Even as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for Even {
@@ -23108,39 +20798,11 @@ pub mod g4 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Odd> for &Even {
-        type Output = <Even as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Even {
-        type Output = <Even as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Odd> for Even {
         type Output = <Even as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Odd> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for Even {
@@ -23150,39 +20812,11 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Odd> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Odd> for Even {
         type Output = <Even as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
         fn bitor(self, rhs: &Odd) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Odd> for &Even {
-        type Output = <Even as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Even {
-        type Output = <Even as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Odd> for Even {
@@ -23192,39 +20826,11 @@ pub mod g4 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Odd> for &Even {
-        type Output = <Even as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Even {
-        type Output = <Even as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Odd> for Even {
         type Output = <Even as ::core::ops::Sub<Odd>>::Output;
         #[inline]
         fn sub(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Multivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Even {
-        type Output = <Even as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Multivector> for Even {
@@ -23234,39 +20840,11 @@ pub mod g4 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Multivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Even {
-        type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Multivector> for Even {
         type Output = <Even as ::core::ops::BitXor<Multivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Multivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Even {
-        type Output = <Even as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Multivector> for Even {
@@ -23276,39 +20854,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Multivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Even {
-        type Output = <Even as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Multivector> for Even {
         type Output = <Even as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Multivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Even {
-        type Output = <Even as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for Even {
@@ -23318,39 +20868,11 @@ pub mod g4 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&f64> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<f64> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&f64> for Odd {
         type Output = <Odd as ::core::ops::Mul<f64>>::Output;
         #[inline]
         fn mul(self, rhs: &f64) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&f64> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<f64> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&f64> for Odd {
@@ -23360,39 +20882,11 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&f64> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<f64> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&f64> for Odd {
         type Output = <Odd as ::core::ops::BitOr<f64>>::Output;
         #[inline]
         fn bitor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&f64> for &Odd {
-        type Output = <Odd as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<f64> for &Odd {
-        type Output = <Odd as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: f64) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&f64> for Odd {
@@ -23402,39 +20896,11 @@ pub mod g4 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&f64> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<f64> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&f64> for Odd {
         type Output = <Odd as ::core::ops::Sub<f64>>::Output;
         #[inline]
         fn sub(self, rhs: &f64) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Vector> for Odd {
@@ -23444,39 +20910,11 @@ pub mod g4 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Vector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Vector> for Odd {
         type Output = <Odd as ::core::ops::BitXor<Vector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Vector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Vector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Vector> for Odd {
@@ -23486,39 +20924,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Vector> for Odd {
         type Output = <Odd as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for Odd {
@@ -23540,39 +20950,11 @@ pub mod g4 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Bivector> for Odd {
         type Output = <Odd as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for Odd {
@@ -23582,39 +20964,11 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Bivector> for Odd {
         type Output = <Odd as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Bivector> for Odd {
@@ -23624,39 +20978,11 @@ pub mod g4 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Bivector> for Odd {
         type Output = <Odd as ::core::ops::Sub<Bivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Trivector> for Odd {
@@ -23666,39 +20992,11 @@ pub mod g4 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Trivector> for Odd {
         type Output = <Odd as ::core::ops::BitXor<Trivector>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Trivector> for Odd {
@@ -23708,39 +21006,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Trivector> for Odd {
         type Output = <Odd as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Trivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for Odd {
@@ -23762,39 +21032,11 @@ pub mod g4 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Quadvector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Quadvector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Quadvector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Quadvector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Quadvector> for Odd {
         type Output = <Odd as ::core::ops::Mul<Quadvector>>::Output;
         #[inline]
         fn mul(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Quadvector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Quadvector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Quadvector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Quadvector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Quadvector> for Odd {
@@ -23804,39 +21046,11 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Quadvector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Quadvector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Quadvector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Quadvector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Quadvector> for Odd {
         type Output = <Odd as ::core::ops::BitOr<Quadvector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Quadvector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Quadvector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Quadvector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Quadvector>>::Output;
-        #[inline]
-        fn add(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Quadvector> for Odd {
@@ -23846,39 +21060,11 @@ pub mod g4 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Quadvector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Quadvector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Quadvector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Quadvector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Quadvector> for Odd {
         type Output = <Odd as ::core::ops::Sub<Quadvector>>::Output;
         #[inline]
         fn sub(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&Even> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&Even> for Odd {
@@ -23888,39 +21074,11 @@ pub mod g4 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&Even> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&Even> for Odd {
         type Output = <Odd as ::core::ops::BitXor<Even>>::Output;
         #[inline]
         fn bitxor(self, rhs: &Even) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&Even> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&Even> for Odd {
@@ -23930,39 +21088,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Even> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Even> for Odd {
         type Output = <Odd as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Even> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for Odd {
@@ -23972,39 +21102,11 @@ pub mod g4 {
             ::core::ops::Sub::sub(self, *rhs)
         }
     }
-    impl ::core::ops::Mul<&Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Odd> for Odd {
         type Output = <Odd as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Odd> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for Odd {
@@ -24014,20 +21116,6 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Odd> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Odd> for Odd {
         type Output = <Odd as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
@@ -24035,39 +21123,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Odd> for Odd {
         type Output = <Odd as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for Odd {
@@ -24089,39 +21149,11 @@ pub mod g4 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Multivector> for Odd {
         type Output = <Odd as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for Odd {
@@ -24131,39 +21163,11 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Multivector> for Odd {
         type Output = <Odd as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
         fn bitor(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::BitOr::bitor(self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<&Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
         }
     }
     impl ::core::ops::Add<&Multivector> for Odd {
@@ -24173,39 +21177,11 @@ pub mod g4 {
             ::core::ops::Add::add(self, *rhs)
         }
     }
-    impl ::core::ops::Sub<&Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Odd {
-        type Output = <Odd as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
-        }
-    }
     impl ::core::ops::Sub<&Multivector> for Odd {
         type Output = <Odd as ::core::ops::Sub<Multivector>>::Output;
         #[inline]
         fn sub(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Sub::sub(self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<&f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<f64>>::Output;
-        #[inline]
-        fn mul(self, rhs: f64) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
         }
     }
     impl ::core::ops::Mul<&f64> for Multivector {
@@ -24215,39 +21191,11 @@ pub mod g4 {
             ::core::ops::Mul::mul(self, *rhs)
         }
     }
-    impl ::core::ops::BitXor<&f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<f64>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitXor<&f64> for Multivector {
         type Output = <Multivector as ::core::ops::BitXor<f64>>::Output;
         #[inline]
         fn bitxor(self, rhs: &f64) -> Self::Output {
             ::core::ops::BitXor::bitxor(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<&f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<f64>>::Output;
-        #[inline]
-        fn bitor(self, rhs: f64) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
         }
     }
     impl ::core::ops::BitOr<&f64> for Multivector {
@@ -24257,39 +21205,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<f64>>::Output;
-        #[inline]
-        fn add(self, rhs: f64) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&f64> for Multivector {
         type Output = <Multivector as ::core::ops::Add<f64>>::Output;
         #[inline]
         fn add(self, rhs: &f64) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: &f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<f64> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<f64>>::Output;
-        #[inline]
-        fn sub(self, rhs: f64) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&f64> for Multivector {
@@ -24311,39 +21231,11 @@ pub mod g4 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Vector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Vector> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Vector>>::Output;
         #[inline]
         fn mul(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Vector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Vector> for Multivector {
@@ -24353,20 +21245,6 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Vector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Vector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Vector> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Vector>>::Output;
         #[inline]
@@ -24374,39 +21252,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
-        #[inline]
-        fn add(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Vector> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Vector>>::Output;
         #[inline]
         fn add(self, rhs: &Vector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Vector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Vector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Vector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Vector> for Multivector {
@@ -24428,39 +21278,11 @@ pub mod g4 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Bivector> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Bivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Bivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Bivector> for Multivector {
@@ -24470,20 +21292,6 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Bivector> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Bivector>>::Output;
         #[inline]
@@ -24491,39 +21299,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Bivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Bivector> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Bivector>>::Output;
         #[inline]
         fn add(self, rhs: &Bivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Bivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Bivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Bivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Bivector> for Multivector {
@@ -24545,39 +21325,11 @@ pub mod g4 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Trivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Trivector> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Trivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Trivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Trivector> for Multivector {
@@ -24587,20 +21339,6 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Trivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Trivector> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Trivector>>::Output;
         #[inline]
@@ -24608,39 +21346,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Trivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Trivector> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Trivector>>::Output;
         #[inline]
         fn add(self, rhs: &Trivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Trivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Trivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Trivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Trivector> for Multivector {
@@ -24662,39 +21372,11 @@ pub mod g4 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Quadvector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Quadvector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Quadvector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Quadvector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Quadvector> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Quadvector>>::Output;
         #[inline]
         fn mul(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Quadvector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Quadvector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Quadvector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Quadvector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Quadvector> for Multivector {
@@ -24704,20 +21386,6 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Quadvector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Quadvector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Quadvector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Quadvector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Quadvector> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Quadvector>>::Output;
         #[inline]
@@ -24725,39 +21393,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Quadvector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Quadvector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Quadvector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Quadvector>>::Output;
-        #[inline]
-        fn add(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Quadvector> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Quadvector>>::Output;
         #[inline]
         fn add(self, rhs: &Quadvector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Quadvector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Quadvector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Quadvector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Quadvector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Quadvector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Quadvector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Quadvector> for Multivector {
@@ -24779,39 +21419,11 @@ pub mod g4 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
-        #[inline]
-        fn mul(self, rhs: Even) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Even> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Even>>::Output;
         #[inline]
         fn mul(self, rhs: &Even) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Even>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Even> for Multivector {
@@ -24821,20 +21433,6 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Even) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Even> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Even>>::Output;
         #[inline]
@@ -24842,39 +21440,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Even>>::Output;
-        #[inline]
-        fn add(self, rhs: Even) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Even> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Even>>::Output;
         #[inline]
         fn add(self, rhs: &Even) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Even> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Even>>::Output;
-        #[inline]
-        fn sub(self, rhs: Even) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Even> for Multivector {
@@ -24896,39 +21466,11 @@ pub mod g4 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
-        #[inline]
-        fn mul(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Odd> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Odd>>::Output;
         #[inline]
         fn mul(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Odd>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Odd> for Multivector {
@@ -24938,20 +21480,6 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Odd) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Odd> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Odd>>::Output;
         #[inline]
@@ -24959,39 +21487,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
-        #[inline]
-        fn add(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Odd> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Odd>>::Output;
         #[inline]
         fn add(self, rhs: &Odd) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Odd> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Odd>>::Output;
-        #[inline]
-        fn sub(self, rhs: Odd) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Odd> for Multivector {
@@ -25013,39 +21513,11 @@ pub mod g4 {
             *self -= *rhs;
         }
     }
-    impl ::core::ops::Mul<&Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Mul<Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
-        #[inline]
-        fn mul(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Mul::mul(*self, rhs)
-        }
-    }
     impl ::core::ops::Mul<&Multivector> for Multivector {
         type Output = <Multivector as ::core::ops::Mul<Multivector>>::Output;
         #[inline]
         fn mul(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Mul::mul(self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<&Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitXor<Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitXor<Multivector>>::Output;
-        #[inline]
-        fn bitxor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitXor::bitxor(*self, rhs)
         }
     }
     impl ::core::ops::BitXor<&Multivector> for Multivector {
@@ -25055,20 +21527,6 @@ pub mod g4 {
             ::core::ops::BitXor::bitxor(self, *rhs)
         }
     }
-    impl ::core::ops::BitOr<&Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, *rhs)
-        }
-    }
-    impl ::core::ops::BitOr<Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
-        #[inline]
-        fn bitor(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::BitOr::bitor(*self, rhs)
-        }
-    }
     impl ::core::ops::BitOr<&Multivector> for Multivector {
         type Output = <Multivector as ::core::ops::BitOr<Multivector>>::Output;
         #[inline]
@@ -25076,39 +21534,11 @@ pub mod g4 {
             ::core::ops::BitOr::bitor(self, *rhs)
         }
     }
-    impl ::core::ops::Add<&Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Add<Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
-        #[inline]
-        fn add(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Add::add(*self, rhs)
-        }
-    }
     impl ::core::ops::Add<&Multivector> for Multivector {
         type Output = <Multivector as ::core::ops::Add<Multivector>>::Output;
         #[inline]
         fn add(self, rhs: &Multivector) -> Self::Output {
             ::core::ops::Add::add(self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<&Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: &Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, *rhs)
-        }
-    }
-    impl ::core::ops::Sub<Multivector> for &Multivector {
-        type Output = <Multivector as ::core::ops::Sub<Multivector>>::Output;
-        #[inline]
-        fn sub(self, rhs: Multivector) -> Self::Output {
-            ::core::ops::Sub::sub(*self, rhs)
         }
     }
     impl ::core::ops::Sub<&Multivector> for Multivector {
