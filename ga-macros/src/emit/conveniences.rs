@@ -284,8 +284,8 @@ fn folds(plan: &Plan, t: TypeId) -> TokenStream {
 /// right operand (`&a op x` wherever `a op x` is implemented), not one per pair: the
 /// compiler checks every impl whose self type is a reference against every other impl of
 /// the same trait with a reference self type, the whole crate's together, so per-pair
-/// impls made that check quadratic in the number of types times algebras (82 s of 190 in
-/// the front end of a test crate of 70 algebras). The scalar on the left keeps impls per
+/// impls made that check quadratic in the number of types times algebras (BENCHMARKS.md,
+/// "Reference operators, one impl per type"). The scalar on the left keeps impls per
 /// pair: a generic impl for `&f64` would break the orphan rule.
 fn reference_operators(plan: &Plan) -> TokenStream {
     let batch = plan.lanes.is_some();
